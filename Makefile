@@ -1,0 +1,143 @@
+# modexlab: the kernel (freestanding i686 C++ and NASM), its ISO, the host harness and the tests.
+#   make all    kernel ELF + ISO            make run    boot in QEMU, show the patterns, save screenshots
+#   make test   every test, one summary      make clean  remove build/
+#   make deps   install missing tools (run and test do it themselves)
+
+MAKEFLAGS += -rR --no-print-directory
+.SUFFIXES:
+.DELETE_ON_ERROR:
+SHELL := /bin/bash
+V ?= 0
+Q := $(if $(filter 1,$(V)),,@)
+say = $(if $(filter 1,$(V)),,@echo "  $(1)	$(2)")
+
+BUILD := build
+KBUILD := $(BUILD)/kernel
+HBUILD := $(BUILD)/host
+
+# ---- tools -------------------------------------------------------------------------------------
+
+CROSS := $(if $(shell command -v i686-elf-g++ 2>/dev/null),i686-elf-,i686-linux-gnu-)
+KCXX := $(CROSS)g++
+NASM := nasm
+HCXX := g++
+SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
+
+# what must be on the machine -> the Debian package that brings it
+DEPS := \
+	nasm:nasm \
+	qemu-system-i386:qemu-system-x86 \
+	grub-mkrescue:grub-common \
+	grub-file:grub-common \
+	/usr/lib/grub/i386-pc/multiboot.mod:grub-pc-bin \
+	xorriso:xorriso \
+	mformat:mtools \
+	g++:g++ \
+	/usr/include/nlohmann/json.hpp:nlohmann-json3-dev \
+	/usr/include/png.h:libpng-dev \
+	/usr/include/gtest/gtest.h:libgtest-dev
+ifeq ($(CROSS),i686-linux-gnu-)
+DEPS += i686-linux-gnu-g++:g++-i686-linux-gnu
+endif
+
+# ---- kernel ------------------------------------------------------------------------------------
+
+KERNEL := $(KBUILD)/modexlab.elf
+ISO := $(BUILD)/modexlab.iso
+
+KERNEL_ASM := boot/entry.asm boot/isr.asm
+KERNEL_CXX := $(wildcard kernel/*.cpp kernel/lib/*.cpp kernel/raster/*.cpp drivers/*.cpp)
+KERNEL_OBJS := $(KERNEL_ASM:%=$(KBUILD)/%.o) $(KERNEL_CXX:%=$(KBUILD)/%.o)
+
+WARNINGS := -Wall -Wextra -Werror -Wshadow -Wnon-virtual-dtor -Wcast-align -Wundef
+# '=': expanded when a recipe runs, after `deps` may have installed the cross compiler
+KCXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) \
+	-ffreestanding -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit \
+	-fno-stack-protector -fno-pic -fno-pie -fno-asynchronous-unwind-tables -fno-omit-frame-pointer \
+	-nostdinc -isystem $(shell $(KCXX) -print-file-name=include 2>/dev/null) -I. -MMD -MP
+KLDFLAGS := -m32 -nostdlib -static -no-pie -T boot/linker.ld -Wl,--build-id=none -Wl,-z,noexecstack \
+	-Wl,--fatal-warnings -Wl,--no-warn-rwx-segments
+NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error
+
+# ---- host --------------------------------------------------------------------------------------
+
+# portable kernel code the host builds too (no port I/O, no inline asm)
+PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp \
+	$(wildcard kernel/raster/*.cpp)
+HARNESS_CXX := $(filter-out qemu/main.cpp,$(wildcard qemu/*.cpp))
+HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
+TEST_CXX := $(wildcard tests/*.cpp tests/unit/*.cpp tests/system/*.cpp)
+
+HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -I. -MMD -MP -DMODEXLAB_BUILD_DIR='"$(abspath $(BUILD))"'
+HLDLIBS := -lpng -lpthread
+
+HARNESS := $(HBUILD)/modexlab
+TESTS := $(HBUILD)/modexlab-tests
+
+# ---- targets -----------------------------------------------------------------------------------
+
+.PHONY: all iso kernel host run test deps clean
+all: $(KERNEL) $(ISO)
+kernel: $(KERNEL)
+iso: $(ISO)
+host: $(HARNESS) $(TESTS)
+
+deps:
+	@missing=""; \
+	for pair in $(DEPS); do \
+		f="$${pair%%:*}"; p="$${pair#*:}"; \
+		case "$$f" in /*) [ -e "$$f" ] ;; *) command -v "$$f" >/dev/null ;; esac || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+		echo "deps: installing$$missing"; \
+		$(SUDO) apt-get update -qq && \
+		DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+	fi
+
+$(KERNEL): $(KERNEL_OBJS) boot/linker.ld
+	$(call say,LD,$@)
+	$(Q)$(KCXX) $(KLDFLAGS) -o $@ $(KERNEL_OBJS) -lgcc
+	@grub-file --is-x86-multiboot $@ || { echo "$@: not a Multiboot v1 kernel"; rm -f $@; exit 1; }
+
+$(KBUILD)/%.cpp.o: %.cpp | deps
+	@mkdir -p $(@D)
+	$(call say,KCXX,$<)
+	$(Q)$(KCXX) $(KCXXFLAGS) -c $< -o $@
+
+$(KBUILD)/%.asm.o: %.asm | deps
+	@mkdir -p $(@D)
+	$(call say,NASM,$<)
+	$(Q)$(NASM) $(NASMFLAGS) -MD $(@:.o=.d) -MT $@ -MP $< -o $@
+
+$(ISO): $(KERNEL) boot/grub.cfg
+	$(call say,ISO,$@)
+	$(Q)rm -rf $(BUILD)/isodir && mkdir -p $(BUILD)/isodir/boot/grub
+	$(Q)cp $(KERNEL) $(BUILD)/isodir/boot/modexlab.elf
+	$(Q)cp boot/grub.cfg $(BUILD)/isodir/boot/grub/grub.cfg
+	$(Q)grub-mkrescue --compress=xz -o $@ $(BUILD)/isodir 2>$(BUILD)/grub-mkrescue.log || { cat $(BUILD)/grub-mkrescue.log; exit 1; }
+
+$(HBUILD)/%.cpp.o: %.cpp | deps
+	@mkdir -p $(@D)
+	$(call say,CXX,$<)
+	$(Q)$(HCXX) $(HCXXFLAGS) -c $< -o $@
+
+$(HARNESS): $(HBUILD)/qemu/main.cpp.o $(HARNESS_OBJS)
+	$(call say,LINK,$@)
+	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
+
+$(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
+	$(call say,LINK,$@)
+	$(Q)$(HCXX) -o $@ $^ -lgtest $(HLDLIBS)
+
+run: deps
+	@$(MAKE) all host
+	$(HARNESS) run --kernel $(KERNEL) --out $(BUILD)/run
+
+test: deps
+	@$(MAKE) all host
+	@tests/run $(TESTS)
+
+clean:
+	rm -rf $(BUILD)
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,0 +1,29 @@
+// CPUID: vendor, family/model/stepping and the feature flags the lab cares about.
+#pragma once
+
+#include <stdint.h>
+
+namespace cpu {
+
+struct Info {
+    bool has_cpuid = false;
+    char vendor[13] = {};
+    uint32_t family = 0, model = 0, stepping = 0;
+    uint32_t features_edx = 0;  // CPUID.1:EDX
+    uint32_t features_ecx = 0;  // CPUID.1:ECX
+};
+
+struct Feature {
+    const char* name;
+    bool in_ecx;
+    uint8_t bit;
+};
+
+extern const Feature FEATURES[];
+extern const int FEATURE_COUNT;
+
+Info detect();
+bool has(const Info& info, const Feature& f);
+inline bool has_tsc(const Info& info) { return info.has_cpuid && ((info.features_edx >> 4) & 1); }
+
+}  // namespace cpu

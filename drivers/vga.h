@@ -1,0 +1,53 @@
+// VGA: mode 13h and unchained Mode X (320x240, three pages) from register tables, page flips
+// through the CRTC start address, the DAC palette, plane-by-plane read-back, and a text console.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "kernel/raster/palette.h"
+
+namespace vga {
+
+enum class Mode : uint8_t { Text, Mode13h, ModeX };
+
+constexpr int WIDTH = 320;
+constexpr int MODEX_HEIGHT = 240;
+constexpr int MODE13H_HEIGHT = 200;
+constexpr int MODEX_PAGES = 3;
+constexpr uint32_t MODEX_PAGE_BYTES = 0x4B00;  // 80 bytes x 240 lines, per plane
+constexpr int MODEX_ROW_BYTES = WIDTH / 4;
+constexpr int MAX_PIXELS = WIDTH * MODEX_HEIGHT;
+
+// Writes 0 to the Bochs VBE enable register if a Bochs/QEMU VBE adapter answers (a loader may have
+// left a VBE mode on; VGA register writes are ignored while it is). True when it was found.
+bool disable_bochs_vbe();
+
+void set_mode_13h();
+void set_mode_x();
+Mode mode();
+const char* mode_name(Mode m);
+int height();       // of the current graphics mode; 0 in text mode
+int page_count();   // 3 in Mode X, 1 in mode 13h, 0 in text mode
+int shown_page();
+
+void load_palette(const raster::Palette& p);
+
+// Mode X plane selection: Sequencer map mask (writes) and Graphics Read Map Select (reads).
+void set_map_mask(uint8_t mask);
+void set_read_plane(uint8_t plane);
+volatile uint8_t* page_base(int page);  // Mode X: plane offset of the page; 13h: the linear page
+
+// Shows `page` (CRTC start address) and returns once the new start address has been latched, that
+// is, once vertical retrace has begun; false if the retrace never came (bounded wait).
+bool flip(int page);
+
+void clear_page(int page, uint8_t colour);
+
+// The page's pixels as palette indices, row-major, width x height() bytes into `out`.
+void read_page(int page, uint8_t* out);
+
+// Text-mode console at 0xB8000 (only while in text mode): for messages a person without a serial line sees.
+void text_write(const char* s);
+
+}  // namespace vga

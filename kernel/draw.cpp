@@ -1,0 +1,27 @@
+// Pattern drawing through the VGA driver.
+#include "kernel/draw.h"
+
+#include "drivers/vga.h"
+
+namespace draw {
+
+void pattern(raster::Pattern p, int page) {
+    volatile uint8_t* base = vga::page_base(page);
+    const int h = vga::height();
+    const int w = vga::WIDTH;
+    if (vga::mode() != vga::Mode::ModeX) {
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) base[y * w + x] = raster::pattern_pixel(p, x, y, w, h);
+        return;
+    }
+    for (int plane = 0; plane < 4; ++plane) {
+        vga::set_map_mask(uint8_t(1u << plane));
+        for (int y = 0; y < h; ++y) {
+            volatile uint8_t* row = base + y * vga::MODEX_ROW_BYTES;
+            for (int x4 = 0; x4 < vga::MODEX_ROW_BYTES; ++x4)
+                row[x4] = raster::pattern_pixel(p, 4 * x4 + plane, y, w, h);
+        }
+    }
+}
+
+}  // namespace draw

@@ -1,0 +1,11 @@
+// Drawing the named test patterns into a VGA page of the current mode.
+#pragma once
+
+#include "kernel/raster/pattern.h"
+
+namespace draw {
+
+// Mode X: one map-mask change per plane, then that plane's pixels of the page; mode 13h: linear.
+void pattern(raster::Pattern p, int page);
+
+}  // namespace draw

@@ -1,0 +1,90 @@
+// IDT set-up and the exception handler: one JSON event line on COM1, a text-mode line, then isa-debug-exit.
+#include "kernel/idt.h"
+
+#include "drivers/debug_exit.h"
+#include "drivers/serial.h"
+#include "drivers/vga.h"
+#include "kernel/lib/fmt.h"
+#include "kernel/reply.h"
+
+extern "C" const uint32_t isr_stub_table[32];
+
+namespace idt {
+
+namespace {
+
+struct [[gnu::packed]] Gate {
+    uint16_t offset_low;
+    uint16_t selector;
+    uint8_t zero;
+    uint8_t type_attr;
+    uint16_t offset_high;
+};
+static_assert(sizeof(Gate) == 8);
+
+struct [[gnu::packed]] Descriptor {
+    uint16_t limit;
+    uint32_t base;
+};
+
+constexpr uint16_t KERNEL_CS = 0x08;
+constexpr uint8_t INTERRUPT_GATE_RING0 = 0x8E;  // present, DPL 0, 32-bit interrupt gate (IF cleared)
+
+Gate g_idt[32];
+
+constexpr const char* NAMES[32] = {
+    "#DE", "#DB", "NMI", "#BP", "#OF", "#BR", "#UD", "#NM", "#DF", "CSO", "#TS", "#NP", "#SS", "#GP", "#PF", "#15",
+    "#MF", "#AC", "#MC", "#XM", "#VE", "#CP", "#22", "#23", "#24", "#25", "#26", "#27", "#HV", "#VC", "#SX", "#31",
+};
+
+bool g_in_handler = false;
+
+}  // namespace
+
+const char* exception_name(uint32_t vector) { return vector < 32 ? NAMES[vector] : "?"; }
+
+void init() {
+    for (int v = 0; v < 32; ++v) {
+        uint32_t handler = isr_stub_table[v];
+        g_idt[v] = Gate{uint16_t(handler), KERNEL_CS, 0, INTERRUPT_GATE_RING0, uint16_t(handler >> 16)};
+    }
+    Descriptor d{sizeof(g_idt) - 1, reinterpret_cast<uint32_t>(&g_idt)};
+    asm volatile("lidt %0" : : "m"(d));
+}
+
+}  // namespace idt
+
+extern "C" [[noreturn]] void exception_handler(const idt::ExceptionFrame* f) {
+    using idt::g_in_handler;
+    if (!g_in_handler) {  // a fault while reporting a fault goes straight to the exit
+        g_in_handler = true;
+        uint32_t fault_esp = f->esp_pushad + 5 * 4;  // above vector, error code, eip, cs, eflags
+        // The fault is the reply to the command in progress (or an unsolicited line at boot).
+        lib::Fmt message;
+        message.s("CPU exception ").s(idt::exception_name(f->vector)).s(" (vector ").u(f->vector).s(") at eip ").hex(f->eip);
+        reply::begin(false)
+            .str("error", message.c_str())
+            .str("event", "fault")
+            .u32("vector", f->vector)
+            .str("name", idt::exception_name(f->vector))
+            .hex32("error_code", f->error_code)
+            .hex32("eip", f->eip)
+            .hex32("cs", f->cs)
+            .hex32("eflags", f->eflags)
+            .hex32("eax", f->eax)
+            .hex32("ebx", f->ebx)
+            .hex32("ecx", f->ecx)
+            .hex32("edx", f->edx)
+            .hex32("esi", f->esi)
+            .hex32("edi", f->edi)
+            .hex32("ebp", f->ebp)
+            .hex32("esp", fault_esp)
+            .end();
+        serial::flush();
+        vga::text_write("modexlab: CPU exception ");
+        vga::text_write(idt::exception_name(f->vector));
+        vga::text_write(" (details on COM1); halted\n");
+    }
+    debug_exit::exit(debug_exit::FAULT_BASE + (f->vector & 31));
+    for (;;) asm volatile("cli; hlt");
+}

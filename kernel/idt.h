@@ -1,0 +1,25 @@
+// The IDT: CPU exceptions 0-31 go to a handler that reports them on COM1 and ends the run.
+#pragma once
+
+#include <stdint.h>
+
+namespace idt {
+
+// Register state pushed by the stubs in boot/isr.asm (pushad, then what the stub and the CPU pushed).
+struct ExceptionFrame {
+    uint32_t edi, esi, ebp, esp_pushad, ebx, edx, ecx, eax;
+    uint32_t vector, error_code;
+    uint32_t eip, cs, eflags;
+};
+
+void init();
+
+// Human name of an exception vector ("#UD", ...).
+const char* exception_name(uint32_t vector);
+
+}  // namespace idt
+
+// Deliberate fault sites in boot/isr.asm, for the `fault` command.
+extern "C" [[noreturn]] void fault_ud2();
+extern "C" [[noreturn]] void fault_divide();
+extern "C" [[noreturn]] void fault_gp();

@@ -1,0 +1,29 @@
+// Words of a command line: splitting on blanks and parsing numbers. Portable (kernel and host).
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+namespace lib {
+
+// A view of chars that is not NUL-terminated.
+struct StrView {
+    const char* data = nullptr;
+    size_t size = 0;
+
+    bool empty() const { return size == 0; }
+    bool equals(const char* s) const;
+    bool starts_with(const char* prefix) const;
+    StrView drop(size_t n) const { return n >= size ? StrView{data + size, 0} : StrView{data + n, size - n}; }
+};
+
+bool str_eq(const char* a, const char* b);
+
+// Splits `line` (NUL-terminated) on spaces and tabs into `words`; returns how many there were,
+// counting past `max_words` (only the first max_words are stored).
+size_t split_words(const char* line, StrView* words, size_t max_words);
+
+// Decimal, or hex after 0x. False on an empty word, any other character, or a value above 2^32-1.
+bool parse_u32(StrView word, uint32_t* out);
+
+}  // namespace lib

@@ -1,0 +1,106 @@
+// kernel_main: bring up COM1, the IDT and the timers, check the loader, read the boot options, then show and serve.
+#include <stdint.h>
+
+#include "drivers/cpu.h"
+#include "drivers/debug_exit.h"
+#include "drivers/pic.h"
+#include "drivers/serial.h"
+#include "drivers/timer.h"
+#include "drivers/vga.h"
+#include "kernel/idt.h"
+#include "kernel/lib/fmt.h"
+#include "kernel/lib/json.h"
+#include "kernel/lib/words.h"
+#include "kernel/multiboot.h"
+#include "kernel/server.h"
+#include "kernel/show.h"
+#include "kernel/version.h"
+
+namespace {
+
+enum class BootAction : uint8_t { Demo, Serve };
+
+struct BootOptions {
+    BootAction action = BootAction::Demo;
+    uint32_t interval_ms = 2000;
+    lib::StrView rejected[4];  // words we did not understand, reported in the boot line
+    size_t rejected_count = 0;
+};
+
+constexpr uint32_t MAX_INTERVAL_MS = 60000;
+
+bool has_equals(lib::StrView w) {
+    for (size_t i = 0; i < w.size; ++i)
+        if (w.data[i] == '=') return true;
+    return false;
+}
+
+// Options are key=value words (docs/protocol.md, "Boot options"). QEMU's -kernel puts the kernel's
+// path first and GRUB does not, so a first word without '=' is skipped as that path.
+BootOptions parse_options(const char* cmdline) {
+    BootOptions o;
+    lib::StrView words[16];
+    size_t n = lib::split_words(cmdline, words, 16);
+    if (n > 16) n = 16;
+    for (size_t i = (n > 0 && !has_equals(words[0])) ? 1 : 0; i < n; ++i) {
+        lib::StrView w = words[i];
+        uint32_t v;
+        if (w.equals("boot=demo")) o.action = BootAction::Demo;
+        else if (w.equals("boot=serve")) o.action = BootAction::Serve;
+        else if (w.starts_with("interval=") && lib::parse_u32(w.drop(9), &v) && v >= 1 && v <= MAX_INTERVAL_MS)
+            o.interval_ms = v;
+        else if (o.rejected_count < 4) o.rejected[o.rejected_count++] = w;
+    }
+    return o;
+}
+
+[[noreturn]] void panic(const char* message) {
+    lib::JsonLine(serial::sink()).str("event", "panic").str("error", message).end();
+    serial::flush();
+    vga::text_write("modexlab panic: ");
+    vga::text_write(message);
+    vga::text_write("\n");
+    debug_exit::exit(debug_exit::PANIC);
+    for (;;) asm volatile("cli; hlt");
+}
+
+}  // namespace
+
+extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* info) {
+    serial::init();
+    pic::remap_and_mask();
+    idt::init();
+
+    if (magic != multiboot::BOOTLOADER_MAGIC) {
+        lib::Fmt m;
+        m.s("bad multiboot magic ").hex(magic).s(" (expected ").hex(multiboot::BOOTLOADER_MAGIC).s("): not loaded by a Multiboot loader");
+        panic(m.c_str());
+    }
+
+    server::Context ctx;
+    if (info->flags & multiboot::INFO_CMDLINE) ctx.cmdline = reinterpret_cast<const char*>(info->cmdline);
+    BootOptions options = parse_options(ctx.cmdline);
+    ctx.cpu = cpu::detect();
+    ctx.tsc_hz = cpu::has_tsc(ctx.cpu) ? timer::calibrate_tsc_hz() : 0;
+    bool vbe_found = vga::disable_bochs_vbe();
+
+    lib::JsonLine boot(serial::sink());
+    boot.str("event", "boot").str("version", MODEXLAB_VERSION).str("cmdline", ctx.cmdline);
+    boot.str("boot", options.action == BootAction::Demo ? "demo" : "serve").u32("interval_ms", options.interval_ms);
+    boot.boolean("bochs_vbe_cleared", vbe_found).u64("tsc_hz", ctx.tsc_hz);
+    boot.begin_array("ignored_options");
+    for (size_t i = 0; i < options.rejected_count; ++i) {
+        lib::Fmt w;
+        w.s(options.rejected[i]);
+        boot.item_str(w.c_str());
+    }
+    boot.end_array().end();
+
+    vga::text_write("modexlab " MODEXLAB_VERSION ": serving commands on COM1 (115200 8N1)\n");
+    if (options.action == BootAction::Demo) {
+        vga::set_mode_x();
+        vga::load_palette(raster::palette(ctx.palette));
+        show::run(options.interval_ms);
+    }
+    server::run(ctx);
+}

@@ -1,0 +1,250 @@
+// Command server: line reader, dispatch table, one handler per command.
+#include "kernel/server.h"
+
+#include "drivers/debug_exit.h"
+#include "drivers/serial.h"
+#include "drivers/timer.h"
+#include "drivers/vga.h"
+#include "kernel/draw.h"
+#include "kernel/idt.h"
+#include "kernel/lib/encode.h"
+#include "kernel/lib/fmt.h"
+#include "kernel/lib/words.h"
+#include "kernel/raster/pattern.h"
+#include "kernel/reply.h"
+#include "kernel/version.h"
+
+namespace server {
+
+namespace {
+
+using lib::StrView;
+
+constexpr size_t MAX_LINE = 255;  // characters, without the newline
+constexpr size_t MAX_WORDS = 8;
+
+struct Command {
+    const char* name;
+    const char* usage;
+    size_t min_args, max_args;
+    void (*handler)(Context& ctx, const StrView* args, size_t nargs);
+};
+
+uint8_t g_readback[vga::MAX_PIXELS];
+
+void usage_error(const Command& c) {
+    lib::Fmt m;
+    m.s("usage: ").s(c.usage);
+    reply::error(c.name, m.c_str());
+}
+
+// Checks that a graphics mode is on and `word` names one of its pages.
+bool parse_page(const char* cmd, StrView word, int* page) {
+    if (vga::page_count() == 0) {
+        reply::error(cmd, "no graphics mode: send 'mode modex' or 'mode 13h' first");
+        return false;
+    }
+    uint32_t p;
+    if (!lib::parse_u32(word, &p) || p >= uint32_t(vga::page_count())) {
+        lib::Fmt m;
+        m.s("bad page '").s(word).s("': mode ").s(vga::mode_name(vga::mode())).s(" has pages 0..").u(uint32_t(vga::page_count() - 1));
+        reply::error(cmd, m.c_str());
+        return false;
+    }
+    *page = int(p);
+    return true;
+}
+
+void cmd_hello(Context& ctx, const StrView*, size_t) {
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "hello").str("version", MODEXLAB_VERSION);
+    r.begin_object("cpu");
+    r.str("vendor", ctx.cpu.has_cpuid ? ctx.cpu.vendor : "unknown (no CPUID)");
+    r.u32("family", ctx.cpu.family).u32("model", ctx.cpu.model).u32("stepping", ctx.cpu.stepping);
+    r.begin_array("features");
+    for (int i = 0; i < cpu::FEATURE_COUNT; ++i)
+        if (cpu::has(ctx.cpu, cpu::FEATURES[i])) r.item_str(cpu::FEATURES[i].name);
+    r.end_array().end_object();
+    r.u64("tsc_hz", ctx.tsc_hz);
+    r.str("mode", vga::mode_name(vga::mode())).i32("page", vga::page_count() ? vga::shown_page() : -1);
+    r.str("palette", raster::palette_name(ctx.palette)).str("cmdline", ctx.cmdline);
+    r.end();
+}
+
+void cmd_help(Context&, const StrView*, size_t);
+
+void cmd_mode(Context& ctx, const StrView* args, size_t) {
+    uint64_t t0 = timer::rdtsc();
+    if (args[0].equals("13h")) vga::set_mode_13h();
+    else if (args[0].equals("modex")) vga::set_mode_x();
+    else {
+        lib::Fmt m;
+        m.s("unknown mode '").s(args[0]).s("' (modes: 13h, modex)");
+        reply::error("mode", m.c_str());
+        return;
+    }
+    vga::load_palette(raster::palette(ctx.palette));
+    uint64_t ticks = timer::rdtsc() - t0;
+    reply::begin(true)
+        .str("cmd", "mode")
+        .str("mode", vga::mode_name(vga::mode()))
+        .u32("width", vga::WIDTH)
+        .u32("height", uint32_t(vga::height()))
+        .u32("pages", uint32_t(vga::page_count()))
+        .u64("ticks", ticks)
+        .end();
+}
+
+void cmd_pattern(Context&, const StrView* args, size_t) {
+    raster::Pattern p;
+    if (!raster::pattern_from_name(args[0], &p)) {
+        lib::Fmt m;
+        m.s("unknown pattern '").s(args[0]).s("' (patterns: ramp, planes, grid, border)");
+        reply::error("pattern", m.c_str());
+        return;
+    }
+    int page;
+    if (!parse_page("pattern", args[1], &page)) return;
+    uint64_t t0 = timer::rdtsc();
+    draw::pattern(p, page);
+    uint64_t ticks = timer::rdtsc() - t0;
+    reply::begin(true).str("cmd", "pattern").str("pattern", raster::pattern_name(p)).u32("page", uint32_t(page)).u64("ticks", ticks).end();
+}
+
+void cmd_clear(Context&, const StrView* args, size_t nargs) {
+    int page;
+    if (!parse_page("clear", args[0], &page)) return;
+    uint32_t colour = 0;
+    if (nargs > 1 && (!lib::parse_u32(args[1], &colour) || colour > 255)) {
+        reply::error("clear", "bad colour: a palette index 0..255");
+        return;
+    }
+    vga::clear_page(page, uint8_t(colour));
+    reply::begin(true).str("cmd", "clear").u32("page", uint32_t(page)).u32("colour", colour).end();
+}
+
+void cmd_palette(Context& ctx, const StrView* args, size_t) {
+    raster::PaletteId id;
+    if (!raster::palette_from_name(args[0], &id)) {
+        lib::Fmt m;
+        m.s("unknown palette '").s(args[0]).s("' (palettes: default, gray)");
+        reply::error("palette", m.c_str());
+        return;
+    }
+    ctx.palette = id;
+    vga::load_palette(raster::palette(id));
+    reply::begin(true).str("cmd", "palette").str("palette", raster::palette_name(id)).end();
+}
+
+void cmd_flip(Context&, const StrView* args, size_t) {
+    int page;
+    if (!parse_page("flip", args[0], &page)) return;
+    bool retrace = vga::flip(page);
+    reply::begin(true).str("cmd", "flip").u32("page", uint32_t(page)).boolean("retrace", retrace).end();
+}
+
+void put_base64(void* encoder, uint8_t byte) { static_cast<lib::Base64Encoder*>(encoder)->put(byte); }
+
+void cmd_readback(Context&, const StrView* args, size_t) {
+    int page;
+    if (!parse_page("readback", args[0], &page)) return;
+    const uint32_t pixels = uint32_t(vga::WIDTH * vga::height());
+    vga::read_page(page, g_readback);
+    uint32_t crc = lib::crc32(0, g_readback, pixels);
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "readback").u32("page", uint32_t(page)).u32("width", vga::WIDTH).u32("height", uint32_t(vga::height()));
+    r.str("encoding", "packbits+base64").hex32("crc32", crc);
+    r.begin_raw_string("data");
+    lib::Base64Encoder b64(r.raw_sink());
+    size_t packed = lib::packbits_encode(g_readback, pixels, put_base64, &b64);
+    b64.finish();
+    r.end_raw_string();
+    r.u32("packed_bytes", uint32_t(packed)).end();
+}
+
+void cmd_fault(Context&, const StrView* args, size_t nargs) {
+    // The CPU exception's report is this command's reply (kernel/idt.cpp).
+    if (nargs == 0 || args[0].equals("ud")) fault_ud2();
+    else if (args[0].equals("de")) fault_divide();
+    else if (args[0].equals("gp")) fault_gp();
+    lib::Fmt m;
+    m.s("unknown fault '").s(args[0]).s("' (faults: ud, de, gp)");
+    reply::error("fault", m.c_str());
+}
+
+void cmd_exit(Context&, const StrView* args, size_t) {
+    uint32_t code;
+    if (!lib::parse_u32(args[0], &code) || code > debug_exit::MAX_USER_CODE) {
+        reply::error("exit", "bad code: 0..63 (QEMU then exits with status 2*CODE+1)");
+        return;
+    }
+    reply::begin(true).str("cmd", "exit").u32("code", code).end();
+    serial::flush();
+    debug_exit::exit(code);
+    // No isa-debug-exit device (a real PC): stop here.
+    vga::text_write("modexlab: exit; halted\n");
+    for (;;) asm volatile("cli; hlt");
+}
+
+constexpr Command COMMANDS[] = {
+    {"hello", "hello", 0, 0, cmd_hello},
+    {"help", "help", 0, 0, cmd_help},
+    {"mode", "mode 13h|modex", 1, 1, cmd_mode},
+    {"pattern", "pattern ramp|planes|grid|border PAGE", 2, 2, cmd_pattern},
+    {"clear", "clear PAGE [COLOUR]", 1, 2, cmd_clear},
+    {"palette", "palette default|gray", 1, 1, cmd_palette},
+    {"flip", "flip PAGE", 1, 1, cmd_flip},
+    {"readback", "readback PAGE", 1, 1, cmd_readback},
+    {"fault", "fault [ud|de|gp]", 0, 1, cmd_fault},
+    {"exit", "exit CODE", 1, 1, cmd_exit},
+};
+
+void cmd_help(Context&, const StrView*, size_t) {
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "help").begin_array("commands");
+    for (const Command& c : COMMANDS) r.item_str(c.usage);
+    r.end_array().end();
+}
+
+void dispatch(Context& ctx, const char* line) {
+    StrView words[MAX_WORDS];
+    size_t n = lib::split_words(line, words, MAX_WORDS);
+    if (n == 0) return;  // blank line: nothing to answer
+    for (const Command& c : COMMANDS) {
+        if (!words[0].equals(c.name)) continue;
+        size_t nargs = n - 1;
+        if (nargs < c.min_args || nargs > c.max_args) usage_error(c);
+        else c.handler(ctx, words + 1, nargs);
+        return;
+    }
+    lib::Fmt m;
+    m.s("unknown command '").s(words[0]).s("' (try 'help')");
+    reply::error("?", m.c_str());
+}
+
+}  // namespace
+
+void run(Context& ctx) {
+    char line[MAX_LINE + 1];
+    size_t len = 0;
+    bool too_long = false;
+    for (;;) {
+        char c = char(serial::read_byte());
+        if (c == '\r') continue;
+        if (c == '\n') {
+            line[len] = 0;
+            if (too_long) reply::error("?", "line too long (at most 255 characters)");
+            else dispatch(ctx, line);
+            len = 0;
+            too_long = false;
+        } else if (c == '\b' || c == 0x7F) {  // a person at a terminal
+            if (len) --len;
+        } else if (len < MAX_LINE) {
+            line[len++] = c;
+        } else {
+            too_long = true;
+        }
+    }
+}
+
+}  // namespace server

@@ -1,0 +1,14 @@
+// Decoding a `readback` reply: base64, then PackBits, then the CRC-32 check (docs/protocol.md).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "qemu/image.h"
+
+namespace harness {
+
+// Throws HarnessError when a field is missing, the encoding is unknown, the data does not decode
+// to exactly width x height indices, or the CRC-32 differs.
+IndexImage decode_readback(const nlohmann::json& reply);
+
+}  // namespace harness
