@@ -73,14 +73,17 @@ HLDLIBS := -lpng -lpthread
 
 HARNESS := $(HBUILD)/modexlab
 TESTS := $(HBUILD)/modexlab-tests
+# a Multiboot kernel that enters modexlab with a wrong magic (tests/fixtures)
+WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host run test deps clean
+.PHONY: all iso kernel host fixtures run test deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
 host: $(HARNESS) $(TESTS)
+fixtures: $(WRONG_MAGIC_LOADER)
 
 deps:
 	@missing=""; \
@@ -109,6 +112,11 @@ $(KBUILD)/%.asm.o: %.asm | deps
 	$(call say,NASM,$<)
 	$(Q)$(NASM) $(NASMFLAGS) -MD $(@:.o=.d) -MT $@ -MP $< -o $@
 
+$(WRONG_MAGIC_LOADER): $(KBUILD)/tests/fixtures/wrong_magic_loader.asm.o
+	$(call say,LD,$@)
+	$(Q)$(CROSS)ld -m elf_i386 -e start -Ttext=0x800000 -z noexecstack -o $@ $<
+	@grub-file --is-x86-multiboot $@ || { echo "$@: not a Multiboot v1 kernel"; rm -f $@; exit 1; }
+
 $(ISO): $(KERNEL) boot/grub.cfg
 	$(call say,ISO,$@)
 	$(Q)rm -rf $(BUILD)/isodir && mkdir -p $(BUILD)/isodir/boot/grub
@@ -130,11 +138,11 @@ $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 	$(Q)$(HCXX) -o $@ $^ -lgtest $(HLDLIBS)
 
 run: deps
-	@$(MAKE) all host
+	@$(MAKE) -s all host
 	$(HARNESS) run --kernel $(KERNEL) --out $(BUILD)/run
 
 test: deps
-	@$(MAKE) all host
+	@$(MAKE) -s all host fixtures
 	@tests/run $(TESTS)
 
 clean:

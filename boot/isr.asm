@@ -96,3 +96,23 @@ fault_gp:
     mov ds, ax
 global fault_gp_site
 fault_gp_site equ fault_gp.site
+
+; A triple fault: with an empty IDT, int3 raises #GP, which raises #DF, which shuts the CPU down.
+; Under QEMU -no-reboot that ends QEMU with status 0: the harness must count it as a failure.
+global fault_triple
+fault_triple:
+    lidt [empty_idtr]
+    int3
+
+; A hang: interrupts off, halted for good. The harness must notice the silence and kill QEMU.
+global fault_hang
+fault_hang:
+    cli
+.halt:
+    hlt
+    jmp .halt
+
+section .rodata
+empty_idtr:
+    dw 0
+    dd 0

@@ -11,6 +11,12 @@ struct ExceptionFrame {
     uint32_t vector, error_code;
     uint32_t eip, cs, eflags;
 };
+// isr_common pushes: CPU eflags/cs/eip, stub error code and vector, then pushad (eax first, edi last).
+static_assert(__builtin_offsetof(ExceptionFrame, eax) == 28);
+static_assert(__builtin_offsetof(ExceptionFrame, vector) == 32);
+static_assert(__builtin_offsetof(ExceptionFrame, error_code) == 36);
+static_assert(__builtin_offsetof(ExceptionFrame, eip) == 40);
+static_assert(sizeof(ExceptionFrame) == 52);
 
 void init();
 
@@ -23,3 +29,5 @@ const char* exception_name(uint32_t vector);
 extern "C" [[noreturn]] void fault_ud2();
 extern "C" [[noreturn]] void fault_divide();
 extern "C" [[noreturn]] void fault_gp();
+extern "C" [[noreturn]] void fault_triple();
+extern "C" [[noreturn]] void fault_hang();

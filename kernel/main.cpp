@@ -29,6 +29,16 @@ struct BootOptions {
 
 constexpr uint32_t MAX_INTERVAL_MS = 60000;
 
+// Set by a global constructor (a value the compiler cannot fold into static initialisation), so
+// kernel_main can tell that boot/entry.asm ran .init_array.
+constexpr uint32_t CONSTRUCTED = 0xC7057ED;
+volatile uint32_t g_constructor_input = CONSTRUCTED;
+struct ConstructorCheck {
+    uint32_t value;
+    ConstructorCheck() : value(g_constructor_input) {}
+};
+ConstructorCheck g_constructor_check;
+
 bool has_equals(lib::StrView w) {
     for (size_t i = 0; i < w.size; ++i)
         if (w.data[i] == '=') return true;
@@ -76,6 +86,8 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
         m.s("bad multiboot magic ").hex(magic).s(" (expected ").hex(multiboot::BOOTLOADER_MAGIC).s("): not loaded by a Multiboot loader");
         panic(m.c_str());
     }
+
+    if (g_constructor_check.value != CONSTRUCTED) panic("C++ global constructors did not run");
 
     server::Context ctx;
     if (info->flags & multiboot::INFO_CMDLINE) ctx.cmdline = reinterpret_cast<const char*>(info->cmdline);

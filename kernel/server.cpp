@@ -163,12 +163,15 @@ void cmd_readback(Context&, const StrView* args, size_t) {
 }
 
 void cmd_fault(Context&, const StrView* args, size_t nargs) {
-    // The CPU exception's report is this command's reply (kernel/idt.cpp).
+    // The CPU exception's report is this command's reply (kernel/idt.cpp); triple and hang test
+    // that the harness catches the failures a kernel cannot report.
     if (nargs == 0 || args[0].equals("ud")) fault_ud2();
     else if (args[0].equals("de")) fault_divide();
     else if (args[0].equals("gp")) fault_gp();
+    else if (args[0].equals("triple")) fault_triple();  // no reply: QEMU ends with status 0
+    else if (args[0].equals("hang")) fault_hang();      // no reply ever
     lib::Fmt m;
-    m.s("unknown fault '").s(args[0]).s("' (faults: ud, de, gp)");
+    m.s("unknown fault '").s(args[0]).s("' (faults: ud, de, gp, triple, hang)");
     reply::error("fault", m.c_str());
 }
 
@@ -195,7 +198,7 @@ constexpr Command COMMANDS[] = {
     {"palette", "palette default|gray", 1, 1, cmd_palette},
     {"flip", "flip PAGE", 1, 1, cmd_flip},
     {"readback", "readback PAGE", 1, 1, cmd_readback},
-    {"fault", "fault [ud|de|gp]", 0, 1, cmd_fault},
+    {"fault", "fault [ud|de|gp|triple|hang]", 0, 1, cmd_fault},
     {"exit", "exit CODE", 1, 1, cmd_exit},
 };
 

@@ -6,14 +6,14 @@
 #include <deque>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include "qemu/json.h"
 
 #include "qemu/channel.h"
 #include "qemu/error.h"
 
 namespace harness {
 
-using nlohmann::json;
+
 
 // The kernel reported a CPU exception (the reply line with "event":"fault").
 class KernelFault : public HarnessError {

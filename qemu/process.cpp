@@ -56,7 +56,7 @@ std::string ExitInfo::describe() const {
     if (status % 2 == 0) return "QEMU exit status " + std::to_string(status) + " (not from isa-debug-exit)";
     int value = status >> 1;
     std::string s = "QEMU exit status " + std::to_string(status) + ": ";
-    if (value <= 0x3F) return s + "kernel exit code " + std::to_string(value) + (value == 0 ? " (or a QEMU start-up error)" : "");
+    if (value <= 0x3F) return s + "kernel exit code " + std::to_string(value);
     if (value < 0x60) return s + "CPU exception, vector " + std::to_string(value - 0x40);
     if (value == 0x60) return s + "kernel panic";
     return s + "unknown isa-debug-exit value " + std::to_string(value);

@@ -5,13 +5,13 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include "qemu/json.h"
 
 #include "qemu/channel.h"
 
 namespace harness {
 
-using nlohmann::json;
+
 
 // What one QMP line is: the greeting, a command's return or error, or an asynchronous event.
 struct QmpMessage {

@@ -8,7 +8,7 @@
 
 namespace harness {
 
-IndexImage decode_readback(const nlohmann::json& reply) {
+IndexImage decode_readback(const json& reply) {
     for (const char* key : {"width", "height", "encoding", "crc32", "data"})
         if (!reply.contains(key)) throw HarnessError(std::string("readback reply without \"") + key + "\"");
     if (reply["encoding"] != "packbits+base64") throw HarnessError("readback: unknown encoding " + reply["encoding"].dump());

@@ -1,7 +1,7 @@
 // Decoding a `readback` reply: base64, then PackBits, then the CRC-32 check (docs/protocol.md).
 #pragma once
 
-#include <nlohmann/json.hpp>
+#include "qemu/json.h"
 
 #include "qemu/image.h"
 
@@ -9,6 +9,6 @@ namespace harness {
 
 // Throws HarnessError when a field is missing, the encoding is unknown, the data does not decode
 // to exactly width x height indices, or the CRC-32 differs.
-IndexImage decode_readback(const nlohmann::json& reply);
+IndexImage decode_readback(const json& reply);
 
 }  // namespace harness

@@ -51,7 +51,7 @@ std::string Session::context() const {
 void Session::fail(const std::string& what) {
     std::string status;
     if (qemu_) {
-        auto e = qemu_->poll_exit();
+        auto e = qemu_->wait_exit(std::chrono::seconds(1));  // a closed line usually means QEMU is ending
         status = e ? "\n" + e->describe() : "\nQEMU was still running: killed";
         qemu_->kill();
     }

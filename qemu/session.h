@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include "qemu/json.h"
 
 #include "qemu/image.h"
 #include "qemu/kernel_link.h"
@@ -17,7 +17,7 @@
 
 namespace harness {
 
-using nlohmann::json;
+
 
 // The build directory (absolute) the harness takes default images from and writes runs into.
 std::string build_dir();

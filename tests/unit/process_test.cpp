@@ -11,7 +11,7 @@
 namespace {
 
 using namespace harness;
-using nlohmann::json;
+
 
 bool has_pair(const std::vector<std::string>& a, const std::string& k, const std::string& v) {
     for (size_t i = 0; i + 1 < a.size(); ++i)

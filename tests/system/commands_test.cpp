@@ -1,0 +1,118 @@
+// System tests: bad input gets an error and the server carries on; faults, triple faults and hangs
+// are reported as the failures they are.
+#include "tests/system/system.h"
+
+namespace {
+
+using namespace systest;
+
+TEST(Commands, EveryMalformedCommandGetsAnErrorAndTheNextCommandWorks) {
+    SessionOptions o = options_for_this_test();
+    Session s(o);
+    const std::vector<std::pair<std::string, std::string>> bad = {
+        {"bogus", "unknown command 'bogus'"},
+        {"HELLO", "unknown command 'HELLO'"},
+        {"hello there", "usage: hello"},
+        {"pattern ramp 0", "no graphics mode"},
+        {"mode", "usage: mode 13h|modex"},
+        {"mode 12h", "unknown mode '12h'"},
+        {"mode modex", ""},  // (not an error: sets up the cases below)
+        {"pattern", "usage: pattern"},
+        {"pattern ramp", "usage: pattern"},
+        {"pattern spiral 0", "unknown pattern 'spiral'"},
+        {"pattern ramp 3", "bad page '3': mode modex has pages 0..2"},
+        {"pattern ramp -1", "bad page '-1'"},
+        {"pattern ramp 0x", "bad page '0x'"},
+        {"flip 4294967296", "bad page '4294967296'"},
+        {"readback", "usage: readback PAGE"},
+        {"clear 0 256", "bad colour"},
+        {"palette purple", "unknown palette 'purple'"},
+        {"fault sideways", "unknown fault 'sideways'"},
+        {"exit 64", "bad code"},
+        {"exit", "usage: exit CODE"},
+        {std::string(300, 'x'), "line too long"},
+        {"\x01\x02\xff\xfe", "unknown command"},
+    };
+    for (const auto& [line, error] : bad) {
+        json r = s.command(line);
+        if (error.empty()) {
+            EXPECT_TRUE(r["ok"].get<bool>());
+            continue;
+        }
+        EXPECT_FALSE(r["ok"].get<bool>()) << line;
+        EXPECT_NE(r.value("error", "").find(error), std::string::npos) << "for '" << line << "': " << r.dump();
+        EXPECT_TRUE(s.ok("hello")["ok"].get<bool>()) << "the server carries on after '" << line << "'";
+    }
+    // blank lines and carriage returns are not commands; backspace edits the line
+    json r = s.raw("\r\n   \n\t\nhellx\bo\r\n");
+    EXPECT_EQ(r["cmd"], "hello");
+    s.ok("exit 63");
+    EXPECT_EQ(s.wait_exit().status, 127);
+}
+
+// A CPU exception is this command's reply, names the vector and the faulting EIP, and ends QEMU
+// with status 2 * (0x40 + vector) + 1.
+void expect_fault(const std::string& which, int vector, const std::string& name, const std::string& site, uint32_t error_code) {
+    Session s(options_for_this_test());
+    s.ok("hello");
+    uint32_t eip = kernel_symbol(site);
+    ASSERT_NE(eip, 0u) << site << " not in the kernel's symbols";
+    try {
+        s.command("fault " + which);
+        FAIL() << "fault " << which << " did not fault";
+    } catch (const KernelFault& f) {
+        const json& r = f.report();
+        EXPECT_EQ(r["seq"], 2) << "the fault report is the reply to the command";
+        EXPECT_EQ(r["vector"], vector);
+        EXPECT_EQ(r["name"], name);
+        char want[16];
+        std::snprintf(want, sizeof want, "0x%08x", eip);
+        EXPECT_EQ(r["eip"], want);
+        std::snprintf(want, sizeof want, "0x%08x", error_code);
+        EXPECT_EQ(r["error_code"], want);
+        for (const char* reg : {"eax", "ebx", "ecx", "edx", "esi", "edi", "ebp", "esp", "eflags", "cs"}) EXPECT_TRUE(r.contains(reg)) << reg;
+        EXPECT_NE(std::string(f.what()).find("CPU exception, vector " + std::to_string(vector)), std::string::npos) << f.what();
+    }
+    auto e = s.exit_info();
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->status, 2 * (0x40 + vector) + 1) << e->describe();
+}
+
+TEST(Commands, InvalidOpcodeFaultIsReported) { expect_fault("ud", 6, "#UD", "fault_ud2", 0); }
+TEST(Commands, DivideErrorIsReported) { expect_fault("de", 0, "#DE", "fault_divide_site", 0); }
+TEST(Commands, GeneralProtectionFaultIsReported) { expect_fault("gp", 13, "#GP", "fault_gp_site", 0x18); }
+
+TEST(Commands, ATripleFaultIsAFailureNotAPass) {
+    Session s(options_for_this_test());
+    try {
+        s.command("fault triple");
+        FAIL() << "a triple fault produced a reply";
+    } catch (const HarnessError& e) {
+        EXPECT_NE(std::string(e.what()).find("never a pass"), std::string::npos) << e.what();
+    }
+    auto e = s.exit_info();
+    ASSERT_TRUE(e);
+    EXPECT_EQ(e->status, 0);
+}
+
+TEST(Commands, AHangIsCaughtByTheTimeoutAndQemuIsKilled) {
+    SessionOptions o = options_for_this_test();
+    o.command_timeout = std::chrono::milliseconds(1500);
+    Session s(o);
+    auto t0 = std::chrono::steady_clock::now();
+    try {
+        s.command("fault hang");
+        FAIL() << "a hang produced a reply";
+    } catch (const HarnessError& e) {
+        std::string what = e.what();
+        EXPECT_NE(what.find("no reply to 'fault hang' within 1500 ms"), std::string::npos) << what;
+        EXPECT_NE(what.find("> fault hang"), std::string::npos) << "the last serial lines are shown: " << what;
+    }
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(10));
+    auto e = s.exit_info();
+    ASSERT_TRUE(e) << "QEMU must not be left running";
+    EXPECT_FALSE(e->exited);
+    EXPECT_EQ(e->signal, SIGKILL);
+}
+
+}  // namespace

@@ -1,0 +1,40 @@
+// Helpers for the QEMU system tests: sessions named after the running test, kernel symbols.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "qemu/session.h"
+
+namespace systest {
+
+using namespace harness;
+
+// Session options whose run directory (build/runs/...) is named after the current test.
+inline SessionOptions options_for_this_test() {
+    const testing::TestInfo* t = testing::UnitTest::GetInstance()->current_test_info();
+    SessionOptions o;
+    o.name = std::string(t->test_suite_name()) + "." + t->name();
+    for (char& c : o.name)
+        if (c == '/') c = '_';
+    return o;
+}
+
+// The address of a symbol in the kernel ELF (nm -P), or 0 when missing.
+inline uint32_t kernel_symbol(const std::string& name) {
+    std::string cmd = "nm -P " + build_dir() + "/kernel/modexlab.elf";
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return 0;
+    char sym[256], type[8];
+    unsigned long addr = 0, found = 0;
+    while (std::fscanf(p, "%255s %7s %lx%*[^\n]", sym, type, &addr) == 3)
+        if (name == sym) found = addr;
+    pclose(p);
+    return uint32_t(found);
+}
+
+inline const raster::Palette& default_palette() { return raster::palette(raster::PaletteId::Default); }
+
+}  // namespace systest

@@ -1,0 +1,105 @@
+// System tests: every pattern in every page, by screendump and by readback; flips; mode 13h; palettes.
+#include "tests/system/system.h"
+
+namespace {
+
+using namespace systest;
+
+TEST(Video, EveryPatternInEveryPageMatchesTheHostRendering) {
+    Session s(options_for_this_test());
+    json m = s.ok("mode modex");
+    EXPECT_EQ(m["width"], 320);
+    EXPECT_EQ(m["height"], 240);
+    EXPECT_EQ(m["pages"], 3);
+    for (int page = 0; page < 3; ++page) {
+        for (int i = 0; i < raster::PATTERN_COUNT; ++i) {
+            auto pattern = raster::Pattern(i);
+            std::string name = raster::pattern_name(pattern);
+            SCOPED_TRACE(name + " in page " + std::to_string(page));
+            IndexImage want = render_pattern(pattern, MODE_X);
+            s.ok("pattern " + name + " " + std::to_string(page));
+            json f = s.ok("flip " + std::to_string(page));
+            EXPECT_TRUE(f["retrace"].get<bool>());
+            std::string stem = name + "-page" + std::to_string(page);
+            IndexImage dump = s.screenshot(stem, MODE_X, default_palette());
+            Comparison by_dump = compare(dump, want);
+            EXPECT_TRUE(by_dump.equal()) << by_dump.summary() << "\n" << write_mismatch(s.run_dir(), stem, dump, want, default_palette());
+            Comparison by_readback = compare(s.readback(page), want);
+            EXPECT_TRUE(by_readback.equal()) << "readback: " << by_readback.summary();
+        }
+    }
+}
+
+TEST(Video, FlipShowsTheChosenPageAndPagesAreIndependent) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    s.ok("pattern ramp 0");
+    s.ok("pattern grid 1");
+    s.ok("flip 0");
+    EXPECT_TRUE(compare(s.screenshot("flip0", MODE_X, default_palette()), render_pattern(raster::Pattern::Ramp, MODE_X)).equal());
+    s.ok("flip 1");
+    IndexImage shown = s.screenshot("flip1", MODE_X, default_palette());
+    EXPECT_TRUE(compare(shown, render_pattern(raster::Pattern::Grid, MODE_X)).equal()) << "the flip changed the screendump";
+    s.ok("pattern border 2");  // drawing into a hidden page leaves the shown one alone
+    EXPECT_TRUE(compare(s.screenshot("hidden-draw", MODE_X, default_palette()), shown).equal());
+    EXPECT_TRUE(compare(s.readback(0), render_pattern(raster::Pattern::Ramp, MODE_X)).equal());
+    s.ok("clear 1 9");
+    IndexImage cleared = s.screenshot("cleared", MODE_X, default_palette());
+    EXPECT_EQ(std::count(cleared.index.begin(), cleared.index.end(), 9), 320 * 240);
+    s.ok("flip 2");
+    EXPECT_TRUE(compare(s.screenshot("flip2", MODE_X, default_palette()), render_pattern(raster::Pattern::Border, MODE_X)).equal());
+    EXPECT_EQ(s.ok("hello")["page"], 2);
+}
+
+TEST(Video, Mode13hIsLinear320x200WithOnePage) {
+    Session s(options_for_this_test());
+    json m = s.ok("mode 13h");
+    EXPECT_EQ(m["height"], 200);
+    EXPECT_EQ(m["pages"], 1);
+    s.ok("pattern border 0");
+    s.ok("flip 0");
+    RgbImage dump = s.screendump("border-13h");
+    EXPECT_EQ(dump.width, 640);
+    EXPECT_EQ(dump.height, 400);
+    EXPECT_FALSE(decode_screendump(dump, default_palette(), MODE_X).ok) << "a 13h screen is not Mode X";
+    DecodeResult d = decode_screendump(dump, default_palette(), MODE_13H);
+    ASSERT_TRUE(d.ok) << d.error;
+    EXPECT_TRUE(compare(d.image, render_pattern(raster::Pattern::Border, MODE_13H)).equal());
+    s.ok("pattern ramp 0");
+    EXPECT_TRUE(compare(s.readback(0), render_pattern(raster::Pattern::Ramp, MODE_13H)).equal());
+    EXPECT_FALSE(s.command("pattern ramp 1")["ok"].get<bool>());
+    // and back to Mode X from 13h
+    s.ok("mode modex");
+    s.ok("pattern planes 1");
+    s.ok("flip 1");
+    EXPECT_TRUE(compare(s.screenshot("planes-after-13h", MODE_X, default_palette()), render_pattern(raster::Pattern::Planes, MODE_X)).equal());
+}
+
+TEST(Video, TheGrayPaletteReachesTheDac) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    s.ok("pattern ramp 0");
+    s.ok("flip 0");
+    EXPECT_EQ(s.ok("palette gray")["palette"], "gray");
+    const raster::Palette& gray = raster::palette(raster::PaletteId::Gray);
+    RgbImage dump = s.screendump("gray");
+    EXPECT_EQ(dump.rgb, screendump_of(render_pattern(raster::Pattern::Ramp, MODE_X), gray).rgb);
+    EXPECT_FALSE(decode_screendump(dump, gray, MODE_X).ok) << "64 grays cannot name 256 indices";
+    s.ok("palette default");
+    EXPECT_TRUE(compare(s.screenshot("default", MODE_X, default_palette()), render_pattern(raster::Pattern::Ramp, MODE_X)).equal());
+    // the palette survives a mode change
+    s.ok("palette gray");
+    s.ok("mode modex");
+    EXPECT_EQ(s.ok("hello")["palette"], "gray");
+}
+
+TEST(Video, ATextModeScreenIsNotModeX) {
+    Session s(options_for_this_test());
+    RgbImage text = s.screendump("text");
+    DecodeResult d = decode_screendump(text, default_palette(), MODE_X);
+    EXPECT_FALSE(d.ok);
+    EXPECT_NE(d.error.find("not the 640x480 of mode modex"), std::string::npos) << d.error;
+    EXPECT_FALSE(s.command("readback 0")["ok"].get<bool>()) << "no pages in text mode";
+}
+
+}  // namespace
