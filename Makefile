@@ -21,6 +21,7 @@ CROSS := $(if $(shell command -v i686-elf-g++ 2>/dev/null),i686-elf-,i686-linux-
 KCXX := $(CROSS)g++
 NASM := nasm
 HCXX := g++
+NPROC := $(shell nproc 2>/dev/null || echo 2)
 SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 
 # what must be on the machine -> the Debian package that brings it
@@ -92,9 +93,11 @@ deps:
 		case "$$f" in /*) [ -e "$$f" ] ;; *) command -v "$$f" >/dev/null ;; esac || missing="$$missing $$p"; \
 	done; \
 	if [ -n "$$missing" ]; then \
-		echo "deps: installing$$missing"; \
-		$(SUDO) apt-get update -qq && \
-		DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+		echo "deps: installing$$missing (log: $(BUILD)/deps.log)"; \
+		mkdir -p $(BUILD); \
+		{ $(SUDO) apt-get update -qq && \
+		  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
+		} >$(BUILD)/deps.log 2>&1 || { cat $(BUILD)/deps.log; echo "deps: apt-get failed"; exit 1; }; \
 	fi
 
 $(KERNEL): $(KERNEL_OBJS) boot/linker.ld
@@ -138,11 +141,11 @@ $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 	$(Q)$(HCXX) -o $@ $^ -lgtest $(HLDLIBS)
 
 run: deps
-	@$(MAKE) -s all host
+	@$(MAKE) -s -j$(NPROC) all host
 	$(HARNESS) run --kernel $(KERNEL) --out $(BUILD)/run
 
 test: deps
-	@$(MAKE) -s all host fixtures
+	@$(MAKE) -s -j$(NPROC) all host fixtures
 	@tests/run $(TESTS)
 
 clean:

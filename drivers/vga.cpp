@@ -179,16 +179,43 @@ void text_newline() {
 
 }  // namespace
 
-bool disable_bochs_vbe() {
-    io::outw(VBE_INDEX, 0);  // VBE_DISPI_INDEX_ID
+namespace {
+
+constexpr uint16_t VBE_ID = 0, VBE_XRES = 1, VBE_YRES = 2, VBE_BPP = 3, VBE_ENABLE = 4;
+constexpr uint16_t VBE_ENABLED = 0x01, VBE_LFB = 0x40;
+
+void vbe_write(uint16_t index, uint16_t value) {
+    io::outw(VBE_INDEX, index);
+    io::outw(VBE_DATA, value);
+}
+
+bool vbe_present() {
+    io::outw(VBE_INDEX, VBE_ID);
     uint16_t id = io::inw(VBE_DATA);
-    if (id < 0xB0C0 || id > 0xB0CF) return false;
-    io::outw(VBE_INDEX, 4);  // VBE_DISPI_INDEX_ENABLE
-    io::outw(VBE_DATA, 0);
+    return id >= 0xB0C0 && id <= 0xB0CF;
+}
+
+}  // namespace
+
+bool disable_bochs_vbe() {
+    if (!vbe_present()) return false;
+    vbe_write(VBE_ENABLE, 0);
+    return true;
+}
+
+bool enable_bochs_vbe_640x480() {
+    if (!vbe_present()) return false;
+    vbe_write(VBE_ENABLE, 0);
+    vbe_write(VBE_XRES, 640);
+    vbe_write(VBE_YRES, 480);
+    vbe_write(VBE_BPP, 8);
+    vbe_write(VBE_ENABLE, VBE_ENABLED | VBE_LFB);
+    g_mode = Mode::BochsVbe;
     return true;
 }
 
 void set_mode_13h() {
+    disable_bochs_vbe();
     apply(MODE_13H);
     attributes_on();
     clear_all_planes();
@@ -197,6 +224,7 @@ void set_mode_13h() {
 }
 
 void set_mode_x() {
+    disable_bochs_vbe();
     apply(MODE_13H);
     apply(MODE_X_FROM_13H);
     attributes_on();
@@ -212,6 +240,7 @@ const char* mode_name(Mode m) {
     case Mode::Text: return "text";
     case Mode::Mode13h: return "13h";
     case Mode::ModeX: return "modex";
+    case Mode::BochsVbe: return "bochs-vbe";
     }
     return "?";
 }

@@ -9,7 +9,7 @@
 
 namespace vga {
 
-enum class Mode : uint8_t { Text, Mode13h, ModeX };
+enum class Mode : uint8_t { Text, Mode13h, ModeX, BochsVbe };
 
 constexpr int WIDTH = 320;
 constexpr int MODEX_HEIGHT = 240;
@@ -21,7 +21,12 @@ constexpr int MAX_PIXELS = WIDTH * MODEX_HEIGHT;
 
 // Writes 0 to the Bochs VBE enable register if a Bochs/QEMU VBE adapter answers (a loader may have
 // left a VBE mode on; VGA register writes are ignored while it is). True when it was found.
+// The mode setters call it too.
 bool disable_bochs_vbe();
+
+// Switches on a 640x480x8 Bochs VBE mode, as a loader might leave it: a test aid for the above.
+// False when no Bochs VBE adapter answers.
+bool enable_bochs_vbe_640x480();
 
 void set_mode_13h();
 void set_mode_x();

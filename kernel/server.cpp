@@ -189,6 +189,18 @@ void cmd_exit(Context&, const StrView* args, size_t) {
     for (;;) asm volatile("cli; hlt");
 }
 
+void cmd_vbe(Context&, const StrView* args, size_t) {
+    if (!args[0].equals("on")) {
+        reply::error("vbe", "usage: vbe on");
+        return;
+    }
+    if (!vga::enable_bochs_vbe_640x480()) {
+        reply::error("vbe", "no Bochs VBE adapter (ports 0x1CE/0x1CF)");
+        return;
+    }
+    reply::begin(true).str("cmd", "vbe").str("mode", vga::mode_name(vga::mode())).u32("width", 640).u32("height", 480).u32("bpp", 8).end();
+}
+
 constexpr Command COMMANDS[] = {
     {"hello", "hello", 0, 0, cmd_hello},
     {"help", "help", 0, 0, cmd_help},
@@ -199,6 +211,7 @@ constexpr Command COMMANDS[] = {
     {"flip", "flip PAGE", 1, 1, cmd_flip},
     {"readback", "readback PAGE", 1, 1, cmd_readback},
     {"fault", "fault [ud|de|gp|triple|hang]", 0, 1, cmd_fault},
+    {"vbe", "vbe on", 1, 1, cmd_vbe},
     {"exit", "exit CODE", 1, 1, cmd_exit},
 };
 

@@ -19,22 +19,35 @@ Fmt& Fmt::s(StrView text) {
 }
 
 Fmt& Fmt::u(uint32_t value) {
-    char digits[10];
-    int n = 0;
-    do {
-        digits[n++] = char('0' + value % 10);
-        value /= 10;
-    } while (value);
-    while (n) put(digits[--n]);
+    char digits[DECIMAL_MAX_CHARS];
+    size_t n = format_decimal(value, digits);
+    for (size_t i = 0; i < n; ++i) put(digits[i]);
     return *this;
 }
 
 Fmt& Fmt::hex(uint32_t value) {
-    static constexpr char HEX[] = "0123456789abcdef";
-    put('0');
-    put('x');
-    for (int i = 0; i < 8; ++i) put(HEX[(value >> (28 - 4 * i)) & 15]);
+    char digits[HEX32_CHARS];
+    format_hex32(value, digits);
+    for (char c : digits) put(c);
     return *this;
+}
+
+size_t format_decimal(uint64_t value, char* out) {
+    char reversed[DECIMAL_MAX_CHARS];
+    size_t n = 0;
+    do {
+        reversed[n++] = char('0' + value % 10);
+        value /= 10;
+    } while (value);
+    for (size_t i = 0; i < n; ++i) out[i] = reversed[n - 1 - i];
+    return n;
+}
+
+void format_hex32(uint32_t value, char* out) {
+    static constexpr char HEX[] = "0123456789abcdef";
+    out[0] = '0';
+    out[1] = 'x';
+    for (int i = 0; i < 8; ++i) out[2 + i] = HEX[(value >> (28 - 4 * i)) & 15];
 }
 
 }  // namespace lib

@@ -8,6 +8,12 @@
 
 namespace lib {
 
+// Number text without libc, shared by Fmt and JsonLine. Not NUL-terminated.
+constexpr size_t DECIMAL_MAX_CHARS = 20;  // 2^64 - 1
+size_t format_decimal(uint64_t value, char* out);  // returns the number of chars written
+constexpr size_t HEX32_CHARS = 10;
+void format_hex32(uint32_t value, char* out);      // "0x" and 8 lower-case digits
+
 class Fmt {
 public:
     static constexpr size_t CAPACITY = 160;

@@ -1,13 +1,9 @@
 // JSON line writer: comma bookkeeping per nesting level, string escaping, numbers without libc.
 #include "kernel/lib/json.h"
 
-namespace lib {
+#include "kernel/lib/fmt.h"
 
-static size_t length(const char* s) {
-    size_t n = 0;
-    while (s[n]) ++n;
-    return n;
-}
+namespace lib {
 
 JsonLine::JsonLine(Sink out) : out_(out) {
     first_[0] = true;
@@ -22,7 +18,7 @@ void JsonLine::separator() {
 void JsonLine::key(const char* k) {
     separator();
     out_.put('"');
-    out_.write(k, length(k));
+    out_.write(k, c_length(k));
     out_.write("\":", 2);
 }
 
@@ -45,18 +41,13 @@ void JsonLine::escaped(const char* s, size_t n) {
 }
 
 void JsonLine::decimal(uint64_t v) {
-    char buf[20];
-    int n = 0;
-    do {
-        buf[n++] = char('0' + v % 10);
-        v /= 10;
-    } while (v);
-    while (n) out_.put(buf[--n]);
+    char digits[DECIMAL_MAX_CHARS];
+    out_.write(digits, format_decimal(v, digits));
 }
 
 JsonLine& JsonLine::str(const char* k, const char* value) {
     key(k);
-    escaped(value, length(value));
+    escaped(value, c_length(value));
     return *this;
 }
 
@@ -89,12 +80,11 @@ JsonLine& JsonLine::boolean(const char* k, bool value) {
 }
 
 JsonLine& JsonLine::hex32(const char* k, uint32_t value) {
-    static constexpr char HEX[] = "0123456789abcdef";
     key(k);
-    char buf[12] = {'"', '0', 'x'};
-    for (int i = 0; i < 8; ++i) buf[3 + i] = HEX[(value >> (28 - 4 * i)) & 15];
-    buf[11] = '"';
-    out_.write(buf, 12);
+    char text[HEX32_CHARS + 2] = {'"'};
+    format_hex32(value, text + 1);
+    text[HEX32_CHARS + 1] = '"';
+    out_.write(text, sizeof text);
     return *this;
 }
 
@@ -126,7 +116,7 @@ JsonLine& JsonLine::end_array() {
 
 JsonLine& JsonLine::item_str(const char* value) {
     separator();
-    escaped(value, length(value));
+    escaped(value, c_length(value));
     return *this;
 }
 

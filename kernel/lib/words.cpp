@@ -3,26 +3,21 @@
 
 namespace lib {
 
-static size_t length(const char* s) {
+size_t c_length(const char* s) {
     size_t n = 0;
     while (s[n]) ++n;
     return n;
 }
 
-bool str_eq(const char* a, const char* b) {
-    while (*a && *a == *b) ++a, ++b;
-    return *a == *b;
-}
-
 bool StrView::starts_with(const char* prefix) const {
-    size_t n = length(prefix);
+    size_t n = c_length(prefix);
     if (n > size) return false;
     for (size_t i = 0; i < n; ++i)
         if (data[i] != prefix[i]) return false;
     return true;
 }
 
-bool StrView::equals(const char* s) const { return length(s) == size && starts_with(s); }
+bool StrView::equals(const char* s) const { return c_length(s) == size && starts_with(s); }
 
 size_t split_words(const char* line, StrView* words, size_t max_words) {
     size_t count = 0;

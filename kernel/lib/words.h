@@ -17,7 +17,7 @@ struct StrView {
     StrView drop(size_t n) const { return n >= size ? StrView{data + size, 0} : StrView{data + n, size - n}; }
 };
 
-bool str_eq(const char* a, const char* b);
+size_t c_length(const char* s);  // strlen, for code that also builds on the host
 
 // Splits `line` (NUL-terminated) on spaces and tabs into `words`; returns how many there were,
 // counting past `max_words` (only the first max_words are stored).

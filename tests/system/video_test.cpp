@@ -93,6 +93,21 @@ TEST(Video, TheGrayPaletteReachesTheDac) {
     EXPECT_EQ(s.ok("hello")["palette"], "gray");
 }
 
+TEST(Video, ABochsVbeModeLeftOnIsSwitchedOffBeforeTheVgaIsProgrammed) {
+    Session s(options_for_this_test());
+    json v = s.ok("vbe on");  // as a loader that set a VBE mode might leave the adapter
+    EXPECT_EQ(v["mode"], "bochs-vbe");
+    RgbImage vbe = s.screendump("vbe");
+    EXPECT_EQ(vbe.width, 640) << "the VBE mode is on (text mode dumps 720x400)";
+    EXPECT_EQ(vbe.height, 480);
+    EXPECT_FALSE(s.command("pattern ramp 0")["ok"].get<bool>()) << "no VGA mode of ours is on";
+    s.ok("mode modex");
+    s.ok("pattern planes 2");
+    s.ok("flip 2");
+    IndexImage shot = s.screenshot("modex-after-vbe", MODE_X, default_palette());
+    EXPECT_TRUE(compare(shot, render_pattern(raster::Pattern::Planes, MODE_X)).equal());
+}
+
 TEST(Video, ATextModeScreenIsNotModeX) {
     Session s(options_for_this_test());
     RgbImage text = s.screendump("text");
