@@ -52,7 +52,9 @@ KERNEL_OBJS := $(KERNEL_ASM:%=$(KBUILD)/%.o) $(KERNEL_CXX:%=$(KBUILD)/%.o)
 
 WARNINGS := -Wall -Wextra -Werror -Wshadow -Wnon-virtual-dtor -Wcast-align -Wundef
 # '=': expanded when a recipe runs, after `deps` may have installed the cross compiler
-KCXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) \
+# -ffp-contract=off (both builds): no fused multiply-adds, so double arithmetic rounds the same on
+# the host (SSE2) and in the kernel (x87 at 53-bit precision, set in boot/entry.asm).
+KCXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off \
 	-ffreestanding -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit \
 	-fno-stack-protector -fno-pic -fno-pie -fno-asynchronous-unwind-tables -fno-omit-frame-pointer \
 	-nostdinc -isystem $(shell $(KCXX) -print-file-name=include 2>/dev/null) -I. -MMD -MP
@@ -65,15 +67,21 @@ NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error
 # portable kernel code the host builds too (no port I/O, no inline asm)
 PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp \
 	$(wildcard kernel/raster/*.cpp)
-HARNESS_CXX := $(filter-out qemu/main.cpp,$(wildcard qemu/*.cpp))
+HARNESS_CXX := $(filter-out qemu/main.cpp qemu/render_main.cpp,$(wildcard qemu/*.cpp))
 HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
 TEST_CXX := $(wildcard tests/*.cpp tests/unit/*.cpp tests/system/*.cpp)
 
-HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -I. -MMD -MP -DMODEXLAB_BUILD_DIR='"$(abspath $(BUILD))"'
+HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -ffp-contract=off -I. -MMD -MP -DMODEXLAB_BUILD_DIR='"$(abspath $(BUILD))"'
 HLDLIBS := -lpng -lpthread
 
 HARNESS := $(HBUILD)/modexlab
+RENDER := $(HBUILD)/modexlab-render
 TESTS := $(HBUILD)/modexlab-tests
+# the unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer
+SBUILD := $(BUILD)/host-san
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+SAN_TESTS := $(SBUILD)/modexlab-unit-tests-san
+UNIT_CXX := tests/main.cpp $(wildcard tests/unit/*.cpp)
 # a Multiboot kernel that enters modexlab with a wrong magic (tests/fixtures)
 WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
@@ -83,7 +91,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(TESTS)
+host: $(HARNESS) $(RENDER) $(TESTS) $(SAN_TESTS)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 deps:
@@ -136,6 +144,19 @@ $(HARNESS): $(HBUILD)/qemu/main.cpp.o $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
 
+$(RENDER): $(HBUILD)/qemu/render_main.cpp.o $(HARNESS_OBJS)
+	$(call say,LINK,$@)
+	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
+
+$(SBUILD)/%.cpp.o: %.cpp | deps
+	@mkdir -p $(@D)
+	$(call say,CXX-SAN,$<)
+	$(Q)$(HCXX) $(HCXXFLAGS) $(SAN_FLAGS) -c $< -o $@
+
+$(SAN_TESTS): $(UNIT_CXX:%=$(SBUILD)/%.o) $(HARNESS_CXX:%=$(SBUILD)/%.o) $(PORTABLE_CXX:%=$(SBUILD)/%.o)
+	$(call say,LINK,$@)
+	$(Q)$(HCXX) $(SAN_FLAGS) -o $@ $^ -lgtest $(HLDLIBS)
+
 $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ -lgtest $(HLDLIBS)
@@ -146,7 +167,7 @@ run: deps
 
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
-	@tests/run $(TESTS)
+	@tests/run $(SAN_TESTS) $(TESTS)
 
 clean:
 	rm -rf $(BUILD)

@@ -27,6 +27,9 @@ gdt_end:
 gdt_descriptor:
     dw gdt_end - gdt - 1
     dd gdt
+; x87 control word: all exceptions masked, precision control 10b (53-bit), round to nearest
+fpu_control:
+    dw 0x027F
 
 section .bss
 align 16
@@ -69,11 +72,13 @@ _start:
     push ebx
 
     ; x87: CR0.EM off (no emulation), MP and NE on (native #MF reporting), then a clean FPU state
+    ; with 53-bit precision: double arithmetic then rounds exactly as the host's SSE2 does
     mov eax, cr0
     and eax, ~(1 << 2)
     or eax, (1 << 1) | (1 << 5)
     mov cr0, eax
     fninit
+    fldcw [fpu_control]
 
     ; C++ global constructors, in link order
     mov esi, __init_array_start

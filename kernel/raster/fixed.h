@@ -1,0 +1,90 @@
+// Fixed-point numbers with the format in the type's name, and exact double-to-integer helpers.
+// Portable, freestanding: kernel and host compute the same bits.
+//
+// FixedN<F> holds a 32-bit two's-complement raw value r meaning r / 2^F.
+//   Fixed16_16: range [-32768, 32768 - 2^-16], step 2^-16      (texture coordinates)
+//   Fixed24_8:  range [-8388608, 8388608 - 2^-8], step 2^-8    (snapped screen coordinates)
+//   Fixed28_4:  range [-134217728, 134217728 - 2^-4], step 2^-4
+// Overflow behaviour, by operation:
+//   from_double, from_int, mul: round to nearest (ties up, toward +inf), then saturate to the range;
+//                               NaN becomes 0.
+//   add, sub:                   wrap modulo 2^32, as the asm inner loops do (no UB: done in uint32).
+//   floor_int:                  arithmetic shift, exact floor.
+#pragma once
+
+#include <stdint.h>
+
+namespace raster {
+
+// floor(x) as an integer, saturated to [INT32_MIN, INT32_MAX]; NaN gives 0.
+inline int32_t floor_i32(double x) {
+    if (!(x == x)) return 0;
+    if (x >= 2147483647.0) return INT32_MAX;
+    if (x <= -2147483648.0) return INT32_MIN;
+    auto t = int32_t(x);  // truncates toward zero
+    return double(t) > x ? t - 1 : t;
+}
+
+// floor(x) as a 64-bit integer, saturated to +-2^62; NaN gives 0.
+inline int64_t floor_i64(double x) {
+    constexpr double LIMIT = 4611686018427387904.0;  // 2^62
+    if (!(x == x)) return 0;
+    if (x >= LIMIT) return int64_t(1) << 62;
+    if (x <= -LIMIT) return -(int64_t(1) << 62);
+    auto t = int64_t(x);
+    return double(t) > x ? t - 1 : t;
+}
+
+// Floor division for a positive divisor: floor(n / d), d > 0.
+inline int64_t floor_div(int64_t n, int64_t d) {
+    int64_t q = n / d;
+    return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+template <int FRAC>
+struct FixedN {
+    static_assert(FRAC > 0 && FRAC < 31);
+    static constexpr int FRAC_BITS = FRAC;
+    static constexpr int32_t ONE = int32_t(1) << FRAC;
+    static constexpr double SCALE = double(ONE);
+
+    int32_t raw = 0;
+
+    static constexpr FixedN from_raw(int32_t r) { return FixedN{r}; }
+
+    static constexpr FixedN from_int(int32_t i) {
+        constexpr int32_t MAX_INT = INT32_MAX >> FRAC;
+        constexpr int32_t MIN_INT = INT32_MIN >> FRAC;
+        if (i > MAX_INT) return FixedN{INT32_MAX};
+        if (i < MIN_INT) return FixedN{INT32_MIN};
+        return FixedN{int32_t(uint32_t(i) << FRAC)};
+    }
+
+    static FixedN from_double(double x) { return FixedN{saturate(floor_i64(x * SCALE + 0.5))}; }
+
+    constexpr int32_t floor_int() const { return raw >> FRAC; }
+    constexpr double to_double() const { return double(raw) / SCALE; }
+
+    // wraps modulo 2^32
+    constexpr FixedN operator+(FixedN o) const { return FixedN{int32_t(uint32_t(raw) + uint32_t(o.raw))}; }
+    constexpr FixedN operator-(FixedN o) const { return FixedN{int32_t(uint32_t(raw) - uint32_t(o.raw))}; }
+
+    // rounds to nearest (ties up) and saturates
+    constexpr FixedN mul(FixedN o) const {
+        int64_t p = int64_t(raw) * int64_t(o.raw) + (int64_t(1) << (FRAC - 1));
+        return FixedN{saturate(p >> FRAC)};
+    }
+
+    constexpr bool operator==(const FixedN&) const = default;
+
+private:
+    static constexpr int32_t saturate(int64_t v) {
+        return v > INT32_MAX ? INT32_MAX : v < INT32_MIN ? INT32_MIN : int32_t(v);
+    }
+};
+
+using Fixed16_16 = FixedN<16>;
+using Fixed24_8 = FixedN<8>;
+using Fixed28_4 = FixedN<4>;
+
+}  // namespace raster

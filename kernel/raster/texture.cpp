@@ -1,0 +1,50 @@
+// Procedural textures and the names of texture kinds and wrap modes.
+#include "kernel/raster/texture.h"
+
+namespace raster {
+
+namespace {
+constexpr const char* KIND_NAMES[TEXTURE_KIND_COUNT] = {"checker", "grid", "xor", "gradient"};
+constexpr uint8_t WHITE = 15, BLUE = 1;
+constexpr int32_t CELL = 8;
+constexpr int32_t CUBE_FIRST = 16, CUBE_SIZE = 240;  // the default palette's colour cube
+}  // namespace
+
+const char* texture_kind_name(TextureKind k) { return KIND_NAMES[int(k)]; }
+
+bool texture_kind_from_name(lib::StrView name, TextureKind* out) {
+    for (int i = 0; i < TEXTURE_KIND_COUNT; ++i)
+        if (name.equals(KIND_NAMES[i])) {
+            *out = TextureKind(i);
+            return true;
+        }
+    return false;
+}
+
+const char* wrap_name(Wrap w) { return w == Wrap::Clamp ? "clamp" : "repeat"; }
+
+bool wrap_from_name(lib::StrView name, Wrap* out) {
+    if (name.equals("repeat")) *out = Wrap::Repeat;
+    else if (name.equals("clamp")) *out = Wrap::Clamp;
+    else return false;
+    return true;
+}
+
+void generate_texture(TextureKind kind, int32_t width, int32_t height, uint8_t* out) {
+    for (int32_t v = 0; v < height; ++v) {
+        for (int32_t u = 0; u < width; ++u) {
+            uint8_t c = 0;
+            switch (kind) {
+            case TextureKind::Checker: c = ((u / CELL + v / CELL) & 1) ? BLUE : WHITE; break;
+            case TextureKind::Grid:
+                c = (u % CELL == 0 || v % CELL == 0) ? WHITE : uint8_t(CUBE_FIRST + (u / CELL * 37 + v / CELL * 11) % CUBE_SIZE);
+                break;
+            case TextureKind::Xor: c = uint8_t((u ^ v) & 255); break;
+            case TextureKind::Gradient: c = uint8_t(CUBE_FIRST + (u * 12 / width) * 20 + (v * 20 / height)); break;
+            }
+            out[v * width + u] = c;
+        }
+    }
+}
+
+}  // namespace raster

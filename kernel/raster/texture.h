@@ -1,0 +1,48 @@
+// 8-bit indexed textures (1..1024 texels a side), repeat or clamp, and the procedural ones.
+// Every texel read goes through texel(), which stays inside the texture for any coordinates.
+#pragma once
+
+#include <stdint.h>
+
+#include "kernel/lib/words.h"
+
+namespace raster {
+
+constexpr int32_t MAX_TEXTURE_SIZE = 1024;
+
+enum class Wrap : uint8_t { Repeat, Clamp };
+
+struct Texture {
+    const uint8_t* texels = nullptr;  // row-major, width bytes a row
+    int32_t width = 0, height = 0;
+    Wrap wrap = Wrap::Repeat;
+};
+
+inline int32_t wrap_coord(int32_t t, int32_t size, Wrap wrap) {
+    if (wrap == Wrap::Clamp) return t < 0 ? 0 : t >= size ? size - 1 : t;
+    int32_t m = t % size;
+    return m < 0 ? m + size : m;
+}
+
+// The texel holding texture coordinate (tu, tv) = (floor(u), floor(v)).
+inline uint8_t texel(const Texture& t, int32_t tu, int32_t tv) {
+    return t.texels[wrap_coord(tv, t.height, t.wrap) * t.width + wrap_coord(tu, t.width, t.wrap)];
+}
+
+enum class TextureKind : uint8_t { Checker, Grid, Xor, Gradient };
+constexpr int TEXTURE_KIND_COUNT = 4;
+
+const char* texture_kind_name(TextureKind k);
+bool texture_kind_from_name(lib::StrView name, TextureKind* out);
+const char* wrap_name(Wrap w);
+bool wrap_from_name(lib::StrView name, Wrap* out);
+
+// Fills width x height texels (palette indices of the default palette):
+//   checker:  8x8-texel squares, white (15) and blue (1)
+//   grid:     white (15) lines on texel rows and columns that are multiples of 8; each 8x8 cell
+//             inside has its own colour from the colour cube, so a wrong cell shows
+//   xor:      (u xor v) mod 256
+//   gradient: colour-cube entries, 12 steps across u and 20 down v
+void generate_texture(TextureKind kind, int32_t width, int32_t height, uint8_t* out);
+
+}  // namespace raster

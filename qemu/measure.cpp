@@ -1,0 +1,118 @@
+// Scene loading and the pictures the metrics compare.
+#include "qemu/measure.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "qemu/error.h"
+
+namespace harness {
+
+using namespace raster;
+
+LoadedScene make_loaded_scene(std::unique_ptr<Scene> scene, const std::string& name) {
+    LoadedScene s;
+    s.name = name;
+    s.scene = std::move(scene);
+    s.texels.resize(size_t(s.scene->texture_width) * size_t(s.scene->texture_height));
+    generate_texture(s.scene->texture_kind, s.scene->texture_width, s.scene->texture_height, s.texels.data());
+    s.texture = Texture{s.texels.data(), s.scene->texture_width, s.scene->texture_height, s.scene->wrap};
+    return s;
+}
+
+LoadedScene parse_scene_text(const std::string& text, const std::string& name) {
+    auto scene = std::make_unique<Scene>();
+    ParseError e;
+    if (!parse_scene(text.data(), text.size(), scene.get(), &e))
+        throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message);
+    return make_loaded_scene(std::move(scene), name);
+}
+
+LoadedScene load_scene_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw HarnessError(path + ": cannot open");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return parse_scene_text(ss.str(), path);
+}
+
+Picture::Picture(int32_t width, int32_t height)
+    : index(size_t(width) * size_t(height)), coverage(index.size()), tu(index.size()), tv(index.size()) {
+    view = PixelImage{width, height, index.data(), coverage.data(), tu.data(), tv.data()};
+    clear_pixel_image(view, BACKGROUND);
+}
+
+std::unique_ptr<Picture> render_reference(const LoadedScene& s) {
+    auto p = std::make_unique<Picture>(SCREEN_WIDTH, SCREEN_HEIGHT);
+    reference_scene(*s.scene, s.texture, p->view);
+    return p;
+}
+
+namespace {
+
+std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper& mapper, Axis axis, RenderStats* stats) {
+    std::vector<uint8_t> pixels(SCREEN_PIXELS, BACKGROUND);
+    Target t = linear_target(pixels.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+    RenderStats st = render_scene(*s.scene, tex, mapper, axis, t);
+    if (stats) *stats = st;
+    return pixels;
+}
+
+}  // namespace
+
+IndexImage render_mapper(const LoadedScene& s, const Mapper& mapper, Axis axis, RenderStats* stats) {
+    return IndexImage{SCREEN_WIDTH, SCREEN_HEIGHT, draw(s, s.texture, mapper, axis, stats)};
+}
+
+std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const Mapper& mapper, Axis axis) {
+    auto p = std::make_unique<Picture>(SCREEN_WIDTH, SCREEN_HEIGHT);
+    std::vector<uint8_t> indices = draw(s, s.texture, mapper, axis, nullptr);
+    std::copy(indices.begin(), indices.end(), p->index.begin());
+
+    // texel coordinates: four renders with textures that hold their own coordinates
+    const int32_t w = s.texture.width, h = s.texture.height;
+    std::vector<uint8_t> coord(size_t(w) * size_t(h));
+    std::vector<uint8_t> parts[4];
+    for (int k = 0; k < 4; ++k) {
+        for (int32_t v = 0; v < h; ++v)
+            for (int32_t u = 0; u < w; ++u) {
+                int32_t c = k < 2 ? u : v;
+                coord[size_t(v) * size_t(w) + size_t(u)] = uint8_t(k % 2 == 0 ? c & 255 : c >> 8);
+            }
+        parts[k] = draw(s, Texture{coord.data(), w, h, s.texture.wrap}, mapper, axis, nullptr);
+    }
+    for (size_t i = 0; i < p->index.size(); ++i) {
+        p->tu[i] = parts[0][i] | (parts[1][i] << 8);
+        p->tv[i] = parts[2][i] | (parts[3][i] << 8);
+    }
+
+    // coverage counts: each polygon alone on a scratch surface, with a texture of ones
+    std::vector<uint8_t> scratch(SCREEN_PIXELS, 0);
+    const uint8_t one = 1;
+    Texture ones{&one, 1, 1, Wrap::Repeat};
+    Target t = linear_target(scratch.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+    const Vertex* v = s.scene->vertices;
+    RenderStats ignored;
+    for (int32_t i = 0; i < s.scene->polygon_count; ++i) {
+        int n = s.scene->polygon_size[i];
+        PolygonSetup setup;
+        if (draw_polygon(v, n, ones, mapper, axis, t, &ignored) == SetupStatus::Ok && setup_polygon(v, n, &setup) == SetupStatus::Ok) {
+            int64_t x0 = std::max<int64_t>(0, floor_div(setup.min_x, SUBPIXEL_ONE));
+            int64_t x1 = std::min<int64_t>(SCREEN_WIDTH - 1, floor_div(setup.max_x, SUBPIXEL_ONE));
+            int64_t y0 = std::max<int64_t>(0, floor_div(setup.min_y, SUBPIXEL_ONE));
+            int64_t y1 = std::min<int64_t>(SCREEN_HEIGHT - 1, floor_div(setup.max_y, SUBPIXEL_ONE));
+            for (int64_t y = y0; y <= y1; ++y)
+                for (int64_t x = x0; x <= x1; ++x) {
+                    uint8_t& c = scratch[size_t(y) * SCREEN_WIDTH + size_t(x)];
+                    if (c && p->coverage[size_t(y) * SCREEN_WIDTH + size_t(x)] < 255) ++p->coverage[size_t(y) * SCREEN_WIDTH + size_t(x)];
+                    c = 0;
+                }
+        }
+        v += n;
+    }
+    for (size_t i = 0; i < p->index.size(); ++i)
+        if (!p->coverage[i]) p->tu[i] = p->tv[i] = -1;
+    return p;
+}
+
+}  // namespace harness

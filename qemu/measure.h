@@ -1,0 +1,53 @@
+// Host-side rendering of screen-space scenes: loading scene files, the reference picture, a
+// mapper's picture, and what a mapper drew measured pixel by pixel for the accuracy metrics.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernel/raster/mappers.h"
+#include "kernel/raster/metrics.h"
+#include "kernel/raster/reference.h"
+#include "kernel/raster/render.h"
+#include "kernel/raster/scene.h"
+#include "qemu/image.h"
+
+namespace harness {
+
+struct LoadedScene {
+    std::string name;
+    std::unique_ptr<raster::Scene> scene;
+    std::vector<uint8_t> texels;
+    raster::Texture texture;
+};
+
+// Throws HarnessError "NAME:LINE: message" (the parser's message) on a bad scene.
+LoadedScene parse_scene_text(const std::string& text, const std::string& name);
+// A scene built in code: generates its texture.
+LoadedScene make_loaded_scene(std::unique_ptr<raster::Scene> scene, const std::string& name);
+LoadedScene load_scene_file(const std::string& path);
+
+// A PixelImage with its own storage.
+struct Picture {
+    std::vector<uint8_t> index, coverage;
+    std::vector<int32_t> tu, tv;
+    raster::PixelImage view;
+    Picture(int32_t width, int32_t height);
+    Picture(const Picture&) = delete;
+    Picture& operator=(const Picture&) = delete;
+};
+
+constexpr uint8_t BACKGROUND = 0;  // the colour a picture is cleared to before drawing
+
+std::unique_ptr<Picture> render_reference(const LoadedScene& s);
+
+// The mapper's picture on a cleared 320x240 linear surface (rows or columns); stats if wanted.
+IndexImage render_mapper(const LoadedScene& s, const raster::Mapper& mapper, raster::Axis axis, raster::RenderStats* stats = nullptr);
+
+// What the mapper drew: its palette indices, how often each pixel was drawn (one polygon at a
+// time on a scratch surface), and the texel it read (from renders with coordinate textures whose
+// texels hold their own coordinates, 8 bits at a time). Only the mapper's drawing path is used.
+std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const raster::Mapper& mapper, raster::Axis axis);
+
+}  // namespace harness

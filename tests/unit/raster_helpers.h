@@ -1,0 +1,96 @@
+// Test helpers for the raster core: random polygons, scenes built in code, per-pixel counts.
+#pragma once
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "kernel/raster/render.h"
+#include "kernel/raster/setup.h"
+#include "kernel/raster/walk.h"
+#include "qemu/measure.h"
+
+namespace rastertest {
+
+using namespace raster;
+using namespace harness;
+
+inline Vertex vertex_raw(int32_t x_raw, int32_t y_raw, double w = 1, double u = 0, double v = 0) {
+    return Vertex{Fixed24_8::from_raw(x_raw), Fixed24_8::from_raw(y_raw), w, u, v};
+}
+
+inline Vertex vertex(double x, double y, double w = 1, double u = 0, double v = 0) { return Vertex{snap(x), snap(y), w, u, v}; }
+
+// Random triangles around the screen (some partly outside), with perspective (w over a range of
+// `depth_ratio`) and texture coordinates up to `uv_range` texels.
+struct TriangleGen {
+    std::mt19937 rng;
+    double margin = 40, depth_ratio = 20, uv_range = 300;
+
+    explicit TriangleGen(uint32_t seed) : rng(seed) {}
+    double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
+    Vertex random_vertex() {
+        int32_t x = int32_t(uniform(-margin, SCREEN_WIDTH + margin) * 256);
+        int32_t y = int32_t(uniform(-margin, SCREEN_HEIGHT + margin) * 256);
+        double w = std::exp(uniform(0, std::log(depth_ratio))) * 0.5;
+        return vertex_raw(x, y, w, uniform(-uv_range, uv_range), uniform(-uv_range, uv_range));
+    }
+    // A triangle of moderate size near a random point (whole-screen triangles are rarer). One in
+    // three has its vertices on the half-pixel grid, so pixel centres fall exactly on its edges.
+    std::vector<Vertex> triangle() {
+        std::vector<Vertex> t;
+        bool on_grid = rng() % 3 == 0;
+        auto grid = [&](Vertex v) {
+            if (on_grid) v = Vertex{Fixed24_8::from_raw(v.x.raw & ~127), Fixed24_8::from_raw(v.y.raw & ~127), v.w, v.u, v.v};
+            return v;
+        };
+        if (rng() % 4 == 0) {
+            for (int i = 0; i < 3; ++i) t.push_back(grid(random_vertex()));
+            return t;
+        }
+        Vertex c = random_vertex();
+        double size = std::exp(uniform(std::log(0.5), std::log(120.0)));
+        for (int i = 0; i < 3; ++i) {
+            Vertex v = random_vertex();
+            v.x = Fixed24_8::from_raw(c.x.raw + int32_t(uniform(-size, size) * 256));
+            v.y = Fixed24_8::from_raw(c.y.raw + int32_t(uniform(-size, size) * 256));
+            t.push_back(grid(v));
+        }
+        return t;
+    }
+};
+
+inline std::unique_ptr<Scene> empty_scene(TextureKind kind, int32_t w, int32_t h, Wrap wrap) {
+    auto s = std::make_unique<Scene>();
+    s->texture_kind = kind;
+    s->texture_width = w;
+    s->texture_height = h;
+    s->wrap = wrap;
+    return s;
+}
+
+inline void add_polygon(Scene& s, const std::vector<Vertex>& p) {
+    s.polygon_size[s.polygon_count++] = uint8_t(p.size());
+    for (const Vertex& v : p) s.vertices[s.vertex_count++] = v;
+}
+
+// How often each screen pixel is visited by the walker's spans for these polygons.
+inline std::vector<int> walk_counts(const std::vector<std::vector<Vertex>>& polygons, Axis axis,
+                                    ClipRect clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT}) {
+    std::vector<int> counts(SCREEN_PIXELS, 0);
+    for (const auto& p : polygons) {
+        PolygonSetup s;
+        if (setup_polygon(p.data(), int(p.size()), &s) != SetupStatus::Ok) continue;
+        EdgeWalker w(s, axis, clip);
+        Span span;
+        while (w.next(&span))
+            for (int32_t k = 0; k < span.count; ++k) {
+                int32_t x = span.x + (axis == Axis::Rows ? k : 0), y = span.y + (axis == Axis::Columns ? k : 0);
+                counts[size_t(y) * SCREEN_WIDTH + size_t(x)] += 1;
+            }
+    }
+    return counts;
+}
+
+}  // namespace rastertest
