@@ -316,6 +316,54 @@ void read_page(int page, uint8_t* out) {
     }
 }
 
+void blit_planar(const uint8_t* planes, int page) {
+    volatile uint8_t* base = page_base(page);
+    for (int plane = 0; plane < 4; ++plane) {
+        set_map_mask(uint8_t(1u << plane));
+        const auto* src = reinterpret_cast<const uint32_t*>(planes + plane * raster::PLANE_BYTES);
+        auto* dst = reinterpret_cast<volatile uint32_t*>(base);
+        for (int32_t i = 0; i < raster::PLANE_BYTES / 4; ++i) dst[i] = src[i];
+    }
+}
+
+void blit_linear(const uint8_t* linear, int page) {
+    volatile uint8_t* base = page_base(page);
+    for (int plane = 0; plane < 4; ++plane) {
+        set_map_mask(uint8_t(1u << plane));
+        auto* dst = reinterpret_cast<volatile uint32_t*>(base);
+        // four pixels of the plane, 4 apart in the linear picture, make one dword
+        for (int32_t i = 0; i < raster::PLANE_BYTES / 4; ++i) {
+            const uint8_t* p = linear + 16 * i + plane;
+            dst[i] = uint32_t(p[0]) | uint32_t(p[4]) << 8 | uint32_t(p[8]) << 16 | uint32_t(p[12]) << 24;
+        }
+    }
+}
+
+namespace {
+
+struct PlaneSelector {
+    int current = -1;
+};
+PlaneSelector g_plane_selector;
+
+void select_plane(void* ctx, int plane) {
+    auto* s = static_cast<PlaneSelector*>(ctx);
+    if (plane == s->current) return;
+    set_map_mask(uint8_t(1u << plane));
+    s->current = plane;
+}
+
+}  // namespace
+
+raster::Target page_target(int page) {
+    raster::Target t = raster::planar_target(const_cast<uint8_t*>(page_base(page)));
+    t.plane_bytes = 0;  // every plane at the same address: the map mask picks the plane
+    g_plane_selector.current = -1;
+    t.select_plane = select_plane;
+    t.ctx = &g_plane_selector;
+    return t;
+}
+
 void text_write(const char* s) {
     if (g_mode != Mode::Text) return;
     if (!g_text_cleared) {

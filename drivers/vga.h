@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include "kernel/raster/palette.h"
+#include "kernel/raster/surface.h"
 
 namespace vga {
 
@@ -51,6 +52,14 @@ void clear_page(int page, uint8_t colour);
 
 // The page's pixels as palette indices, row-major, width x height() bytes into `out`.
 void read_page(int page, uint8_t* out);
+
+// Mode X blits from RAM into a page: one map-mask change per plane, 32-bit stores.
+// planes: four PLANE_BYTES planes (raster::planar_target's layout); linear: 320x240 bytes.
+void blit_planar(const uint8_t* planes, int page);
+void blit_linear(const uint8_t* linear, int page);
+
+// A raster target that draws columns straight into a Mode X page (the map mask follows the column).
+raster::Target page_target(int page);
 
 // Text-mode console at 0xB8000 (only while in text mode): for messages a person without a serial line sees.
 void text_write(const char* s);

@@ -11,7 +11,9 @@
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/words.h"
 #include "kernel/raster/pattern.h"
+#include "kernel/raster/mappers.h"
 #include "kernel/reply.h"
+#include "kernel/scenes.h"
 #include "kernel/version.h"
 
 namespace server {
@@ -201,6 +203,77 @@ void cmd_vbe(Context&, const StrView* args, size_t) {
     reply::begin(true).str("cmd", "vbe").str("mode", vga::mode_name(vga::mode())).u32("width", 640).u32("height", 480).u32("bpp", 8).end();
 }
 
+void cmd_scene(Context&, const StrView* args, size_t) {
+    uint32_t length, crc;
+    if (!lib::parse_u32(args[0], &length) || length == 0 || length > raster::MAX_SCENE_BYTES || !lib::parse_u32(args[1], &crc)) {
+        reply::error("scene", "usage: scene BYTES CRC32, then exactly BYTES bytes of scene text (1..1048576 bytes)");
+        return;
+    }
+    raster::ParseError e;
+    if (!scenes::upload(length, crc, &e)) {
+        lib::Fmt m;
+        if (e.line) m.s("line ").u(uint32_t(e.line)).s(": ");
+        m.s(e.message);
+        reply::begin(false).str("cmd", "scene").str("error", m.c_str()).u32("line", uint32_t(e.line)).end();
+        return;
+    }
+    const raster::Scene& sc = scenes::scene();
+    reply::begin(true)
+        .str("cmd", "scene")
+        .u32("bytes", length)
+        .u32("polygons", uint32_t(sc.polygon_count))
+        .u32("vertices", uint32_t(sc.vertex_count))
+        .str("texture", raster::texture_kind_name(sc.texture_kind))
+        .u32("texture_width", uint32_t(sc.texture_width))
+        .u32("texture_height", uint32_t(sc.texture_height))
+        .str("wrap", raster::wrap_name(sc.wrap))
+        .end();
+}
+
+void cmd_render(Context&, const StrView* args, size_t nargs) {
+    const raster::Mapper* mapper = raster::find_mapper(args[0]);
+    if (!mapper) {
+        lib::Fmt m;
+        m.s("unknown mapper '").s(args[0]).s("' (mappers:");
+        for (int i = 0; i < raster::MAPPER_COUNT; ++i) m.s(" ").s(raster::MAPPERS[i].name);
+        m.s(")");
+        reply::error("render", m.c_str());
+        return;
+    }
+    if (vga::mode() != vga::Mode::ModeX) {
+        reply::error("render", "render draws into Mode X pages: send 'mode modex' first");
+        return;
+    }
+    int page;
+    if (!parse_page("render", args[1], &page)) return;
+    scenes::Surface surface = scenes::Surface::Linear;
+    if (nargs > 2 && !scenes::surface_from_name(args[2], &surface)) {
+        reply::error("render", "unknown surface (linear: rows in RAM then blit; planar: columns in RAM then blit; vga: columns into the page)");
+        return;
+    }
+    if (!scenes::loaded()) {
+        reply::error("render", "no scene: upload one with 'scene BYTES CRC32' first");
+        return;
+    }
+    scenes::RenderResult r = scenes::render(*mapper, surface, page);
+    reply::begin(true)
+        .str("cmd", "render")
+        .str("mapper", mapper->name)
+        .u32("page", uint32_t(page))
+        .str("surface", scenes::surface_name(surface))
+        .str("walker", surface == scenes::Surface::Linear ? "rows" : "columns")
+        .u32("polygons", r.stats.polygons)
+        .u32("skipped", r.stats.skipped)
+        .u32("rejected", r.stats.rejected)
+        .u32("spans", r.stats.spans)
+        .u32("pixels", r.stats.pixels)
+        .u64("ticks", r.ticks_clear + r.ticks_draw + r.ticks_blit)
+        .u64("ticks_clear", r.ticks_clear)
+        .u64("ticks_draw", r.ticks_draw)
+        .u64("ticks_blit", r.ticks_blit)
+        .end();
+}
+
 constexpr Command COMMANDS[] = {
     {"hello", "hello", 0, 0, cmd_hello},
     {"help", "help", 0, 0, cmd_help},
@@ -211,6 +284,8 @@ constexpr Command COMMANDS[] = {
     {"flip", "flip PAGE", 1, 1, cmd_flip},
     {"readback", "readback PAGE", 1, 1, cmd_readback},
     {"fault", "fault [ud|de|gp|triple|hang]", 0, 1, cmd_fault},
+    {"scene", "scene BYTES CRC32 (then BYTES bytes of scene text)", 2, 2, cmd_scene},
+    {"render", "render MAPPER PAGE [linear|planar|vga]", 2, 3, cmd_render},
     {"vbe", "vbe on", 1, 1, cmd_vbe},
     {"exit", "exit CODE", 1, 1, cmd_exit},
 };

@@ -3,10 +3,13 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "qemu/error.h"
 #include "qemu/image.h"
 #include "qemu/session.h"
 
@@ -23,7 +26,8 @@ const char* USAGE =
     "       each screendump and readback must equal the host's rendering. Screenshots go to DIR\n"
     "       (default build/run).\n"
     "exec:  sends each COMMAND (one kernel command line, quote it) and prints the JSON replies;\n"
-    "       'screendump:NAME' saves a screendump as NAME.png in the run directory instead.\n"
+    "       'screendump:NAME' saves a screendump as NAME.png in the run directory instead;\n"
+    "       'scene:FILE' uploads a scene file (scene BYTES CRC32 and the bytes).\n"
     "       Long \"data\" fields are shortened unless --full.\n";
 
 struct Args {
@@ -157,7 +161,16 @@ int exec(Args& a) {
             std::printf("screendump %s/%s.png (%dx%d)\n", s.run_dir().c_str(), name.c_str(), img.width, img.height);
             continue;
         }
-        json reply = s.command(c);
+        json reply;
+        if (c.rfind("scene:", 0) == 0) {
+            std::ifstream in(c.substr(6), std::ios::binary);
+            if (!in) throw HarnessError("cannot open " + c.substr(6));
+            std::stringstream text;
+            text << in.rdbuf();
+            reply = s.upload_scene(text.str());
+        } else {
+            reply = s.command(c);
+        }
         std::printf("%s\n", shorten_data(reply, a.full).c_str());
         std::fflush(stdout);
         all_ok = all_ok && reply["ok"].get<bool>();

@@ -1,8 +1,10 @@
 // Session: boot, talk, snapshot, and on any failure kill QEMU and say what happened around it.
 #include "qemu/session.h"
 
+#include <cstdio>
 #include <filesystem>
 
+#include "kernel/lib/encode.h"
 #include "qemu/readback.h"
 
 #ifndef MODEXLAB_BUILD_DIR
@@ -86,6 +88,12 @@ json Session::raw(const std::string& bytes) {
         link_.send_raw(bytes);
         return link_.read_reply("raw input", options_.command_timeout);
     });
+}
+
+json Session::upload_scene(const std::string& text) {
+    char crc[16];
+    std::snprintf(crc, sizeof crc, "0x%08x", lib::crc32(0, reinterpret_cast<const uint8_t*>(text.data()), text.size()));
+    return raw("scene " + std::to_string(text.size()) + " " + crc + "\n" + text);
 }
 
 RgbImage Session::screendump(const std::string& name) {

@@ -49,6 +49,9 @@ public:
     // Sends bytes as they are (malformed input tests) and reads one reply.
     json raw(const std::string& bytes);
 
+    // `scene BYTES CRC32` followed by the text: the reply (ok true or false).
+    json upload_scene(const std::string& text);
+
     // QMP stop, screendump (PNG, saved as RUN_DIR/NAME.png), cont.
     RgbImage screendump(const std::string& name);
     // screendump, decoded to palette indices for `mode`; throws when it does not decode.

@@ -1,0 +1,114 @@
+// Scene upload and rendering in the kernel.
+#include "kernel/scenes.h"
+
+#include "drivers/serial.h"
+#include "drivers/timer.h"
+#include "drivers/vga.h"
+#include "kernel/lib/encode.h"
+#include "kernel/lib/fmt.h"
+#include "kernel/lib/mem.h"
+
+namespace scenes {
+
+namespace {
+
+constexpr uint32_t BYTE_TIMEOUT_MS = 5000;
+
+char g_upload[raster::MAX_SCENE_BYTES];
+raster::Scene g_parsed;     // parsed into here first, so a bad upload leaves the current scene alone
+raster::Scene g_scene;
+bool g_loaded = false;
+uint8_t g_texels[raster::MAX_TEXTURE_SIZE * raster::MAX_TEXTURE_SIZE];
+raster::Texture g_texture;
+alignas(4) uint8_t g_linear[raster::SCREEN_PIXELS];
+alignas(4) uint8_t g_planes[raster::SCREEN_PIXELS];
+
+bool byte_waiting(void*) { return serial::byte_ready(); }
+
+void set_error(raster::ParseError* e, const char* text) {
+    e->line = 0;
+    size_t i = 0;
+    for (; text[i] && i + 1 < sizeof e->message; ++i) e->message[i] = text[i];
+    e->message[i] = 0;
+}
+
+}  // namespace
+
+bool surface_from_name(lib::StrView name, Surface* out) {
+    if (name.equals("linear")) *out = Surface::Linear;
+    else if (name.equals("planar")) *out = Surface::Planar;
+    else if (name.equals("vga")) *out = Surface::Vga;
+    else return false;
+    return true;
+}
+
+const char* surface_name(Surface s) {
+    switch (s) {
+    case Surface::Linear: return "linear";
+    case Surface::Planar: return "planar";
+    case Surface::Vga: return "vga";
+    }
+    return "?";
+}
+
+bool upload(size_t length, uint32_t crc32, raster::ParseError* error) {
+    for (size_t i = 0; i < length; ++i) {
+        if (!serial::byte_ready() && !timer::wait_ms_or(BYTE_TIMEOUT_MS, byte_waiting, nullptr)) {
+            lib::Fmt m;
+            m.s("upload stalled: ").u(uint32_t(i)).s(" of ").u(uint32_t(length)).s(" bytes arrived");
+            set_error(error, m.c_str());
+            return false;
+        }
+        g_upload[i] = char(serial::read_byte());
+    }
+    uint32_t got = lib::crc32(0, reinterpret_cast<const uint8_t*>(g_upload), length);
+    if (got != crc32) {
+        lib::Fmt m;
+        m.s("checksum mismatch: the bytes have CRC-32 ").hex(got).s(", the command said ").hex(crc32);
+        set_error(error, m.c_str());
+        return false;
+    }
+    if (!raster::parse_scene(g_upload, length, &g_parsed, error)) return false;
+    memcpy(&g_scene, &g_parsed, sizeof g_scene);
+    raster::generate_texture(g_scene.texture_kind, g_scene.texture_width, g_scene.texture_height, g_texels);
+    g_texture = raster::Texture{g_texels, g_scene.texture_width, g_scene.texture_height, g_scene.wrap};
+    g_loaded = true;
+    return true;
+}
+
+bool loaded() { return g_loaded; }
+const raster::Scene& scene() { return g_scene; }
+
+RenderResult render(const raster::Mapper& mapper, Surface surface, int page) {
+    RenderResult r{};
+    uint64_t t0 = timer::rdtsc();
+    raster::Target target;
+    raster::Axis axis = raster::Axis::Columns;
+    switch (surface) {
+    case Surface::Linear:
+        memset(g_linear, 0, sizeof g_linear);
+        target = raster::linear_target(g_linear, raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT, raster::SCREEN_WIDTH);
+        axis = raster::Axis::Rows;
+        break;
+    case Surface::Planar:
+        memset(g_planes, 0, sizeof g_planes);
+        target = raster::planar_target(g_planes);
+        break;
+    case Surface::Vga:
+        vga::clear_page(page, 0);
+        target = vga::page_target(page);
+        break;
+    }
+    uint64_t t1 = timer::rdtsc();
+    r.stats = raster::render_scene(g_scene, g_texture, mapper, axis, target);
+    uint64_t t2 = timer::rdtsc();
+    if (surface == Surface::Linear) vga::blit_linear(g_linear, page);
+    if (surface == Surface::Planar) vga::blit_planar(g_planes, page);
+    uint64_t t3 = timer::rdtsc();
+    r.ticks_clear = t1 - t0;
+    r.ticks_draw = t2 - t1;
+    r.ticks_blit = t3 - t2;
+    return r;
+}
+
+}  // namespace scenes
