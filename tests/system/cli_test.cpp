@@ -1,0 +1,98 @@
+// The host tools as users run them: modexlab-render's output lines, files and error handling.
+#include "tests/system/system.h"
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace {
+
+using namespace systest;
+
+struct ToolRun {
+    int status;
+    std::string out;
+};
+
+ToolRun run(const std::string& args) {
+    std::string cmd = build_dir() + "/host/modexlab-render " + args + " 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+    int st = pclose(p);
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
+}
+
+std::map<std::string, std::string> keys(const std::string& out) {
+    std::map<std::string, std::string> k;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);) {
+        size_t sp = line.find(' ');
+        if (sp != std::string::npos) k[line.substr(0, sp)] = line.substr(sp + 1);
+    }
+    return k;
+}
+
+std::string tmp(const std::string& name) {
+    std::filesystem::create_directories(build_dir() + "/test-tmp/cli");
+    return build_dir() + "/test-tmp/cli/" + name;
+}
+
+TEST(RenderTool, ComparesAMapperWithTheReference) {
+    std::string png = tmp("affine.png"), diff = tmp("diff.png");
+    std::filesystem::remove(png);
+    std::filesystem::remove(diff);
+    ToolRun r = run("scenes/screen/floor-perspective.scene --mapper affine --out " + png + " --compare --diff " + diff);
+    ASSERT_EQ(r.status, 0) << r.out;
+    auto k = keys(r.out);
+    EXPECT_EQ(k["modexlab-render"], "1");
+    EXPECT_EQ(k["mapper"], "affine rows");
+    EXPECT_EQ(k["texture"], "checker 64x64 repeat");
+    EXPECT_EQ(k["polygons_drawn"], "2");
+    EXPECT_EQ(k["gaps"], "0");
+    EXPECT_EQ(k["overdraw"], "0");
+    EXPECT_EQ(k["pixels_drawn"], k["reference_pixels"]);
+    EXPECT_GT(std::stoi(k["max_texel_error"]), 10) << "a floor from depth 1 to 8 is far from affine";
+    for (const char* key : {"overlaps", "compared_pixels", "mean_texel_error", "share_exact", "share_within_one", "pixels_index_differs", "share_index_differs"})
+        EXPECT_TRUE(k.count(key)) << key;
+    RgbImage picture = load_image(png), difference = load_image(diff);
+    EXPECT_EQ(picture.width, 320);
+    EXPECT_EQ(picture.height, 240);
+    EXPECT_EQ(difference.width, 320);
+}
+
+TEST(RenderTool, TheExactMapperHasNoError) {
+    for (const char* axis : {"rows", "columns"}) {
+        ToolRun r = run(std::string("scenes/screen/tunnel.scene --mapper exact --axis ") + axis + " --out " + tmp("exact.png") + " --compare");
+        ASSERT_EQ(r.status, 0) << r.out;
+        auto k = keys(r.out);
+        EXPECT_EQ(k["max_texel_error"], "0");
+        EXPECT_EQ(k["pixels_index_differs"], "0");
+        EXPECT_EQ(k["share_exact"], "1.000000");
+    }
+    ToolRun ref = run("scenes/screen/tunnel.scene --mapper reference --out " + tmp("reference.png"));
+    ASSERT_EQ(ref.status, 0) << ref.out;
+    EXPECT_EQ(keys(ref.out)["mapper"], "reference");
+}
+
+TEST(RenderTool, BadInputGetsAClearError) {
+    ToolRun unknown = run("scenes/screen/tunnel.scene --mapper marble --out " + tmp("x.png"));
+    EXPECT_EQ(unknown.status, 2);
+    EXPECT_NE(unknown.out.find("unknown mapper 'marble' (mappers: affine exact, or reference)"), std::string::npos) << unknown.out;
+    EXPECT_EQ(run("scenes/screen/tunnel.scene --mapper exact").status, 2) << "no --out";
+    EXPECT_EQ(run("--mapper exact --out " + tmp("x.png")).status, 2) << "no scene";
+    std::string bad = tmp("bad.scene");
+    std::ofstream(bad) << "modexlab-scene 1\ntexture checker 64 64\ntriangle 1 2 3\n";
+    ToolRun parse = run(bad + " --mapper exact --out " + tmp("x.png"));
+    EXPECT_EQ(parse.status, 1);
+    EXPECT_NE(parse.out.find(bad + ":3: expected 15 numbers"), std::string::npos) << parse.out;
+    ToolRun missing = run(tmp("missing.scene") + " --mapper exact --out " + tmp("x.png"));
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_NE(missing.out.find("cannot open"), std::string::npos) << missing.out;
+}
+
+}  // namespace
