@@ -13,6 +13,7 @@ namespace scenes {
 namespace {
 
 constexpr uint32_t BYTE_TIMEOUT_MS = 5000;
+constexpr const char* SURFACE_NAMES[3] = {"linear", "planar", "vga"};  // in Surface's order
 
 char g_upload[raster::MAX_SCENE_BYTES];
 raster::Scene g_parsed;     // parsed into here first, so a bad upload leaves the current scene alone
@@ -35,21 +36,12 @@ void set_error(raster::ParseError* e, const char* text) {
 }  // namespace
 
 bool surface_from_name(lib::StrView name, Surface* out) {
-    if (name.equals("linear")) *out = Surface::Linear;
-    else if (name.equals("planar")) *out = Surface::Planar;
-    else if (name.equals("vga")) *out = Surface::Vga;
-    else return false;
-    return true;
+    int i = lib::find_name(name, SURFACE_NAMES, 3);
+    if (i >= 0) *out = Surface(i);
+    return i >= 0;
 }
 
-const char* surface_name(Surface s) {
-    switch (s) {
-    case Surface::Linear: return "linear";
-    case Surface::Planar: return "planar";
-    case Surface::Vga: return "vga";
-    }
-    return "?";
-}
+const char* surface_name(Surface s) { return SURFACE_NAMES[int(s)]; }
 
 bool upload(size_t length, uint32_t crc32, raster::ParseError* error) {
     for (size_t i = 0; i < length; ++i) {

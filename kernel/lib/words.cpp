@@ -19,6 +19,12 @@ bool StrView::starts_with(const char* prefix) const {
 
 bool StrView::equals(const char* s) const { return c_length(s) == size && starts_with(s); }
 
+int find_name(StrView word, const char* const* names, int count) {
+    for (int i = 0; i < count; ++i)
+        if (word.equals(names[i])) return i;
+    return -1;
+}
+
 size_t split_words(const char* line, StrView* words, size_t max_words) {
     size_t count = 0;
     const char* p = line;

@@ -23,6 +23,9 @@ size_t c_length(const char* s);  // strlen, for code that also builds on the hos
 // counting past `max_words` (only the first max_words are stored).
 size_t split_words(const char* line, StrView* words, size_t max_words);
 
+// The index of `word` in names[0..count), or -1: for enums named on command lines and in files.
+int find_name(StrView word, const char* const* names, int count);
+
 // Decimal, or hex after 0x. False on an empty word, any other character, or a value above 2^32-1.
 bool parse_u32(StrView word, uint32_t* out);
 

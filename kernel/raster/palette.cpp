@@ -41,13 +41,14 @@ constexpr Palette GRAY_PALETTE = make_gray();
 
 const Palette& palette(PaletteId id) { return id == PaletteId::Gray ? GRAY_PALETTE : DEFAULT_PALETTE; }
 
-const char* palette_name(PaletteId id) { return id == PaletteId::Gray ? "gray" : "default"; }
+constexpr const char* NAMES[PALETTE_COUNT] = {"default", "gray"};  // in PaletteId's order
+
+const char* palette_name(PaletteId id) { return NAMES[int(id)]; }
 
 bool palette_from_name(lib::StrView name, PaletteId* out) {
-    if (name.equals("default")) *out = PaletteId::Default;
-    else if (name.equals("gray")) *out = PaletteId::Gray;
-    else return false;
-    return true;
+    int i = lib::find_name(name, NAMES, PALETTE_COUNT);
+    if (i >= 0) *out = PaletteId(i);
+    return i >= 0;
 }
 
 }  // namespace raster

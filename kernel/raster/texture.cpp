@@ -5,6 +5,7 @@ namespace raster {
 
 namespace {
 constexpr const char* KIND_NAMES[TEXTURE_KIND_COUNT] = {"checker", "grid", "xor", "gradient"};
+constexpr const char* WRAP_NAMES[2] = {"repeat", "clamp"};  // in Wrap's order
 constexpr uint8_t WHITE = 15, BLUE = 1;
 constexpr int32_t CELL = 8;
 constexpr int32_t CUBE_FIRST = 16, CUBE_SIZE = 240;  // the default palette's colour cube
@@ -13,21 +14,17 @@ constexpr int32_t CUBE_FIRST = 16, CUBE_SIZE = 240;  // the default palette's co
 const char* texture_kind_name(TextureKind k) { return KIND_NAMES[int(k)]; }
 
 bool texture_kind_from_name(lib::StrView name, TextureKind* out) {
-    for (int i = 0; i < TEXTURE_KIND_COUNT; ++i)
-        if (name.equals(KIND_NAMES[i])) {
-            *out = TextureKind(i);
-            return true;
-        }
-    return false;
+    int i = lib::find_name(name, KIND_NAMES, TEXTURE_KIND_COUNT);
+    if (i >= 0) *out = TextureKind(i);
+    return i >= 0;
 }
 
-const char* wrap_name(Wrap w) { return w == Wrap::Clamp ? "clamp" : "repeat"; }
+const char* wrap_name(Wrap w) { return WRAP_NAMES[int(w)]; }
 
 bool wrap_from_name(lib::StrView name, Wrap* out) {
-    if (name.equals("repeat")) *out = Wrap::Repeat;
-    else if (name.equals("clamp")) *out = Wrap::Clamp;
-    else return false;
-    return true;
+    int i = lib::find_name(name, WRAP_NAMES, 2);
+    if (i >= 0) *out = Wrap(i);
+    return i >= 0;
 }
 
 void generate_texture(TextureKind kind, int32_t width, int32_t height, uint8_t* out) {
