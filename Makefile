@@ -36,31 +36,34 @@ DEPS := \
 	g++:g++ \
 	/usr/include/nlohmann/json.hpp:nlohmann-json3-dev \
 	/usr/include/png.h:libpng-dev \
-	/usr/include/gtest/gtest.h:libgtest-dev
-ifeq ($(CROSS),i686-linux-gnu-)
-DEPS += i686-linux-gnu-g++:g++-i686-linux-gnu
-endif
+	/usr/include/gtest/gtest.h:libgtest-dev \
+	/usr/src/googletest/googletest/src/gtest-all.cc:googletest \
+	i686-linux-gnu-g++:g++-i686-linux-gnu
 
 # ---- kernel ------------------------------------------------------------------------------------
 
 KERNEL := $(KBUILD)/modexlab.elf
 ISO := $(BUILD)/modexlab.iso
 
-KERNEL_ASM := boot/entry.asm boot/isr.asm
+LOOP_ASM := $(wildcard asm/*.asm)
+KERNEL_ASM := boot/entry.asm boot/isr.asm $(LOOP_ASM)
 KERNEL_CXX := $(wildcard kernel/*.cpp kernel/lib/*.cpp kernel/raster/*.cpp drivers/*.cpp)
 KERNEL_OBJS := $(KERNEL_ASM:%=$(KBUILD)/%.o) $(KERNEL_CXX:%=$(KBUILD)/%.o)
+# the argument-block offsets the NASM loops include, generated from kernel/raster/loops.h
+OFFSETS_INC := $(KBUILD)/gen/offsets.inc
 
 WARNINGS := -Wall -Wextra -Werror -Wshadow -Wnon-virtual-dtor -Wcast-align -Wundef
 # '=': expanded when a recipe runs, after `deps` may have installed the cross compiler
-# -ffp-contract=off (both builds): no fused multiply-adds, so double arithmetic rounds the same on
+# -ffp-contract=off (all builds): no fused multiply-adds, so double arithmetic rounds the same on
 # the host (SSE2) and in the kernel (x87 at 53-bit precision, set in boot/entry.asm).
-KCXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off \
+KCXXFLAGS_NODEP = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -DMODEXLAB_ASM_LOOPS \
 	-ffreestanding -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit \
 	-fno-stack-protector -fno-pic -fno-pie -fno-asynchronous-unwind-tables -fno-omit-frame-pointer \
-	-nostdinc -isystem $(shell $(KCXX) -print-file-name=include 2>/dev/null) -I. -MMD -MP
+	-nostdinc -isystem $(shell $(KCXX) -print-file-name=include 2>/dev/null) -I.
+KCXXFLAGS = $(KCXXFLAGS_NODEP) -MMD -MP
 KLDFLAGS := -m32 -nostdlib -static -no-pie -T boot/linker.ld -Wl,--build-id=none -Wl,-z,noexecstack \
 	-Wl,--fatal-warnings -Wl,--no-warn-rwx-segments
-NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error
+NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error -I$(KBUILD)/gen/
 
 # ---- host --------------------------------------------------------------------------------------
 
@@ -73,6 +76,16 @@ TEST_CXX := $(wildcard tests/*.cpp tests/unit/*.cpp tests/system/*.cpp)
 
 HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -ffp-contract=off -I. -MMD -MP -DMODEXLAB_BUILD_DIR='"$(abspath $(BUILD))"'
 HLDLIBS := -lpng -lpthread
+
+# 32-bit static host programs: the NASM loops against their C++ twins (tests/asm), with GoogleTest
+# built from Debian's sources for i686
+H32BUILD := $(BUILD)/host32
+H32CXX := i686-linux-gnu-g++
+GTEST_SRC := /usr/src/googletest/googletest
+H32CXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -DMODEXLAB_ASM_LOOPS -I. \
+	-isystem $(GTEST_SRC)/include -MMD -MP
+ASM_TESTS := $(H32BUILD)/modexlab-asm-tests
+ASM_TEST_CXX := tests/main.cpp $(wildcard tests/asm/*.cpp) kernel/lib/words.cpp kernel/lib/fmt.cpp $(wildcard kernel/raster/*.cpp)
 
 HARNESS := $(HBUILD)/modexlab
 RENDER := $(HBUILD)/modexlab-render
@@ -91,7 +104,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(TESTS) $(SAN_TESTS)
+host: $(HARNESS) $(RENDER) $(TESTS) $(SAN_TESTS) $(ASM_TESTS)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 deps:
@@ -117,6 +130,14 @@ $(KBUILD)/%.cpp.o: %.cpp | deps
 	@mkdir -p $(@D)
 	$(call say,KCXX,$<)
 	$(Q)$(KCXX) $(KCXXFLAGS) -c $< -o $@
+
+$(OFFSETS_INC): asm/offsets.cpp kernel/raster/loops.h | deps
+	@mkdir -p $(@D)
+	$(call say,GEN,$@)
+	$(Q)$(KCXX) $(KCXXFLAGS_NODEP) -S -o - asm/offsets.cpp | sed -n 's/.*@@@ \([A-Z0-9_]*\) \([0-9]*\).*/%define \1 \2/p' > $@
+	@test -s $@ || { echo "$@: no offsets generated"; rm -f $@; exit 1; }
+
+$(LOOP_ASM:%=$(KBUILD)/%.o): $(OFFSETS_INC)
 
 $(KBUILD)/%.asm.o: %.asm | deps
 	@mkdir -p $(@D)
@@ -157,6 +178,20 @@ $(SAN_TESTS): $(UNIT_CXX:%=$(SBUILD)/%.o) $(HARNESS_CXX:%=$(SBUILD)/%.o) $(PORTA
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) $(SAN_FLAGS) -o $@ $^ -lgtest $(HLDLIBS)
 
+$(H32BUILD)/%.cpp.o: %.cpp | deps
+	@mkdir -p $(@D)
+	$(call say,CXX32,$<)
+	$(Q)$(H32CXX) $(H32CXXFLAGS) -c $< -o $@
+
+$(H32BUILD)/gtest-all.o: | deps
+	@mkdir -p $(@D)
+	$(call say,CXX32,gtest-all.cc)
+	$(Q)$(H32CXX) -std=c++20 -m32 -O2 -isystem $(GTEST_SRC)/include -I$(GTEST_SRC) -c $(GTEST_SRC)/src/gtest-all.cc -o $@
+
+$(ASM_TESTS): $(ASM_TEST_CXX:%=$(H32BUILD)/%.o) $(LOOP_ASM:%=$(KBUILD)/%.o) $(H32BUILD)/gtest-all.o
+	$(call say,LINK,$@)
+	$(Q)$(H32CXX) -static -m32 -o $@ $^ -lpthread
+
 $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ -lgtest $(HLDLIBS)
@@ -167,7 +202,7 @@ run: deps
 
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
-	@tests/run $(SAN_TESTS) $(TESTS)
+	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(TESTS)
 
 clean:
 	rm -rf $(BUILD)

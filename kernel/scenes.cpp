@@ -71,7 +71,7 @@ bool upload(size_t length, uint32_t crc32, raster::ParseError* error) {
 bool loaded() { return g_loaded; }
 const raster::Scene& scene() { return g_scene; }
 
-RenderResult render(const raster::Mapper& mapper, Surface surface, int page) {
+RenderResult render(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant) {
     RenderResult r{};
     uint64_t t0 = timer::rdtsc();
     raster::Target target;
@@ -92,7 +92,7 @@ RenderResult render(const raster::Mapper& mapper, Surface surface, int page) {
         break;
     }
     uint64_t t1 = timer::rdtsc();
-    r.stats = raster::render_scene(g_scene, g_texture, mapper, axis, target);
+    r.stats = raster::render_scene(g_scene, g_texture, mapper, axis, target, variant);
     uint64_t t2 = timer::rdtsc();
     if (surface == Surface::Linear) vga::blit_linear(g_linear, page);
     if (surface == Surface::Planar) vga::blit_planar(g_planes, page);

@@ -32,6 +32,6 @@ struct RenderResult {
 };
 
 // Clears the surface to 0, draws the scene with `mapper`, and blits (unless drawn in place).
-RenderResult render(const raster::Mapper& mapper, Surface surface, int page);
+RenderResult render(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant);
 
 }  // namespace scenes

@@ -12,6 +12,7 @@
 #include "kernel/lib/words.h"
 #include "kernel/raster/pattern.h"
 #include "kernel/raster/mappers.h"
+#include "kernel/raster/selftest.h"
 #include "kernel/reply.h"
 #include "kernel/scenes.h"
 #include "kernel/version.h"
@@ -251,17 +252,44 @@ void cmd_render(Context&, const StrView* args, size_t nargs) {
         reply::error("render", "unknown surface (linear: rows in RAM then blit; planar: columns in RAM then blit; vga: columns into the page)");
         return;
     }
+    raster::Variant variant = raster::Variant::Asm;
+    if (nargs > 3) {
+        if (args[3].equals("twin")) variant = raster::Variant::Twin;
+        else if (!args[3].equals("asm")) {
+            reply::error("render", "unknown variant (asm: the NASM loop where there is one; twin: the C++ twin)");
+            return;
+        }
+    }
     if (!scenes::loaded()) {
         reply::error("render", "no scene: upload one with 'scene BYTES CRC32' first");
         return;
     }
-    scenes::RenderResult r = scenes::render(*mapper, surface, page);
+    const raster::Scene& sc = scenes::scene();
+    raster::Texture probe{nullptr, sc.texture_width, sc.texture_height, sc.wrap};
+    if (!raster::mapper_accepts(*mapper, probe)) {
+        lib::Fmt m;
+        m.s("mapper ").s(mapper->name).s(" cannot take this scene's ").u(uint32_t(sc.texture_width)).s("x").u(uint32_t(sc.texture_height)).s(" texture (needs:");
+        if (mapper->needs & raster::NEED_POW2) m.s(" power-of-two sizes");
+        if (mapper->needs & raster::NEED_WIDTH_256) m.s(" width 256");
+        m.s(")");
+        reply::error("render", m.c_str());
+        return;
+    }
+    raster::Axis axis = surface == scenes::Surface::Linear ? raster::Axis::Rows : raster::Axis::Columns;
+    if (!raster::mapper_walks(*mapper, axis)) {
+        lib::Fmt m;
+        m.s("mapper ").s(mapper->name).s(" does not walk ").s(axis == raster::Axis::Rows ? "rows (surface linear)" : "columns (surfaces planar, vga)");
+        reply::error("render", m.c_str());
+        return;
+    }
+    scenes::RenderResult r = scenes::render(*mapper, surface, page, variant);
     reply::begin(true)
         .str("cmd", "render")
         .str("mapper", mapper->name)
         .u32("page", uint32_t(page))
         .str("surface", scenes::surface_name(surface))
         .str("walker", surface == scenes::Surface::Linear ? "rows" : "columns")
+        .str("loop", raster::mapper_loop(*mapper, variant) == mapper->asm_loop && mapper->asm_loop ? "asm" : "twin")
         .u32("polygons", r.stats.polygons)
         .u32("skipped", r.stats.skipped)
         .u32("rejected", r.stats.rejected)
@@ -272,6 +300,60 @@ void cmd_render(Context&, const StrView* args, size_t nargs) {
         .u64("ticks_draw", r.ticks_draw)
         .u64("ticks_blit", r.ticks_blit)
         .end();
+}
+
+void cmd_mappers(Context&, const StrView*, size_t) {
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "mappers").begin_array("mappers");
+    for (int i = 0; i < raster::MAPPER_COUNT; ++i) {
+        const raster::Mapper& m = raster::MAPPERS[i];
+        r.begin_item_object().str("name", m.name).str("family", m.family).str("origin", m.origin).str("promise", m.promise);
+        r.begin_array("needs");
+        if (m.needs & raster::NEED_POW2) r.item_str("pow2");
+        if (m.needs & raster::NEED_WIDTH_256) r.item_str("width256");
+        r.end_array().begin_array("walkers");
+        if (m.axes & raster::AXIS_ROWS) r.item_str("rows");
+        if (m.axes & raster::AXIS_COLUMNS) r.item_str("columns");
+        r.end_array().boolean("asm", m.asm_loop != nullptr).end_object();
+    }
+    r.end_array().end();
+}
+
+alignas(4) uint8_t g_check_a[raster::CHECK_DST_BYTES];
+alignas(4) uint8_t g_check_b[raster::CHECK_DST_BYTES];
+uint8_t g_check_texels[raster::CHECK_TEXEL_BYTES];
+
+void cmd_selftest(Context&, const StrView* args, size_t nargs) {
+    uint32_t cases = 2000;
+    if (nargs > 0 && (!lib::parse_u32(args[0], &cases) || cases == 0 || cases > 1000000)) {
+        reply::error("selftest", "usage: selftest [CASES] (1..1000000, default 2000)");
+        return;
+    }
+    raster::CheckBuffers buffers{g_check_a, g_check_b, raster::CHECK_DST_BYTES, g_check_texels};
+    raster::LoopCheck results[16];
+    int n = 0;
+    bool all_equal = true;
+    uint64_t t0 = timer::rdtsc();
+    for (int i = 0; i < raster::CHECKED_LOOP_COUNT && n < 16; ++i) {
+        const raster::CheckedLoop& loop = raster::CHECKED_LOOPS[i];
+        if (!loop.asm_loop) continue;
+        results[n] = loop.check(loop, loop.asm_loop, 20261121, cases, buffers);
+        all_equal = all_equal && results[n].mismatches == 0;
+        ++n;
+    }
+    lib::JsonLine r = reply::begin(all_equal);
+    r.str("cmd", "selftest");
+    if (!all_equal) r.str("error", "a NASM loop differs from its C++ twin");
+    r.u32("cases", cases).u64("ticks", timer::rdtsc() - t0).begin_array("loops");
+    for (int i = 0; i < n; ++i)
+        r.begin_item_object()
+            .str("loop", results[i].loop)
+            .u32("cases", results[i].cases)
+            .u32("pixels", results[i].pixels)
+            .u32("mismatches", results[i].mismatches)
+            .u32("first_mismatch", results[i].first_mismatch)
+            .end_object();
+    r.end_array().end();
 }
 
 constexpr Command COMMANDS[] = {
@@ -285,7 +367,9 @@ constexpr Command COMMANDS[] = {
     {"readback", "readback PAGE", 1, 1, cmd_readback},
     {"fault", "fault [ud|de|gp|triple|hang]", 0, 1, cmd_fault},
     {"scene", "scene BYTES CRC32 (then BYTES bytes of scene text)", 2, 2, cmd_scene},
-    {"render", "render MAPPER PAGE [linear|planar|vga]", 2, 3, cmd_render},
+    {"render", "render MAPPER PAGE [linear|planar|vga] [asm|twin]", 2, 4, cmd_render},
+    {"mappers", "mappers", 0, 0, cmd_mappers},
+    {"selftest", "selftest [CASES]", 0, 1, cmd_selftest},
     {"vbe", "vbe on", 1, 1, cmd_vbe},
     {"exit", "exit CODE", 1, 1, cmd_exit},
 };

@@ -15,6 +15,11 @@ class SummaryListener : public testing::EmptyTestEventListener {
 }  // namespace
 
 int main(int argc, char** argv) {
+#if defined(__i386__)
+    // As the kernel does (boot/entry.asm): x87 at 53-bit precision, so doubles round as SSE2's.
+    const unsigned short control = 0x027F;
+    asm volatile("fldcw %0" : : "m"(control));
+#endif
     testing::InitGoogleTest(&argc, argv);
     testing::UnitTest::GetInstance()->listeners().Append(new SummaryListener);
     return RUN_ALL_TESTS();

@@ -114,6 +114,13 @@ JsonLine& JsonLine::end_array() {
     return *this;
 }
 
+JsonLine& JsonLine::begin_item_object() {
+    separator();
+    out_.put('{');
+    if (depth_ < MAX_DEPTH) first_[++depth_] = true;
+    return *this;
+}
+
 JsonLine& JsonLine::item_str(const char* value) {
     separator();
     escaped(value, c_length(value));

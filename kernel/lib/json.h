@@ -29,6 +29,7 @@ public:
     JsonLine& end_object();
     JsonLine& begin_array(const char* key);
     JsonLine& end_array();
+    JsonLine& begin_item_object();                     // an object as an array element
     JsonLine& item_str(const char* value);             // an array element
     JsonLine& item_u32(uint32_t value);
 

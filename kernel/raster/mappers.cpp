@@ -1,4 +1,4 @@
-// affine and exact, and the registry.
+// Our generic-walker mappers' span functions, and the registry.
 #include "kernel/raster/mappers.h"
 
 namespace raster {
@@ -16,38 +16,59 @@ Fixed16_16 start_coordinate(double t, int32_t size, Wrap wrap) {
     return Fixed16_16::from_double(t);
 }
 
-}  // namespace
-
-void affine_span(const PolygonSetup& setup, const Texture& tex, Axis axis, const Span& s, uint8_t* dst, int32_t stride) {
+// affine: u and v linear in screen space, stepped in 16.16 from their value at the span's first
+// pixel centre; texel = floor.
+void affine_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
+    const PolygonSetup& setup = c.setup;
     double x = centre_x(setup, s.x), y = centre_y(setup, s.y);
-    Fixed16_16 u = start_coordinate(setup.u.at(x, y), tex.width, tex.wrap);
-    Fixed16_16 v = start_coordinate(setup.v.at(x, y), tex.height, tex.wrap);
+    Fixed16_16 u = start_coordinate(setup.u.at(x, y), c.tex.width, c.tex.wrap);
+    Fixed16_16 v = start_coordinate(setup.v.at(x, y), c.tex.height, c.tex.wrap);
     double per_pixel = double(SUBPIXEL_ONE);
-    Fixed16_16 du = Fixed16_16::from_double((axis == Axis::Rows ? setup.u.gx : setup.u.gy) * per_pixel);
-    Fixed16_16 dv = Fixed16_16::from_double((axis == Axis::Rows ? setup.v.gx : setup.v.gy) * per_pixel);
+    Fixed16_16 du = Fixed16_16::from_double((c.axis == Axis::Rows ? setup.u.gx : setup.u.gy) * per_pixel);
+    Fixed16_16 dv = Fixed16_16::from_double((c.axis == Axis::Rows ? setup.v.gx : setup.v.gy) * per_pixel);
     for (int32_t n = 0; n < s.count; ++n) {
-        *dst = texel(tex, u.floor_int(), v.floor_int());
+        *dst = texel(c.tex, u.floor_int(), v.floor_int());
         dst += stride;
         u = u + du;
         v = v + dv;
     }
 }
 
-void exact_span(const PolygonSetup& setup, const Texture& tex, Axis axis, const Span& s, uint8_t* dst, int32_t stride) {
-    double x = centre_x(setup, s.x), y = centre_y(setup, s.y);
-    double& moving = axis == Axis::Rows ? x : y;
-    for (int32_t n = 0; n < s.count; ++n) {
-        int32_t tu, tv;
-        perspective_texel(setup, x, y, &tu, &tv);
-        *dst = texel(tex, tu, tv);
-        dst += stride;
-        moving += double(SUBPIXEL_ONE);  // exact: integers below 2^53
+// exact: the argument block for exact_loop / exact_loop_asm.
+void exact_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
+    const PolygonSetup& setup = c.setup;
+    ExactArgs a;
+    a.dst = dst;
+    a.stride = stride;
+    a.count = s.count;
+    a.texels = c.tex.texels;
+    a.width = c.tex.width;
+    a.height = c.tex.height;
+    a.clamp = c.tex.wrap == Wrap::Clamp;
+    a.reserved = 0;
+    a.x = centre_x(setup, s.x);
+    a.y = centre_y(setup, s.y);
+    a.step_x = c.axis == Axis::Rows ? double(SUBPIXEL_ONE) : 0.0;
+    a.step_y = c.axis == Axis::Rows ? 0.0 : double(SUBPIXEL_ONE);
+    const Plane* planes[3] = {&setup.q, &setup.pu, &setup.pv};
+    double* out[3] = {a.q, a.pu, a.pv};
+    for (int k = 0; k < 3; ++k) {
+        out[k][0] = planes[k]->a0;
+        out[k][1] = planes[k]->gx;
+        out[k][2] = planes[k]->gy;
     }
+    c.loop(&a);
 }
 
+}  // namespace
+
 const Mapper MAPPERS[] = {
-    {"affine", "exact coverage; u, v affine in screen space (16.16 steps), error grows with depth variation", affine_span},
-    {"exact", "equal to the reference: per-pixel perspective divide in double precision", exact_span},
+    {"affine", "ours", "textbook affine interpolation",
+     "exact coverage; u, v affine in screen space (16.16 steps): error grows with depth variation", NEED_NOTHING, AXIS_BOTH,
+     affine_span, nullptr, nullptr},
+    {"exact", "ours", "the reference's definition, per pixel",
+     "equal to the reference: per-pixel perspective divide in double precision", NEED_NOTHING, AXIS_BOTH, exact_span,
+     exact_loop, MODEXLAB_ASM(exact_loop_asm)},
 };
 const int MAPPER_COUNT = sizeof(MAPPERS) / sizeof(MAPPERS[0]);
 

@@ -1,33 +1,67 @@
-// The texture mappers written in C++ so far, in one registry. A mapper draws one span (a row or a
-// column run of pixels) of a set-up polygon; the walker and the target decide where.
+// The texture-mapper registry: every mapper in one table with what it needs and what it promises,
+// so the tests, the bench and the selection policy iterate one list. A mapper here draws the spans
+// (rows or columns) the edge walker yields; its inner loop may have a NASM twin (loops.h).
 #pragma once
 
 #include <stdint.h>
 
 #include "kernel/lib/words.h"
+#include "kernel/raster/loops.h"
 #include "kernel/raster/setup.h"
 #include "kernel/raster/texture.h"
 #include "kernel/raster/walk.h"
 
 namespace raster {
 
-// Draws span `s` (in `axis` direction) starting at dst, `stride` bytes between pixels.
-using SpanFn = void (*)(const PolygonSetup& setup, const Texture& tex, Axis axis, const Span& s, uint8_t* dst, int32_t stride);
+// What a mapper needs from the texture; the caller must not give it anything else.
+enum Need : uint32_t {
+    NEED_NOTHING = 0,
+    NEED_POW2 = 1 << 0,       // width and height powers of two
+    NEED_WIDTH_256 = 1 << 1,  // width exactly 256
+};
+
+// Which walkers a mapper works with.
+enum AxisSet : uint8_t { AXIS_ROWS = 1, AXIS_COLUMNS = 2, AXIS_BOTH = 3 };
+
+// Which implementation of the inner loop to run: the C++ twin, or the NASM loop where one exists
+// (builds without NASM, and mappers without a NASM loop, run the twin).
+enum class Variant : uint8_t { Twin, Asm };
+
+struct SpanContext {
+    const PolygonSetup& setup;
+    const Texture& tex;
+    Axis axis;
+    LoopFn loop;
+};
+
+// Draws span s starting at dst, `stride` bytes between pixels, with the context's loop.
+using SpanFn = void (*)(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
 
 struct Mapper {
     const char* name;
+    const char* family;   // "ours" or "classic"
+    const char* origin;   // where it comes from
     const char* promise;  // what it promises about accuracy
+    uint32_t needs;       // Need flags
+    uint8_t axes;         // AxisSet
     SpanFn span;
+    LoopFn twin;          // the C++ inner loop (nullptr: span does all the work itself)
+    LoopFn asm_loop;      // its NASM twin, or nullptr
 };
-
-// affine: u and v linear in screen space, stepped in 16.16 from their value at each span's first
-//         pixel centre; texel = floor. Exact coverage; texel error grows with depth variation.
-// exact:  perspective_texel() at every pixel: equal to the reference, pixel for pixel.
-void affine_span(const PolygonSetup& setup, const Texture& tex, Axis axis, const Span& s, uint8_t* dst, int32_t stride);
-void exact_span(const PolygonSetup& setup, const Texture& tex, Axis axis, const Span& s, uint8_t* dst, int32_t stride);
 
 extern const Mapper MAPPERS[];
 extern const int MAPPER_COUNT;
 const Mapper* find_mapper(lib::StrView name);
+
+inline bool mapper_accepts(const Mapper& m, const Texture& t) {
+    bool pow2 = (t.width & (t.width - 1)) == 0 && (t.height & (t.height - 1)) == 0;
+    if ((m.needs & NEED_POW2) && !pow2) return false;
+    if ((m.needs & NEED_WIDTH_256) && t.width != 256) return false;
+    return true;
+}
+
+inline bool mapper_walks(const Mapper& m, Axis axis) { return m.axes & (axis == Axis::Rows ? AXIS_ROWS : AXIS_COLUMNS); }
+
+inline LoopFn mapper_loop(const Mapper& m, Variant v) { return v == Variant::Asm && m.asm_loop ? m.asm_loop : m.twin; }
 
 }  // namespace raster

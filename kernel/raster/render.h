@@ -18,12 +18,14 @@ struct RenderStats {
     uint32_t pixels = 0;
 };
 
-// Draws one convex polygon. Returns the setup status; nothing is drawn unless it is Ok, or when
-// the target cannot take spans along `axis` (rows on a planar target).
+// Draws one convex polygon. Returns the setup status; nothing is drawn (and the polygon counts as
+// rejected) unless it is Ok, the target can take spans along `axis` (not rows on a planar
+// target), the mapper walks that axis and accepts the texture.
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
-                         Target& target, RenderStats* stats);
+                         Target& target, RenderStats* stats, Variant variant = Variant::Twin);
 
 // Draws every polygon of the scene in order.
-RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target);
+RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
+                         Variant variant = Variant::Twin);
 
 }  // namespace raster

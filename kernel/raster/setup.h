@@ -85,12 +85,17 @@ inline double centre_y(const PolygonSetup& s, int32_t y) { return double(int64_t
 
 // The exact texel at a pixel centre (X, Y relative to the reference vertex, subpixels): the
 // perspective-correct u = (u/w)/(1/w) and v = (v/w)/(1/w), floored. This is the reference's
-// definition; the `exact` mapper calls it too. In the kernel the x87 runs with 53-bit precision
-// (boot/entry.asm), so these double operations give the same bits as the host's SSE2.
+// definition; the `exact` mapper and its NASM twin compute exactly this. In the kernel the x87
+// runs with 53-bit precision (boot/entry.asm), so these double operations give the same bits as
+// the host's SSE2.
+inline void perspective_texel(const Plane& q, const Plane& pu, const Plane& pv, double x, double y, int32_t* tu, int32_t* tv) {
+    double qq = q.at(x, y);
+    *tu = floor_i32(pu.at(x, y) / qq);
+    *tv = floor_i32(pv.at(x, y) / qq);
+}
+
 inline void perspective_texel(const PolygonSetup& s, double x, double y, int32_t* tu, int32_t* tv) {
-    double q = s.q.at(x, y);
-    *tu = floor_i32(s.pu.at(x, y) / q);
-    *tv = floor_i32(s.pv.at(x, y) / q);
+    perspective_texel(s.q, s.pu, s.pv, x, y, tu, tv);
 }
 
 }  // namespace raster

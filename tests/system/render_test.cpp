@@ -167,3 +167,54 @@ TEST(Render, AStalledUploadTimesOutAndTheServerCarriesOn) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace systest;
+
+TEST(Mappers, TheKernelListsTheRegistry) {
+    Session s(options_for_this_test());
+    json r = s.ok("mappers");
+    ASSERT_EQ(r["mappers"].size(), size_t(raster::MAPPER_COUNT));
+    for (int i = 0; i < raster::MAPPER_COUNT; ++i) {
+        const json& m = r["mappers"][size_t(i)];
+        EXPECT_EQ(m["name"], raster::MAPPERS[i].name);
+        EXPECT_EQ(m["family"], raster::MAPPERS[i].family);
+        EXPECT_EQ(m["promise"], raster::MAPPERS[i].promise);
+        EXPECT_FALSE(m["walkers"].empty());
+    }
+}
+
+TEST(Mappers, TheKernelSelftestComparesEveryNasmLoopWithItsTwin) {
+    Session s(options_for_this_test());
+    json r = s.ok("selftest 3000");
+    ASSERT_FALSE(r["loops"].empty());
+    for (const json& loop : r["loops"]) {
+        EXPECT_EQ(loop["cases"], 3000) << loop.dump();
+        EXPECT_EQ(loop["mismatches"], 0) << loop.dump();
+        EXPECT_GT(loop["pixels"].get<uint32_t>(), 100000u) << loop.dump();
+    }
+    EXPECT_FALSE(s.command("selftest 0")["ok"].get<bool>());
+}
+
+TEST(Mappers, AsmAndTwinDrawTheSamePictureInTheKernel) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    ASSERT_TRUE(s.upload_scene(read_file("scenes/screen/polygon-12.scene"))["ok"].get<bool>());
+    json listed = s.ok("mappers")["mappers"];  // the kernel's registry knows which loops it has in NASM
+    int with_asm = 0;
+    for (const json& m : listed) {
+        std::string name = m["name"];
+        json a = s.ok("render " + name + " 0 vga asm");
+        EXPECT_EQ(a["loop"], m["asm"].get<bool>() ? "asm" : "twin") << name;
+        with_asm += m["asm"].get<bool>();
+        IndexImage by_asm = s.readback(0);
+        json t = s.ok(std::string("render ") + name + " 1 vga twin");
+        EXPECT_EQ(t["loop"], "twin");
+        EXPECT_TRUE(compare(s.readback(1), by_asm).equal()) << name;
+    }
+    EXPECT_GT(with_asm, 0);
+    EXPECT_FALSE(s.command("render exact 0 vga fastest")["ok"].get<bool>());
+}
+
+}  // namespace

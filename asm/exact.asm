@@ -1,0 +1,132 @@
+; exact_loop_asm: the exact mapper's inner loop with the x87 per-pixel divide; twin of
+; kernel/raster/exact.cpp (exact_loop), which it matches bit for bit: the same double operations
+; in the same order (the x87 runs at 53-bit precision), the same saturating floor, the same wrap.
+
+bits 32
+
+%include "offsets.inc"
+
+section .rodata
+align 8
+max_i32:    dq 2147483647.0         ; floor saturates to INT32_MAX at and above this
+min_i32:    dq -2147483648.0        ; and to INT32_MIN at and below this
+
+section .text
+
+; plane value (a0 + gy*y) + gx*x -> st0, for the plane at [ebx + %1]; x, y from the args block
+%macro PLANE 1
+    fld qword [ebx + EXACT_Y]
+    fmul qword [ebx + %1 + 16]      ; gy * y
+    fadd qword [ebx + %1]           ; a0 + gy*y
+    fld qword [ebx + EXACT_X]
+    fmul qword [ebx + %1 + 8]       ; gx * x
+    faddp st1, st0                  ; (a0 + gy*y) + gx*x
+%endmacro
+
+; floor of st0 (popped) -> eax, saturating, NaN -> 0; %1 is a unique label prefix
+%macro FLOOR_I32 1
+    fucomi st0, st0
+    jp %1_nan                       ; unordered: NaN
+    fld qword [max_i32]
+    fcomip st0, st1
+    jbe %1_max                      ; 2147483647.0 <= x
+    fld qword [min_i32]
+    fcomip st0, st1
+    jae %1_min                      ; -2147483648.0 >= x
+    fist dword [esp]                ; nearest integer n (the control word rounds to nearest)
+    fild dword [esp]
+    fcomip st0, st1                 ; n > x: one too many
+    fstp st0
+    mov eax, [esp]
+    jbe %1_done
+    dec eax
+    jmp %1_done
+%1_nan:
+    fstp st0
+    xor eax, eax
+    jmp %1_done
+%1_max:
+    fstp st0
+    mov eax, 0x7FFFFFFF
+    jmp %1_done
+%1_min:
+    fstp st0
+    mov eax, 0x80000000
+%1_done:
+%endmacro
+
+; wrap or clamp eax into [0, %1) where %1 is a register or memory size; clobbers edx
+%macro WRAP 2
+    cmp dword [ebx + EXACT_CLAMP], 0
+    jne %2_clamp
+    cdq
+    idiv dword %1                   ; edx = remainder, with the dividend's sign
+    mov eax, edx
+    test eax, eax
+    jns %2_done
+    add eax, %1
+    jmp %2_done
+%2_clamp:
+    test eax, eax
+    jns %2_not_negative
+    xor eax, eax
+%2_not_negative:
+    cmp eax, %1
+    jl %2_done
+    mov eax, %1
+    dec eax
+%2_done:
+%endmacro
+
+global exact_loop_asm
+exact_loop_asm:
+    push ebp
+    push ebx
+    push esi
+    push edi
+    sub esp, 16 + EXACT_ARGS_SIZE   ; [esp]: integer scratch; [esp+16]: a private copy of the args
+    ; copy the block: x and y advance in the copy, the caller's stays untouched
+    mov esi, [esp + 16 + EXACT_ARGS_SIZE + 20]
+    lea edi, [esp + 16]
+    mov ecx, EXACT_ARGS_SIZE / 4
+    rep movsd
+    lea ebx, [esp + 16]
+    ; ebx: args copy; edi: destination; ebp: pixels left
+    mov edi, [ebx + EXACT_DST]
+    mov ebp, [ebx + EXACT_COUNT]
+    test ebp, ebp
+    jle .done
+.pixel:
+    PLANE EXACT_Q                   ; st0 = q
+    PLANE EXACT_PU                  ; st0 = pu, st1 = q
+    fdiv st0, st1                   ; u = pu / q
+    FLOOR_I32 .u
+    mov esi, eax                    ; esi = tu
+    PLANE EXACT_PV                  ; st0 = pv, st1 = q
+    fdivrp st1, st0                 ; v = pv / q (pops q)
+    FLOOR_I32 .v
+    WRAP [ebx + EXACT_HEIGHT], .wv  ; eax = row
+    imul eax, [ebx + EXACT_WIDTH]
+    mov ecx, eax                    ; ecx = row * width
+    mov eax, esi
+    WRAP [ebx + EXACT_WIDTH], .wu   ; eax = column
+    add eax, ecx
+    mov edx, [ebx + EXACT_TEXELS]
+    mov al, [edx + eax]
+    mov [edi], al
+    add edi, [ebx + EXACT_STRIDE]
+    fld qword [ebx + EXACT_X]       ; x += step_x; y += step_y
+    fadd qword [ebx + EXACT_STEP_X]
+    fstp qword [ebx + EXACT_X]
+    fld qword [ebx + EXACT_Y]
+    fadd qword [ebx + EXACT_STEP_Y]
+    fstp qword [ebx + EXACT_Y]
+    dec ebp
+    jnz .pixel
+.done:
+    add esp, 16 + EXACT_ARGS_SIZE
+    pop edi
+    pop esi
+    pop ebx
+    pop ebp
+    ret

@@ -1,0 +1,114 @@
+// Random cases for each loop with a NASM twin, and the byte-for-byte comparison.
+#include "kernel/raster/selftest.h"
+
+#include "kernel/raster/setup.h"
+#include "kernel/raster/texture.h"
+
+namespace raster {
+
+namespace {
+
+constexpr uint8_t GUARD = 0xC3;
+constexpr size_t GUARD_BYTES = 64;
+
+// A texture size the loops accept: 1..1024, often a power of two, sometimes an extreme.
+int32_t random_size(Random& r) {
+    switch (r.below(4)) {
+    case 0: return int32_t(1) << r.below(11);
+    case 1: return r.range(1, 1024);
+    case 2: return r.below(2) ? 1 : 1024;
+    default: return r.range(1, 64);
+    }
+}
+
+// Random texels once per check; each case views the first width x height of them.
+void fill_texels(Random& r, uint8_t* texels) {
+    for (size_t i = 0; i < CHECK_TEXEL_BYTES; ++i) texels[i] = uint8_t(r.next());
+}
+
+// Runs both implementations on the same block, each with its own destination buffer, and compares
+// the window [lo, hi) of the buffers: the span and GUARD_BYTES of guard on either side.
+bool run_both(LoopFn twin, LoopFn other, void* args_a, void* args_b, const CheckBuffers& buf, size_t lo, size_t hi) {
+    for (size_t i = lo; i < hi; ++i) buf.a[i] = buf.b[i] = GUARD;
+    twin(args_a);
+    other(args_b);
+    for (size_t i = lo; i < hi; ++i)
+        if (buf.a[i] != buf.b[i]) return false;
+    return true;
+}
+
+// A plane: from a real set-up triangle most of the time, else raw values up to the extremes.
+void random_planes(Random& r, double* q, double* pu, double* pv) {
+    if (r.below(4) != 0) {
+        Vertex v[3];
+        for (Vertex& x : v) {
+            x.x = Fixed24_8::from_raw(r.range(-80 * 256, 400 * 256));
+            x.y = Fixed24_8::from_raw(r.range(-80 * 256, 320 * 256));
+            x.w = 0.01 + 64 * r.unit() * r.unit();
+            x.u = (r.unit() - 0.5) * (r.below(8) ? 4000 : 2 * MAX_UV);
+            x.v = (r.unit() - 0.5) * (r.below(8) ? 4000 : 2 * MAX_UV);
+        }
+        PolygonSetup s;
+        if (setup_polygon(v, 3, &s) == SetupStatus::Ok) {
+            const Plane* p[3] = {&s.q, &s.pu, &s.pv};
+            double* out[3] = {q, pu, pv};
+            for (int k = 0; k < 3; ++k) out[k][0] = p[k]->a0, out[k][1] = p[k]->gx, out[k][2] = p[k]->gy;
+            return;
+        }
+    }
+    double* out[3] = {q, pu, pv};
+    for (double* o : out)
+        for (int k = 0; k < 3; ++k) {
+            double scale = r.below(3) == 0 ? 1e12 : r.below(2) ? 1.0 : 1e-9;
+            o[k] = (r.unit() - 0.5) * scale;
+        }
+    if (r.below(16) == 0) q[0] = 0, q[1] = 0, q[2] = 0;  // division by zero: infinities and NaN
+}
+
+}  // namespace
+
+LoopCheck check_exact(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    LoopCheck result;
+    result.loop = loop.name;
+    Random r(seed);
+    fill_texels(r, buf.texels);
+    for (uint32_t c = 0; c < cases; ++c) {
+        ExactArgs a;
+        int32_t w = random_size(r), h = random_size(r);
+        a.texels = buf.texels;
+        a.width = w;
+        a.height = h;
+        a.clamp = int32_t(r.below(2));
+        a.reserved = 0;
+        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.stride = r.below(2) ? 1 : r.range(-330, 330);
+        if (a.stride == 0) a.stride = 80;
+        // the destination's first pixel, so that all count pixels stay between the guards
+        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0) * size_t(a.stride < 0 ? -a.stride : a.stride);
+        size_t first = GUARD_BYTES + (a.stride < 0 ? extent : 0);
+        double sign = r.below(4) == 0 ? -1.0 : 1.0;
+        bool rows = r.below(2) == 0;
+        a.step_x = rows ? sign * 256 : 0;
+        a.step_y = rows ? 0 : sign * 256;
+        a.x = double(r.range(-120000, 120000)) + 128;
+        a.y = double(r.range(-90000, 90000)) + 128;
+        random_planes(r, a.q, a.pu, a.pv);
+        ExactArgs b = a;
+        a.dst = buf.a + first;
+        b.dst = buf.b + first;
+        ++result.cases;
+        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
+        if (!run_both(loop.twin, other, &a, &b, buf, first - (a.stride < 0 ? extent : 0) - GUARD_BYTES,
+                      first + (a.stride < 0 ? 0 : extent) + 1 + GUARD_BYTES)) {
+            if (result.mismatches++ == 0) result.first_mismatch = c;
+        }
+    }
+    return result;
+}
+
+const CheckedLoop CHECKED_LOOPS[] = {
+    {"exact", exact_loop, MODEXLAB_ASM(exact_loop_asm), check_exact},
+};
+const int CHECKED_LOOP_COUNT = sizeof(CHECKED_LOOPS) / sizeof(CHECKED_LOOPS[0]);
+
+}  // namespace raster
