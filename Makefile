@@ -190,7 +190,7 @@ $(H32BUILD)/gtest-all.o: | deps
 
 $(ASM_TESTS): $(ASM_TEST_CXX:%=$(H32BUILD)/%.o) $(LOOP_ASM:%=$(KBUILD)/%.o) $(H32BUILD)/gtest-all.o
 	$(call say,LINK,$@)
-	$(Q)$(H32CXX) -static -m32 -o $@ $^ -lpthread
+	$(Q)$(H32CXX) -static -m32 -Wl,-z,noexecstack -o $@ $^ -lpthread 2>&1 | { grep -v getaddrinfo || true; }
 
 $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 	$(call say,LINK,$@)

@@ -23,4 +23,28 @@ void offsets() {
     OFFSET(EXACT_PU, raster::ExactArgs, pu);
     OFFSET(EXACT_PV, raster::ExactArgs, pv);
     SIZE(EXACT_ARGS_SIZE, raster::ExactArgs);
+
+    OFFSET(XROW_DST, raster::XSharpRowArgs, dst);
+    OFFSET(XROW_COUNT, raster::XSharpRowArgs, count);
+    OFFSET(XROW_MASK, raster::XSharpRowArgs, mask);
+    OFFSET(XROW_TEXEL, raster::XSharpRowArgs, texel);
+    OFFSET(XROW_X_FRAC, raster::XSharpRowArgs, x_frac);
+    OFFSET(XROW_Y_FRAC, raster::XSharpRowArgs, y_frac);
+    OFFSET(XROW_X_STEP, raster::XSharpRowArgs, x_step);
+    OFFSET(XROW_Y_STEP, raster::XSharpRowArgs, y_step);
+    OFFSET(XROW_X_BASE, raster::XSharpRowArgs, x_base);
+    OFFSET(XROW_X_CARRY, raster::XSharpRowArgs, x_carry);
+    OFFSET(XROW_Y_BASE, raster::XSharpRowArgs, y_base);
+    OFFSET(XROW_Y_CARRY, raster::XSharpRowArgs, y_carry);
+    SIZE(XROW_ARGS_SIZE, raster::XSharpRowArgs);
+
+    OFFSET(XCOL_DST, raster::XSharpColumnArgs, dst);
+    OFFSET(XCOL_COUNT, raster::XSharpColumnArgs, count);
+    OFFSET(XCOL_TEXEL, raster::XSharpColumnArgs, texel);
+    OFFSET(XCOL_FRACTIONS, raster::XSharpColumnArgs, fractions);
+    OFFSET(XCOL_STEPS, raster::XSharpColumnArgs, steps);
+    OFFSET(XCOL_BASE, raster::XSharpColumnArgs, base);
+    OFFSET(XCOL_ROW, raster::XSharpColumnArgs, row);
+    OFFSET(XCOL_BACKWARDS, raster::XSharpColumnArgs, backwards);
+    asm volatile("\n.ascii \"@@@ XSHARP_SCANWIDTH %c0\"" : : "i"(raster::XSHARP_SCANWIDTH));
 }

@@ -361,6 +361,7 @@ raster::Target page_target(int page) {
     g_plane_selector.current = -1;
     t.select_plane = select_plane;
     t.ctx = &g_plane_selector;
+    t.vga = true;
     return t;
 }
 

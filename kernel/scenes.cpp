@@ -20,6 +20,7 @@ raster::Scene g_parsed;     // parsed into here first, so a bad upload leaves th
 raster::Scene g_scene;
 bool g_loaded = false;
 uint8_t g_texels[raster::MAX_TEXTURE_SIZE * raster::MAX_TEXTURE_SIZE];
+uint8_t g_bordered[(raster::MAX_TEXTURE_SIZE + 2) * (raster::MAX_TEXTURE_SIZE + 2)];
 raster::Texture g_texture;
 alignas(4) uint8_t g_linear[raster::SCREEN_PIXELS];
 alignas(4) uint8_t g_planes[raster::SCREEN_PIXELS];
@@ -64,23 +65,38 @@ bool upload(size_t length, uint32_t crc32, raster::ParseError* error) {
     memcpy(&g_scene, &g_parsed, sizeof g_scene);
     raster::generate_texture(g_scene.texture_kind, g_scene.texture_width, g_scene.texture_height, g_texels);
     g_texture = raster::Texture{g_texels, g_scene.texture_width, g_scene.texture_height, g_scene.wrap};
+    raster::make_bordered(g_texture, g_bordered);
+    g_texture.bordered = g_bordered;
     g_loaded = true;
     return true;
 }
 
 bool loaded() { return g_loaded; }
+const raster::Texture& texture() { return g_texture; }
+
+raster::Axis surface_axis(const raster::Mapper& mapper, Surface surface) {
+    if (mapper.axes == raster::AXIS_ROWS) return raster::Axis::Rows;
+    if (mapper.axes == raster::AXIS_COLUMNS) return raster::Axis::Columns;
+    return surface == Surface::Linear ? raster::Axis::Rows : raster::Axis::Columns;
+}
+
+raster::Target probe_target(Surface surface) {
+    raster::Target t;
+    t.planar = surface != Surface::Linear;
+    t.vga = surface == Surface::Vga;
+    return t;
+}
 const raster::Scene& scene() { return g_scene; }
 
 RenderResult render(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant) {
     RenderResult r{};
     uint64_t t0 = timer::rdtsc();
     raster::Target target;
-    raster::Axis axis = raster::Axis::Columns;
+    raster::Axis axis = surface_axis(mapper, surface);
     switch (surface) {
     case Surface::Linear:
         memset(g_linear, 0, sizeof g_linear);
         target = raster::linear_target(g_linear, raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT, raster::SCREEN_WIDTH);
-        axis = raster::Axis::Rows;
         break;
     case Surface::Planar:
         memset(g_planes, 0, sizeof g_planes);
@@ -92,6 +108,8 @@ RenderResult render(const raster::Mapper& mapper, Surface surface, int page, ras
         break;
     }
     uint64_t t1 = timer::rdtsc();
+    raster::LoopFn loop = raster::mapper_loop(mapper, variant, target);
+    r.used_asm = loop && loop == mapper.asm_loop;
     r.stats = raster::render_scene(g_scene, g_texture, mapper, axis, target, variant);
     uint64_t t2 = timer::rdtsc();
     if (surface == Surface::Linear) vga::blit_linear(g_linear, page);

@@ -29,7 +29,18 @@ const raster::Scene& scene();
 struct RenderResult {
     raster::RenderStats stats;
     uint64_t ticks_clear, ticks_draw, ticks_blit;
+    bool used_asm;  // the NASM loop ran (else the C++ twin)
 };
+
+// The kernel's texture for the current scene (with its bordered copy).
+const raster::Texture& texture();
+
+// The walker a render uses: the mapper's only one, or for mappers that walk both, rows into the
+// linear surface and columns into the planar ones.
+raster::Axis surface_axis(const raster::Mapper& mapper, Surface surface);
+
+// A target of the kind `surface` renders into, for checking what a mapper can take (no pixels).
+raster::Target probe_target(Surface surface);
 
 // Clears the surface to 0, draws the scene with `mapper`, and blits (unless drawn in place).
 RenderResult render(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant);

@@ -15,6 +15,7 @@
 #include "kernel/raster/selftest.h"
 #include "kernel/reply.h"
 #include "kernel/scenes.h"
+#include "kernel/vga_selftest.h"
 #include "kernel/version.h"
 
 namespace server {
@@ -264,21 +265,24 @@ void cmd_render(Context&, const StrView* args, size_t nargs) {
         reply::error("render", "no scene: upload one with 'scene BYTES CRC32' first");
         return;
     }
-    const raster::Scene& sc = scenes::scene();
-    raster::Texture probe{nullptr, sc.texture_width, sc.texture_height, sc.wrap};
-    if (!raster::mapper_accepts(*mapper, probe)) {
+    const raster::Texture& tex = scenes::texture();
+    if (!raster::mapper_accepts(*mapper, tex)) {
         lib::Fmt m;
-        m.s("mapper ").s(mapper->name).s(" cannot take this scene's ").u(uint32_t(sc.texture_width)).s("x").u(uint32_t(sc.texture_height)).s(" texture (needs:");
+        m.s("mapper ").s(mapper->name).s(" cannot take this scene's ").u(uint32_t(tex.width)).s("x").u(uint32_t(tex.height)).s(" texture (needs:");
         if (mapper->needs & raster::NEED_POW2) m.s(" power-of-two sizes");
         if (mapper->needs & raster::NEED_WIDTH_256) m.s(" width 256");
         m.s(")");
         reply::error("render", m.c_str());
         return;
     }
-    raster::Axis axis = surface == scenes::Surface::Linear ? raster::Axis::Rows : raster::Axis::Columns;
-    if (!raster::mapper_walks(*mapper, axis)) {
+    raster::Axis axis = scenes::surface_axis(*mapper, surface);
+    if (!raster::mapper_walks(*mapper, axis) || !raster::mapper_targets(*mapper, scenes::probe_target(surface), axis)) {
         lib::Fmt m;
-        m.s("mapper ").s(mapper->name).s(" does not walk ").s(axis == raster::Axis::Rows ? "rows (surface linear)" : "columns (surfaces planar, vga)");
+        m.s("mapper ").s(mapper->name).s(" cannot draw through surface ").s(scenes::surface_name(surface)).s(" (it walks");
+        if (mapper->axes & raster::AXIS_ROWS) m.s(" rows");
+        if (mapper->axes & raster::AXIS_COLUMNS) m.s(" columns");
+        if (mapper->needs & raster::NEED_PLANAR_TARGET) m.s(" into Mode X planes: surface planar or vga");
+        m.s(")");
         reply::error("render", m.c_str());
         return;
     }
@@ -288,8 +292,8 @@ void cmd_render(Context&, const StrView* args, size_t nargs) {
         .str("mapper", mapper->name)
         .u32("page", uint32_t(page))
         .str("surface", scenes::surface_name(surface))
-        .str("walker", surface == scenes::Surface::Linear ? "rows" : "columns")
-        .str("loop", raster::mapper_loop(*mapper, variant) == mapper->asm_loop && mapper->asm_loop ? "asm" : "twin")
+        .str("walker", axis == raster::Axis::Rows ? "rows" : "columns")
+        .str("loop", r.used_asm ? "asm" : "twin")
         .u32("polygons", r.stats.polygons)
         .u32("skipped", r.stats.skipped)
         .u32("rejected", r.stats.rejected)
@@ -314,6 +318,13 @@ void cmd_mappers(Context&, const StrView*, size_t) {
         r.end_array().begin_array("walkers");
         if (m.axes & raster::AXIS_ROWS) r.item_str("rows");
         if (m.axes & raster::AXIS_COLUMNS) r.item_str("columns");
+        r.end_array().begin_array("surfaces");
+        for (int k = 0; k < 3; ++k) {
+            auto surface = scenes::Surface(k);
+            raster::Axis axis = scenes::surface_axis(m, surface);
+            if (raster::mapper_walks(m, axis) && raster::mapper_targets(m, scenes::probe_target(surface), axis))
+                r.item_str(scenes::surface_name(surface));
+        }
         r.end_array().boolean("asm", m.asm_loop != nullptr).end_object();
     }
     r.end_array().end();
@@ -334,17 +345,21 @@ void cmd_selftest(Context&, const StrView* args, size_t nargs) {
     int n = 0;
     bool all_equal = true;
     uint64_t t0 = timer::rdtsc();
+    bool vga_checked = vga::mode() == vga::Mode::ModeX;
     for (int i = 0; i < raster::CHECKED_LOOP_COUNT && n < 16; ++i) {
         const raster::CheckedLoop& loop = raster::CHECKED_LOOPS[i];
-        if (!loop.asm_loop) continue;
-        results[n] = loop.check(loop, loop.asm_loop, 20261121, cases, buffers);
+        if (!loop.asm_loop || (loop.vga && !vga_checked)) continue;
+        results[n] = loop.vga ? vga_selftest::check(loop, 20261121, cases, g_check_texels)
+                              : loop.check(loop, loop.asm_loop, 20261121, cases, buffers);
         all_equal = all_equal && results[n].mismatches == 0;
         ++n;
     }
     lib::JsonLine r = reply::begin(all_equal);
     r.str("cmd", "selftest");
     if (!all_equal) r.str("error", "a NASM loop differs from its C++ twin");
-    r.u32("cases", cases).u64("ticks", timer::rdtsc() - t0).begin_array("loops");
+    r.u32("cases", cases).u64("ticks", timer::rdtsc() - t0);
+    r.boolean("vga_loops_checked", vga_checked);  // those draw into page 2 of Mode X: 'mode modex' first
+    r.begin_array("loops");
     for (int i = 0; i < n; ++i)
         r.begin_item_object()
             .str("loop", results[i].loop)

@@ -50,15 +50,52 @@ std::unique_ptr<Picture> render_reference(const LoadedScene& s) {
 
 namespace {
 
+// A 320x240 surface of the kind the mapper draws into: linear, or Mode X planes in RAM for the
+// mappers that write planes themselves.
+struct HostSurface {
+    bool planar;
+    std::vector<uint8_t> data;
+    explicit HostSurface(const Mapper& m, uint8_t fill) : planar(m.needs & NEED_PLANAR_TARGET), data(SCREEN_PIXELS, fill) {}
+    Target target() {
+        return planar ? planar_target(data.data()) : linear_target(data.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+    }
+    uint8_t& at(int32_t x, int32_t y) {
+        return planar ? data[size_t(x & 3) * PLANE_BYTES + size_t(y) * PLANE_ROW_BYTES + size_t(x >> 2)]
+                      : data[size_t(y) * SCREEN_WIDTH + size_t(x)];
+    }
+    std::vector<uint8_t> linear() const {
+        if (!planar) return data;
+        std::vector<uint8_t> out(SCREEN_PIXELS);
+        linear_from_planar(data.data(), out.data());
+        return out;
+    }
+};
+
+// A texture with the bordered copy the classic loops read, when the mapper needs one.
+struct HostTexture {
+    Texture texture;
+    std::vector<uint8_t> bordered;
+    HostTexture(const Texture& t, const Mapper& m) : texture(t) {
+        if (m.needs & NEED_BORDERED) {
+            bordered.resize(size_t(bordered_bytes(t.width, t.height)));
+            make_bordered(t, bordered.data());
+            texture.bordered = bordered.data();
+        }
+    }
+};
+
 std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper& mapper, Axis axis, RenderStats* stats) {
-    std::vector<uint8_t> pixels(SCREEN_PIXELS, BACKGROUND);
-    Target t = linear_target(pixels.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
-    RenderStats st = render_scene(*s.scene, tex, mapper, axis, t);
+    HostSurface surface(mapper, BACKGROUND);
+    HostTexture t(tex, mapper);
+    Target target = surface.target();
+    RenderStats st = render_scene(*s.scene, t.texture, mapper, axis, target);
     if (stats) *stats = st;
-    return pixels;
+    return surface.linear();
 }
 
 }  // namespace
+
+Axis default_axis(const Mapper& mapper) { return mapper.axes == AXIS_COLUMNS ? Axis::Columns : Axis::Rows; }
 
 IndexImage render_mapper(const LoadedScene& s, const Mapper& mapper, Axis axis, RenderStats* stats) {
     return IndexImage{SCREEN_WIDTH, SCREEN_HEIGHT, draw(s, s.texture, mapper, axis, stats)};
@@ -86,25 +123,32 @@ std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const Mapper& mapp
         p->tv[i] = parts[2][i] | (parts[3][i] << 8);
     }
 
-    // coverage counts: each polygon alone on a scratch surface, with a texture of ones
-    std::vector<uint8_t> scratch(SCREEN_PIXELS, 0);
-    const uint8_t one = 1;
-    Texture ones{&one, 1, 1, Wrap::Repeat};
-    Target t = linear_target(scratch.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+    // coverage counts: each polygon alone on a scratch surface, with a texture of ones of the
+    // scene's size (mappers that cannot wrap check coordinates against it)
+    HostSurface scratch(mapper, 0);
+    std::vector<uint8_t> ones(size_t(w) * size_t(h), 1);
+    HostTexture ones_texture(Texture{ones.data(), w, h, s.texture.wrap}, mapper);
+    Target t = scratch.target();
     const Vertex* v = s.scene->vertices;
     RenderStats ignored;
     for (int32_t i = 0; i < s.scene->polygon_count; ++i) {
         int n = s.scene->polygon_size[i];
-        PolygonSetup setup;
-        if (draw_polygon(v, n, ones, mapper, axis, t, &ignored) == SetupStatus::Ok && setup_polygon(v, n, &setup) == SetupStatus::Ok) {
-            int64_t x0 = std::max<int64_t>(0, floor_div(setup.min_x, SUBPIXEL_ONE));
-            int64_t x1 = std::min<int64_t>(SCREEN_WIDTH - 1, floor_div(setup.max_x, SUBPIXEL_ONE));
-            int64_t y0 = std::max<int64_t>(0, floor_div(setup.min_y, SUBPIXEL_ONE));
-            int64_t y1 = std::min<int64_t>(SCREEN_HEIGHT - 1, floor_div(setup.max_y, SUBPIXEL_ONE));
+        if (draw_polygon(v, n, ones_texture.texture, mapper, axis, t, &ignored) == SetupStatus::Ok) {
+            // every mapper draws inside the box of its vertices (whole pixels around it)
+            int64_t min_x = v[0].x.raw, max_x = v[0].x.raw, min_y = v[0].y.raw, max_y = v[0].y.raw;
+            for (int k = 1; k < n; ++k) {
+                min_x = std::min<int64_t>(min_x, v[k].x.raw), max_x = std::max<int64_t>(max_x, v[k].x.raw);
+                min_y = std::min<int64_t>(min_y, v[k].y.raw), max_y = std::max<int64_t>(max_y, v[k].y.raw);
+            }
+            int64_t x0 = std::max<int64_t>(0, floor_div(min_x, SUBPIXEL_ONE) - 1);
+            int64_t x1 = std::min<int64_t>(SCREEN_WIDTH - 1, floor_div(max_x, SUBPIXEL_ONE) + 1);
+            int64_t y0 = std::max<int64_t>(0, floor_div(min_y, SUBPIXEL_ONE) - 1);
+            int64_t y1 = std::min<int64_t>(SCREEN_HEIGHT - 1, floor_div(max_y, SUBPIXEL_ONE) + 1);
             for (int64_t y = y0; y <= y1; ++y)
                 for (int64_t x = x0; x <= x1; ++x) {
-                    uint8_t& c = scratch[size_t(y) * SCREEN_WIDTH + size_t(x)];
-                    if (c && p->coverage[size_t(y) * SCREEN_WIDTH + size_t(x)] < 255) ++p->coverage[size_t(y) * SCREEN_WIDTH + size_t(x)];
+                    uint8_t& c = scratch.at(int32_t(x), int32_t(y));
+                    size_t i2 = size_t(y) * SCREEN_WIDTH + size_t(x);
+                    if (c && p->coverage[i2] < 255) ++p->coverage[i2];
                     c = 0;
                 }
         }

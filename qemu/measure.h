@@ -42,7 +42,11 @@ constexpr uint8_t BACKGROUND = 0;  // the colour a picture is cleared to before 
 
 std::unique_ptr<Picture> render_reference(const LoadedScene& s);
 
-// The mapper's picture on a cleared 320x240 linear surface (rows or columns); stats if wanted.
+// The walker a mapper uses by default: its only one, or rows.
+raster::Axis default_axis(const raster::Mapper& mapper);
+
+// The mapper's picture on a cleared 320x240 surface (linear, or planes for mappers that write
+// planes), as a linear picture (rows or columns); stats if wanted.
 IndexImage render_mapper(const LoadedScene& s, const raster::Mapper& mapper, raster::Axis axis, raster::RenderStats* stats = nullptr);
 
 // What the mapper drew: its palette indices, how often each pixel was drawn (one polygon at a

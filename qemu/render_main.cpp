@@ -17,7 +17,8 @@ const char* USAGE =
     "usage: modexlab-render SCENE --mapper NAME|reference [--axis rows|columns] --out FILE.png\n"
     "                       [--compare [--diff FILE.png]]\n"
     "  --mapper   a mapper (affine, exact) or 'reference'\n"
-    "  --axis     the walker: rows (default) or columns; both cover the same pixels\n"
+    "  --axis     the walker: rows or columns (default: the mapper's own, rows for those that walk\n"
+    "             both; our generic walkers cover the same pixels either way)\n"
     "  --out      the picture, 320x240, in the default palette\n"
     "  --compare  print the accuracy metrics against the reference\n"
     "  --diff     with --compare: a picture of the differences (red: palette index differs,\n"
@@ -53,6 +54,7 @@ int main(int argc, char** argv) {
     std::string scene_path, mapper_name, out, diff;
     bool compare_to_reference = false;
     raster::Axis axis = raster::Axis::Rows;
+    bool axis_given = false;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
         auto value = [&]() -> std::string {
@@ -68,6 +70,7 @@ int main(int argc, char** argv) {
             if (v == "rows") axis = raster::Axis::Rows;
             else if (v == "columns") axis = raster::Axis::Columns;
             else usage_error("--axis takes rows or columns");
+            axis_given = true;
         } else if (a == "-h" || a == "--help") {
             std::fputs(USAGE, stdout);
             return 0;
@@ -87,6 +90,8 @@ int main(int argc, char** argv) {
             for (int k = 0; k < raster::MAPPER_COUNT; ++k) known += std::string(" ") + raster::MAPPERS[k].name;
             usage_error("unknown mapper '" + mapper_name + "' (mappers:" + known + ", or reference)");
         }
+        if (!axis_given) axis = default_axis(*mapper);
+        if (!raster::mapper_walks(*mapper, axis)) usage_error(mapper_name + " does not walk " + (axis == raster::Axis::Rows ? "rows" : "columns"));
     }
     try {
         LoadedScene s = load_scene_file(scene_path);

@@ -26,11 +26,49 @@ struct ExactArgs {
 
 void exact_loop(const void* args);
 
+// xsharp-row-out (Black Book listing 57.2, inner loop = listing 58.1): a row of Mode X pixels,
+// OUT to the Map Mask before every pixel. The texel pointer carries the integer parts of both
+// coordinates; the fractions count up in 16 bits (negative steps: negated fraction, NOTed
+// coordinate fraction, a -1 / -pitch extra advance on the carry).
+struct XSharpRowArgs {
+    uint8_t* dst;            // the first pixel's byte within its plane
+    int32_t plane_bytes;     // the twin's RAM planes lie this far apart (the NASM loop OUTs instead)
+    int32_t count;           // pixels, >= 1
+    uint32_t mask;           // 0x11 << (x & 3): the plane bit in both nibbles, rotated per pixel
+    const uint8_t* texel;    // the first pixel's texel (rounding already folded in)
+    uint32_t x_frac, y_frac; // 16-bit fractions
+    uint32_t x_step, y_step; // 16-bit fraction steps
+    int32_t x_base, x_carry; // whole X step (toward zero), and +-1 more on a fraction carry
+    int32_t y_base, y_carry; // whole Y step times the pitch, and +-pitch more on a carry
+    // the twin's OUT: called with the plane before each pixel when set (a VGA target)
+    void (*select_plane)(void* ctx, int plane);
+    void* ctx;
+};
+void xsharp_row_loop(const void* args);
+
+// xsharp-column (listing 58.4, as X-Sharp 22 shipped it: unrolled twice, with a second loop for
+// X running backwards): a column of Mode X pixels 80 bytes apart, the map mask set by the caller.
+// fractions: X fraction in bits 31..16, Y fraction >> 1 in bits 14..0, bit 15 the Y carry.
+constexpr int32_t XSHARP_SCANWIDTH = 80;
+struct XSharpColumnArgs {
+    uint8_t* dst;            // the first pixel; the next is 80 bytes on
+    int32_t count;           // pixels, >= 1
+    const uint8_t* texel;
+    uint32_t fractions;      // packed as above
+    uint32_t steps;          // the steps, packed the same way (bit 15 clear)
+    int32_t base;            // whole X step + whole Y step times the pitch (both toward zero)
+    int32_t row;             // +-pitch, added on a Y carry
+    int32_t backwards;       // X runs backwards: an X carry moves one texel left (X-Sharp 22's SBB loop)
+};
+void xsharp_column_loop(const void* args);
+
 }  // namespace raster
 
 // The NASM twins (asm/*.asm), in builds that assemble them.
 extern "C" {
 void exact_loop_asm(const void* args);
+void xsharp_row_asm(const void* args);     // VGA only: writes the Map Mask through port 0x3C5
+void xsharp_column_asm(const void* args);
 }
 
 #if defined(MODEXLAB_ASM_LOOPS)

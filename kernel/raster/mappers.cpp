@@ -1,6 +1,8 @@
 // Our generic-walker mappers' span functions, and the registry.
 #include "kernel/raster/mappers.h"
 
+#include "kernel/raster/xsharp.h"
+
 namespace raster {
 
 namespace {
@@ -69,6 +71,17 @@ const Mapper MAPPERS[] = {
     {"exact", "ours", "the reference's definition, per pixel",
      "equal to the reference: per-pixel perspective divide in double precision", NEED_NOTHING, AXIS_BOTH, exact_span,
      exact_loop, MODEXLAB_ASM(exact_loop_asm)},
+    {"xsharp-dda", "classic", "Abrash, Black Book listing 57.1 (X-Sharp 21, C)",
+     "affine; whole-pixel vertices, X-Sharp's fill convention; half-step prestep, rounds to the nearest texel; cannot wrap",
+     NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, nullptr, nullptr, xsharp::draw_dda},
+    {"xsharp-row-out", "classic", "Abrash, Black Book listing 57.2, inner loop 58.1 (X-Sharp 21, asm)",
+     "the same pixels as xsharp-dda, written to Mode X planes with an OUT to the Map Mask per pixel",
+     NEED_BORDERED | NEED_INSIDE | NEED_PLANAR_TARGET | NEED_VGA_FOR_ASM, AXIS_ROWS, nullptr, xsharp_row_loop,
+     MODEXLAB_ASM(xsharp_row_asm), xsharp::draw_row_out},
+    {"xsharp-column", "classic", "Abrash, Black Book listing 58.4, as X-Sharp 22 shipped it",
+     "affine; columns with X-Sharp's fill convention; the Y fraction keeps 15 bits (a texel row off at about 2 pixels in 10000)",
+     NEED_BORDERED | NEED_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, xsharp_column_loop, MODEXLAB_ASM(xsharp_column_asm),
+     xsharp::draw_column},
 };
 const int MAPPER_COUNT = sizeof(MAPPERS) / sizeof(MAPPERS[0]);
 

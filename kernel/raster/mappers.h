@@ -8,6 +8,7 @@
 #include "kernel/lib/words.h"
 #include "kernel/raster/loops.h"
 #include "kernel/raster/setup.h"
+#include "kernel/raster/surface.h"
 #include "kernel/raster/texture.h"
 #include "kernel/raster/walk.h"
 
@@ -16,8 +17,12 @@ namespace raster {
 // What a mapper needs from the texture; the caller must not give it anything else.
 enum Need : uint32_t {
     NEED_NOTHING = 0,
-    NEED_POW2 = 1 << 0,       // width and height powers of two
-    NEED_WIDTH_256 = 1 << 1,  // width exactly 256
+    NEED_POW2 = 1 << 0,           // width and height powers of two
+    NEED_WIDTH_256 = 1 << 1,      // width exactly 256
+    NEED_BORDERED = 1 << 2,       // the texture's bordered copy (Texture::bordered)
+    NEED_INSIDE = 1 << 3,         // cannot wrap: a polygon's texture coordinates must fit in the texture
+    NEED_PLANAR_TARGET = 1 << 4,  // writes Mode X planes itself (rows on a planar target)
+    NEED_VGA_FOR_ASM = 1 << 5,    // the NASM loop programs the VGA: it runs on VGA pages only
 };
 
 // Which walkers a mapper works with.
@@ -37,6 +42,24 @@ struct SpanContext {
 // Draws span s starting at dst, `stride` bytes between pixels, with the context's loop.
 using SpanFn = void (*)(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
 
+struct RenderStats {
+    uint32_t polygons = 0;   // set up and walked
+    uint32_t skipped = 0;    // degenerate (zero area): nothing to draw
+    uint32_t rejected = 0;   // not convex, too many vertices, out of range, or not for this mapper
+    uint32_t spans = 0;
+    uint32_t pixels = 0;
+};
+
+// A mapper with its own setup and edge walking (the classics) draws whole polygons.
+struct DrawContext {
+    const Texture& tex;
+    Axis axis;
+    Target& target;
+    RenderStats* stats;  // the driver adds spans and pixels
+    LoopFn loop;
+};
+using DrawFn = SetupStatus (*)(const DrawContext& c, const Vertex* vertices, int count);
+
 struct Mapper {
     const char* name;
     const char* family;   // "ours" or "classic"
@@ -44,9 +67,10 @@ struct Mapper {
     const char* promise;  // what it promises about accuracy
     uint32_t needs;       // Need flags
     uint8_t axes;         // AxisSet
-    SpanFn span;
+    SpanFn span;          // for the generic walker (nullptr when draw is set)
     LoopFn twin;          // the C++ inner loop (nullptr: span does all the work itself)
     LoopFn asm_loop;      // its NASM twin, or nullptr
+    DrawFn draw = nullptr;  // its own polygon driver, or nullptr for the generic walker
 };
 
 extern const Mapper MAPPERS[];
@@ -57,11 +81,21 @@ inline bool mapper_accepts(const Mapper& m, const Texture& t) {
     bool pow2 = (t.width & (t.width - 1)) == 0 && (t.height & (t.height - 1)) == 0;
     if ((m.needs & NEED_POW2) && !pow2) return false;
     if ((m.needs & NEED_WIDTH_256) && t.width != 256) return false;
+    if ((m.needs & NEED_BORDERED) && !t.bordered) return false;
     return true;
 }
 
 inline bool mapper_walks(const Mapper& m, Axis axis) { return m.axes & (axis == Axis::Rows ? AXIS_ROWS : AXIS_COLUMNS); }
 
-inline LoopFn mapper_loop(const Mapper& m, Variant v) { return v == Variant::Asm && m.asm_loop ? m.asm_loop : m.twin; }
+// Whether the mapper can draw into this target along this axis.
+inline bool mapper_targets(const Mapper& m, const Target& t, Axis axis) {
+    if (m.needs & NEED_PLANAR_TARGET) return t.planar;
+    return target_supports(t, axis);
+}
+
+inline LoopFn mapper_loop(const Mapper& m, Variant v, const Target& t) {
+    bool asm_ok = m.asm_loop && (!(m.needs & NEED_VGA_FOR_ASM) || t.vga);
+    return v == Variant::Asm && asm_ok ? m.asm_loop : m.twin;
+}
 
 }  // namespace raster

@@ -5,28 +5,33 @@ namespace raster {
 
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant) {
-    PolygonSetup setup;
-    SetupStatus status = setup_polygon(vertices, count, &setup);
-    if (status == SetupStatus::Degenerate) ++stats->skipped;
-    if (status != SetupStatus::Ok) {
-        if (status != SetupStatus::Degenerate) ++stats->rejected;
-        return status;
-    }
-    if (!target_supports(target, axis) || !mapper_walks(mapper, axis) || !mapper_accepts(mapper, tex)) {
+    if (!mapper_walks(mapper, axis) || !mapper_accepts(mapper, tex) || !mapper_targets(mapper, target, axis)) {
         ++stats->rejected;
-        return status;
+        return SetupStatus::Unsupported;
     }
-    ++stats->polygons;
-    EdgeWalker walker(setup, axis, target.clip);
-    const SpanContext context{setup, tex, axis, mapper_loop(mapper, variant)};
-    Span span;
-    while (walker.next(&span)) {
-        int32_t stride;
-        uint8_t* dst = span_start(target, axis, span, &stride);
-        mapper.span(context, span, dst, stride);
-        ++stats->spans;
-        stats->pixels += uint32_t(span.count);
+    LoopFn loop = mapper_loop(mapper, variant, target);
+    SetupStatus status;
+    if (mapper.draw) {
+        status = mapper.draw(DrawContext{tex, axis, target, stats, loop}, vertices, count);
+    } else {
+        PolygonSetup setup;
+        status = setup_polygon(vertices, count, &setup);
+        if (status == SetupStatus::Ok) {
+            EdgeWalker walker(setup, axis, target.clip);
+            const SpanContext context{setup, tex, axis, loop};
+            Span span;
+            while (walker.next(&span)) {
+                int32_t stride;
+                uint8_t* dst = span_start(target, axis, span, &stride);
+                mapper.span(context, span, dst, stride);
+                ++stats->spans;
+                stats->pixels += uint32_t(span.count);
+            }
+        }
     }
+    if (status == SetupStatus::Ok) ++stats->polygons;
+    else if (status == SetupStatus::Degenerate) ++stats->skipped;
+    else ++stats->rejected;
     return status;
 }
 

@@ -10,17 +10,9 @@
 
 namespace raster {
 
-struct RenderStats {
-    uint32_t polygons = 0;   // set up and walked
-    uint32_t skipped = 0;    // degenerate (zero area): nothing to draw
-    uint32_t rejected = 0;   // not convex, too many vertices, out of range
-    uint32_t spans = 0;
-    uint32_t pixels = 0;
-};
-
 // Draws one convex polygon. Returns the setup status; nothing is drawn (and the polygon counts as
-// rejected) unless it is Ok, the target can take spans along `axis` (not rows on a planar
-// target), the mapper walks that axis and accepts the texture.
+// rejected) unless it is Ok, the mapper walks `axis`, accepts the texture and can draw into the
+// target (mapper_targets).
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant = Variant::Twin);
 

@@ -106,8 +106,66 @@ LoopCheck check_exact(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint
     return result;
 }
 
+namespace {
+
+// Texture walks of the pointer loops start in the middle of the 1 MiB texel buffer; every random
+// advance is bounded so that no walk can leave it: count * (|base| + 1 + |row|) < 512 KiB.
+constexpr int32_t MID = int32_t(CHECK_TEXEL_BYTES / 2);
+
+}  // namespace
+
+LoopCheck check_xsharp_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    LoopCheck result;
+    result.loop = loop.name;
+    Random r(seed);
+    fill_texels(r, buf.texels);
+    for (uint32_t c = 0; c < cases; ++c) {
+        XSharpColumnArgs a;
+        int32_t pitch = random_size(r) + 2;  // a bordered texture's pitch: 3..1026
+        a.count = r.below(8) == 0 ? r.range(1, 3) : r.range(1, 240);
+        a.texel = buf.texels + MID + r.range(-1000, 1000);
+        a.fractions = (r.next() & 0xFFFF0000u) | (r.next() & 0x7FFF);
+        a.steps = (r.next() & 0xFFFF0000u) | (r.next() & 0x7FFF);
+        if (r.below(4) == 0) a.steps &= 0xFFFF7FFFu & (r.below(2) ? 0x0000FFFFu : 0xFFFF0000u);  // one axis without a fraction
+        a.base = r.range(-2, 2) + r.range(-1, 1) * pitch;
+        a.row = r.below(2) ? pitch : -pitch;
+        a.backwards = int32_t(r.below(2));
+        size_t extent = size_t(a.count - 1) * XSHARP_SCANWIDTH;
+        size_t first = GUARD_BYTES;
+        XSharpColumnArgs b = a;
+        a.dst = buf.a + first;
+        b.dst = buf.b + first;
+        ++result.cases;
+        result.pixels += uint32_t(a.count);
+        if (!run_both(loop.twin, other, &a, &b, buf, 0, first + extent + 1 + GUARD_BYTES))
+            if (result.mismatches++ == 0) result.first_mismatch = c;
+    }
+    return result;
+}
+
+void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32_t* x, int32_t* y) {
+    int32_t pitch = r.range(3, 600);
+    *y = r.range(0, 239);
+    *x = r.range(0, 319);
+    a->count = r.range(1, 320 - *x);
+    a->mask = 0x11u << (*x & 3);
+    a->texel = texels + MID + r.range(-1000, 1000);
+    a->x_frac = r.next() & 0xFFFF;
+    a->y_frac = r.next() & 0xFFFF;
+    a->x_step = r.below(4) == 0 ? 0 : r.next() & 0xFFFF;
+    a->y_step = r.below(4) == 0 ? 0 : r.next() & 0xFFFF;
+    a->x_base = r.range(-3, 3);
+    a->x_carry = r.below(2) ? 1 : -1;
+    a->y_base = r.range(-1, 1) * pitch;
+    a->y_carry = r.below(2) ? pitch : -pitch;
+    a->select_plane = nullptr;
+    a->ctx = nullptr;
+}
+
 const CheckedLoop CHECKED_LOOPS[] = {
-    {"exact", exact_loop, MODEXLAB_ASM(exact_loop_asm), check_exact},
+    {"exact", exact_loop, MODEXLAB_ASM(exact_loop_asm), check_exact, false},
+    {"xsharp-row-out", xsharp_row_loop, MODEXLAB_ASM(xsharp_row_asm), nullptr, true},
+    {"xsharp-column", xsharp_column_loop, MODEXLAB_ASM(xsharp_column_asm), check_xsharp_column, false},
 };
 const int CHECKED_LOOP_COUNT = sizeof(CHECKED_LOOPS) / sizeof(CHECKED_LOOPS[0]);
 

@@ -42,16 +42,23 @@ struct LoopCheck {
     uint32_t pixels = 0;
 };
 
-// The loops with NASM twins, one entry each.
+// The loops with NASM twins, one entry each. Loops that program the VGA cannot run on the host:
+// the kernel checks those against the twin drawing into RAM planes (kernel/vga_selftest.cpp).
 struct CheckedLoop {
     const char* name;
     LoopFn twin;
     LoopFn asm_loop;
     LoopCheck (*check)(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+    bool vga;  // the NASM loop writes VGA registers: `check` is null, the kernel checks it
 };
 extern const CheckedLoop CHECKED_LOOPS[];
 extern const int CHECKED_LOOP_COUNT;
 
 LoopCheck check_exact(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+LoopCheck check_xsharp_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+
+// Random XSharpRowArgs for a row of up to 320 pixels starting at plane offset `offset` of a page
+// whose rows are 80 bytes (the kernel's VGA check), texel reads inside `texels` (CHECK_TEXEL_BYTES).
+void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32_t* x, int32_t* y);
 
 }  // namespace raster

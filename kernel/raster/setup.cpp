@@ -35,6 +35,8 @@ const char* setup_status_name(SetupStatus s) {
     case SetupStatus::NotConvex: return "not convex";
     case SetupStatus::TooManyVertices: return "too many vertices";
     case SetupStatus::OutOfRange: return "out of range";
+    case SetupStatus::OutsideTexture: return "outside the texture";
+    case SetupStatus::Unsupported: return "unsupported by the mapper";
     }
     return "?";
 }

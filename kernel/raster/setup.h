@@ -56,6 +56,8 @@ enum class SetupStatus : uint8_t {
     NotConvex,
     TooManyVertices,
     OutOfRange,       // a coordinate, w, u or v beyond the limits above, or not finite
+    OutsideTexture,   // a mapper that cannot wrap got texture coordinates beyond the texture
+    Unsupported,      // the mapper cannot take this texture, target or walker
 };
 
 const char* setup_status_name(SetupStatus s);

@@ -25,6 +25,7 @@ struct Target {
     // planar: called before drawing into another plane than the last (the VGA map mask)
     void (*select_plane)(void* ctx, int plane) = nullptr;
     void* ctx = nullptr;
+    bool vga = false;           // a real VGA page (drivers/vga.cpp): loops may program the VGA
     ClipRect clip{0, 0, 0, 0};  // inside the surface
 };
 

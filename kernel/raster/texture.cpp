@@ -27,6 +27,16 @@ bool wrap_from_name(lib::StrView name, Wrap* out) {
     return i >= 0;
 }
 
+void make_bordered(const Texture& t, uint8_t* out) {
+    const int32_t pitch = bordered_pitch(t);
+    for (int32_t v = -1; v <= t.height; ++v)
+        for (int32_t u = -1; u <= t.width; ++u) {
+            int32_t cu = u < 0 ? 0 : u >= t.width ? t.width - 1 : u;
+            int32_t cv = v < 0 ? 0 : v >= t.height ? t.height - 1 : v;
+            out[(v + 1) * pitch + (u + 1)] = t.texels[cv * t.width + cu];
+        }
+}
+
 void generate_texture(TextureKind kind, int32_t width, int32_t height, uint8_t* out) {
     for (int32_t v = 0; v < height; ++v) {
         for (int32_t u = 0; u < width; ++u) {

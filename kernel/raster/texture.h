@@ -16,7 +16,19 @@ struct Texture {
     const uint8_t* texels = nullptr;  // row-major, width bytes a row
     int32_t width = 0, height = 0;
     Wrap wrap = Wrap::Repeat;
+    // The same texels inside a one-texel border that repeats the edge texels, (width + 2) bytes a
+    // row: the classic loops, which cannot wrap, read it (X-Sharp's demo textures had such a border
+    // "so that if fixed-point imprecision causes the source pointer to wander just off the bitmap,
+    // appropriate pixels will be found"). Null when not built.
+    const uint8_t* bordered = nullptr;
 };
+
+inline int32_t bordered_pitch(const Texture& t) { return t.width + 2; }
+inline int32_t bordered_bytes(int32_t width, int32_t height) { return (width + 2) * (height + 2); }
+// Texel (0, 0) of the bordered copy: texel (u, v) is at origin[v * pitch + u] for u in -1..width.
+inline const uint8_t* bordered_origin(const Texture& t) { return t.bordered + bordered_pitch(t) + 1; }
+// Fills out (bordered_bytes(width, height) bytes) from t.texels.
+void make_bordered(const Texture& t, uint8_t* out);
 
 inline int32_t wrap_coord(int32_t t, int32_t size, Wrap wrap) {
     if (wrap == Wrap::Clamp) return t < 0 ? 0 : t >= size ? size - 1 : t;

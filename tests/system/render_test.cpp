@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "kernel/lib/encode.h"
+#include "kernel/raster/selftest.h"
 #include "qemu/measure.h"
 
 namespace {
@@ -64,10 +65,11 @@ std::vector<NamedScene> test_scenes() {
     return out;
 }
 
-TEST(Render, KernelPicturesEqualTheHostsForBothMappersOnEveryScene) {
+TEST(Render, KernelPicturesEqualTheHostsForEveryMapperOnEveryScene) {
     Session s(options_for_this_test());
     s.ok("mode modex");
-    const char* surfaces[] = {"linear", "planar", "vga"};
+    json listed = s.ok("mappers")["mappers"];
+    ASSERT_EQ(listed.size(), size_t(raster::MAPPER_COUNT));
     int compared = 0;
     std::vector<NamedScene> all = test_scenes();
     ASSERT_GE(all.size(), 20u);
@@ -80,14 +82,21 @@ TEST(Render, KernelPicturesEqualTheHostsForBothMappersOnEveryScene) {
         EXPECT_EQ(up["polygons"], host.scene->polygon_count);
         for (int m = 0; m < raster::MAPPER_COUNT; ++m) {
             const raster::Mapper& mapper = raster::MAPPERS[m];
-            std::string surface = surfaces[(i + size_t(m)) % 3];
-            raster::Axis axis = surface == std::string("linear") ? raster::Axis::Rows : raster::Axis::Columns;
+            const json& surfaces = listed[size_t(m)]["surfaces"];
+            ASSERT_FALSE(surfaces.empty()) << mapper.name;
+            std::string surface = surfaces[(i + size_t(m)) % surfaces.size()];
             int page = int(i % 3);
+            json r = s.command("render " + std::string(mapper.name) + " " + std::to_string(page) + " " + surface);
+            if (!r["ok"].get<bool>()) {  // a texture the mapper cannot take (e.g. not 256 wide): the host agrees
+                EXPECT_FALSE(raster::mapper_accepts(mapper, host.texture)) << mapper.name << ": " << r.dump();
+                continue;
+            }
+            raster::Axis axis = r["walker"] == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
             raster::RenderStats host_stats;
             IndexImage want = render_mapper(host, mapper, axis, &host_stats);
-            json r = s.ok("render " + std::string(mapper.name) + " " + std::to_string(page) + " " + surface);
             EXPECT_EQ(r["pixels"], host_stats.pixels) << mapper.name << " " << surface;
             EXPECT_EQ(r["spans"], host_stats.spans) << mapper.name << " " << surface;
+            EXPECT_EQ(r["polygons"], host_stats.polygons) << mapper.name << " " << surface;
             s.ok("flip " + std::to_string(page));
             std::string stem = sc.name + "-" + mapper.name + "-" + surface;
             IndexImage got = s.screenshot(stem, MODE_X, default_palette());
@@ -104,7 +113,7 @@ TEST(Render, KernelPicturesEqualTheHostsForBothMappersOnEveryScene) {
             ++compared;
         }
     }
-    EXPECT_EQ(compared, int(all.size()) * raster::MAPPER_COUNT);
+    EXPECT_GE(compared, int(all.size()) * 2);
 }
 
 TEST(Render, EverySurfaceGivesTheSamePictureForTheExactMapper) {
@@ -187,8 +196,13 @@ TEST(Mappers, TheKernelListsTheRegistry) {
 
 TEST(Mappers, TheKernelSelftestComparesEveryNasmLoopWithItsTwin) {
     Session s(options_for_this_test());
+    json text_mode = s.ok("selftest 100");
+    EXPECT_FALSE(text_mode["vga_loops_checked"].get<bool>()) << "loops that program the VGA need Mode X";
+    s.ok("mode modex");
     json r = s.ok("selftest 3000");
-    ASSERT_FALSE(r["loops"].empty());
+    EXPECT_TRUE(r["vga_loops_checked"].get<bool>());
+    ASSERT_EQ(r["loops"].size(), size_t(raster::CHECKED_LOOP_COUNT)) << "every loop with a NASM twin";
+    for (int i = 0; i < raster::CHECKED_LOOP_COUNT; ++i) EXPECT_EQ(r["loops"][size_t(i)]["loop"], raster::CHECKED_LOOPS[i].name);
     for (const json& loop : r["loops"]) {
         EXPECT_EQ(loop["cases"], 3000) << loop.dump();
         EXPECT_EQ(loop["mismatches"], 0) << loop.dump();
@@ -205,13 +219,17 @@ TEST(Mappers, AsmAndTwinDrawTheSamePictureInTheKernel) {
     int with_asm = 0;
     for (const json& m : listed) {
         std::string name = m["name"];
-        json a = s.ok("render " + name + " 0 vga asm");
-        EXPECT_EQ(a["loop"], m["asm"].get<bool>() ? "asm" : "twin") << name;
-        with_asm += m["asm"].get<bool>();
-        IndexImage by_asm = s.readback(0);
-        json t = s.ok(std::string("render ") + name + " 1 vga twin");
-        EXPECT_EQ(t["loop"], "twin");
-        EXPECT_TRUE(compare(s.readback(1), by_asm).equal()) << name;
+        for (const json& surface_json : m["surfaces"]) {
+            std::string surface = surface_json;
+            json a = s.ok("render " + name + " 0 " + surface + " asm");
+            bool asm_here = m["asm"].get<bool>() && (surface == "vga" || name != "xsharp-row-out");
+            EXPECT_EQ(a["loop"], asm_here ? "asm" : "twin") << name << " " << surface;
+            with_asm += asm_here;
+            IndexImage by_asm = s.readback(0);
+            json t = s.ok("render " + name + " 1 " + surface + " twin");
+            EXPECT_EQ(t["loop"], "twin");
+            EXPECT_TRUE(compare(s.readback(1), by_asm).equal()) << name << " " << surface;
+        }
     }
     EXPECT_GT(with_asm, 0);
     EXPECT_FALSE(s.command("render exact 0 vga fastest")["ok"].get<bool>());

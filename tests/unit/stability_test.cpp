@@ -4,20 +4,25 @@
 // stays the definition's.
 #include <gtest/gtest.h>
 
+#include "kernel/raster/classic.h"
 #include "tests/unit/raster_helpers.h"
 
 namespace {
 
 using namespace rastertest;
 
+double classic_limit() { return classic::MAX_COORD; }
+
 constexpr uint8_t GUARD = 0xA5;
 constexpr int32_t G = 8;  // guard pixels around the surface
 
-std::vector<std::vector<Vertex>> extreme_polygons(uint32_t seed) {
+// Polygons at the limits. With `inside` set (mappers that cannot wrap), texture coordinates stay
+// within a texture of that size, so those mappers draw them rather than refuse them.
+std::vector<std::vector<Vertex>> extreme_polygons(uint32_t seed, int32_t inside = 0) {
     std::mt19937 rng(seed);
     auto pick = [&](std::initializer_list<double> values) { return *(values.begin() + rng() % values.size()); };
     auto any = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-    const double L = MAX_COORD_PIXELS;
+    const double L = inside ? classic_limit() : MAX_COORD_PIXELS;
     std::vector<std::vector<Vertex>> out;
     for (int k = 0; k < 400; ++k) {
         std::vector<Vertex> p;
@@ -26,75 +31,117 @@ std::vector<std::vector<Vertex>> extreme_polygons(uint32_t seed) {
             double x = pick({any(-L, L), any(-2, 322), pick({-L, L, 0.0, 319.999, 160.5}), any(150, 151)});
             double y = pick({any(-L, L), any(-2, 242), pick({-L, L, 0.0, 239.999, 120.5}), any(100, 100.01)});
             double w = pick({MIN_W, MAX_W, 1.0, any(MIN_W, 1), any(1, MAX_W)});
-            double u = pick({MAX_UV, -MAX_UV, any(-MAX_UV, MAX_UV), any(-2, 2), 32767.9, -32768.1});
-            double v = pick({MAX_UV, -MAX_UV, any(-MAX_UV, MAX_UV), any(-2, 2), 65535.5});
+            double u = inside ? pick({0.0, double(inside), any(0, inside)}) : pick({MAX_UV, -MAX_UV, any(-MAX_UV, MAX_UV), any(-2, 2), 32767.9, -32768.1});
+            double v = inside ? pick({0.0, double(inside), any(0, inside)}) : pick({MAX_UV, -MAX_UV, any(-MAX_UV, MAX_UV), any(-2, 2), 65535.5});
             p.push_back(vertex(x, y, w, u, v));
         }
         out.push_back(p);
     }
-    // the whole screen, under a triangle a thousand screens wide
-    out.push_back({vertex(-L, -L, MIN_W, -MAX_UV, -MAX_UV), vertex(L, -L, MAX_W, MAX_UV, 0), vertex(0, L, 1, 0, MAX_UV)});
+    // the whole screen, under a triangle a hundred screens wide
+    double t = inside ? double(inside) : MAX_UV;
+    out.push_back({vertex(-L, -L, MIN_W, inside ? 0 : -t, inside ? 0 : -t), vertex(L, -L, MAX_W, t, 0), vertex(0, L, 1, 0, t)});
     return out;
 }
 
+// A surface with guard bytes around it, linear or planar as the mapper draws.
+struct GuardedSurface {
+    bool planar;
+    int32_t pitch = SCREEN_WIDTH + 2 * G;
+    std::vector<uint8_t> bytes;
+    Target target;
+    explicit GuardedSurface(const Mapper& m) : planar(m.needs & NEED_PLANAR_TARGET) {
+        if (planar) {
+            bytes.assign(4 * size_t(PLANE_BYTES) + 2 * 256, GUARD);
+            target = planar_target(bytes.data() + 256);
+        } else {
+            bytes.assign(size_t(pitch) * size_t(SCREEN_HEIGHT + 2 * G), GUARD);
+            target = linear_target(bytes.data() + G * pitch + G, SCREEN_WIDTH, SCREEN_HEIGHT, pitch);
+        }
+        target.clip = ClipRect{1, 2, SCREEN_WIDTH - 3, SCREEN_HEIGHT - 4};  // inner clip: its border is guarded too
+    }
+    // Bytes outside the clip rectangle that are no longer GUARD.
+    size_t written_outside() const {
+        size_t n = 0;
+        const ClipRect& c = target.clip;
+        auto inside = [&](int32_t x, int32_t y) { return x >= c.x0 && x < c.x1 && y >= c.y0 && y < c.y1; };
+        if (planar) {
+            for (size_t i = 0; i < 256; ++i) n += (bytes[i] != GUARD) + (bytes[bytes.size() - 1 - i] != GUARD);
+            for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
+                for (int32_t x = 0; x < SCREEN_WIDTH; ++x)
+                    if (!inside(x, y)) n += bytes[256 + size_t(x & 3) * PLANE_BYTES + size_t(y) * PLANE_ROW_BYTES + size_t(x >> 2)] != GUARD;
+            return n;
+        }
+        for (int32_t y = 0; y < SCREEN_HEIGHT + 2 * G; ++y)
+            for (int32_t x = 0; x < pitch; ++x)
+                if (!inside(x - G, y - G)) n += bytes[size_t(y) * size_t(pitch) + size_t(x)] != GUARD;
+        return n;
+    }
+};
+
 TEST(Stability, NothingIsWrittenOutsideTheClipAndCoverageHolds) {
-    const int32_t pitch = SCREEN_WIDTH + 2 * G;
     for (int m = 0; m < MAPPER_COUNT; ++m) {
+        const Mapper& mapper = MAPPERS[m];
+        bool inside_only = mapper.needs & NEED_INSIDE;
         for (Axis axis : {Axis::Rows, Axis::Columns}) {
+            if (!mapper_walks(mapper, axis)) continue;
             for (Wrap wrap : {Wrap::Repeat, Wrap::Clamp}) {
                 for (int32_t size : {1, 3, 64, 1024}) {
-                    std::vector<uint8_t> texels(size_t(size) * size_t(size));  // exactly the size: ASan sees any stray read
+                    // exactly the size: ASan sees any stray read, of the texels and of the bordered copy
+                    std::vector<uint8_t> texels(size_t(size) * size_t(size)), bordered(size_t(bordered_bytes(size, size)));
                     generate_texture(TextureKind::Xor, size, size, texels.data());
                     Texture tex{texels.data(), size, size, wrap};
-                    std::vector<uint8_t> surface(size_t(pitch) * size_t(SCREEN_HEIGHT + 2 * G), GUARD);
-                    Target t = linear_target(surface.data() + G * pitch + G, SCREEN_WIDTH, SCREEN_HEIGHT, pitch);
-                    t.clip = ClipRect{1, 2, SCREEN_WIDTH - 3, SCREEN_HEIGHT - 4};  // inner clip: its border is guarded too
+                    make_bordered(tex, bordered.data());
+                    tex.bordered = bordered.data();
+                    GuardedSurface surface(mapper);
                     RenderStats stats;
-                    for (const auto& p : extreme_polygons(uint32_t(size))) draw_polygon(p.data(), int(p.size()), tex, MAPPERS[m], axis, t, &stats);
-                    size_t written_outside = 0;
-                    for (int32_t y = 0; y < SCREEN_HEIGHT + 2 * G; ++y)
-                        for (int32_t x = 0; x < pitch; ++x) {
-                            int32_t sx = x - G, sy = y - G;
-                            bool inside = sx >= t.clip.x0 && sx < t.clip.x1 && sy >= t.clip.y0 && sy < t.clip.y1;
-                            if (!inside && surface[size_t(y) * size_t(pitch) + size_t(x)] != GUARD) ++written_outside;
-                        }
-                    EXPECT_EQ(written_outside, 0u) << MAPPERS[m].name << " texture " << size;
-                    EXPECT_GT(stats.polygons, 100u);
-                    EXPECT_GT(stats.pixels, uint32_t(SCREEN_PIXELS)) << "the screen-sized triangle at least";
+                    for (const auto& p : extreme_polygons(uint32_t(size), inside_only ? size : 0))
+                        draw_polygon(p.data(), int(p.size()), tex, mapper, axis, surface.target, &stats);
+                    EXPECT_EQ(surface.written_outside(), 0u) << mapper.name << " texture " << size;
+                    EXPECT_GT(stats.polygons, 100u) << mapper.name;
+                    EXPECT_GT(stats.pixels, uint32_t(SCREEN_PIXELS)) << mapper.name << ": the screen-sized triangle at least";
                 }
             }
         }
     }
 }
 
-TEST(Stability, PlanarTargetsStayInTheirPage) {
-    std::vector<uint8_t> texels(64 * 64);
+// The plane selection on planar targets: once per column for column walkers (the map mask set
+// outside the inner loop), once per pixel for row loops on Mode X (X-Sharp's OUT per pixel);
+// generic row walkers refuse planar targets.
+TEST(Stability, PlaneSelectionOnPlanarTargets) {
+    std::vector<uint8_t> texels(64 * 64), bordered(size_t(bordered_bytes(64, 64)));
     generate_texture(TextureKind::Grid, 64, 64, texels.data());
     Texture tex{texels.data(), 64, 64, Wrap::Repeat};
+    make_bordered(tex, bordered.data());
+    tex.bordered = bordered.data();
     for (int m = 0; m < MAPPER_COUNT; ++m) {
+        const Mapper& mapper = MAPPERS[m];
         std::vector<uint8_t> planes(4 * size_t(PLANE_BYTES) + 2 * 64, GUARD);
         Target t = planar_target(planes.data() + 64);
         int selects = 0;
-        int last_plane = -1;
-        struct Ctx { int* selects; int* last; } ctx{&selects, &last_plane};
-        t.ctx = &ctx;
-        t.select_plane = [](void* c, int plane) {
-            auto* k = static_cast<Ctx*>(c);
-            ++*k->selects;
-            *k->last = plane;
-        };
-        RenderStats stats;
-        for (const auto& p : extreme_polygons(5)) draw_polygon(p.data(), int(p.size()), tex, MAPPERS[m], Axis::Columns, t, &stats);
-        RenderStats before = stats;
-        std::vector<Vertex> big = {vertex(0, 0), vertex(300, 0), vertex(0, 200)};
-        draw_polygon(big.data(), 3, tex, MAPPERS[m], Axis::Rows, t, &stats);
-        EXPECT_EQ(stats.rejected, before.rejected + 1) << "rows on a planar target are refused";
-        EXPECT_EQ(stats.pixels, before.pixels);
-        for (int i = 0; i < 64; ++i) {
-            EXPECT_EQ(planes[size_t(i)], GUARD);
-            EXPECT_EQ(planes[planes.size() - 1 - size_t(i)], GUARD);
+        t.ctx = &selects;
+        t.select_plane = [](void* c, int) { ++*static_cast<int*>(c); };
+        auto polygons = extreme_polygons(5, mapper.needs & NEED_INSIDE ? 64 : 0);
+        for (Axis axis : {Axis::Rows, Axis::Columns}) {
+            if (!mapper_walks(mapper, axis)) continue;
+            selects = 0;
+            RenderStats stats;
+            for (const auto& p : polygons) draw_polygon(p.data(), int(p.size()), tex, mapper, axis, t, &stats);
+            if (axis == Axis::Columns) {
+                EXPECT_EQ(uint32_t(selects), stats.spans) << mapper.name << ": one plane selection per column";
+                EXPECT_GT(stats.pixels, 0u) << mapper.name;
+            } else if (mapper.needs & NEED_PLANAR_TARGET) {
+                EXPECT_EQ(uint32_t(selects), stats.pixels) << mapper.name << ": one OUT per pixel";
+                EXPECT_GT(stats.pixels, 0u) << mapper.name;
+            } else {
+                EXPECT_EQ(stats.pixels, 0u) << mapper.name << ": rows on a planar target are refused";
+                EXPECT_EQ(stats.rejected, uint32_t(polygons.size()));
+            }
         }
-        EXPECT_EQ(uint32_t(selects), stats.spans) << "one plane selection per column";
+        for (int i = 0; i < 64; ++i) {
+            EXPECT_EQ(planes[size_t(i)], GUARD) << mapper.name;
+            EXPECT_EQ(planes[planes.size() - 1 - size_t(i)], GUARD) << mapper.name;
+        }
     }
 }
 

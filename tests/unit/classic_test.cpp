@@ -1,0 +1,139 @@
+// The classic mappers' own properties: what each reproduces, checked where the published
+// algorithm says what it does (docs/mappers.md).
+#include <gtest/gtest.h>
+
+#include "kernel/raster/classic.h"
+#include "tests/unit/raster_helpers.h"
+
+namespace {
+
+using namespace rastertest;
+
+const Mapper& mapper(const char* name) {
+    const Mapper* m = find_mapper({name, strlen(name)});
+    if (!m) throw std::runtime_error(std::string("no mapper ") + name);
+    return *m;
+}
+
+// How often the mapper drew each pixel, one polygon at a time (planes for the planar mappers).
+std::vector<int> draw_counts(const Mapper& m, const std::vector<std::vector<Vertex>>& polygons, int32_t tex_size) {
+    std::vector<uint8_t> ones(size_t(tex_size) * size_t(tex_size), 1), bordered(size_t(bordered_bytes(tex_size, tex_size)));
+    Texture tex{ones.data(), tex_size, tex_size, Wrap::Repeat};
+    make_bordered(tex, bordered.data());
+    tex.bordered = bordered.data();
+    std::vector<int> counts(SCREEN_PIXELS, 0);
+    for (const auto& p : polygons) {
+        std::vector<uint8_t> surface(SCREEN_PIXELS, 0), linear(SCREEN_PIXELS);
+        bool planar = m.needs & NEED_PLANAR_TARGET;
+        Target t = planar ? planar_target(surface.data()) : linear_target(surface.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+        RenderStats stats;
+        Axis axis = m.axes == AXIS_COLUMNS ? Axis::Columns : Axis::Rows;
+        draw_polygon(p.data(), int(p.size()), tex, m, axis, t, &stats);
+        if (planar) linear_from_planar(surface.data(), linear.data());
+        else linear = surface;
+        for (int i = 0; i < SCREEN_PIXELS; ++i) counts[size_t(i)] += linear[size_t(i)];
+    }
+    return counts;
+}
+
+// A jittered grid of triangles on whole pixels (the classics' vertices), texture inside 0..64.
+std::vector<std::vector<Vertex>> integer_mesh(uint32_t seed, std::vector<Vertex>* outline) {
+    std::mt19937 rng(seed);
+    const int cols = 6, rows = 5;
+    std::vector<std::vector<Vertex>> grid(cols + 1, std::vector<Vertex>(rows + 1));
+    for (int i = 0; i <= cols; ++i)
+        for (int j = 0; j <= rows; ++j) {
+            bool inner = i > 0 && i < cols && j > 0 && j < rows;
+            int x = 20 + i * 45 + (inner ? int(rng() % 21) - 10 : 0), y = 10 + j * 44 + (inner ? int(rng() % 21) - 10 : 0);
+            grid[size_t(i)][size_t(j)] = vertex(x, y, 1, i * 64.0 / cols, j * 64.0 / rows);
+        }
+    std::vector<std::vector<Vertex>> tris;
+    for (int i = 0; i < cols; ++i)
+        for (int j = 0; j < rows; ++j) {
+            const Vertex &a = grid[size_t(i)][size_t(j)], &b = grid[size_t(i + 1)][size_t(j)], &c = grid[size_t(i + 1)][size_t(j + 1)],
+                         &d = grid[size_t(i)][size_t(j + 1)];
+            tris.push_back({a, b, c});
+            tris.push_back({a, c, d});
+        }
+    *outline = {grid[0][0], grid[cols][0], grid[cols][rows], grid[0][rows]};
+    return tris;
+}
+
+TEST(XSharp, TheAsmRowLoopDrawsWhatTheCListingDraws) {
+    // listing 57.2 is listing 57.1 in assembly: the same pixels, the same texels
+    TriangleGen gen(31);
+    for (int batch = 0; batch < 10; ++batch) {
+        auto scene = empty_scene(TextureKind::Xor, 128, 128, Wrap::Repeat);
+        for (int k = 0; k < 40; ++k) {
+            std::vector<Vertex> t = gen.triangle();
+            for (Vertex& v : t) v.u = std::fmod(std::fabs(v.u), 128.0), v.v = std::fmod(std::fabs(v.v), 128.0);
+            add_polygon(*scene, t);
+        }
+        LoadedScene s = make_loaded_scene(std::move(scene), "random");
+        RenderStats a, b;
+        IndexImage dda = render_mapper(s, mapper("xsharp-dda"), Axis::Rows, &a);
+        IndexImage out = render_mapper(s, mapper("xsharp-row-out"), Axis::Rows, &b);
+        EXPECT_TRUE(compare(out, dda).equal()) << "batch " << batch << ": " << compare(out, dda).summary();
+        EXPECT_EQ(a.pixels, b.pixels);
+        EXPECT_GT(a.pixels, 1000u);
+    }
+}
+
+TEST(XSharp, MeshesOnWholePixelsAreWatertight) {
+    // X-Sharp's fill convention (top and left edges in, bottom and right out) leaves no gaps and no
+    // overlaps between polygons sharing edges, by rows (57.x) and by columns (X-Sharp 22)
+    for (const char* name : {"xsharp-dda", "xsharp-column"}) {
+        for (uint32_t seed = 1; seed <= 20; ++seed) {
+            std::vector<Vertex> outline;
+            auto tris = integer_mesh(seed, &outline);
+            std::vector<int> mesh = draw_counts(mapper(name), tris, 64), whole = draw_counts(mapper(name), {outline}, 64);
+            int overlaps = 0, holes = 0, outside = 0;
+            for (size_t i = 0; i < mesh.size(); ++i) {
+                overlaps += mesh[i] > 1;
+                holes += whole[i] == 1 && mesh[i] == 0;
+                outside += whole[i] == 0 && mesh[i] > 0;
+            }
+            EXPECT_EQ(overlaps, 0) << name << " seed " << seed;
+            EXPECT_EQ(holes, 0) << name << " seed " << seed;
+            EXPECT_EQ(outside, 0) << name << " seed " << seed;
+        }
+    }
+}
+
+TEST(XSharp, AnAxisAlignedSquareMapsTexelForTexel) {
+    // 64 x 64 pixels on whole pixels showing a 64 x 64 texture: every texel exactly once, as the
+    // reference does; the half-step and the rounding to the nearest texel center the samples
+    auto scene = empty_scene(TextureKind::Xor, 64, 64, Wrap::Clamp);
+    add_polygon(*scene, {vertex(100, 50, 1, 0, 0), vertex(164, 50, 1, 64, 0), vertex(164, 114, 1, 64, 64), vertex(100, 114, 1, 0, 64)});
+    LoadedScene s = make_loaded_scene(std::move(scene), "square");
+    auto ref = render_reference(s);
+    for (const char* name : {"xsharp-dda", "xsharp-row-out", "xsharp-column"}) {
+        const Mapper& m = mapper(name);
+        AccuracyMetrics a = compare_to_reference(ref->view, measure_mapper(s, m, default_axis(m))->view, 64, 64, Wrap::Clamp);
+        EXPECT_EQ(a.gaps + a.overdraw + a.overlaps, 0u) << name;
+        EXPECT_EQ(a.max_texel_error, 0u) << name;
+        EXPECT_EQ(a.reference_pixels, 64u * 64u);
+    }
+}
+
+TEST(XSharp, CoordinatesBeyondTheTextureAreRefusedNotWrapped) {
+    // X-Sharp could not wrap: a polygon whose texture coordinates span more than the texture is
+    // not drawn (its pointers would walk off the bitmap); one that fits after a whole-period shift is
+    auto scene = empty_scene(TextureKind::Xor, 64, 64, Wrap::Repeat);
+    add_polygon(*scene, {vertex(10, 10, 1, 0, 0), vertex(100, 10, 1, 100, 0), vertex(10, 100, 1, 0, 20)});    // u spans 100 > 64
+    add_polygon(*scene, {vertex(120, 10, 1, 640, 64), vertex(200, 10, 1, 700, 64), vertex(120, 100, 1, 640, 128)});  // fits after -640, -64
+    LoadedScene s = make_loaded_scene(std::move(scene), "wrap");
+    for (const char* name : {"xsharp-dda", "xsharp-row-out", "xsharp-column"}) {
+        RenderStats stats;
+        render_mapper(s, mapper(name), default_axis(mapper(name)), &stats);
+        EXPECT_EQ(stats.rejected, 1u) << name;
+        EXPECT_EQ(stats.polygons, 1u) << name;
+    }
+    classic::Vertex16 out[3];
+    int n;
+    std::vector<Vertex> bowtie_free = {vertex(0, 0, 1, 0, 0), vertex(10, 0, 1, 64.5, 0), vertex(0, 10, 1, 0, 0)};
+    std::vector<uint8_t> t(64 * 64);
+    EXPECT_EQ(classic::convert(bowtie_free.data(), 3, Texture{t.data(), 64, 64, Wrap::Clamp}, 0, out, &n), SetupStatus::OutsideTexture);
+}
+
+}  // namespace
