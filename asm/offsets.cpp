@@ -47,4 +47,14 @@ void offsets() {
     OFFSET(XCOL_ROW, raster::XSharpColumnArgs, row);
     OFFSET(XCOL_BACKWARDS, raster::XSharpColumnArgs, backwards);
     asm volatile("\n.ascii \"@@@ XSHARP_SCANWIDTH %c0\"" : : "i"(raster::XSHARP_SCANWIDTH));
+
+    OFFSET(HECKER_DST, raster::HeckerArgs, dst);
+    OFFSET(HECKER_COUNT, raster::HeckerArgs, count);
+    OFFSET(HECKER_TEXEL, raster::HeckerArgs, texel);
+    OFFSET(HECKER_U_FRAC, raster::HeckerArgs, u_frac);
+    OFFSET(HECKER_V_FRAC, raster::HeckerArgs, v_frac);
+    OFFSET(HECKER_DU_FRAC, raster::HeckerArgs, du_frac);
+    OFFSET(HECKER_DV_FRAC, raster::HeckerArgs, dv_frac);
+    OFFSET(HECKER_STEP_CARRY, raster::HeckerArgs, step_carry);
+    OFFSET(HECKER_STEP_NO_CARRY, raster::HeckerArgs, step_no_carry);
 }

@@ -23,10 +23,7 @@ double period_shift(double lo, int32_t size, Wrap wrap) {
 
 }  // namespace
 
-SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_offset, Vertex16* out, int* count) {
-    *count = 0;
-    if (n > MAX_VERTICES) return SetupStatus::TooManyVertices;
-    if (n < 3) return SetupStatus::Degenerate;
+SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double* shift_u, double* shift_v) {
     for (int i = 0; i < n; ++i) {
         const Vertex& v = in[i];
         if (!(v.u == v.u) || !(v.v == v.v) || v.u > MAX_UV || v.u < -MAX_UV || v.v > MAX_UV || v.v < -MAX_UV) return SetupStatus::OutOfRange;
@@ -38,18 +35,31 @@ SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_of
         if (in[i].u < lo_u) lo_u = in[i].u;
         if (in[i].v < lo_v) lo_v = in[i].v;
     }
-    double shift_u = period_shift(lo_u, tex.width, tex.wrap), shift_v = period_shift(lo_v, tex.height, tex.wrap);
-    int64_t area2 = 0;
+    *shift_u = period_shift(lo_u, tex.width, tex.wrap);
+    *shift_v = period_shift(lo_v, tex.height, tex.wrap);
+    for (int i = 0; i < n; ++i) {
+        double u = in[i].u + *shift_u, t = in[i].v + *shift_v;
+        if (u < 0 || u > double(tex.width) || t < 0 || t > double(tex.height)) return SetupStatus::OutsideTexture;
+    }
+    return SetupStatus::Ok;
+}
+
+SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_offset, Vertex16* out, int* count) {
+    *count = 0;
+    if (n > MAX_VERTICES) return SetupStatus::TooManyVertices;
+    if (n < 3) return SetupStatus::Degenerate;
+    double shift_u, shift_v;
+    SetupStatus status = texture_shift(in, n, tex, &shift_u, &shift_v);
+    if (status != SetupStatus::Ok) return status;
     for (int i = 0; i < n; ++i) {
         const Vertex& v = in[i];
-        double u = v.u + shift_u, t = v.v + shift_v;
-        if (u < 0 || u > double(tex.width) || t < 0 || t > double(tex.height)) return SetupStatus::OutsideTexture;
         out[i].x = (v.x.raw + int32_t(SUBPIXEL_HALF)) >> SUBPIXEL_BITS;
         out[i].y = (v.y.raw + int32_t(SUBPIXEL_HALF)) >> SUBPIXEL_BITS;
-        out[i].u = Fixed16_16::from_double(u + texel_offset).raw;
-        out[i].v = Fixed16_16::from_double(t + texel_offset).raw;
+        out[i].u = Fixed16_16::from_double(v.u + shift_u + texel_offset).raw;
+        out[i].v = Fixed16_16::from_double(v.v + shift_v + texel_offset).raw;
         out[i].w = v.w;
     }
+    int64_t area2 = 0;
     for (int i = 0; i < n; ++i) {
         const Vertex16& a = out[i];
         const Vertex16& b = out[(i + 1) % n];

@@ -28,6 +28,11 @@ constexpr int MAX_VERTICES = MAX_POLYGON_VERTICES;
 // Their 16.16 arithmetic holds line lengths below 32768 pixels: vertices must lie within +-8192.
 constexpr int32_t MAX_COORD = 8192;
 
+// The whole-period shifts (repeat) that bring a polygon's smallest texture coordinates into
+// [0, size); OutsideTexture when the shifted coordinates still leave [0, width] x [0, height],
+// OutOfRange for coordinates beyond MAX_COORD or non-finite texture coordinates.
+SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double* shift_u, double* shift_v);
+
 // Converts a polygon: x and y rounded to the nearest pixel corner (ties up); clockwise screen order
 // (the classics relied on back-face culling for it; here the winding is fixed up instead); texture
 // coordinates shifted by whole periods so the smallest lies in [0, size) (repeat) and then required

@@ -62,6 +62,20 @@ struct XSharpColumnArgs {
 };
 void xsharp_column_loop(const void* args);
 
+// hecker-steptable (Hecker, Game Developer part V, listing 2): one pointer carries both texel
+// coordinates; per pixel the v fraction's carry (sbb: 0 or -1) picks one of two table entries and
+// the u fraction's carry goes in through adc. Any texture width; nothing wraps.
+struct HeckerArgs {
+    uint8_t* dst;            // count pixels left to right
+    int32_t count;
+    const uint8_t* texel;    // the first pixel's texel
+    uint32_t u_frac, v_frac; // fractions in bits 31..16
+    uint32_t du_frac, dv_frac;
+    int32_t step_carry;      // whole du + whole dv times the pitch, plus the pitch: v carried
+    int32_t step_no_carry;   // whole du + whole dv times the pitch
+};
+void hecker_loop(const void* args);
+
 }  // namespace raster
 
 // The NASM twins (asm/*.asm), in builds that assemble them.
@@ -69,6 +83,7 @@ extern "C" {
 void exact_loop_asm(const void* args);
 void xsharp_row_asm(const void* args);     // VGA only: writes the Map Mask through port 0x3C5
 void xsharp_column_asm(const void* args);
+void hecker_loop_asm(const void* args);
 }
 
 #if defined(MODEXLAB_ASM_LOOPS)

@@ -1,6 +1,7 @@
 // Our generic-walker mappers' span functions, and the registry.
 #include "kernel/raster/mappers.h"
 
+#include "kernel/raster/hecker.h"
 #include "kernel/raster/xsharp.h"
 
 namespace raster {
@@ -82,6 +83,9 @@ const Mapper MAPPERS[] = {
      "affine; columns with X-Sharp's fill convention; the Y fraction keeps 15 bits (a texel row off at about 2 pixels in 10000)",
      NEED_BORDERED | NEED_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, xsharp_column_loop, MODEXLAB_ASM(xsharp_column_asm),
      xsharp::draw_column},
+    {"hecker-steptable", "classic", "Hecker, Game Developer 1995-96, parts III-V (SUBAFXFL setup, part V listing 2 loop)",
+     "perspective-correct every 8 pixels, affine between; 28.4 vertices, top-left fill; rounding modifiers from du/dx; cannot wrap",
+     NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, hecker_loop, MODEXLAB_ASM(hecker_loop_asm), hecker::draw},
 };
 const int MAPPER_COUNT = sizeof(MAPPERS) / sizeof(MAPPERS[0]);
 

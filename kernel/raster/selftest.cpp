@@ -143,6 +143,34 @@ LoopCheck check_xsharp_column(const CheckedLoop& loop, LoopFn other, uint32_t se
     return result;
 }
 
+LoopCheck check_hecker(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    LoopCheck result;
+    result.loop = loop.name;
+    Random r(seed);
+    fill_texels(r, buf.texels);
+    for (uint32_t c = 0; c < cases; ++c) {
+        HeckerArgs a;
+        int32_t pitch = r.range(3, 600);  // any width: the step table holds the pitch
+        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.texel = buf.texels + MID + r.range(-1000, 1000);
+        a.u_frac = r.next() & 0xFFFF0000u;
+        a.v_frac = r.next() & 0xFFFF0000u;
+        a.du_frac = r.below(8) == 0 ? 0 : r.next() & 0xFFFF0000u;
+        a.dv_frac = r.below(8) == 0 ? 0 : r.next() & 0xFFFF0000u;
+        a.step_no_carry = r.range(-3, 3) + r.range(-1, 1) * pitch;
+        a.step_carry = a.step_no_carry + (r.below(2) ? pitch : -pitch);
+        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0);
+        HeckerArgs b = a;
+        a.dst = buf.a + GUARD_BYTES;
+        b.dst = buf.b + GUARD_BYTES;
+        ++result.cases;
+        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
+        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
+            if (result.mismatches++ == 0) result.first_mismatch = c;
+    }
+    return result;
+}
+
 void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32_t* x, int32_t* y) {
     int32_t pitch = r.range(3, 600);
     *y = r.range(0, 239);
@@ -166,6 +194,7 @@ const CheckedLoop CHECKED_LOOPS[] = {
     {"exact", exact_loop, MODEXLAB_ASM(exact_loop_asm), check_exact, false},
     {"xsharp-row-out", xsharp_row_loop, MODEXLAB_ASM(xsharp_row_asm), nullptr, true},
     {"xsharp-column", xsharp_column_loop, MODEXLAB_ASM(xsharp_column_asm), check_xsharp_column, false},
+    {"hecker-steptable", hecker_loop, MODEXLAB_ASM(hecker_loop_asm), check_hecker, false},
 };
 const int CHECKED_LOOP_COUNT = sizeof(CHECKED_LOOPS) / sizeof(CHECKED_LOOPS[0]);
 

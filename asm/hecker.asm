@@ -1,0 +1,53 @@
+; hecker_loop_asm: the inner loop of Hecker's part V listing 2; twin of hecker_loop in
+; kernel/raster/hecker.cpp. One pointer holds both texel coordinates; the v fraction's carry picks
+; one of two step-table entries through sbb, the u fraction's carry is added by adc.
+;   esi: texel pointer   edi: destination   ecx: u fraction (bits 31..16)   edx: v fraction
+;   ebx: u fraction step   ebp: 0 or -1 (v carried)   al: texel
+;   [esp]: step table, v carried   [esp+4]: v did not carry   [esp+8]: v fraction step   [esp+12]: count
+
+bits 32
+
+%include "offsets.inc"
+
+section .text
+
+global hecker_loop_asm
+hecker_loop_asm:
+    push ebp
+    push ebx
+    push esi
+    push edi
+    mov eax, [esp + 20]
+    sub esp, 16
+    mov ecx, [eax + HECKER_STEP_CARRY]
+    mov [esp], ecx
+    mov ecx, [eax + HECKER_STEP_NO_CARRY]
+    mov [esp + 4], ecx
+    mov ecx, [eax + HECKER_DV_FRAC]
+    mov [esp + 8], ecx
+    mov ecx, [eax + HECKER_COUNT]
+    mov [esp + 12], ecx
+    mov edi, [eax + HECKER_DST]
+    mov esi, [eax + HECKER_TEXEL]
+    mov edx, [eax + HECKER_V_FRAC]
+    mov ebx, [eax + HECKER_DU_FRAC]
+    mov ecx, [eax + HECKER_U_FRAC]
+    cmp dword [esp + 12], 0
+    jle .done
+.pixel:
+    mov al, [esi]
+    mov [edi], al
+    inc edi
+    add edx, [esp + 8]                  ; v fraction; CF = v carry
+    sbb ebp, ebp                        ; 0, or -1 when v carried
+    add ecx, ebx                        ; u fraction; CF = u carry
+    adc esi, [esp + 4 + ebp * 4]        ; the table entry for the v carry, plus the u carry
+    dec dword [esp + 12]
+    jnz .pixel
+.done:
+    add esp, 16
+    pop edi
+    pop esi
+    pop ebx
+    pop ebp
+    ret
