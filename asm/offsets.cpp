@@ -57,4 +57,17 @@ void offsets() {
     OFFSET(HECKER_DV_FRAC, raster::HeckerArgs, dv_frac);
     OFFSET(HECKER_STEP_CARRY, raster::HeckerArgs, step_carry);
     OFFSET(HECKER_STEP_NO_CARRY, raster::HeckerArgs, step_no_carry);
+
+    OFFSET(FATMAP_DST, raster::FatmapArgs, dst);
+    OFFSET(FATMAP_COUNT, raster::FatmapArgs, count);
+    OFFSET(FATMAP_TEXTURE, raster::FatmapArgs, texture);
+    OFFSET(FATMAP_U, raster::FatmapArgs, u);
+    OFFSET(FATMAP_V, raster::FatmapArgs, v);
+    OFFSET(FATMAP_DU, raster::FatmapArgs, du);
+    OFFSET(FATMAP_DV, raster::FatmapArgs, dv);
+
+    OFFSET(LUT_DST, raster::FatmapLutArgs, dst);
+    OFFSET(LUT_COUNT, raster::FatmapLutArgs, count);
+    OFFSET(LUT_SOURCE, raster::FatmapLutArgs, source);
+    OFFSET(LUT_TABLE, raster::FatmapLutArgs, table);
 }

@@ -21,6 +21,7 @@ raster::Scene g_scene;
 bool g_loaded = false;
 uint8_t g_texels[raster::MAX_TEXTURE_SIZE * raster::MAX_TEXTURE_SIZE];
 uint8_t g_bordered[(raster::MAX_TEXTURE_SIZE + 2) * (raster::MAX_TEXTURE_SIZE + 2)];
+uint8_t g_aligned[raster::ALIGNED256_BYTES];
 raster::Texture g_texture;
 alignas(4) uint8_t g_linear[raster::SCREEN_PIXELS];
 alignas(4) uint8_t g_planes[raster::SCREEN_PIXELS];
@@ -67,6 +68,7 @@ bool upload(size_t length, uint32_t crc32, raster::ParseError* error) {
     g_texture = raster::Texture{g_texels, g_scene.texture_width, g_scene.texture_height, g_scene.wrap};
     raster::make_bordered(g_texture, g_bordered);
     g_texture.bordered = g_bordered;
+    if (g_texture.width == 256 && g_texture.height == 256) g_texture.aligned256 = raster::make_aligned256(g_texture, g_aligned);
     g_loaded = true;
     return true;
 }

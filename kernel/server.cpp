@@ -271,6 +271,7 @@ void cmd_render(Context&, const StrView* args, size_t nargs) {
         m.s("mapper ").s(mapper->name).s(" cannot take this scene's ").u(uint32_t(tex.width)).s("x").u(uint32_t(tex.height)).s(" texture (needs:");
         if (mapper->needs & raster::NEED_POW2) m.s(" power-of-two sizes");
         if (mapper->needs & raster::NEED_WIDTH_256) m.s(" width 256");
+        if (mapper->needs & raster::NEED_ALIGNED256) m.s(" 256x256, repeating");
         m.s(")");
         reply::error("render", m.c_str());
         return;
@@ -315,6 +316,8 @@ void cmd_mappers(Context&, const StrView*, size_t) {
         r.begin_array("needs");
         if (m.needs & raster::NEED_POW2) r.item_str("pow2");
         if (m.needs & raster::NEED_WIDTH_256) r.item_str("width256");
+        if (m.needs & raster::NEED_ALIGNED256) r.item_str("256x256-repeat");
+        if (m.needs & raster::NEED_INSIDE) r.item_str("inside-texture");
         r.end_array().begin_array("walkers");
         if (m.axes & raster::AXIS_ROWS) r.item_str("rows");
         if (m.axes & raster::AXIS_COLUMNS) r.item_str("columns");

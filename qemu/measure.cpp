@@ -71,15 +71,19 @@ struct HostSurface {
     }
 };
 
-// A texture with the bordered copy the classic loops read, when the mapper needs one.
+// A texture with the copies the classic loops read (bordered, 64 KiB-aligned), when the mapper needs them.
 struct HostTexture {
     Texture texture;
-    std::vector<uint8_t> bordered;
+    std::vector<uint8_t> bordered, aligned;
     HostTexture(const Texture& t, const Mapper& m) : texture(t) {
         if (m.needs & NEED_BORDERED) {
             bordered.resize(size_t(bordered_bytes(t.width, t.height)));
             make_bordered(t, bordered.data());
             texture.bordered = bordered.data();
+        }
+        if ((m.needs & NEED_ALIGNED256) && t.width == 256 && t.height == 256) {
+            aligned.resize(ALIGNED256_BYTES);
+            texture.aligned256 = make_aligned256(t, aligned.data());
         }
     }
 };

@@ -1,6 +1,7 @@
 // Our generic-walker mappers' span functions, and the registry.
 #include "kernel/raster/mappers.h"
 
+#include "kernel/raster/fatmap.h"
 #include "kernel/raster/hecker.h"
 #include "kernel/raster/xsharp.h"
 
@@ -86,6 +87,15 @@ const Mapper MAPPERS[] = {
     {"hecker-steptable", "classic", "Hecker, Game Developer 1995-96, parts III-V (SUBAFXFL setup, part V listing 2 loop)",
      "perspective-correct every 8 pixels, affine between; 28.4 vertices, top-left fill; rounding modifiers from du/dx; cannot wrap",
      NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, hecker_loop, MODEXLAB_ASM(hecker_loop_asm), hecker::draw},
+    {"fatmap-256", "classic", "Byggmastar, fatmap.txt (1996): the constant-delta setup and the 5-tick loop",
+     "affine; whole-pixel vertices, x truncated, no prestep; 8-bit fractions (\"shaky\"); 256 x 256 only, wraps",
+     NEED_ALIGNED256, AXIS_ROWS, nullptr, fatmap_loop, MODEXLAB_ASM(fatmap_loop_asm), fatmap::draw_256},
+    {"fatmap-256-16", "classic", "Byggmastar, fatmap.txt setup with fatmap2.txt's 8:16 loop (Simmons)",
+     "as fatmap-256 with 16-bit fractions in the loop", NEED_ALIGNED256, AXIS_ROWS, nullptr, fatmap16_loop,
+     MODEXLAB_ASM(fatmap16_loop_asm), fatmap::draw_256},
+    {"fatmap-lut", "classic", "Byggmastar, fatmap.txt section 13: the table-lookup loop",
+     "affine; every scanline starts at the table's first entry: its start fractions dropped, up to a texel off on each axis and drifting; 256 x 256 only, cannot wrap",
+     NEED_ALIGNED256 | NEED_INSIDE, AXIS_ROWS, nullptr, fatmap_lut_loop, MODEXLAB_ASM(fatmap_lut_loop_asm), fatmap::draw_lut},
 };
 const int MAPPER_COUNT = sizeof(MAPPERS) / sizeof(MAPPERS[0]);
 

@@ -23,6 +23,7 @@ enum Need : uint32_t {
     NEED_INSIDE = 1 << 3,         // cannot wrap: a polygon's texture coordinates must fit in the texture
     NEED_PLANAR_TARGET = 1 << 4,  // writes Mode X planes itself (rows on a planar target)
     NEED_VGA_FOR_ASM = 1 << 5,    // the NASM loop programs the VGA: it runs on VGA pages only
+    NEED_ALIGNED256 = 1 << 6,     // 256 x 256, repeat, with the 64 KiB-aligned copy (Texture::aligned256)
 };
 
 // Which walkers a mapper works with.
@@ -82,6 +83,7 @@ inline bool mapper_accepts(const Mapper& m, const Texture& t) {
     if ((m.needs & NEED_POW2) && !pow2) return false;
     if ((m.needs & NEED_WIDTH_256) && t.width != 256) return false;
     if ((m.needs & NEED_BORDERED) && !t.bordered) return false;
+    if ((m.needs & NEED_ALIGNED256) && (t.width != 256 || t.height != 256 || t.wrap != Wrap::Repeat || !t.aligned256)) return false;
     return true;
 }
 

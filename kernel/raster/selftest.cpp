@@ -171,6 +171,62 @@ LoopCheck check_hecker(const CheckedLoop& loop, LoopFn other, uint32_t seed, uin
     return result;
 }
 
+LoopCheck check_fatmap(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    LoopCheck result;
+    result.loop = loop.name;
+    Random r(seed);
+    fill_texels(r, buf.texels);
+    // the loops need their texture on a 64 KiB boundary: the first such address in the buffer
+    const uint8_t* texture = reinterpret_cast<const uint8_t*>((reinterpret_cast<uintptr_t>(buf.texels) + 0xFFFF) & ~uintptr_t(0xFFFF));
+    for (uint32_t c = 0; c < cases; ++c) {
+        FatmapArgs a;
+        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.texture = texture;
+        a.u = int32_t(r.next());
+        a.v = int32_t(r.next());
+        a.du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        a.dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0);
+        FatmapArgs b = a;
+        a.dst = buf.a + GUARD_BYTES;
+        b.dst = buf.b + GUARD_BYTES;
+        ++result.cases;
+        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
+        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
+            if (result.mismatches++ == 0) result.first_mismatch = c;
+    }
+    return result;
+}
+
+LoopCheck check_fatmap_lut(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    LoopCheck result;
+    result.loop = loop.name;
+    Random r(seed);
+    fill_texels(r, buf.texels);
+    static int32_t table[321];  // count entries and the one the NASM loop reads past the last
+    for (uint32_t c = 0; c < cases; ++c) {
+        FatmapLutArgs a;
+        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.source = buf.texels + MID + r.range(-1000, 1000);
+        int32_t du = r.range(-512, 512), dv = r.range(-512, 512), u = 0, v = 0;
+        for (int32_t k = 0; k <= a.count; ++k) {  // as fatmap builds it (24:8 steps, pitch 256)
+            table[k] = (u >> 8) + int32_t(uint32_t(v) & 0xFFFFFF00u);
+            u += du;
+            v += dv;
+        }
+        a.table = table;
+        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0);
+        FatmapLutArgs b = a;
+        a.dst = buf.a + GUARD_BYTES;
+        b.dst = buf.b + GUARD_BYTES;
+        ++result.cases;
+        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
+        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
+            if (result.mismatches++ == 0) result.first_mismatch = c;
+    }
+    return result;
+}
+
 void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32_t* x, int32_t* y) {
     int32_t pitch = r.range(3, 600);
     *y = r.range(0, 239);
@@ -195,6 +251,9 @@ const CheckedLoop CHECKED_LOOPS[] = {
     {"xsharp-row-out", xsharp_row_loop, MODEXLAB_ASM(xsharp_row_asm), nullptr, true},
     {"xsharp-column", xsharp_column_loop, MODEXLAB_ASM(xsharp_column_asm), check_xsharp_column, false},
     {"hecker-steptable", hecker_loop, MODEXLAB_ASM(hecker_loop_asm), check_hecker, false},
+    {"fatmap-256", fatmap_loop, MODEXLAB_ASM(fatmap_loop_asm), check_fatmap, false},
+    {"fatmap-256-16", fatmap16_loop, MODEXLAB_ASM(fatmap16_loop_asm), check_fatmap, false},
+    {"fatmap-lut", fatmap_lut_loop, MODEXLAB_ASM(fatmap_lut_loop_asm), check_fatmap_lut, false},
 };
 const int CHECKED_LOOP_COUNT = sizeof(CHECKED_LOOPS) / sizeof(CHECKED_LOOPS[0]);
 

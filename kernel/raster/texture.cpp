@@ -37,6 +37,14 @@ void make_bordered(const Texture& t, uint8_t* out) {
         }
 }
 
+const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer) {
+    constexpr int32_t GUARD = ALIGNED256_GUARD_ROWS * 256;
+    uintptr_t address = (reinterpret_cast<uintptr_t>(buffer) + GUARD + 0xFFFF) & ~uintptr_t(0xFFFF);
+    uint8_t* block = reinterpret_cast<uint8_t*>(address);
+    for (int32_t i = -GUARD; i < 65536 + GUARD; ++i) block[i] = t.texels[(i + 65536) & 0xFFFF];
+    return block;
+}
+
 void generate_texture(TextureKind kind, int32_t width, int32_t height, uint8_t* out) {
     for (int32_t v = 0; v < height; ++v) {
         for (int32_t u = 0; u < width; ++u) {

@@ -21,7 +21,18 @@ struct Texture {
     // "so that if fixed-point imprecision causes the source pointer to wander just off the bitmap,
     // appropriate pixels will be found"). Null when not built.
     const uint8_t* bordered = nullptr;
+    // For 256 x 256 textures, the same texels at an address aligned to 64 KiB (fatmap's loops keep
+    // the texel's v:u in the low 16 bits of the pointer), with ALIGNED256_GUARD_ROWS more rows
+    // before and after that continue the texture as if it repeated: fatmap's table loop drifts up
+    // to a texel per 256 pixels of the triangle's longest scanline, past the texture's ends.
+    // Null when not built.
+    const uint8_t* aligned256 = nullptr;
 };
+
+constexpr int32_t ALIGNED256_GUARD_ROWS = 96;
+constexpr int32_t ALIGNED256_BYTES = 3 * 65536;  // a buffer that holds the aligned block with its guard rows
+// Builds the aligned copy inside `buffer` (ALIGNED256_BYTES, any alignment) and returns the block.
+const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer);
 
 inline int32_t bordered_pitch(const Texture& t) { return t.width + 2; }
 inline int32_t bordered_bytes(int32_t width, int32_t height) { return (width + 2) * (height + 2); }
