@@ -70,4 +70,28 @@ void offsets() {
     OFFSET(LUT_COUNT, raster::FatmapLutArgs, count);
     OFFSET(LUT_SOURCE, raster::FatmapLutArgs, source);
     OFFSET(LUT_TABLE, raster::FatmapLutArgs, table);
+
+    OFFSET(QUAKE_DST, raster::QuakeArgs, dst);
+    OFFSET(QUAKE_COUNT, raster::QuakeArgs, count);
+    OFFSET(QUAKE_X, raster::QuakeArgs, x);
+    OFFSET(QUAKE_Y, raster::QuakeArgs, y);
+    OFFSET(QUAKE_TEXELS, raster::QuakeArgs, texels);
+    OFFSET(QUAKE_PITCH, raster::QuakeArgs, pitch);
+    OFFSET(QUAKE_SADJUST, raster::QuakeArgs, sadjust);
+    OFFSET(QUAKE_TADJUST, raster::QuakeArgs, tadjust);
+    OFFSET(QUAKE_BBEXTENTS, raster::QuakeArgs, bbextents);
+    OFFSET(QUAKE_BBEXTENTT, raster::QuakeArgs, bbextentt);
+    OFFSET(QUAKE_SHIFT, raster::QuakeArgs, shift);
+    OFFSET(QUAKE_S_ORIGIN, raster::QuakeArgs, s_origin);
+    OFFSET(QUAKE_S_STEPU, raster::QuakeArgs, s_stepu);
+    OFFSET(QUAKE_S_STEPV, raster::QuakeArgs, s_stepv);
+    OFFSET(QUAKE_T_ORIGIN, raster::QuakeArgs, t_origin);
+    OFFSET(QUAKE_T_STEPU, raster::QuakeArgs, t_stepu);
+    OFFSET(QUAKE_T_STEPV, raster::QuakeArgs, t_stepv);
+    OFFSET(QUAKE_Z_ORIGIN, raster::QuakeArgs, z_origin);
+    OFFSET(QUAKE_Z_STEPU, raster::QuakeArgs, z_stepu);
+    OFFSET(QUAKE_Z_STEPV, raster::QuakeArgs, z_stepv);
+    OFFSET(QUAKE_S_STEPU_N, raster::QuakeArgs, s_stepu_n);
+    OFFSET(QUAKE_T_STEPU_N, raster::QuakeArgs, t_stepu_n);
+    OFFSET(QUAKE_Z_STEPU_N, raster::QuakeArgs, z_stepu_n);
 }

@@ -98,6 +98,25 @@ struct FatmapLutArgs {
 };
 void fatmap_lut_loop(const void* args);
 
+// quake-subdiv16 / quake-subdiv8: one span, all its segments (d_scan.c's algorithm; the NASM loop
+// starts the x87 divide for the next segment's end before drawing the current segment).
+struct QuakeArgs {
+    uint8_t* dst;             // the span's first pixel; count pixels to the right
+    int32_t count;            // >= 1
+    int32_t x, y;             // the span's first pixel on screen (Quake's du, dv)
+    const uint8_t* texels;    // the texture (Quake's surface cache), pitch bytes a row
+    int32_t pitch;
+    int32_t sadjust, tadjust;     // 16.16, added after s/z * z
+    int32_t bbextents, bbextentt; // size * 65536 - 1
+    int32_t shift;            // log2 of the segment length: 4 or 3
+    int32_t reserved;
+    double s_origin, s_stepu, s_stepv;  // s/z at pixel (0, 0) and per pixel across and down
+    double t_origin, t_stepu, t_stepv;
+    double z_origin, z_stepu, z_stepv;  // 1/z
+    double s_stepu_n, t_stepu_n, z_stepu_n;  // the steps times the segment length
+};
+void quake_span_loop(const void* args);
+
 }  // namespace raster
 
 // The NASM twins (asm/*.asm), in builds that assemble them.
@@ -109,6 +128,7 @@ void hecker_loop_asm(const void* args);
 void fatmap_loop_asm(const void* args);
 void fatmap16_loop_asm(const void* args);
 void fatmap_lut_loop_asm(const void* args);
+void quake_span_asm(const void* args);
 }
 
 #if defined(MODEXLAB_ASM_LOOPS)

@@ -3,6 +3,7 @@
 
 #include "kernel/raster/fatmap.h"
 #include "kernel/raster/hecker.h"
+#include "kernel/raster/quake.h"
 #include "kernel/raster/xsharp.h"
 
 namespace raster {
@@ -96,6 +97,12 @@ const Mapper MAPPERS[] = {
     {"fatmap-lut", "classic", "Byggmastar, fatmap.txt section 13: the table-lookup loop",
      "affine; every scanline starts at the table's first entry: its start fractions dropped, up to a texel off on each axis and drifting; 256 x 256 only, cannot wrap",
      NEED_ALIGNED256 | NEED_INSIDE, AXIS_ROWS, nullptr, fatmap_lut_loop, MODEXLAB_ASM(fatmap_lut_loop_asm), fatmap::draw_lut},
+    {"quake-subdiv16", "classic", "id Software, WinQuake d_scan.c / d_draw16.s (1996-99)",
+     "perspective-correct every 16 pixels and at each span's last pixel, affine between (steps floored); s, t clamped into the texture; exact coverage (our walker)",
+     NEED_INSIDE, AXIS_ROWS, nullptr, quake_span_loop, MODEXLAB_ASM(quake_span_asm), quake::draw16},
+    {"quake-subdiv8", "classic", "id Software, WinQuake d_scan.c D_DrawSpans8 / d_draw.s",
+     "as quake-subdiv16 with 8-pixel segments", NEED_INSIDE, AXIS_ROWS, nullptr, quake_span_loop, MODEXLAB_ASM(quake_span_asm),
+     quake::draw8},
 };
 const int MAPPER_COUNT = sizeof(MAPPERS) / sizeof(MAPPERS[0]);
 

@@ -227,6 +227,49 @@ LoopCheck check_fatmap_lut(const CheckedLoop& loop, LoopFn other, uint32_t seed,
     return result;
 }
 
+LoopCheck check_quake(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    LoopCheck result;
+    result.loop = loop.name;
+    Random r(seed);
+    fill_texels(r, buf.texels);
+    for (uint32_t c = 0; c < cases; ++c) {
+        QuakeArgs a;
+        int32_t w = random_size(r), h = random_size(r);
+        a.texels = buf.texels;
+        a.pitch = w;
+        a.bbextents = (w << 16) - 1;
+        a.bbextentt = (h << 16) - 1;
+        a.sadjust = r.below(2) ? 0 : r.range(-4, 4) * (w << 16);
+        a.tadjust = r.below(2) ? 0 : r.range(-4, 4) * (h << 16);
+        a.shift = r.below(2) ? 4 : 3;
+        a.reserved = 0;
+        a.count = r.below(8) == 0 ? r.range(1, 20) : r.range(1, 320);
+        a.x = r.range(0, 319);
+        a.y = r.range(0, 239);
+        // planes from a real triangle most of the time (then s/z * z is u in 16.16), else raw values
+        double q[3], pu[3], pv[3];
+        random_planes(r, q, pu, pv);
+        auto per_pixel = [&](const double* p, double* origin, double* stepu, double* stepv) {
+            *stepu = p[1] * 256, *stepv = p[2] * 256;
+            *origin = p[0] + double(r.range(-100000, 100000)) * 1e-3 * (*stepu);
+        };
+        per_pixel(pu, &a.s_origin, &a.s_stepu, &a.s_stepv);
+        per_pixel(pv, &a.t_origin, &a.t_stepu, &a.t_stepv);
+        per_pixel(q, &a.z_origin, &a.z_stepu, &a.z_stepv);
+        double n = double(1 << a.shift);
+        a.s_stepu_n = a.s_stepu * n, a.t_stepu_n = a.t_stepu * n, a.z_stepu_n = a.z_stepu * n;
+        size_t extent = size_t(a.count - 1);
+        QuakeArgs b = a;
+        a.dst = buf.a + GUARD_BYTES;
+        b.dst = buf.b + GUARD_BYTES;
+        ++result.cases;
+        result.pixels += uint32_t(a.count);
+        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
+            if (result.mismatches++ == 0) result.first_mismatch = c;
+    }
+    return result;
+}
+
 void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32_t* x, int32_t* y) {
     int32_t pitch = r.range(3, 600);
     *y = r.range(0, 239);
@@ -254,6 +297,7 @@ const CheckedLoop CHECKED_LOOPS[] = {
     {"fatmap-256", fatmap_loop, MODEXLAB_ASM(fatmap_loop_asm), check_fatmap, false},
     {"fatmap-256-16", fatmap16_loop, MODEXLAB_ASM(fatmap16_loop_asm), check_fatmap, false},
     {"fatmap-lut", fatmap_lut_loop, MODEXLAB_ASM(fatmap_lut_loop_asm), check_fatmap_lut, false},
+    {"quake-subdiv", quake_span_loop, MODEXLAB_ASM(quake_span_asm), check_quake, false},
 };
 const int CHECKED_LOOP_COUNT = sizeof(CHECKED_LOOPS) / sizeof(CHECKED_LOOPS[0]);
 

@@ -260,3 +260,29 @@ TEST(Fatmap, MeshesOnWholePixelsAreWatertight) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace rastertest;
+
+TEST(Quake, SegmentsAreExactWhereDepthIsConstantAlongRows) {
+    // a floor: along each row depth is constant, so affine steps between exact points are exact
+    LoadedScene s = load_scene_file("scenes/screen/floor-tiles.scene");
+    for (const char* name : {"quake-subdiv16", "quake-subdiv8"}) {
+        AccuracyMetrics m = accuracy(s, name);
+        EXPECT_EQ(m.gaps + m.overdraw + m.overlaps, 0u) << name << ": our walker's coverage";
+        EXPECT_LE(m.max_texel_error, 1u) << name;
+        EXPECT_GT(double(m.exact) / m.compared, 0.999) << name;
+    }
+}
+
+TEST(Quake, EightPixelSegmentsBeatSixteenWhereDepthChangesAlongRows) {
+    // a wall: depth changes along each row; the affine error inside a segment grows with its length
+    LoadedScene s = load_scene_file("scenes/screen/wall-tiles.scene");
+    AccuracyMetrics m16 = accuracy(s, "quake-subdiv16"), m8 = accuracy(s, "quake-subdiv8"), a = accuracy(s, "affine");
+    EXPECT_LT(m8.mean_texel_error, m16.mean_texel_error);
+    EXPECT_LT(m16.mean_texel_error, a.mean_texel_error);
+    EXPECT_LE(m16.max_texel_error, 8u);
+}
+
+}  // namespace
