@@ -71,6 +71,15 @@ void offsets() {
     OFFSET(LUT_SOURCE, raster::FatmapLutArgs, source);
     OFFSET(LUT_TABLE, raster::FatmapLutArgs, table);
 
+    OFFSET(FCOL_DST, raster::FastColumnArgs, dst);
+    OFFSET(FCOL_COUNT, raster::FastColumnArgs, count);
+    OFFSET(FCOL_TEXTURE, raster::FastColumnArgs, texture);
+    OFFSET(FCOL_U, raster::FastColumnArgs, u);
+    OFFSET(FCOL_V, raster::FastColumnArgs, v);
+    OFFSET(FCOL_DU, raster::FastColumnArgs, du);
+    OFFSET(FCOL_DV, raster::FastColumnArgs, dv);
+    asm volatile("\n.ascii \"@@@ MODEX_ROW_BYTES %c0\"" : : "i"(raster::MODEX_ROW_BYTES));
+
     OFFSET(QUAKE_DST, raster::QuakeArgs, dst);
     OFFSET(QUAKE_COUNT, raster::QuakeArgs, count);
     OFFSET(QUAKE_X, raster::QuakeArgs, x);

@@ -98,6 +98,18 @@ struct FatmapLutArgs {
 };
 void fatmap_lut_loop(const void* args);
 
+// fast-affine's NASM loop takes FatmapArgs; its twin is fatmap16_loop (the same 8:16 arithmetic).
+// fast-columns: the same arithmetic down a Mode X column, 80 bytes between pixels.
+constexpr int32_t MODEX_ROW_BYTES = 80;
+struct FastColumnArgs {
+    uint8_t* dst;
+    int32_t count;
+    const uint8_t* texture;  // aligned to 64 KiB
+    int32_t u, v;            // 16.16
+    int32_t du, dv;          // 16.16 per pixel down the column
+};
+void fast_column_loop(const void* args);
+
 // quake-subdiv16 / quake-subdiv8: one span, all its segments (d_scan.c's algorithm; the NASM loop
 // starts the x87 divide for the next segment's end before drawing the current segment).
 struct QuakeArgs {
@@ -129,6 +141,8 @@ void fatmap_loop_asm(const void* args);
 void fatmap16_loop_asm(const void* args);
 void fatmap_lut_loop_asm(const void* args);
 void quake_span_asm(const void* args);
+void fast_row_asm(const void* args);
+void fast_column_asm(const void* args);
 }
 
 #if defined(MODEXLAB_ASM_LOOPS)

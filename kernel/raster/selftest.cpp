@@ -198,6 +198,32 @@ LoopCheck check_fatmap(const CheckedLoop& loop, LoopFn other, uint32_t seed, uin
     return result;
 }
 
+LoopCheck check_fast_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    LoopCheck result;
+    result.loop = loop.name;
+    Random r(seed);
+    fill_texels(r, buf.texels);
+    const uint8_t* texture = reinterpret_cast<const uint8_t*>((reinterpret_cast<uintptr_t>(buf.texels) + 0xFFFF) & ~uintptr_t(0xFFFF));
+    for (uint32_t c = 0; c < cases; ++c) {
+        FastColumnArgs a;
+        a.count = r.below(8) == 0 ? r.range(0, 9) : r.range(1, 240);
+        a.texture = texture;
+        a.u = int32_t(r.next());
+        a.v = int32_t(r.next());
+        a.du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        a.dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0) * MODEX_ROW_BYTES;
+        FastColumnArgs b = a;
+        a.dst = buf.a + GUARD_BYTES;
+        b.dst = buf.b + GUARD_BYTES;
+        ++result.cases;
+        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
+        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
+            if (result.mismatches++ == 0) result.first_mismatch = c;
+    }
+    return result;
+}
+
 LoopCheck check_fatmap_lut(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     LoopCheck result;
     result.loop = loop.name;
@@ -298,6 +324,8 @@ const CheckedLoop CHECKED_LOOPS[] = {
     {"fatmap-256-16", fatmap16_loop, MODEXLAB_ASM(fatmap16_loop_asm), check_fatmap, false},
     {"fatmap-lut", fatmap_lut_loop, MODEXLAB_ASM(fatmap_lut_loop_asm), check_fatmap_lut, false},
     {"quake-subdiv", quake_span_loop, MODEXLAB_ASM(quake_span_asm), check_quake, false},
+    {"fast-affine", fatmap16_loop, MODEXLAB_ASM(fast_row_asm), check_fatmap, false},
+    {"fast-columns", fast_column_loop, MODEXLAB_ASM(fast_column_asm), check_fast_column, false},
 };
 const int CHECKED_LOOP_COUNT = sizeof(CHECKED_LOOPS) / sizeof(CHECKED_LOOPS[0]);
 

@@ -59,6 +59,7 @@ LoopCheck check_hecker(const CheckedLoop& loop, LoopFn other, uint32_t seed, uin
 LoopCheck check_fatmap(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 LoopCheck check_fatmap_lut(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 LoopCheck check_quake(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+LoopCheck check_fast_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 LoopCheck check_xsharp_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
 // Random XSharpRowArgs for a row of up to 320 pixels starting at plane offset `offset` of a page

@@ -132,6 +132,21 @@ SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out) {
     s.pv = plane_through(va.v / va.w, vb.v / vb.w, vc.v / vc.w, xb, yb, xc, yc, d);
     s.u = plane_through(va.u, vb.u, vc.u, xb, yb, xc, yc, d);
     s.v = plane_through(va.v, vb.v, vc.v, xb, yb, xc, yc, d);
+    // the fixed-point planes: anchored at the pixel whose centre is nearest the reference vertex;
+    // the anchor value reduced modulo 65536 texels (what 16.16 holds), which changes no texel
+    int32_t x0 = int32_t(floor_div(s.ref_x, SUBPIXEL_ONE)), y0 = int32_t(floor_div(s.ref_y, SUBPIXEL_ONE));
+    double ax = centre_x(s, x0), ay = centre_y(s, y0);
+    const Plane* planes[2] = {&s.u, &s.v};
+    FixedPlane* fixed[2] = {&s.u_fx, &s.v_fx};
+    for (int k = 0; k < 2; ++k) {
+        double at = planes[k]->at(ax, ay);
+        at -= 65536.0 * double(floor_i64(at / 65536.0));
+        fixed[k]->x0 = x0;
+        fixed[k]->y0 = y0;
+        fixed[k]->at = int32_t(uint32_t(floor_i64(at * 65536.0 + 0.5)));
+        fixed[k]->dx = Fixed16_16::from_double(planes[k]->gx * double(SUBPIXEL_ONE)).raw;
+        fixed[k]->dy = Fixed16_16::from_double(planes[k]->gy * double(SUBPIXEL_ONE)).raw;
+    }
     return SetupStatus::Ok;
 }
 

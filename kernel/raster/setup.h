@@ -42,6 +42,18 @@ struct Edge {
     int32_t threshold;
 };
 
+// An affine texture coordinate in 16.16 per whole pixel: at pixel (x, y) it is
+// at + (x - x0) * dx + (y - y0) * dy, in wrapping 32-bit arithmetic (exact modulo 65536 texels, so
+// exact for any texture size dividing that). (x0, y0) is the pixel whose centre is nearest the
+// reference vertex; `at` its value, rounded; the gradients rounded to nearest 2^-16 texel.
+struct FixedPlane {
+    int32_t x0, y0;
+    int32_t at, dx, dy;
+    int32_t value(int32_t x, int32_t y) const {
+        return int32_t(uint32_t(at) + uint32_t(x - x0) * uint32_t(dx) + uint32_t(y - y0) * uint32_t(dy));
+    }
+};
+
 // A linear function of the pixel centre: a(P) = (a0 + gy * Y) + gx * X, with X = P.x - ref_x and
 // Y = P.y - ref_y in subpixels. This order of operations is part of the definition: the reference
 // and the exact mapper evaluate exactly this, so they agree to the last bit.
@@ -69,6 +81,7 @@ struct PolygonSetup {
     int64_t min_x = 0, min_y = 0, max_x = 0, max_y = 0;  // bounding box of the vertices, subpixels
     Plane q, pu, pv;                        // 1/w, u/w, v/w: perspective
     Plane u, v;                             // u and v themselves: affine
+    FixedPlane u_fx, v_fx;                  // u and v in 16.16 per pixel (the fast affine mappers)
 };
 
 // Snaps a pixel coordinate to the subpixel grid: round to nearest, ties up.

@@ -21,17 +21,6 @@ Target planar_target(uint8_t* planes) {
     return t;
 }
 
-uint8_t* span_start(Target& t, Axis axis, const Span& s, int32_t* stride) {
-    if (!t.planar) {
-        *stride = axis == Axis::Rows ? 1 : t.pitch;
-        return t.base + s.y * t.pitch + s.x;
-    }
-    int plane = s.x & 3;
-    if (t.select_plane) t.select_plane(t.ctx, plane);
-    *stride = t.row_bytes;
-    return t.base + plane * t.plane_bytes + s.y * t.row_bytes + (s.x >> 2);
-}
-
 void planar_from_linear(const uint8_t* linear, uint8_t* planes) {
     for (int32_t plane = 0; plane < 4; ++plane)
         for (int32_t i = 0; i < PLANE_BYTES; ++i) planes[plane * PLANE_BYTES + i] = linear[4 * i + plane];

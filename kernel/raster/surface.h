@@ -37,7 +37,16 @@ Target planar_target(uint8_t* planes);
 inline bool target_supports(const Target& t, Axis axis) { return axis == Axis::Columns || !t.planar; }
 
 // The first pixel of a span and the distance between its pixels. Planar targets select the plane.
-uint8_t* span_start(Target& t, Axis axis, const Span& s, int32_t* stride);
+inline uint8_t* span_start(Target& t, Axis axis, const Span& s, int32_t* stride) {
+    if (!t.planar) {
+        *stride = axis == Axis::Rows ? 1 : t.pitch;
+        return t.base + s.y * t.pitch + s.x;
+    }
+    int plane = s.x & 3;
+    if (t.select_plane) t.select_plane(t.ctx, plane);
+    *stride = t.row_bytes;
+    return t.base + plane * t.plane_bytes + s.y * t.row_bytes + (s.x >> 2);
+}
 
 // Converts a linear 320x240 picture to the four-plane layout (the RAM side of a blit).
 void planar_from_linear(const uint8_t* linear, uint8_t* planes);

@@ -13,14 +13,15 @@ int64_t ceil_div_pos(int64_t n, int64_t d) { return -floor_div(-n, d); }
 }  // namespace
 
 void EdgeWalker::FloorDda::init(int64_t m, int64_t divisor, int64_t increment) {
-    d = divisor;
-    q = floor_div(m, d);
-    r = m - q * d;
-    dq = floor_div(increment, d);
-    dr = increment - dq * d;
+    d = uint32_t(divisor);
+    q = floor_div(m, divisor);
+    r = uint32_t(m - q * divisor);
+    int64_t step_q = floor_div(increment, divisor);
+    dq = int32_t(step_q);
+    dr = uint32_t(increment - step_q * divisor);
 }
 
-EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) : axis_(axis), bound_count_(s.edge_count) {
+EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) : axis_(axis) {
     const bool rows = axis == Axis::Rows;
     // lines whose centre lies within the bounding box, inside the clip rectangle
     int64_t lo = rows ? s.min_y : s.min_x, hi = rows ? s.max_y : s.max_x;
@@ -49,20 +50,14 @@ EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) :
             b = e.dx * (SUBPIXEL_HALF - e.py) - e.dy * (centre_major - e.px);
             c = -e.dy * SUBPIXEL_ONE;
         }
-        Bound& bd = bounds_[i];
-        bd.threshold = e.threshold;
         if (a > 0) {
             // m >= ceil((t - B)/A) = floor((t - B + A - 1)/A); the numerator falls by C each line
-            bd.kind = Kind::Lower;
-            bd.dda.init(e.threshold - b + a - 1, a, -c);
+            lower_[lower_count_++].init(e.threshold - b + a - 1, a, -c);
         } else if (a < 0) {
             // m <= floor((B - t)/-A); the numerator grows by C each line
-            bd.kind = Kind::Upper;
-            bd.dda.init(b - e.threshold, -a, c);
+            upper_[upper_count_++].init(b - e.threshold, -a, c);
         } else {
-            bd.kind = Kind::Constant;
-            bd.value = b;
-            bd.step = c;
+            constant_[constant_count_++] = Constant{b, c, e.threshold};
         }
     }
 }
@@ -71,22 +66,17 @@ bool EdgeWalker::next(Span* out) {
     while (line_ <= last_line_) {
         int64_t lo = minor_lo_, hi = minor_hi_;
         bool open = true;
-        for (int i = 0; i < bound_count_; ++i) {
-            Bound& b = bounds_[i];
-            switch (b.kind) {
-            case Kind::Lower:
-                if (b.dda.q > lo) lo = b.dda.q;
-                b.dda.step();
-                break;
-            case Kind::Upper:
-                if (b.dda.q < hi) hi = b.dda.q;
-                b.dda.step();
-                break;
-            case Kind::Constant:
-                if (b.value < b.threshold) open = false;
-                b.value += b.step;
-                break;
-            }
+        for (int32_t i = 0; i < lower_count_; ++i) {
+            if (lower_[i].q > lo) lo = lower_[i].q;
+            lower_[i].step();
+        }
+        for (int32_t i = 0; i < upper_count_; ++i) {
+            if (upper_[i].q < hi) hi = upper_[i].q;
+            upper_[i].step();
+        }
+        for (int32_t i = 0; i < constant_count_; ++i) {
+            if (constant_[i].value < constant_[i].threshold) open = false;
+            constant_[i].value += constant_[i].step;
         }
         int32_t line = line_++;
         if (!open || lo > hi) continue;

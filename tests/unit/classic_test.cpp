@@ -286,3 +286,45 @@ TEST(Quake, EightPixelSegmentsBeatSixteenWhereDepthChangesAlongRows) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace rastertest;
+
+TEST(PerspSubdiv, ErrorShrinksWithTheSegmentAndVanishesWhereDepthIsConstantAlongTheSpan) {
+    LoadedScene wall = load_scene_file("scenes/screen/wall-tiles.scene"), floor = load_scene_file("scenes/screen/floor-tiles.scene");
+    auto ref_wall = render_reference(wall), ref_floor = render_reference(floor);
+    double last = -1;
+    for (const char* name : {"persp-subdiv-4", "persp-subdiv-8", "persp-subdiv-16", "persp-subdiv-32"}) {
+        // rows across the wall change depth: the error grows with the segment
+        AccuracyMetrics rows = compare_to_reference(ref_wall->view, measure_mapper(wall, mapper(name), Axis::Rows)->view, 64, 64, Wrap::Repeat);
+        EXPECT_GE(rows.mean_texel_error, last) << name;
+        last = rows.mean_texel_error;
+        EXPECT_EQ(rows.gaps + rows.overdraw + rows.overlaps, 0u) << name;
+        // columns down the wall, rows across the floor: constant depth, exact
+        AccuracyMetrics columns = compare_to_reference(ref_wall->view, measure_mapper(wall, mapper(name), Axis::Columns)->view, 64, 64, Wrap::Repeat);
+        AccuracyMetrics floor_rows = compare_to_reference(ref_floor->view, measure_mapper(floor, mapper(name), Axis::Rows)->view, 64, 64, Wrap::Repeat);
+        EXPECT_LE(columns.max_texel_error, 1u) << name;
+        EXPECT_LE(floor_rows.max_texel_error, 1u) << name;
+    }
+    EXPECT_GT(last, 0.5) << "32-pixel segments across a receding wall are visibly off";
+}
+
+TEST(FastAffine, AsAccurateAsTheTextbookAffineMapper) {
+    // the fixed-point planes and the unrolled loop choose the same texels as affine's per-span
+    // doubles, but for the odd pixel where 16.16 rounding meets a texel boundary
+    LoadedScene s = load_scene_file("scenes/screen/big-quad-256.scene");
+    AccuracyMetrics fast_rows = accuracy(s, "fast-affine"), affine = accuracy(s, "affine");
+    auto ref = render_reference(s);
+    AccuracyMetrics fast_columns =
+        compare_to_reference(ref->view, measure_mapper(s, mapper("fast-columns"), Axis::Columns)->view, 256, 256, Wrap::Repeat);
+    for (const AccuracyMetrics& m : {fast_rows, fast_columns}) {
+        EXPECT_EQ(m.gaps + m.overdraw + m.overlaps, 0u);
+        EXPECT_LE(m.max_texel_error, 1u);
+        EXPECT_NEAR(m.mean_texel_error, affine.mean_texel_error, 0.005);
+    }
+    AccuracyMetrics fatmap16 = accuracy(s, "fatmap-256-16");
+    EXPECT_LT(fast_rows.mean_texel_error, fatmap16.mean_texel_error) << "subpixel-correct starts beat fatmap's truncated edges";
+}
+
+}  // namespace

@@ -114,11 +114,12 @@ TEST(Stability, NothingIsWrittenOutsideTheClipAndCoverageHolds) {
 // outside the inner loop), once per pixel for row loops on Mode X (X-Sharp's OUT per pixel);
 // generic row walkers refuse planar targets.
 TEST(Stability, PlaneSelectionOnPlanarTargets) {
-    std::vector<uint8_t> texels(64 * 64), bordered(size_t(bordered_bytes(64, 64)));
-    generate_texture(TextureKind::Grid, 64, 64, texels.data());
-    Texture tex{texels.data(), 64, 64, Wrap::Repeat};
+    std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    generate_texture(TextureKind::Grid, 256, 256, texels.data());
+    Texture tex{texels.data(), 256, 256, Wrap::Repeat};  // 256 x 256: every mapper takes it
     make_bordered(tex, bordered.data());
     tex.bordered = bordered.data();
+    tex.aligned256 = make_aligned256(tex, aligned.data());
     for (int m = 0; m < MAPPER_COUNT; ++m) {
         const Mapper& mapper = MAPPERS[m];
         std::vector<uint8_t> planes(4 * size_t(PLANE_BYTES) + 2 * 64, GUARD);
