@@ -1,8 +1,9 @@
-; Our fastest affine loops (fast-affine rows, fast-columns): fatmap2's 8:16 core unrolled eight
-; times and entered part-way (the first block starts at pixel (-count) mod 8, the destination moved
-; back to match), so no pixel pays for a loop counter; one pointer to the 64 KiB-aligned texture
-; whose bh:bl is the texel's v:u. Twins: fatmap16_loop (rows) and fast_column_loop (columns) in
-; kernel/raster.
+; Our fastest affine loops: fatmap2's 8:16 core unrolled eight times and entered part-way (the
+; first block starts at pixel (-count) mod 8, the destination moved back to match), so no pixel pays
+; for a loop counter; one pointer to the 64 KiB-aligned texture whose bh:bl is the texel's v:u.
+;   fast_run_asm (fast-affine):     a run of rows, the edge walking included (twin: fast_run_loop);
+;   fast_column_asm (fast-columns): one Mode X column (twin: fast_column_loop).
+; The core's registers:
 ;   al: texel   eax 31..16: u fraction   ebx: texture | v whole (bh) | u whole (bl)
 ;   edx 31..16: v fraction, dh: dv whole, dl: du whole   esi 31..16: du fraction   ebp 31..16: dv fraction
 ;   edi: destination   ecx: blocks of 8 left   [esp]: the entry point
@@ -20,76 +21,44 @@ bits 32
     mov [edi + %1], al
 %endmacro
 
-; The shared set-up. %1: args offsets prefix (FATMAP / FCOL), %2: bytes between pixels,
-; %3: the entry table. Leaves every register as the loop wants it.
-%macro SETUP 3
+section .text
+
+; fast_column_asm: one column, pixels MODEX_ROW_BYTES apart; the map mask is the caller's.
+global fast_column_asm
+fast_column_asm:
     push ebp
     push ebx
     push esi
     push edi
     sub esp, 4
     mov eax, [esp + 24]
-    mov ecx, [eax + %1_COUNT]
+    mov ecx, [eax + FCOL_COUNT]
     test ecx, ecx
     jle .done
-    mov edi, [eax + %1_DST]
+    mov edi, [eax + FCOL_DST]
     mov edx, ecx
     neg edx
     and edx, 7                          ; the first block starts at pixel j = (-count) mod 8
-    imul ebx, edx, %2
+    imul ebx, edx, MODEX_ROW_BYTES
     sub edi, ebx                        ; so that pixel j of that block is the first pixel
-    mov edx, [%3 + edx * 4]
+    mov edx, [column_entries + edx * 4]
     mov [esp], edx
     add ecx, 7
     shr ecx, 3                          ; blocks, the first one partial
-    mov ebx, [eax + %1_TEXTURE]
-    mov bl, [eax + %1_U + 2]
-    mov bh, [eax + %1_V + 2]
-    mov edx, [eax + %1_V]
+    mov ebx, [eax + FCOL_TEXTURE]
+    mov bl, [eax + FCOL_U + 2]
+    mov bh, [eax + FCOL_V + 2]
+    mov edx, [eax + FCOL_V]
     shl edx, 16
-    mov dl, [eax + %1_DU + 2]
-    mov dh, [eax + %1_DV + 2]
-    mov esi, [eax + %1_DU]
+    mov dl, [eax + FCOL_DU + 2]
+    mov dh, [eax + FCOL_DV + 2]
+    mov esi, [eax + FCOL_DU]
     shl esi, 16
-    mov ebp, [eax + %1_DV]
+    mov ebp, [eax + FCOL_DV]
     shl ebp, 16
-    mov eax, [eax + %1_U]
+    mov eax, [eax + FCOL_U]
     shl eax, 16
     jmp [esp]
-%endmacro
-
-%macro FINISH 0
-.done:
-    add esp, 4
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
-%endmacro
-
-section .text
-
-global fast_row_asm
-fast_row_asm:
-    SETUP FATMAP, 1, row_entries
-.block:
-.e0: PIXEL 0
-.e1: PIXEL 1
-.e2: PIXEL 2
-.e3: PIXEL 3
-.e4: PIXEL 4
-.e5: PIXEL 5
-.e6: PIXEL 6
-.e7: PIXEL 7
-    add edi, 8
-    dec ecx
-    jnz .block
-    FINISH
-
-global fast_column_asm
-fast_column_asm:
-    SETUP FCOL, MODEX_ROW_BYTES, column_entries
 .block:
 .e0: PIXEL 0
 .e1: PIXEL MODEX_ROW_BYTES
@@ -102,13 +71,150 @@ fast_column_asm:
     add edi, 8 * MODEX_ROW_BYTES
     dec ecx
     jnz .block
-    FINISH
+.done:
+    add esp, 4
+    pop edi
+    pop esi
+    pop ebx
+    pop ebp
+    ret
+
+; fast_run_asm: a run of fast-affine's rows (twin: fast_run_loop): both edge bounds stepped in place,
+; each row's span drawn by the same unrolled core. The core keeps its registers from row to row where
+; it can (esi and ebp hold the fraction steps throughout); the rest of the row state lives in the frame.
+L_ARGS    equ 0
+L_ENTRY   equ 4
+L_LINES   equ 8
+L_ROW     equ 12
+L_U       equ 16
+L_V       equ 20
+L_TEXTURE equ 24
+L_STEPS   equ 28                        ; a word: du whole, dv whole
+L_FRAME   equ 32
+
+; steps bound [%1] one line: q += dq, r += dr, and one more on q when r reaches d. Clobbers ebx.
+%macro STEP_BOUND 1
+    mov ebx, [%1 + BOUND_DQ]
+    add [%1 + BOUND_Q], ebx
+    mov ebx, [%1 + BOUND_R]
+    add ebx, [%1 + BOUND_DR]
+    cmp ebx, [%1 + BOUND_D]
+    jb %%stepped
+    sub ebx, [%1 + BOUND_D]
+    inc dword [%1 + BOUND_Q]
+%%stepped:
+    mov [%1 + BOUND_R], ebx
+%endmacro
+
+global fast_run_asm
+fast_run_asm:
+    push ebp
+    push ebx
+    push esi
+    push edi
+    sub esp, L_FRAME
+    mov ecx, [esp + L_FRAME + 20]
+    mov eax, [ecx + RUN_LINES]
+    test eax, eax
+    jle .done
+    mov [esp + L_ARGS], ecx
+    mov [esp + L_LINES], eax
+    mov eax, [ecx + RUN_ROW]
+    mov [esp + L_ROW], eax
+    mov eax, [ecx + RUN_U]
+    mov [esp + L_U], eax
+    mov eax, [ecx + RUN_V]
+    mov [esp + L_V], eax
+    mov eax, [ecx + RUN_TEXTURE]
+    mov [esp + L_TEXTURE], eax
+    mov al, [ecx + RUN_DU + 2]
+    mov ah, [ecx + RUN_DV + 2]
+    mov [esp + L_STEPS], ax
+    mov esi, [ecx + RUN_DU]
+    shl esi, 16                         ; du fraction
+    mov ebp, [ecx + RUN_DV]
+    shl ebp, 16                         ; dv fraction
+.row:
+    mov ecx, [esp + L_ARGS]
+    mov edx, [ecx + RUN_LOWER]
+    mov eax, [edx + BOUND_Q]            ; the first pixel, before the clip
+    STEP_BOUND edx
+    cmp eax, [ecx + RUN_CLIP_LO]
+    jge .lo_inside
+    mov eax, [ecx + RUN_CLIP_LO]
+.lo_inside:
+    mov edx, [ecx + RUN_UPPER]
+    mov edi, [edx + BOUND_Q]            ; the last pixel
+    STEP_BOUND edx
+    cmp edi, [ecx + RUN_CLIP_HI]
+    jle .hi_inside
+    mov edi, [ecx + RUN_CLIP_HI]
+.hi_inside:
+    sub edi, eax
+    jl .next_row                        ; nothing on this row
+    inc edi                             ; the span's pixels
+    mov edx, [ecx + RUN_TALLY]
+    inc dword [edx]
+    add [edx + 4], edi
+    mov ebx, eax
+    imul ebx, [ecx + RUN_DU]
+    add ebx, [esp + L_U]                ; u at the first pixel
+    mov edx, eax
+    imul edx, [ecx + RUN_DV]
+    add edx, [esp + L_V]                ; v at the first pixel
+    add eax, [esp + L_ROW]              ; its address
+    mov ecx, edi
+    neg edi
+    and edi, 7                          ; the first block starts at pixel j = (-count) mod 8
+    sub eax, edi                        ; so that pixel j of that block is the first pixel
+    mov edi, [run_entries + edi * 4]
+    mov [esp + L_ENTRY], edi
+    mov edi, eax
+    add ecx, 7
+    shr ecx, 3                          ; blocks, the first one partial
+    mov eax, ebx
+    ror eax, 16                         ; u: fraction in the high half, whole in al
+    ror edx, 16                         ; v: the same, whole in dl
+    mov ebx, [esp + L_TEXTURE]
+    mov bl, al
+    mov bh, dl
+    mov dx, [esp + L_STEPS]
+    jmp [esp + L_ENTRY]
+.block:
+.e0: PIXEL 0
+.e1: PIXEL 1
+.e2: PIXEL 2
+.e3: PIXEL 3
+.e4: PIXEL 4
+.e5: PIXEL 5
+.e6: PIXEL 6
+.e7: PIXEL 7
+    add edi, 8
+    dec ecx
+    jnz .block
+.next_row:
+    mov ecx, [esp + L_ARGS]
+    mov eax, [ecx + RUN_U_ROW]
+    add [esp + L_U], eax
+    mov eax, [ecx + RUN_V_ROW]
+    add [esp + L_V], eax
+    mov eax, [ecx + RUN_PITCH]
+    add [esp + L_ROW], eax
+    dec dword [esp + L_LINES]
+    jnz .row
+.done:
+    add esp, L_FRAME
+    pop edi
+    pop esi
+    pop ebx
+    pop ebp
+    ret
 
 section .rodata
 align 4
-row_entries:
-    dd fast_row_asm.e0, fast_row_asm.e1, fast_row_asm.e2, fast_row_asm.e3
-    dd fast_row_asm.e4, fast_row_asm.e5, fast_row_asm.e6, fast_row_asm.e7
 column_entries:
     dd fast_column_asm.e0, fast_column_asm.e1, fast_column_asm.e2, fast_column_asm.e3
     dd fast_column_asm.e4, fast_column_asm.e5, fast_column_asm.e6, fast_column_asm.e7
+run_entries:
+    dd fast_run_asm.e0, fast_run_asm.e1, fast_run_asm.e2, fast_run_asm.e3
+    dd fast_run_asm.e4, fast_run_asm.e5, fast_run_asm.e6, fast_run_asm.e7

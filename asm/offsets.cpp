@@ -103,4 +103,25 @@ void offsets() {
     OFFSET(QUAKE_S_STEPU_N, raster::QuakeArgs, s_stepu_n);
     OFFSET(QUAKE_T_STEPU_N, raster::QuakeArgs, t_stepu_n);
     OFFSET(QUAKE_Z_STEPU_N, raster::QuakeArgs, z_stepu_n);
+
+    OFFSET(RUN_ROW, raster::FastRunArgs, row);
+    OFFSET(RUN_PITCH, raster::FastRunArgs, pitch);
+    OFFSET(RUN_LINES, raster::FastRunArgs, lines);
+    OFFSET(RUN_CLIP_LO, raster::FastRunArgs, clip_lo);
+    OFFSET(RUN_CLIP_HI, raster::FastRunArgs, clip_hi);
+    OFFSET(RUN_LOWER, raster::FastRunArgs, lower);
+    OFFSET(RUN_UPPER, raster::FastRunArgs, upper);
+    OFFSET(RUN_TEXTURE, raster::FastRunArgs, texture);
+    OFFSET(RUN_U, raster::FastRunArgs, u);
+    OFFSET(RUN_V, raster::FastRunArgs, v);
+    OFFSET(RUN_U_ROW, raster::FastRunArgs, u_row);
+    OFFSET(RUN_V_ROW, raster::FastRunArgs, v_row);
+    OFFSET(RUN_DU, raster::FastRunArgs, du);
+    OFFSET(RUN_DV, raster::FastRunArgs, dv);
+    OFFSET(RUN_TALLY, raster::FastRunArgs, tally);
+    OFFSET(BOUND_Q, raster::EdgeBound, q);
+    OFFSET(BOUND_DQ, raster::EdgeBound, dq);
+    OFFSET(BOUND_R, raster::EdgeBound, r);
+    OFFSET(BOUND_DR, raster::EdgeBound, dr);
+    OFFSET(BOUND_D, raster::EdgeBound, d);
 }

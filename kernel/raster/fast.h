@@ -1,11 +1,11 @@
-// Our fastest affine mappers (256 x 256 repeating textures): span functions for the registry.
+// Our fastest affine mappers (256 x 256 repeating textures): polygon drivers for the registry.
 #pragma once
 
 #include "kernel/raster/mappers.h"
 
 namespace raster::fast {
 
-void row_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);     // fast-affine
-void column_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);  // fast-columns
+SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count);     // fast-affine
+SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count);  // fast-columns
 
 }  // namespace raster::fast

@@ -176,7 +176,7 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count, bool l
     SetupStatus status = classic::texture_shift(vertices, count, range, &shift_u, &shift_v);
     if (status != SetupStatus::Ok) return status;
     PolygonSetup check;  // a convex polygon, drawn as a fan of triangles
-    status = setup_polygon(vertices, count, &check);
+    status = setup_polygon(vertices, count, &check, PLANES_NONE);
     if (status != SetupStatus::Ok) return status;
     FVertex v[classic::MAX_VERTICES];
     for (int i = 0; i < count; ++i) {

@@ -35,10 +35,15 @@ inline int64_t floor_i64(double x) {
     return double(t) > x ? t - 1 : t;
 }
 
-// Floor division for a positive divisor: floor(n / d), d > 0.
+// Floor division for a positive divisor: floor(n / d), d > 0. One division, in 32 bits when both
+// fit (on i686 a 64-bit one is a libgcc call).
 inline int64_t floor_div(int64_t n, int64_t d) {
+    if (n == int64_t(int32_t(n)) && d == int64_t(int32_t(d))) {
+        int32_t n32 = int32_t(n), d32 = int32_t(d), q = n32 / d32;  // d > 0: no INT32_MIN / -1
+        return n32 - q * d32 < 0 ? q - 1 : q;
+    }
     int64_t q = n / d;
-    return (n % d != 0 && n < 0) ? q - 1 : q;
+    return n - q * d < 0 ? q - 1 : q;
 }
 
 template <int FRAC>

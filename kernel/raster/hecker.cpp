@@ -248,7 +248,7 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
     if (status != SetupStatus::Ok) return status;
     // A convex polygon must really be one: Hecker drew triangles, here its fan.
     PolygonSetup check;
-    status = setup_polygon(vertices, count, &check);
+    status = setup_polygon(vertices, count, &check, PLANES_NONE);
     if (status != SetupStatus::Ok) return status;
     Vertex28 v[classic::MAX_VERTICES];
     for (int i = 0; i < count; ++i) {

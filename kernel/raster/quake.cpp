@@ -26,7 +26,7 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
     for (int i = 0; i < count; ++i)  // s = (int)(s/z * z) must hold the unshifted u in 16.16
         if (vertices[i].u > 32000 || vertices[i].u < -32000 || vertices[i].v > 32000 || vertices[i].v < -32000) return SetupStatus::OutOfRange;
     PolygonSetup setup;
-    status = setup_polygon(vertices, count, &setup);
+    status = setup_polygon(vertices, count, &setup, PLANES_PERSPECTIVE);
     if (status != SetupStatus::Ok) return status;
 
     constexpr double N = double(1 << SHIFT);

@@ -26,15 +26,66 @@ void fill_texels(Random& r, uint8_t* texels) {
     for (size_t i = 0; i < CHECK_TEXEL_BYTES; ++i) texels[i] = uint8_t(r.next());
 }
 
-// Runs both implementations on the same block, each with its own destination buffer, and compares
-// the window [lo, hi) of the buffers: the span and GUARD_BYTES of guard on either side.
-bool run_both(LoopFn twin, LoopFn other, void* args_a, void* args_b, const CheckBuffers& buf, size_t lo, size_t hi) {
-    for (size_t i = lo; i < hi; ++i) buf.a[i] = buf.b[i] = GUARD;
-    twin(args_a);
-    other(args_b);
-    for (size_t i = lo; i < hi; ++i)
-        if (buf.a[i] != buf.b[i]) return false;
+// A case's destination window [lo, hi) of the buffers (its pixels and GUARD_BYTES of guard on
+// either side), and the pixels it draws.
+struct Window {
+    size_t lo, hi;
+    uint32_t pixels;
+};
+
+// The pointers of b, a copy of a, moved from buffer a to buffer b.
+template <typename Args>
+void move_to_b(Args& b, const Args& a, const CheckBuffers& buf) {
+    b.dst = buf.b + (a.dst - buf.a);
+}
+
+// What a loop gives back besides pixels: nothing, for most.
+template <typename Args>
+bool same_results(const Args&, const Args&) {
     return true;
+}
+template <typename Args>
+const void* block(const Args& a) {
+    return &a;
+}
+
+// Runs `cases` random cases: make(r, a) fills an argument block drawing into buffer a and returns
+// its window; both implementations run it, each into its own buffer, and the windows must agree
+// byte for byte (and any other results).
+template <typename Args, typename Make>
+LoopCheck check_cases(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf, Make make) {
+    LoopCheck result;
+    result.loop = loop.name;
+    Random r(seed);
+    fill_texels(r, buf.texels);
+    for (uint32_t c = 0; c < cases; ++c) {
+        Args a;
+        Window w = make(r, a);
+        Args b = a;
+        move_to_b(b, a, buf);
+        for (size_t i = w.lo; i < w.hi; ++i) buf.a[i] = buf.b[i] = GUARD;
+        loop.twin(block(a));
+        other(block(b));
+        bool same = same_results(a, b);
+        for (size_t i = w.lo; i < w.hi && same; ++i) same = buf.a[i] == buf.b[i];
+        ++result.cases;
+        result.pixels += w.pixels;
+        if (!same && result.mismatches++ == 0) result.first_mismatch = c;
+    }
+    return result;
+}
+
+// A span of count pixels `stride` bytes apart (count >= 0, stride > 0) starting GUARD_BYTES into
+// buffer a: its first pixel and its window.
+uint8_t* span_in_a(const CheckBuffers& buf, int32_t count, int32_t stride, Window* w) {
+    size_t extent = size_t(count > 0 ? count - 1 : 0) * size_t(stride);
+    *w = Window{0, GUARD_BYTES + extent + 1 + GUARD_BYTES, uint32_t(count > 0 ? count : 0)};
+    return buf.a + GUARD_BYTES;
+}
+
+// The 64 KiB-aligned texture the fatmap-style loops need: the first such address in the buffer.
+const uint8_t* aligned_texture(const CheckBuffers& buf) {
+    return reinterpret_cast<const uint8_t*>((reinterpret_cast<uintptr_t>(buf.texels) + 0xFFFF) & ~uintptr_t(0xFFFF));
 }
 
 // A plane: from a real set-up triangle most of the time, else raw values up to the extremes.
@@ -68,12 +119,7 @@ void random_planes(Random& r, double* q, double* pu, double* pv) {
 }  // namespace
 
 LoopCheck check_exact(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    LoopCheck result;
-    result.loop = loop.name;
-    Random r(seed);
-    fill_texels(r, buf.texels);
-    for (uint32_t c = 0; c < cases; ++c) {
-        ExactArgs a;
+    return check_cases<ExactArgs>(loop, other, seed, cases, buf, [&](Random& r, ExactArgs& a) {
         int32_t w = random_size(r), h = random_size(r);
         a.texels = buf.texels;
         a.width = w;
@@ -93,17 +139,9 @@ LoopCheck check_exact(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint
         a.x = double(r.range(-120000, 120000)) + 128;
         a.y = double(r.range(-90000, 90000)) + 128;
         random_planes(r, a.q, a.pu, a.pv);
-        ExactArgs b = a;
         a.dst = buf.a + first;
-        b.dst = buf.b + first;
-        ++result.cases;
-        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
-        if (!run_both(loop.twin, other, &a, &b, buf, first - (a.stride < 0 ? extent : 0) - GUARD_BYTES,
-                      first + (a.stride < 0 ? 0 : extent) + 1 + GUARD_BYTES)) {
-            if (result.mismatches++ == 0) result.first_mismatch = c;
-        }
-    }
-    return result;
+        return Window{0, GUARD_BYTES + extent + 1 + GUARD_BYTES, uint32_t(a.count > 0 ? a.count : 0)};
+    });
 }
 
 namespace {
@@ -115,12 +153,7 @@ constexpr int32_t MID = int32_t(CHECK_TEXEL_BYTES / 2);
 }  // namespace
 
 LoopCheck check_xsharp_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    LoopCheck result;
-    result.loop = loop.name;
-    Random r(seed);
-    fill_texels(r, buf.texels);
-    for (uint32_t c = 0; c < cases; ++c) {
-        XSharpColumnArgs a;
+    return check_cases<XSharpColumnArgs>(loop, other, seed, cases, buf, [&](Random& r, XSharpColumnArgs& a) {
         int32_t pitch = random_size(r) + 2;  // a bordered texture's pitch: 3..1026
         a.count = r.below(8) == 0 ? r.range(1, 3) : r.range(1, 240);
         a.texel = buf.texels + MID + r.range(-1000, 1000);
@@ -130,26 +163,14 @@ LoopCheck check_xsharp_column(const CheckedLoop& loop, LoopFn other, uint32_t se
         a.base = r.range(-2, 2) + r.range(-1, 1) * pitch;
         a.row = r.below(2) ? pitch : -pitch;
         a.backwards = int32_t(r.below(2));
-        size_t extent = size_t(a.count - 1) * XSHARP_SCANWIDTH;
-        size_t first = GUARD_BYTES;
-        XSharpColumnArgs b = a;
-        a.dst = buf.a + first;
-        b.dst = buf.b + first;
-        ++result.cases;
-        result.pixels += uint32_t(a.count);
-        if (!run_both(loop.twin, other, &a, &b, buf, 0, first + extent + 1 + GUARD_BYTES))
-            if (result.mismatches++ == 0) result.first_mismatch = c;
-    }
-    return result;
+        Window w;
+        a.dst = span_in_a(buf, a.count, XSHARP_SCANWIDTH, &w);
+        return w;
+    });
 }
 
 LoopCheck check_hecker(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    LoopCheck result;
-    result.loop = loop.name;
-    Random r(seed);
-    fill_texels(r, buf.texels);
-    for (uint32_t c = 0; c < cases; ++c) {
-        HeckerArgs a;
+    return check_cases<HeckerArgs>(loop, other, seed, cases, buf, [&](Random& r, HeckerArgs& a) {
         int32_t pitch = r.range(3, 600);  // any width: the step table holds the pitch
         a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
         a.texel = buf.texels + MID + r.range(-1000, 1000);
@@ -159,79 +180,130 @@ LoopCheck check_hecker(const CheckedLoop& loop, LoopFn other, uint32_t seed, uin
         a.dv_frac = r.below(8) == 0 ? 0 : r.next() & 0xFFFF0000u;
         a.step_no_carry = r.range(-3, 3) + r.range(-1, 1) * pitch;
         a.step_carry = a.step_no_carry + (r.below(2) ? pitch : -pitch);
-        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0);
-        HeckerArgs b = a;
-        a.dst = buf.a + GUARD_BYTES;
-        b.dst = buf.b + GUARD_BYTES;
-        ++result.cases;
-        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
-        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
-            if (result.mismatches++ == 0) result.first_mismatch = c;
-    }
-    return result;
+        Window w;
+        a.dst = span_in_a(buf, a.count, 1, &w);
+        return w;
+    });
 }
 
+namespace {
+
+// Random 16.16 coordinates and steps for the 8:16 loops: anything at all a quarter of the time,
+// else steps up to 4 texels a pixel.
+template <typename Args>
+void random_uv(Random& r, Args& a) {
+    a.u = int32_t(r.next());
+    a.v = int32_t(r.next());
+    a.du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+    a.dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+}
+
+}  // namespace
+
 LoopCheck check_fatmap(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    LoopCheck result;
-    result.loop = loop.name;
-    Random r(seed);
-    fill_texels(r, buf.texels);
-    // the loops need their texture on a 64 KiB boundary: the first such address in the buffer
-    const uint8_t* texture = reinterpret_cast<const uint8_t*>((reinterpret_cast<uintptr_t>(buf.texels) + 0xFFFF) & ~uintptr_t(0xFFFF));
-    for (uint32_t c = 0; c < cases; ++c) {
-        FatmapArgs a;
+    return check_cases<FatmapArgs>(loop, other, seed, cases, buf, [&](Random& r, FatmapArgs& a) {
         a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
-        a.texture = texture;
-        a.u = int32_t(r.next());
-        a.v = int32_t(r.next());
-        a.du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
-        a.dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
-        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0);
-        FatmapArgs b = a;
-        a.dst = buf.a + GUARD_BYTES;
-        b.dst = buf.b + GUARD_BYTES;
-        ++result.cases;
-        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
-        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
-            if (result.mismatches++ == 0) result.first_mismatch = c;
-    }
-    return result;
+        a.texture = aligned_texture(buf);
+        random_uv(r, a);
+        Window w;
+        a.dst = span_in_a(buf, a.count, 1, &w);
+        return w;
+    });
 }
 
 LoopCheck check_fast_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    LoopCheck result;
-    result.loop = loop.name;
-    Random r(seed);
-    fill_texels(r, buf.texels);
-    const uint8_t* texture = reinterpret_cast<const uint8_t*>((reinterpret_cast<uintptr_t>(buf.texels) + 0xFFFF) & ~uintptr_t(0xFFFF));
-    for (uint32_t c = 0; c < cases; ++c) {
-        FastColumnArgs a;
+    return check_cases<FastColumnArgs>(loop, other, seed, cases, buf, [&](Random& r, FastColumnArgs& a) {
         a.count = r.below(8) == 0 ? r.range(0, 9) : r.range(1, 240);
-        a.texture = texture;
-        a.u = int32_t(r.next());
-        a.v = int32_t(r.next());
+        a.texture = aligned_texture(buf);
+        random_uv(r, a);
+        Window w;
+        a.dst = span_in_a(buf, a.count, MODEX_ROW_BYTES, &w);
+        return w;
+    });
+}
+
+namespace {
+
+// fast_run_loop's block with the bounds and the tally it updates, which must come out the same.
+struct RunCase {
+    FastRunArgs args;
+    EdgeBound lower, upper;
+    uint32_t tally[2];
+};
+
+template <>
+void move_to_b(RunCase& b, const RunCase& a, const CheckBuffers& buf) {
+    b.args.row = buf.b + (a.args.row - buf.a);
+    b.args.lower = &b.lower;
+    b.args.upper = &b.upper;
+    b.args.tally = b.tally;
+}
+
+template <>
+bool same_results(const RunCase& a, const RunCase& b) {
+    auto same = [](const EdgeBound& x, const EdgeBound& y) { return x.q == y.q && x.r == y.r; };
+    return same(a.lower, b.lower) && same(a.upper, b.upper) && a.tally[0] == b.tally[0] && a.tally[1] == b.tally[1];
+}
+
+template <>
+const void* block(const RunCase& a) {
+    return &a.args;
+}
+
+// A random bound: q anywhere near the rows (often far outside the clip), steps of either sign,
+// any remainder and divisor.
+EdgeBound random_bound(Random& r, int32_t pitch) {
+    EdgeBound b;
+    b.first = b.last = 0;
+    b.q = r.below(4) == 0 ? r.range(-100000, 100000) : r.range(-20, pitch + 20);
+    b.dq = r.below(4) == 0 ? r.range(-400, 400) : r.range(-3, 3);
+    b.d = r.below(4) == 0 ? 1 + r.next() % 0x80000000u : uint32_t(r.range(1, 4096));
+    b.r = r.next() % b.d;
+    b.dr = r.next() % b.d;
+    return b;
+}
+
+}  // namespace
+
+LoopCheck check_fast_run(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<RunCase>(loop, other, seed, cases, buf, [&](Random& r, RunCase& c) {
+        FastRunArgs& a = c.args;
+        // rows of up to 330 bytes; 240 of them fit the buffer with its guards
+        a.pitch = r.below(2) ? 320 : r.range(1, 330);
+        a.lines = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 240);
+        a.clip_lo = r.range(0, a.pitch - 1);
+        a.clip_hi = r.below(8) == 0 ? a.clip_lo - 1 : r.range(a.clip_lo, a.pitch - 1);  // sometimes nothing
+        c.lower = random_bound(r, a.pitch);
+        c.upper = random_bound(r, a.pitch);
+        if (r.below(2)) c.upper.q = c.lower.q + r.range(0, a.pitch), c.upper.dq = c.lower.dq + r.range(-2, 2);  // a real-looking span
+        a.texture = aligned_texture(buf);
+        a.u = r.next();
+        a.v = r.next();
+        a.u_row = r.next();
+        a.v_row = r.next();
         a.du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
         a.dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
-        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0) * MODEX_ROW_BYTES;
-        FastColumnArgs b = a;
-        a.dst = buf.a + GUARD_BYTES;
-        b.dst = buf.b + GUARD_BYTES;
-        ++result.cases;
-        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
-        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
-            if (result.mismatches++ == 0) result.first_mismatch = c;
-    }
-    return result;
+        c.tally[0] = c.tally[1] = 0;
+        a.lower = &c.lower;
+        a.upper = &c.upper;
+        a.tally = c.tally;
+        a.row = buf.a + GUARD_BYTES;
+        int32_t lines = a.lines > 0 ? a.lines : 0;
+        uint32_t pixels = 0;  // what the rows will draw
+        EdgeBound lo = c.lower, hi = c.upper;
+        for (int32_t n = 0; n < lines; ++n) {
+            int32_t x0 = lo.q > a.clip_lo ? lo.q : a.clip_lo, x1 = hi.q < a.clip_hi ? hi.q : a.clip_hi;
+            if (x0 <= x1) pixels += uint32_t(x1 - x0 + 1);
+            lo.step();
+            hi.step();
+        }
+        return Window{0, GUARD_BYTES + size_t(lines) * size_t(a.pitch) + GUARD_BYTES, pixels};
+    });
 }
 
 LoopCheck check_fatmap_lut(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    LoopCheck result;
-    result.loop = loop.name;
-    Random r(seed);
-    fill_texels(r, buf.texels);
     static int32_t table[321];  // count entries and the one the NASM loop reads past the last
-    for (uint32_t c = 0; c < cases; ++c) {
-        FatmapLutArgs a;
+    return check_cases<FatmapLutArgs>(loop, other, seed, cases, buf, [&](Random& r, FatmapLutArgs& a) {
         a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
         a.source = buf.texels + MID + r.range(-1000, 1000);
         int32_t du = r.range(-512, 512), dv = r.range(-512, 512), u = 0, v = 0;
@@ -241,25 +313,14 @@ LoopCheck check_fatmap_lut(const CheckedLoop& loop, LoopFn other, uint32_t seed,
             v += dv;
         }
         a.table = table;
-        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0);
-        FatmapLutArgs b = a;
-        a.dst = buf.a + GUARD_BYTES;
-        b.dst = buf.b + GUARD_BYTES;
-        ++result.cases;
-        result.pixels += uint32_t(a.count > 0 ? a.count : 0);
-        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
-            if (result.mismatches++ == 0) result.first_mismatch = c;
-    }
-    return result;
+        Window w;
+        a.dst = span_in_a(buf, a.count, 1, &w);
+        return w;
+    });
 }
 
 LoopCheck check_quake(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    LoopCheck result;
-    result.loop = loop.name;
-    Random r(seed);
-    fill_texels(r, buf.texels);
-    for (uint32_t c = 0; c < cases; ++c) {
-        QuakeArgs a;
+    return check_cases<QuakeArgs>(loop, other, seed, cases, buf, [&](Random& r, QuakeArgs& a) {
         int32_t w = random_size(r), h = random_size(r);
         a.texels = buf.texels;
         a.pitch = w;
@@ -284,16 +345,10 @@ LoopCheck check_quake(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint
         per_pixel(q, &a.z_origin, &a.z_stepu, &a.z_stepv);
         double n = double(1 << a.shift);
         a.s_stepu_n = a.s_stepu * n, a.t_stepu_n = a.t_stepu * n, a.z_stepu_n = a.z_stepu * n;
-        size_t extent = size_t(a.count - 1);
-        QuakeArgs b = a;
-        a.dst = buf.a + GUARD_BYTES;
-        b.dst = buf.b + GUARD_BYTES;
-        ++result.cases;
-        result.pixels += uint32_t(a.count);
-        if (!run_both(loop.twin, other, &a, &b, buf, 0, GUARD_BYTES + extent + 1 + GUARD_BYTES))
-            if (result.mismatches++ == 0) result.first_mismatch = c;
-    }
-    return result;
+        Window win;
+        a.dst = span_in_a(buf, a.count, 1, &win);
+        return win;
+    });
 }
 
 void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32_t* x, int32_t* y) {
@@ -324,7 +379,7 @@ const CheckedLoop CHECKED_LOOPS[] = {
     {"fatmap-256-16", fatmap16_loop, MODEXLAB_ASM(fatmap16_loop_asm), check_fatmap, false},
     {"fatmap-lut", fatmap_lut_loop, MODEXLAB_ASM(fatmap_lut_loop_asm), check_fatmap_lut, false},
     {"quake-subdiv", quake_span_loop, MODEXLAB_ASM(quake_span_asm), check_quake, false},
-    {"fast-affine", fatmap16_loop, MODEXLAB_ASM(fast_row_asm), check_fatmap, false},
+    {"fast-affine", fast_run_loop, MODEXLAB_ASM(fast_run_asm), check_fast_run, false},
     {"fast-columns", fast_column_loop, MODEXLAB_ASM(fast_column_asm), check_fast_column, false},
 };
 const int CHECKED_LOOP_COUNT = sizeof(CHECKED_LOOPS) / sizeof(CHECKED_LOOPS[0]);

@@ -59,6 +59,7 @@ LoopCheck check_hecker(const CheckedLoop& loop, LoopFn other, uint32_t seed, uin
 LoopCheck check_fatmap(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 LoopCheck check_fatmap_lut(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 LoopCheck check_quake(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+LoopCheck check_fast_run(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf);
 LoopCheck check_fast_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 LoopCheck check_xsharp_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 

@@ -87,9 +87,18 @@ struct PolygonSetup {
 // Snaps a pixel coordinate to the subpixel grid: round to nearest, ties up.
 inline Fixed24_8 snap(double pixels) { return Fixed24_8::from_double(pixels); }
 
+// Which attribute planes setup_polygon computes; the others are left as they were (unspecified).
+// Coverage (edges, bounding box, reference vertex) is always there.
+enum SetupPlanes : uint8_t {
+    PLANES_NONE = 0,         // coverage only: a classic's own driver checking its input
+    PLANES_AFFINE = 1,       // u, v, u_fx, v_fx
+    PLANES_PERSPECTIVE = 2,  // q, pu, pv
+    PLANES_ALL = 3,
+};
+
 // Orients the polygon, drops repeated vertices, checks range and convexity, builds the edges and
 // the planes. Any input is safe: on anything but Ok, `out` must not be drawn.
-SetupStatus setup_polygon(const Vertex* vertices, int count, PolygonSetup* out);
+SetupStatus setup_polygon(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL);
 
 // Whether the pixel centre (x + 0.5, y + 0.5) is inside: the definition the walkers implement.
 bool covers(const PolygonSetup& s, int32_t x, int32_t y);

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "kernel/raster/fixed.h"
 
@@ -44,6 +45,30 @@ TEST(Floor, DivisionRoundsDown) {
     EXPECT_EQ(floor_div(-1, 256), -1);
     EXPECT_EQ(floor_div(INT64_MIN + 1, 1), INT64_MIN + 1);
     EXPECT_EQ(floor_div(INT64_MAX, INT64_MAX), 1);
+    EXPECT_EQ(floor_div(INT32_MIN, 1), INT32_MIN);
+    EXPECT_EQ(floor_div(INT32_MIN, 3), -715827883);
+    EXPECT_EQ(floor_div(int64_t(INT32_MIN) - 1, 2), -1073741825);
+    EXPECT_EQ(floor_div(-5, int64_t(INT32_MAX) + 1), -1);
+}
+
+// Against 128-bit arithmetic, across the 32-bit fast path's edges and beyond.
+TEST(Floor, DivisionMatchesWideArithmetic) {
+    std::mt19937_64 rng(5);
+    const int64_t edges[] = {0, 1, -1, INT32_MAX, INT32_MIN, int64_t(INT32_MAX) + 1, int64_t(INT32_MIN) - 1, INT64_MAX, INT64_MIN + 1};
+    for (int trial = 0; trial < 200000; ++trial) {
+        int bits_n = 1 + int(rng() % 63), bits_d = 1 + int(rng() % 62);  // |n| < 2^63, 0 < d <= 2^62
+        int64_t n = int64_t(rng() >> (64 - bits_n)) * ((rng() & 1) ? -1 : 1);
+        int64_t d = int64_t(rng() >> (64 - bits_d)) + 1;
+        if (trial % 10 == 0) {  // near an edge, without overflowing
+            n = edges[rng() % 9];
+            int64_t off = int64_t(rng() % 5) - 2;
+            if (!((off > 0 && n > INT64_MAX - off) || (off < 0 && n < INT64_MIN + 1 - off))) n += off;
+        }
+        if (trial % 10 == 1) d = edges[3 + rng() % 2 * 2] + int64_t(rng() % 3);
+        __int128 q = __int128(n) / d;
+        if (__int128(n) - q * d < 0) --q;
+        ASSERT_EQ(floor_div(n, d), int64_t(q)) << n << " / " << d;
+    }
 }
 
 TEST(Fixed16_16, RangeAndSaturation) {

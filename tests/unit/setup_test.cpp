@@ -62,6 +62,9 @@ TEST(Setup, RejectsWhatItCannotDraw) {
     std::vector<Vertex> star;  // a pentagram: every turn the same way, but it winds twice
     for (int k = 0; k < 5; ++k) star.push_back(vertex(100 + 50 * std::cos(k * 4 * M_PI / 5), 100 + 50 * std::sin(k * 4 * M_PI / 5)));
     EXPECT_EQ(setup(star), SetupStatus::NotConvex);
+    // a triangle traced twice: every vertex on the inner side of every edge, but it winds twice
+    EXPECT_EQ(setup({vertex(0, 0), vertex(50, 0), vertex(0, 50), vertex(0, 0.004), vertex(50, 0), vertex(0, 50)}), SetupStatus::NotConvex);
+    EXPECT_EQ(setup({vertex(0, 0), vertex(50, 0), vertex(0, 50), vertex(0, 0), vertex(50, 0), vertex(0, 50)}), SetupStatus::NotConvex);
     std::vector<Vertex> many;
     for (int k = 0; k < 17; ++k) many.push_back(vertex(100 + 50 * std::cos(k * 2 * M_PI / 17), 100 + 50 * std::sin(k * 2 * M_PI / 17)));
     EXPECT_EQ(setup(many), SetupStatus::TooManyVertices);
@@ -96,6 +99,71 @@ TEST(Walker, YieldsExactlyTheCoveredPixels) {
         if (setup(p, &s) != SetupStatus::Ok) continue;
         ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
         if (trial % 2) clip = ClipRect{int32_t(gen.rng() % 160), int32_t(gen.rng() % 120), 160 + int32_t(gen.rng() % 161), 120 + int32_t(gen.rng() % 121)};
+        for (Axis axis : {Axis::Rows, Axis::Columns}) {
+            std::vector<int> counts = walk_counts({p}, axis, clip);
+            for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
+                for (int32_t x = 0; x < SCREEN_WIDTH; ++x) {
+                    bool inside_clip = x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
+                    int want = inside_clip && covers(s, x, y) ? 1 : 0;
+                    ASSERT_EQ(counts[size_t(y) * SCREEN_WIDTH + size_t(x)], want)
+                        << "trial " << trial << (axis == Axis::Rows ? " rows" : " columns") << " pixel " << x << "," << y;
+                    drawn += want;
+                }
+        }
+    }
+    EXPECT_GT(drawn, 1000000) << "the trials drew something worth checking";
+}
+
+// The walker steps each edge only on the lines its extent spans (the polygon is convex): check that
+// where it is easiest to get wrong. Vertices out to the coordinate limit with edges nearly along
+// the lines, extra vertices in the middle of edges (collinear neighbours), edges and vertices
+// exactly on pixel centres (the top-left rule decides), and one-line polygons.
+TEST(Walker, ExtremesCollinearVerticesAndCentres) {
+    TriangleGen gen(1234);
+    const double far = MAX_COORD_PIXELS;
+    int drawn = 0;
+    for (int trial = 0; trial < 1500; ++trial) {
+        std::vector<Vertex> p;
+        switch (trial % 5) {
+        case 0:  // huge: one vertex near the screen, two far out
+            p = {vertex(gen.uniform(-50, 370), gen.uniform(-50, 290)), vertex(gen.uniform(-far, far), gen.uniform(-far, far)),
+                 vertex(gen.uniform(-far, far), gen.uniform(-far, far))};
+            break;
+        case 1: {  // a needle across the screen, nearly along the rows or the columns
+            double y = gen.uniform(0, 240), x = gen.uniform(0, 320), tilt = gen.uniform(-1, 1) / 256;
+            if (gen.rng() % 2)
+                p = {vertex(-far, y), vertex(far, y + tilt * 2 * far), vertex(gen.uniform(-far, far), y + gen.uniform(0.001, 3))};
+            else
+                p = {vertex(x, -far), vertex(x + tilt * 2 * far, far), vertex(x + gen.uniform(0.001, 3), gen.uniform(-far, far))};
+            break;
+        }
+        case 2: {  // a triangle with a vertex added in the middle of each edge (on the grid)
+            std::vector<Vertex> t = gen.triangle();
+            for (int i = 0; i < 3; ++i) {
+                const Vertex &a = t[size_t(i)], &b = t[size_t(i + 1) % 3];
+                p.push_back(a);
+                if ((a.x.raw + b.x.raw) % 2 == 0 && (a.y.raw + b.y.raw) % 2 == 0)
+                    p.push_back(vertex_raw((a.x.raw + b.x.raw) / 2, (a.y.raw + b.y.raw) / 2));
+            }
+            break;
+        }
+        case 3: {  // an axis-aligned rectangle or a diamond, corners on pixel centres or pixel edges
+            double half = gen.rng() % 2 ? 0.5 : 0.0;
+            double x0 = double(gen.rng() % 300) + half, y0 = double(gen.rng() % 220) + half;
+            double w = double(gen.rng() % 40), h = double(gen.rng() % 40);
+            if (gen.rng() % 2) p = {vertex(x0, y0), vertex(x0 + w + 1, y0), vertex(x0 + w + 1, y0 + h + 1), vertex(x0, y0 + h + 1)};
+            else p = {vertex(x0, y0 - h), vertex(x0 + w, y0), vertex(x0, y0 + h), vertex(x0 - w, y0)};
+            break;
+        }
+        default:  // thin in the major direction: a few lines at most
+            p = {vertex(gen.uniform(0, 320), gen.uniform(0, 240)), vertex(gen.uniform(0, 320), gen.uniform(0, 240)), vertex(0, 0)};
+            p[2] = vertex_raw(p[0].x.raw + int32_t(gen.rng() % 2000) - 1000, p[1].y.raw + int32_t(gen.rng() % 512) - 256);
+            break;
+        }
+        PolygonSetup s;
+        if (setup(p, &s) != SetupStatus::Ok) continue;
+        ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+        if (trial % 4 == 1) clip = ClipRect{int32_t(gen.rng() % 160), int32_t(gen.rng() % 120), 160 + int32_t(gen.rng() % 161), 120 + int32_t(gen.rng() % 121)};
         for (Axis axis : {Axis::Rows, Axis::Columns}) {
             std::vector<int> counts = walk_counts({p}, axis, clip);
             for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
