@@ -313,6 +313,9 @@ void cmd_mappers(Context&, const StrView*, size_t) {
     for (int i = 0; i < raster::MAPPER_COUNT; ++i) {
         const raster::Mapper& m = raster::MAPPERS[i];
         r.begin_item_object().str("name", m.name).str("family", m.family).str("origin", m.origin).str("promise", m.promise);
+        r.boolean("exact_coverage", m.guarantee.exact_coverage)
+            .i32("max_error", m.guarantee.max_error)
+            .i32("max_error_flat", m.guarantee.max_error_flat);
         r.begin_array("needs");
         if (m.needs & raster::NEED_POW2) r.item_str("pow2");
         if (m.needs & raster::NEED_WIDTH_256) r.item_str("width256");

@@ -99,6 +99,11 @@ std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper
 
 }  // namespace
 
+bool mapper_takes(const LoadedScene& s, const Mapper& mapper) {
+    HostTexture t(s.texture, mapper);
+    return mapper_accepts(mapper, t.texture);
+}
+
 Axis default_axis(const Mapper& mapper) { return mapper.axes == AXIS_COLUMNS ? Axis::Columns : Axis::Rows; }
 
 IndexImage render_mapper(const LoadedScene& s, const Mapper& mapper, Axis axis, RenderStats* stats) {

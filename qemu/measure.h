@@ -42,6 +42,10 @@ constexpr uint8_t BACKGROUND = 0;  // the colour a picture is cleared to before 
 
 std::unique_ptr<Picture> render_reference(const LoadedScene& s);
 
+// Whether the mapper takes the scene's texture, given the copies the host builds for it (bordered,
+// 64 KiB-aligned): what the kernel's `render` accepts.
+bool mapper_takes(const LoadedScene& s, const raster::Mapper& mapper);
+
 // The walker a mapper uses by default: its only one, or rows.
 raster::Axis default_axis(const raster::Mapper& mapper);
 

@@ -110,6 +110,11 @@ int main(int argc, char** argv) {
             std::printf("pixels_drawn %u\n", covered);
             return 0;
         }
+        if (!mapper_takes(s, *mapper))
+            throw HarnessError(std::string(mapper->name) + " cannot take this scene's texture (" +
+                               raster::texture_kind_name(s.scene->texture_kind) + " " + std::to_string(s.texture.width) + "x" +
+                               std::to_string(s.texture.height) + " " + raster::wrap_name(s.texture.wrap) +
+                               "): see its needs in docs/mappers.md");
         raster::RenderStats stats;
         IndexImage picture = render_mapper(s, *mapper, axis, &stats);
         save_png(out, colourise(picture, pal));

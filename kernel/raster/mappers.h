@@ -61,11 +61,24 @@ struct DrawContext {
 };
 using DrawFn = SetupStatus (*)(const DrawContext& c, const Vertex* vertices, int count);
 
+// What a mapper promises about accuracy, in checkable form (tests/unit/promise_test.cpp checks it
+// on every screen-space scene; the prose is in `promise`).
+struct Guarantee {
+    bool exact_coverage;     // draws exactly the pixels the reference covers: no gaps, no overdraw
+    int8_t max_error;        // max texel error against the reference on any scene; -1: none promised
+    int8_t max_error_flat;   // the same where every vertex has the same w (no perspective); -1: none
+};
+constexpr Guarantee EQUALS_REFERENCE{true, 0, 0};
+constexpr Guarantee EXACT_COVERAGE_FLAT_ONE{true, -1, 1};  // exact coverage; within a texel without perspective
+constexpr Guarantee EXACT_COVERAGE{true, -1, -1};
+constexpr Guarantee NO_GUARANTEE{false, -1, -1};           // the classics: what they are
+
 struct Mapper {
     const char* name;
     const char* family;   // "ours" or "classic"
     const char* origin;   // where it comes from
     const char* promise;  // what it promises about accuracy
+    Guarantee guarantee;  // the same, checkable
     uint32_t needs;       // Need flags
     uint8_t axes;         // AxisSet
     SpanFn span;          // for the generic walker (nullptr when draw is set)

@@ -97,6 +97,10 @@ TEST(RenderTool, BadInputGetsAClearError) {
     ToolRun missing = run(tmp("missing.scene") + " --mapper exact --out " + tmp("x.png"));
     EXPECT_EQ(missing.status, 1);
     EXPECT_NE(missing.out.find("cannot open"), std::string::npos) << missing.out;
+    // a mapper that cannot take the scene's texture says so rather than drawing nothing
+    ToolRun texture = run("scenes/screen/tunnel.scene --mapper fast-affine --out " + tmp("x.png"));
+    EXPECT_EQ(texture.status, 1);
+    EXPECT_NE(texture.out.find("fast-affine cannot take this scene's texture (checker 64x64 repeat)"), std::string::npos) << texture.out;
 }
 
 }  // namespace

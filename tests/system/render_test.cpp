@@ -88,7 +88,7 @@ TEST(Render, KernelPicturesEqualTheHostsForEveryMapperOnEveryScene) {
             int page = int(i % 3);
             json r = s.command("render " + std::string(mapper.name) + " " + std::to_string(page) + " " + surface);
             if (!r["ok"].get<bool>()) {  // a texture the mapper cannot take (e.g. not 256 wide): the host agrees
-                EXPECT_FALSE(raster::mapper_accepts(mapper, host.texture)) << mapper.name << ": " << r.dump();
+                EXPECT_FALSE(mapper_takes(host, mapper)) << mapper.name << ": " << r.dump();
                 continue;
             }
             raster::Axis axis = r["walker"] == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
@@ -190,6 +190,9 @@ TEST(Mappers, TheKernelListsTheRegistry) {
         EXPECT_EQ(m["name"], raster::MAPPERS[i].name);
         EXPECT_EQ(m["family"], raster::MAPPERS[i].family);
         EXPECT_EQ(m["promise"], raster::MAPPERS[i].promise);
+        EXPECT_EQ(m["exact_coverage"], raster::MAPPERS[i].guarantee.exact_coverage);
+        EXPECT_EQ(m["max_error"], raster::MAPPERS[i].guarantee.max_error);
+        EXPECT_EQ(m["max_error_flat"], raster::MAPPERS[i].guarantee.max_error_flat);
         EXPECT_FALSE(m["walkers"].empty());
     }
 }
