@@ -63,7 +63,7 @@ KCXXFLAGS_NODEP = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=o
 KCXXFLAGS = $(KCXXFLAGS_NODEP) -MMD -MP
 KLDFLAGS := -m32 -nostdlib -static -no-pie -T boot/linker.ld -Wl,--build-id=none -Wl,-z,noexecstack \
 	-Wl,--fatal-warnings -Wl,--no-warn-rwx-segments
-NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error -I$(KBUILD)/gen/
+NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error -I$(KBUILD)/gen/ -Iasm/
 
 # ---- host --------------------------------------------------------------------------------------
 

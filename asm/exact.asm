@@ -5,6 +5,7 @@
 bits 32
 
 %include "offsets.inc"
+%include "loop.inc"
 
 section .rodata
 align 8
@@ -80,13 +81,9 @@ section .text
 
 global exact_loop_asm
 exact_loop_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    sub esp, 16 + EXACT_ARGS_SIZE   ; [esp]: integer scratch; [esp+16]: a private copy of the args
+    LOOP_ENTER 16 + EXACT_ARGS_SIZE   ; [esp]: integer scratch; [esp+16]: a private copy of the args
     ; copy the block: x and y advance in the copy, the caller's stays untouched
-    mov esi, [esp + 16 + EXACT_ARGS_SIZE + 20]
+    mov esi, LOOP_ARG(16 + EXACT_ARGS_SIZE)
     lea edi, [esp + 16]
     mov ecx, EXACT_ARGS_SIZE / 4
     rep movsd
@@ -124,9 +121,4 @@ exact_loop_asm:
     dec ebp
     jnz .pixel
 .done:
-    add esp, 16 + EXACT_ARGS_SIZE
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE 16 + EXACT_ARGS_SIZE

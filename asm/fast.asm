@@ -11,6 +11,7 @@
 bits 32
 
 %include "offsets.inc"
+%include "loop.inc"
 
 %macro PIXEL 1                          ; %1: the destination offset within the block
     mov al, [ebx]
@@ -21,17 +22,30 @@ bits 32
     mov [edi + %1], al
 %endmacro
 
+; The unrolled loop: blocks of eight pixels %1 bytes apart, ecx of them; the entry points .e0 to
+; .e7 (local to the function that expands it) start part-way into the first.
+%macro BLOCKS 1
+.block:
+.e0: PIXEL 0
+.e1: PIXEL %1
+.e2: PIXEL 2 * %1
+.e3: PIXEL 3 * %1
+.e4: PIXEL 4 * %1
+.e5: PIXEL 5 * %1
+.e6: PIXEL 6 * %1
+.e7: PIXEL 7 * %1
+    add edi, 8 * %1
+    dec ecx
+    jnz .block
+%endmacro
+
 section .text
 
 ; fast_column_asm: one column, pixels MODEX_ROW_BYTES apart; the map mask is the caller's.
 global fast_column_asm
 fast_column_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    sub esp, 4
-    mov eax, [esp + 24]
+    LOOP_ENTER 4
+    mov eax, LOOP_ARG(4)
     mov ecx, [eax + FCOL_COUNT]
     test ecx, ecx
     jle .done
@@ -59,25 +73,9 @@ fast_column_asm:
     mov eax, [eax + FCOL_U]
     shl eax, 16
     jmp [esp]
-.block:
-.e0: PIXEL 0
-.e1: PIXEL MODEX_ROW_BYTES
-.e2: PIXEL 2 * MODEX_ROW_BYTES
-.e3: PIXEL 3 * MODEX_ROW_BYTES
-.e4: PIXEL 4 * MODEX_ROW_BYTES
-.e5: PIXEL 5 * MODEX_ROW_BYTES
-.e6: PIXEL 6 * MODEX_ROW_BYTES
-.e7: PIXEL 7 * MODEX_ROW_BYTES
-    add edi, 8 * MODEX_ROW_BYTES
-    dec ecx
-    jnz .block
+    BLOCKS MODEX_ROW_BYTES
 .done:
-    add esp, 4
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE 4
 
 ; fast_run_asm: a run of fast-affine's rows (twin: fast_run_loop): both edge bounds stepped in place,
 ; each row's span drawn by the same unrolled core. The core keeps its registers from row to row where
@@ -108,12 +106,8 @@ L_FRAME   equ 32
 
 global fast_run_asm
 fast_run_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    sub esp, L_FRAME
-    mov ecx, [esp + L_FRAME + 20]
+    LOOP_ENTER L_FRAME
+    mov ecx, LOOP_ARG(L_FRAME)
     mov eax, [ecx + RUN_LINES]
     test eax, eax
     jle .done
@@ -180,18 +174,7 @@ fast_run_asm:
     mov bh, dl
     mov dx, [esp + L_STEPS]
     jmp [esp + L_ENTRY]
-.block:
-.e0: PIXEL 0
-.e1: PIXEL 1
-.e2: PIXEL 2
-.e3: PIXEL 3
-.e4: PIXEL 4
-.e5: PIXEL 5
-.e6: PIXEL 6
-.e7: PIXEL 7
-    add edi, 8
-    dec ecx
-    jnz .block
+    BLOCKS 1
 .next_row:
     mov ecx, [esp + L_ARGS]
     mov eax, [ecx + RUN_U_ROW]
@@ -203,12 +186,7 @@ fast_run_asm:
     dec dword [esp + L_LINES]
     jnz .row
 .done:
-    add esp, L_FRAME
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE L_FRAME
 
 section .rodata
 align 4

@@ -4,6 +4,7 @@
 bits 32
 
 %include "offsets.inc"
+%include "loop.inc"
 
 section .text
 
@@ -13,11 +14,8 @@ section .text
 ;   dh: v fraction   bh: v whole   dl: dv fraction   ah: dv whole   edi: destination   ebp: count
 global fatmap_loop_asm
 fatmap_loop_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    mov eax, [esp + 20]
+    LOOP_ENTER 0
+    mov eax, LOOP_ARG(0)
     mov ebp, [eax + FATMAP_COUNT]
     test ebp, ebp
     jle .done
@@ -43,22 +41,15 @@ fatmap_loop_asm:
     dec ebp
     jnz .pixel
 .done:
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE 0
 
 ; fatmap16_loop_asm: fatmap2.txt's 8:16 loop (Russel Simmons' loop, left to right): the fractions in
 ; the high halves of eax (u) and edx (v), the wholes in bl (u) and bh (v), the whole steps in dl and
 ; dh, the fraction steps in the high halves of esi and ebp; ecx counts up to zero.
 global fatmap16_loop_asm
 fatmap16_loop_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    mov eax, [esp + 20]
+    LOOP_ENTER 0
+    mov eax, LOOP_ARG(0)
     mov ecx, [eax + FATMAP_COUNT]
     test ecx, ecx
     jle .done
@@ -88,21 +79,14 @@ fatmap16_loop_asm:
     inc ecx
     jnz .pixel
 .done:
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE 0
 
 ; fatmap_lut_loop_asm: fatmap.txt's table-lookup loop. esi: the scanline's first texel;
 ; edx: the table; ebx: this pixel's offset; edi: destination; ebp: count.
 global fatmap_lut_loop_asm
 fatmap_lut_loop_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    mov eax, [esp + 20]
+    LOOP_ENTER 0
+    mov eax, LOOP_ARG(0)
     mov ebp, [eax + LUT_COUNT]
     test ebp, ebp
     jle .done
@@ -119,8 +103,4 @@ fatmap_lut_loop_asm:
     dec ebp
     jnz .pixel
 .done:
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE 0

@@ -8,16 +8,14 @@
 bits 32
 
 %include "offsets.inc"
+%include "loop.inc"
 
 section .text
 
 global hecker_loop_asm
 hecker_loop_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    mov eax, [esp + 20]
+    LOOP_ENTER 0
+    mov eax, LOOP_ARG(0)
     sub esp, 16
     mov ecx, [eax + HECKER_STEP_CARRY]
     mov [esp], ecx
@@ -45,9 +43,4 @@ hecker_loop_asm:
     dec dword [esp + 12]
     jnz .pixel
 .done:
-    add esp, 16
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE 16

@@ -11,6 +11,7 @@
 bits 32
 
 %include "offsets.inc"
+%include "loop.inc"
 
 section .rodata
 align 8
@@ -148,12 +149,8 @@ section .text
 
 global quake_span_asm
 quake_span_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    sub esp, LOCALS
-    mov eax, [esp + LOCALS + 20]
+    LOOP_ENTER LOCALS
+    mov eax, LOOP_ARG(LOCALS)
     mov [esp + L_ARGS], eax
     fnstcw [esp + L_CW]
     mov cx, [esp + L_CW]
@@ -272,9 +269,4 @@ quake_span_asm:
     fstp st0
     fstp st0
     fstp st0
-    add esp, LOCALS
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE LOCALS

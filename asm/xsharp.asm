@@ -4,6 +4,7 @@
 bits 32
 
 %include "offsets.inc"
+%include "loop.inc"
 
 SC_INDEX    equ 0x3C4
 SC_DATA     equ 0x3C5
@@ -18,11 +19,8 @@ section .text
 ;   ebp: pixels left      cx:  fraction scratch                        ebx: the args copy
 global xsharp_row_asm
 xsharp_row_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    mov esi, [esp + 20]
+    LOOP_ENTER 0
+    mov esi, LOOP_ARG(0)
     sub esp, XROW_ARGS_SIZE
     mov edi, esp                        ; a copy of the block: the fractions change
     mov ecx, XROW_ARGS_SIZE / 4
@@ -59,12 +57,7 @@ xsharp_row_asm:
     dec ebp
     jnz .pixel
 .done:
-    add esp, XROW_ARGS_SIZE
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE XROW_ARGS_SIZE
 
 ; xsharp_column_asm: listing 58.4's loop as X-Sharp 22 shipped it: unrolled twice, the odd pixel
 ; entered half-way with the destination moved back a row, and a second loop (SBB) for X running
@@ -86,12 +79,8 @@ xsharp_row_asm:
 
 global xsharp_column_asm
 xsharp_column_asm:
-    push ebp
-    push ebx
-    push esi
-    push edi
-    sub esp, 4
-    mov ebx, [esp + 24]
+    LOOP_ENTER 4
+    mov ebx, LOOP_ARG(4)
     mov eax, [ebx + XCOL_COUNT]
     test eax, eax
     jle .done
@@ -139,9 +128,4 @@ xsharp_column_asm:
     jnz .backwards_top
 
 .done:
-    add esp, 4
-    pop edi
-    pop esi
-    pop ebx
-    pop ebp
-    ret
+    LOOP_LEAVE 4

@@ -40,6 +40,25 @@ struct Polygon {
 int32_t along(const Vertex16& v, bool columns) { return columns ? v.x : v.y; }   // the scan direction
 int32_t across(const Vertex16& v, bool columns) { return columns ? v.y : v.x; }  // within a line
 
+// The polygon in X-Sharp's terms (whole-pixel vertices, texture coordinates shifted into the
+// texture), refused unless monotone along the scan; its first and last vertex along the scan
+// (DRAWTEXP.C's MinVert and MaxVert, the first of equals).
+SetupStatus prepare(const DrawContext& c, const Vertex* vertices, int count, bool columns, Polygon* p, int* min_vert) {
+    p->columns = columns;
+    SetupStatus status = classic::convert(vertices, count, c.tex, TEXEL_OFFSET, p->v, &p->n);
+    if (status != SetupStatus::Ok) return status;
+    if (!classic::monotone(p->v, p->n, columns)) return SetupStatus::NotConvex;
+    int lo = 0, hi = 0;
+    for (int i = 1; i < p->n; ++i) {
+        if (along(p->v[i], columns) < along(p->v[lo], columns)) lo = i;
+        if (along(p->v[i], columns) > along(p->v[hi], columns)) hi = i;
+    }
+    if (along(p->v[lo], columns) >= along(p->v[hi], columns)) return SetupStatus::Degenerate;
+    *min_vert = lo;
+    p->max_vert = hi;
+    return SetupStatus::Ok;
+}
+
 // DRAWTEXP.C's SetUpEdge, rows (X-Sharp 21) or columns (X-Sharp 22). Returns false when the edge
 // chain has reached the far vertex.
 bool set_up_edge(Edge& e, int start, const Polygon& p) {
@@ -212,25 +231,16 @@ void row_out_span(const DrawContext& c, const SpanSetup& s, int32_t y) {
 
 SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count, RowSpanFn span) {
     Polygon p;
-    p.columns = false;
-    SetupStatus status = classic::convert(vertices, count, c.tex, TEXEL_OFFSET, p.v, &p.n);
+    int min_vert;
+    SetupStatus status = prepare(c, vertices, count, false, &p, &min_vert);
     if (status != SetupStatus::Ok) return status;
-    if (!classic::monotone(p.v, p.n, false)) return SetupStatus::NotConvex;
-    int min_vert = 0, max_vert = 0;
-    int32_t min_y = p.v[0].y, max_y = p.v[0].y;
-    for (int i = 1; i < p.n; ++i) {
-        if (p.v[i].y < min_y) min_y = p.v[i].y, min_vert = i;
-        if (p.v[i].y > max_y) max_y = p.v[i].y, max_vert = i;
-    }
-    if (min_y >= max_y) return SetupStatus::Degenerate;
-    p.max_vert = max_vert;
     Edge left, right;
     left.direction = -1;
     right.direction = 1;
     set_up_edge(left, min_vert, p);
     set_up_edge(right, min_vert, p);
     const ClipRect& clip = c.target.clip;
-    for (int32_t y = min_y;; ++y) {
+    for (int32_t y = p.v[min_vert].y;; ++y) {
         if (y >= clip.y1) break;
         SpanSetup s;
         if (y >= clip.y0 && span_setup(left, right, clip, &s)) {
@@ -290,24 +300,15 @@ SetupStatus draw_row_out(const DrawContext& c, const Vertex* vertices, int count
 
 SetupStatus draw_column(const DrawContext& c, const Vertex* vertices, int count) {
     Polygon p;
-    p.columns = true;
-    SetupStatus status = classic::convert(vertices, count, c.tex, TEXEL_OFFSET, p.v, &p.n);
+    int min_vert;
+    SetupStatus status = prepare(c, vertices, count, true, &p, &min_vert);
     if (status != SetupStatus::Ok) return status;
-    if (!classic::monotone(p.v, p.n, true)) return SetupStatus::NotConvex;
-    int min_vert = 0, max_vert = 0;
-    int32_t min_x = p.v[0].x, max_x = p.v[0].x;
-    for (int i = 1; i < p.n; ++i) {
-        if (p.v[i].x < min_x) min_x = p.v[i].x, min_vert = i;
-        if (p.v[i].x > max_x) max_x = p.v[i].x, max_vert = i;
-    }
-    if (min_x >= max_x) return SetupStatus::Degenerate;
-    p.max_vert = max_vert;
     Edge top, bottom;
     top.direction = 1;
     bottom.direction = -1;
     set_up_edge(top, min_vert, p);
     set_up_edge(bottom, min_vert, p);
-    for (int32_t x = min_x;; ++x) {
+    for (int32_t x = p.v[min_vert].x;; ++x) {
         if (x >= c.target.clip.x1) break;
         if (x >= c.target.clip.x0) column_span(c, top, bottom, x);
         if (!step_edge(top, p) || !step_edge(bottom, p)) break;

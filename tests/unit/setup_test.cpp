@@ -82,6 +82,28 @@ TEST(Setup, RejectsWhatItCannotDraw) {
     EXPECT_STREQ(setup_status_name(SetupStatus::NotConvex), "not convex");
 }
 
+ClipRect random_clip(TriangleGen& gen) {
+    return ClipRect{int32_t(gen.rng() % 160), int32_t(gen.rng() % 120), 160 + int32_t(gen.rng() % 161), 120 + int32_t(gen.rng() % 121)};
+}
+
+// Both walkers yield each pixel covers() accepts inside the clip once, and no other (nothing for a
+// polygon setup refuses); adds the covered pixels to *drawn.
+void expect_walks_cover(const std::vector<Vertex>& p, const ClipRect& clip, int trial, int* drawn) {
+    PolygonSetup s;
+    if (setup(p, &s) != SetupStatus::Ok) return;
+    for (Axis axis : {Axis::Rows, Axis::Columns}) {
+        std::vector<int> counts = walk_counts({p}, axis, clip);
+        for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
+            for (int32_t x = 0; x < SCREEN_WIDTH; ++x) {
+                bool inside_clip = x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
+                int want = inside_clip && covers(s, x, y) ? 1 : 0;
+                ASSERT_EQ(counts[size_t(y) * SCREEN_WIDTH + size_t(x)], want)
+                    << "trial " << trial << (axis == Axis::Rows ? " rows" : " columns") << " pixel " << x << "," << y;
+                *drawn += want;
+            }
+    }
+}
+
 // Every pixel the walker yields is covered, every covered pixel inside the clip is yielded once,
 // for both axes, random triangles and polygons and clip rectangles.
 TEST(Walker, YieldsExactlyTheCoveredPixels) {
@@ -95,21 +117,9 @@ TEST(Walker, YieldsExactlyTheCoveredPixels) {
             double cx = gen.uniform(0, 320), cy = gen.uniform(0, 240), rx = gen.uniform(0.3, 150), ry = gen.uniform(0.3, 150);
             for (int k = 0; k < n; ++k) p.push_back(vertex(cx + rx * std::cos(k * 2 * M_PI / n), cy + ry * std::sin(k * 2 * M_PI / n)));
         }
-        PolygonSetup s;
-        if (setup(p, &s) != SetupStatus::Ok) continue;
         ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
-        if (trial % 2) clip = ClipRect{int32_t(gen.rng() % 160), int32_t(gen.rng() % 120), 160 + int32_t(gen.rng() % 161), 120 + int32_t(gen.rng() % 121)};
-        for (Axis axis : {Axis::Rows, Axis::Columns}) {
-            std::vector<int> counts = walk_counts({p}, axis, clip);
-            for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
-                for (int32_t x = 0; x < SCREEN_WIDTH; ++x) {
-                    bool inside_clip = x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
-                    int want = inside_clip && covers(s, x, y) ? 1 : 0;
-                    ASSERT_EQ(counts[size_t(y) * SCREEN_WIDTH + size_t(x)], want)
-                        << "trial " << trial << (axis == Axis::Rows ? " rows" : " columns") << " pixel " << x << "," << y;
-                    drawn += want;
-                }
-        }
+        if (trial % 2) clip = random_clip(gen);
+        ASSERT_NO_FATAL_FAILURE(expect_walks_cover(p, clip, trial, &drawn));
     }
     EXPECT_GT(drawn, 1000000) << "the trials drew something worth checking";
 }
@@ -160,21 +170,9 @@ TEST(Walker, ExtremesCollinearVerticesAndCentres) {
             p[2] = vertex_raw(p[0].x.raw + int32_t(gen.rng() % 2000) - 1000, p[1].y.raw + int32_t(gen.rng() % 512) - 256);
             break;
         }
-        PolygonSetup s;
-        if (setup(p, &s) != SetupStatus::Ok) continue;
         ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
-        if (trial % 4 == 1) clip = ClipRect{int32_t(gen.rng() % 160), int32_t(gen.rng() % 120), 160 + int32_t(gen.rng() % 161), 120 + int32_t(gen.rng() % 121)};
-        for (Axis axis : {Axis::Rows, Axis::Columns}) {
-            std::vector<int> counts = walk_counts({p}, axis, clip);
-            for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
-                for (int32_t x = 0; x < SCREEN_WIDTH; ++x) {
-                    bool inside_clip = x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
-                    int want = inside_clip && covers(s, x, y) ? 1 : 0;
-                    ASSERT_EQ(counts[size_t(y) * SCREEN_WIDTH + size_t(x)], want)
-                        << "trial " << trial << (axis == Axis::Rows ? " rows" : " columns") << " pixel " << x << "," << y;
-                    drawn += want;
-                }
-        }
+        if (trial % 4 == 1) clip = random_clip(gen);
+        ASSERT_NO_FATAL_FAILURE(expect_walks_cover(p, clip, trial, &drawn));
     }
     EXPECT_GT(drawn, 1000000) << "the trials drew something worth checking";
 }
