@@ -55,8 +55,9 @@ OFFSETS_INC := $(KBUILD)/gen/offsets.inc
 WARNINGS := -Wall -Wextra -Werror -Wshadow -Wnon-virtual-dtor -Wcast-align -Wundef
 # '=': expanded when a recipe runs, after `deps` may have installed the cross compiler
 # -ffp-contract=off (all builds): no fused multiply-adds, so double arithmetic rounds the same on
-# the host (SSE2) and in the kernel (x87 at 53-bit precision, set in boot/entry.asm).
-KCXXFLAGS_NODEP = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -DMODEXLAB_ASM_LOOPS \
+# the host (SSE2) and in the kernel (x87 at 53-bit precision, set in boot/entry.asm). -fno-math-errno:
+# a square root is the instruction (sqrtsd, fsqrt: correctly rounded on both), not a libm call.
+KCXXFLAGS_NODEP = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -DMODEXLAB_ASM_LOOPS \
 	-ffreestanding -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit \
 	-fno-stack-protector -fno-pic -fno-pie -fno-asynchronous-unwind-tables -fno-omit-frame-pointer \
 	-nostdinc -isystem $(shell $(KCXX) -print-file-name=include 2>/dev/null) -I.
@@ -70,11 +71,11 @@ NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error -I$(KBUILD)/gen/ -Iasm/
 # portable kernel code the host builds too (no port I/O, no inline asm)
 PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp \
 	$(wildcard kernel/raster/*.cpp)
-HARNESS_CXX := $(filter-out qemu/main.cpp qemu/render_main.cpp,$(wildcard qemu/*.cpp))
+HARNESS_CXX := $(filter-out qemu/main.cpp qemu/%_main.cpp,$(wildcard qemu/*.cpp))
 HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
 TEST_CXX := $(wildcard tests/*.cpp tests/unit/*.cpp tests/system/*.cpp)
 
-HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -ffp-contract=off -I. -MMD -MP -DMODEXLAB_BUILD_DIR='"$(abspath $(BUILD))"'
+HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -I. -MMD -MP -DMODEXLAB_BUILD_DIR='"$(abspath $(BUILD))"'
 HLDLIBS := -lpng -lpthread
 
 # 32-bit static host programs: the NASM loops against their C++ twins (tests/asm), with GoogleTest
@@ -82,13 +83,14 @@ HLDLIBS := -lpng -lpthread
 H32BUILD := $(BUILD)/host32
 H32CXX := i686-linux-gnu-g++
 GTEST_SRC := /usr/src/googletest/googletest
-H32CXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -DMODEXLAB_ASM_LOOPS -I. \
+H32CXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -DMODEXLAB_ASM_LOOPS -I. \
 	-isystem $(GTEST_SRC)/include -MMD -MP
 ASM_TESTS := $(H32BUILD)/modexlab-asm-tests
 ASM_TEST_CXX := tests/main.cpp $(wildcard tests/asm/*.cpp) kernel/lib/words.cpp kernel/lib/fmt.cpp $(wildcard kernel/raster/*.cpp)
 
 HARNESS := $(HBUILD)/modexlab
 RENDER := $(HBUILD)/modexlab-render
+WAD := $(HBUILD)/modexlab-wad
 TESTS := $(HBUILD)/modexlab-tests
 # the unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer
 SBUILD := $(BUILD)/host-san
@@ -104,7 +106,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(TESTS) $(SAN_TESTS) $(ASM_TESTS)
+host: $(HARNESS) $(RENDER) $(WAD) $(TESTS) $(SAN_TESTS) $(ASM_TESTS)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 deps:
@@ -166,6 +168,10 @@ $(HARNESS): $(HBUILD)/qemu/main.cpp.o $(HARNESS_OBJS)
 	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
 
 $(RENDER): $(HBUILD)/qemu/render_main.cpp.o $(HARNESS_OBJS)
+	$(call say,LINK,$@)
+	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
+
+$(WAD): $(HBUILD)/qemu/wad_main.cpp.o $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
 

@@ -16,7 +16,7 @@ void format_hex32(uint32_t value, char* out);      // "0x" and 8 lower-case digi
 
 class Fmt {
 public:
-    static constexpr size_t CAPACITY = 160;
+    static constexpr size_t CAPACITY = 240;
 
     Fmt& s(const char* text);
     Fmt& s(StrView text);

@@ -3,15 +3,17 @@
 
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/words.h"
+#include "kernel/raster/scene_text.h"
 
 namespace raster {
 
 namespace {
 
 using lib::StrView;
+using scene_text::parse_decimal;
+using scene_text::parse_int;
 
 constexpr int MAX_LINE_WORDS = 4 + 5 * MAX_POLYGON_VERTICES;
-constexpr size_t MAX_LINE = 2048;
 
 struct Parser {
     Scene* scene;
@@ -19,49 +21,8 @@ struct Parser {
     int32_t line = 0;
     bool have_texture = false;
 
-    bool fail(const lib::Fmt& m) {
-        error->line = line;
-        const char* s = m.c_str();
-        size_t i = 0;
-        for (; s[i] && i + 1 < sizeof error->message; ++i) error->message[i] = s[i];
-        error->message[i] = 0;
-        return false;
-    }
+    bool fail(const lib::Fmt& m) { return scene_text::fail(error, line, m.c_str()); }
 };
-
-// A decimal: optional sign, digits, optional '.' and at most MAX_DECIMALS digits; no exponent.
-// The value is mantissa / 10^decimals, one correctly rounded division: the same double everywhere.
-bool parse_decimal(StrView w, double* out) {
-    size_t i = 0;
-    bool negative = false;
-    if (i < w.size && (w.data[i] == '-' || w.data[i] == '+')) negative = w.data[i++] == '-';
-    int64_t mantissa = 0;
-    int digits = 0, decimals = 0;
-    bool point = false;
-    for (; i < w.size; ++i) {
-        char c = w.data[i];
-        if (c == '.' && !point) {
-            point = true;
-            continue;
-        }
-        if (c < '0' || c > '9') return false;
-        if (point && ++decimals > MAX_DECIMALS) return false;
-        if (++digits > 15) return false;  // keeps the mantissa below 2^53: exact in a double
-        mantissa = mantissa * 10 + (c - '0');
-    }
-    if (digits == 0) return false;
-    double scale = 1;
-    for (int k = 0; k < decimals; ++k) scale *= 10;
-    *out = double(negative ? -mantissa : mantissa) / scale;
-    return true;
-}
-
-bool parse_int(StrView w, int32_t lo, int32_t hi, int32_t* out) {
-    uint32_t v;
-    if (!lib::parse_u32(w, &v) || v < uint32_t(lo) || v > uint32_t(hi)) return false;
-    *out = int32_t(v);
-    return true;
-}
 
 bool parse_vertex(Parser& p, const StrView* w, Vertex* v) {
     double x, y, wv, u, vv;
@@ -99,9 +60,9 @@ bool parse_line(Parser& p, const char* text) {
     Scene& s = *p.scene;
     if (w[0].equals("texture")) {
         if (p.have_texture) return p.fail(lib::Fmt().s("a second 'texture' line (version 1 scenes have one texture)"));
-        if (n != 4) return p.fail(lib::Fmt().s("usage: texture checker|grid|xor|gradient WIDTH HEIGHT"));
+        if (n != 4) return p.fail(lib::Fmt().s("usage: texture checker|grid|numbered|xor|gradient WIDTH HEIGHT"));
         if (!texture_kind_from_name(w[1], &s.texture_kind))
-            return p.fail(lib::Fmt().s("unknown texture '").s(w[1]).s("' (checker, grid, xor, gradient)"));
+            return p.fail(lib::Fmt().s("unknown texture '").s(w[1]).s("' (checker, grid, numbered, xor, gradient)"));
         if (!parse_int(w[2], 1, MAX_TEXTURE_SIZE, &s.texture_width) || !parse_int(w[3], 1, MAX_TEXTURE_SIZE, &s.texture_height))
             return p.fail(lib::Fmt().s("texture size '").s(w[2]).s(" ").s(w[3]).s("' out of range: width and height 1..1024"));
         p.have_texture = true;
@@ -128,43 +89,23 @@ bool parse_scene(const char* text, size_t length, Scene* scene, ParseError* erro
     scene->polygon_count = scene->vertex_count = 0;
     scene->wrap = Wrap::Repeat;
     Parser p{scene, error};
-    if (length > MAX_SCENE_BYTES) return p.fail(lib::Fmt().s("file too large (at most 1048576 bytes)"));
-    char buf[MAX_LINE + 1];
-    bool header = false;
-    size_t pos = 0;
-    while (pos < length) {
-        ++p.line;
-        size_t len = 0;
-        bool comment = false;
-        while (pos < length && text[pos] != '\n') {
-            char c = text[pos++];
-            if (c == '\0') return p.fail(lib::Fmt().s("binary data (a NUL byte): not a scene file"));
-            if (c == '#') comment = true;
-            if (comment || c == '\r') continue;
-            if (len == MAX_LINE) return p.fail(lib::Fmt().s("line too long (at most 2048 characters)"));
-            buf[len++] = c == '\t' ? ' ' : c;
+    if (length > MAX_SCENE_BYTES) return scene_text::fail(error, 0, "file too large (at most 1048576 bytes)");
+    scene_text::Lines lines(text, length);
+    char buf[scene_text::MAX_LINE + 1];
+    int version = scene_text::read_header(lines, buf, error);
+    if (version == 0) return false;
+    if (version != 1)
+        return scene_text::fail(error, lines.line, "a version 2 (3D) scene: load it as a world, not as a screen-space scene");
+    for (;;) {
+        const char* bad = nullptr;
+        if (!lines.next(buf, &bad)) {
+            if (bad) return scene_text::fail(error, lines.line, bad);
+            break;
         }
-        ++pos;  // the newline
-        buf[len] = 0;
-        StrView w[3];
-        size_t n = lib::split_words(buf, w, 3);
-        if (n == 0) continue;
-        if (!header) {
-            if (n != 2 || !w[0].equals("modexlab-scene")) return p.fail(lib::Fmt().s("not a modexlab scene: the first line must be 'modexlab-scene 1'"));
-            if (!w[1].equals("1")) return p.fail(lib::Fmt().s("scene version '").s(w[1]).s("' not supported (this build reads version 1)"));
-            header = true;
-            continue;
-        }
+        p.line = lines.line;
         if (!parse_line(p, buf)) return false;
     }
-    if (!header) {
-        p.line = 0;
-        return p.fail(lib::Fmt().s("empty file: the first line must be 'modexlab-scene 1'"));
-    }
-    if (!p.have_texture) {
-        p.line = 0;
-        return p.fail(lib::Fmt().s("no 'texture' line"));
-    }
+    if (!p.have_texture) return scene_text::fail(error, 0, "no 'texture' line");
     return true;
 }
 

@@ -28,7 +28,7 @@ struct Scene {
 
 struct ParseError {
     int32_t line = 0;  // 1-based; 0 when the error is about the whole file
-    char message[160] = {};
+    char message[256] = {};
 };
 
 // Parses `length` bytes of scene text. On failure returns false with the first error.

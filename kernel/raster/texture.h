@@ -52,8 +52,8 @@ inline uint8_t texel(const Texture& t, int32_t tu, int32_t tv) {
     return t.texels[wrap_coord(tv, t.height, t.wrap) * t.width + wrap_coord(tu, t.width, t.wrap)];
 }
 
-enum class TextureKind : uint8_t { Checker, Grid, Xor, Gradient };
-constexpr int TEXTURE_KIND_COUNT = 4;
+enum class TextureKind : uint8_t { Checker, Grid, Xor, Gradient, Numbered };
+constexpr int TEXTURE_KIND_COUNT = 5;
 
 const char* texture_kind_name(TextureKind k);
 bool texture_kind_from_name(lib::StrView name, TextureKind* out);
@@ -66,6 +66,9 @@ bool wrap_from_name(lib::StrView name, Wrap* out);
 //             inside has its own colour from the colour cube, so a wrong cell shows
 //   xor:      (u xor v) mod 256
 //   gradient: colour-cube entries, 12 steps across u and 20 down v
+//   numbered: white lines on texel rows and columns that are multiples of 16; each 16x16 cell its
+//             own colour with its number (row-major from 0, two digits, mod 100) in black: the
+//             cell a pixel shows can be read off a screenshot
 void generate_texture(TextureKind kind, int32_t width, int32_t height, uint8_t* out);
 
 }  // namespace raster
