@@ -7,14 +7,18 @@
 #include "drivers/serial.h"
 #include "drivers/timer.h"
 #include "drivers/vga.h"
+#include "kernel/files.h"
 #include "kernel/idt.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
 #include "kernel/lib/words.h"
 #include "kernel/multiboot.h"
+#include "kernel/raster/mappers.h"
 #include "kernel/server.h"
 #include "kernel/show.h"
 #include "kernel/version.h"
+
+extern "C" uint8_t __kernel_end[];
 
 namespace {
 
@@ -23,6 +27,9 @@ enum class BootAction : uint8_t { Demo, Serve };
 struct BootOptions {
     BootAction action = BootAction::Demo;
     uint32_t interval_ms = 2000;
+    lib::StrView scene;   // the demo shows only this scene file
+    lib::StrView mapper;  // and draws with this mapper
+    bool patterns = false;  // the demo shows the test patterns, not scenes
     lib::StrView rejected[4];  // words we did not understand, reported in the boot line
     size_t rejected_count = 0;
 };
@@ -59,6 +66,9 @@ BootOptions parse_options(const char* cmdline) {
         else if (w.equals("boot=serve")) o.action = BootAction::Serve;
         else if (w.starts_with("interval=") && lib::parse_u32(w.drop(9), &v) && v >= 1 && v <= MAX_INTERVAL_MS)
             o.interval_ms = v;
+        else if (w.starts_with("scene=") && w.size > 6) o.scene = w.drop(6);
+        else if (w.equals("show=patterns") || w.equals("show=scenes")) o.patterns = w.equals("show=patterns");
+        else if (w.starts_with("mapper=") && raster::find_mapper(w.drop(7))) o.mapper = w.drop(7);
         else if (o.rejected_count < 4) o.rejected[o.rejected_count++] = w;
     }
     return o;
@@ -95,11 +105,19 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     ctx.cpu = cpu::detect();
     ctx.tsc_hz = cpu::has_tsc(ctx.cpu) ? timer::calibrate_tsc_hz() : 0;
     bool vbe_found = vga::disable_bochs_vbe();
+    if ((info->flags & multiboot::INFO_MEMORY) && 0x100000 + uint64_t(info->mem_upper) * 1024 < uint64_t(reinterpret_cast<uintptr_t>(__kernel_end)))
+        panic("not enough memory: the kernel's image and buffers need more than the loader reports");
+    uint32_t skipped_modules = 0;
+    files::init(info, &skipped_modules);
+    uint32_t modules = 0;
+    for (int i = 0; i < files::count(); ++i) modules += files::at(i).origin == files::Origin::Module;
 
     lib::JsonLine boot(serial::sink());
     boot.str("event", "boot").str("version", MODEXLAB_VERSION).str("cmdline", ctx.cmdline);
     boot.str("boot", options.action == BootAction::Demo ? "demo" : "serve").u32("interval_ms", options.interval_ms);
     boot.boolean("bochs_vbe_cleared", vbe_found).u64("tsc_hz", ctx.tsc_hz);
+    boot.u32("files", uint32_t(files::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
+    boot.u32("memory_kib", (info->flags & multiboot::INFO_MEMORY) ? info->mem_upper + 1024 : 0);
     boot.begin_array("ignored_options");
     for (size_t i = 0; i < options.rejected_count; ++i) {
         lib::Fmt w;
@@ -112,7 +130,8 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     if (options.action == BootAction::Demo) {
         vga::set_mode_x();
         vga::load_palette(raster::palette(ctx.palette));
-        show::run(options.interval_ms);
+        show::run(options.interval_ms, options.patterns, options.scene, options.mapper);
+        vga::load_palette(raster::palette(ctx.palette));
     }
     server::run(ctx);
 }

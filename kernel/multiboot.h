@@ -26,4 +26,11 @@ struct Info {
 
 static_assert(sizeof(Info) == 68, "multiboot info layout up to boot_loader_name");
 
+// One entry of the module list at mods_addr.
+struct Module {
+    uint32_t mod_start, mod_end;  // physical addresses: [start, end)
+    uint32_t string;              // physical address of a NUL-terminated string, or 0
+    uint32_t reserved;
+};
+
 }  // namespace multiboot

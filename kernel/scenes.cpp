@@ -1,21 +1,16 @@
-// Scene upload and rendering in the kernel.
+// The current screen-space scene, and rendering through the three surfaces.
 #include "kernel/scenes.h"
 
-#include "drivers/serial.h"
 #include "drivers/timer.h"
 #include "drivers/vga.h"
-#include "kernel/lib/encode.h"
-#include "kernel/lib/fmt.h"
 #include "kernel/lib/mem.h"
 
 namespace scenes {
 
 namespace {
 
-constexpr uint32_t BYTE_TIMEOUT_MS = 5000;
 constexpr const char* SURFACE_NAMES[3] = {"linear", "planar", "vga"};  // in Surface's order
 
-char g_upload[raster::MAX_SCENE_BYTES];
 raster::Scene g_parsed;     // parsed into here first, so a bad upload leaves the current scene alone
 raster::Scene g_scene;
 bool g_loaded = false;
@@ -25,15 +20,6 @@ uint8_t g_aligned[raster::ALIGNED256_BYTES];
 raster::Texture g_texture;
 alignas(4) uint8_t g_linear[raster::SCREEN_PIXELS];
 alignas(4) uint8_t g_planes[raster::SCREEN_PIXELS];
-
-bool byte_waiting(void*) { return serial::byte_ready(); }
-
-void set_error(raster::ParseError* e, const char* text) {
-    e->line = 0;
-    size_t i = 0;
-    for (; text[i] && i + 1 < sizeof e->message; ++i) e->message[i] = text[i];
-    e->message[i] = 0;
-}
 
 }  // namespace
 
@@ -45,24 +31,8 @@ bool surface_from_name(lib::StrView name, Surface* out) {
 
 const char* surface_name(Surface s) { return SURFACE_NAMES[int(s)]; }
 
-bool upload(size_t length, uint32_t crc32, raster::ParseError* error) {
-    for (size_t i = 0; i < length; ++i) {
-        if (!serial::byte_ready() && !timer::wait_ms_or(BYTE_TIMEOUT_MS, byte_waiting, nullptr)) {
-            lib::Fmt m;
-            m.s("upload stalled: ").u(uint32_t(i)).s(" of ").u(uint32_t(length)).s(" bytes arrived");
-            set_error(error, m.c_str());
-            return false;
-        }
-        g_upload[i] = char(serial::read_byte());
-    }
-    uint32_t got = lib::crc32(0, reinterpret_cast<const uint8_t*>(g_upload), length);
-    if (got != crc32) {
-        lib::Fmt m;
-        m.s("checksum mismatch: the bytes have CRC-32 ").hex(got).s(", the command said ").hex(crc32);
-        set_error(error, m.c_str());
-        return false;
-    }
-    if (!raster::parse_scene(g_upload, length, &g_parsed, error)) return false;
+bool load(const char* text, size_t length, raster::ParseError* error) {
+    if (!raster::parse_scene(text, length, &g_parsed, error)) return false;
     memcpy(&g_scene, &g_parsed, sizeof g_scene);
     raster::generate_texture(g_scene.texture_kind, g_scene.texture_width, g_scene.texture_height, g_texels);
     g_texture = raster::Texture{g_texels, g_scene.texture_width, g_scene.texture_height, g_scene.wrap};
@@ -90,7 +60,7 @@ raster::Target probe_target(Surface surface) {
 }
 const raster::Scene& scene() { return g_scene; }
 
-RenderResult render(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant) {
+RenderResult render_with(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant, DrawFn draw, void* ctx) {
     RenderResult r{};
     uint64_t t0 = timer::rdtsc();
     raster::Target target;
@@ -112,7 +82,7 @@ RenderResult render(const raster::Mapper& mapper, Surface surface, int page, ras
     uint64_t t1 = timer::rdtsc();
     raster::LoopFn loop = raster::mapper_loop(mapper, variant, target);
     r.used_asm = loop && loop == mapper.asm_loop;
-    r.stats = raster::render_scene(g_scene, g_texture, mapper, axis, target, variant);
+    r.stats = draw(ctx, target, axis, variant);
     uint64_t t2 = timer::rdtsc();
     if (surface == Surface::Linear) vga::blit_linear(g_linear, page);
     if (surface == Surface::Planar) vga::blit_planar(g_planes, page);
@@ -121,6 +91,14 @@ RenderResult render(const raster::Mapper& mapper, Surface surface, int page, ras
     r.ticks_draw = t2 - t1;
     r.ticks_blit = t3 - t2;
     return r;
+}
+
+RenderResult render(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant) {
+    return render_with(mapper, surface, page, variant,
+                       [](void* m, raster::Target& target, raster::Axis axis, raster::Variant v) {
+                           return raster::render_scene(g_scene, g_texture, *static_cast<const raster::Mapper*>(m), axis, target, v);
+                       },
+                       const_cast<raster::Mapper*>(&mapper));
 }
 
 }  // namespace scenes

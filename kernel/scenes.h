@@ -19,9 +19,9 @@ enum class Surface : uint8_t {
 bool surface_from_name(lib::StrView name, Surface* out);
 const char* surface_name(Surface s);
 
-// Reads `length` raw bytes from COM1 (giving up after 5 s without a byte), checks the CRC-32 and
-// parses them. On failure the previous scene stays and `error` says why (parser errors carry a line).
-bool upload(size_t length, uint32_t crc32, raster::ParseError* error);
+// Parses a version 1 scene text and makes it the current one (its texture generated). On failure
+// the previous scene stays and `error` says why (parser errors carry a line).
+bool load(const char* text, size_t length, raster::ParseError* error);
 
 bool loaded();
 const raster::Scene& scene();
@@ -44,5 +44,9 @@ raster::Target probe_target(Surface surface);
 
 // Clears the surface to 0, draws the scene with `mapper`, and blits (unless drawn in place).
 RenderResult render(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant);
+
+// The same for any drawing: clears the surface, calls draw(target, axis), blits; times each step.
+using DrawFn = raster::RenderStats (*)(void* ctx, raster::Target& target, raster::Axis axis, raster::Variant variant);
+RenderResult render_with(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant, DrawFn draw, void* ctx);
 
 }  // namespace scenes

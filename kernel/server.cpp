@@ -14,8 +14,10 @@
 #include "kernel/raster/mappers.h"
 #include "kernel/raster/selftest.h"
 #include "kernel/reply.h"
+#include "kernel/files.h"
 #include "kernel/scenes.h"
 #include "kernel/vga_selftest.h"
+#include "kernel/worlds.h"
 #include "kernel/version.h"
 
 namespace server {
@@ -205,106 +207,310 @@ void cmd_vbe(Context&, const StrView* args, size_t) {
     reply::begin(true).str("cmd", "vbe").str("mode", vga::mode_name(vga::mode())).u32("width", 640).u32("height", 480).u32("bpp", 8).end();
 }
 
-void cmd_scene(Context&, const StrView* args, size_t) {
-    uint32_t length, crc;
-    if (!lib::parse_u32(args[0], &length) || length == 0 || length > raster::MAX_SCENE_BYTES || !lib::parse_u32(args[1], &crc)) {
-        reply::error("scene", "usage: scene BYTES CRC32, then exactly BYTES bytes of scene text (1..1048576 bytes)");
-        return;
-    }
-    raster::ParseError e;
-    if (!scenes::upload(length, crc, &e)) {
-        lib::Fmt m;
-        if (e.line) m.s("line ").u(uint32_t(e.line)).s(": ");
-        m.s(e.message);
-        reply::begin(false).str("cmd", "scene").str("error", m.c_str()).u32("line", uint32_t(e.line)).end();
-        return;
-    }
+// --- scenes and files -----------------------------------------------------------------------
+
+void reply_parse_error(const char* cmd, const char* file, const raster::ParseError& e) {
+    lib::Fmt m;
+    if (file) m.s(file).s(": ");
+    if (e.line) m.s("line ").u(uint32_t(e.line)).s(": ");
+    m.s(e.message);
+    lib::JsonLine r = reply::begin(false);
+    r.str("cmd", cmd).str("error", m.c_str()).u32("line", uint32_t(e.line));
+    if (file) r.str("file", file);
+    r.end();
+}
+
+// The reply fields describing a loaded screen-space scene or 3D scene.
+void describe_screen_scene(lib::JsonLine& r) {
     const raster::Scene& sc = scenes::scene();
-    reply::begin(true)
-        .str("cmd", "scene")
-        .u32("bytes", length)
+    r.u32("version", 1)
         .u32("polygons", uint32_t(sc.polygon_count))
         .u32("vertices", uint32_t(sc.vertex_count))
         .str("texture", raster::texture_kind_name(sc.texture_kind))
         .u32("texture_width", uint32_t(sc.texture_width))
         .u32("texture_height", uint32_t(sc.texture_height))
-        .str("wrap", raster::wrap_name(sc.wrap))
-        .end();
+        .str("wrap", raster::wrap_name(sc.wrap));
 }
 
-void cmd_render(Context&, const StrView* args, size_t nargs) {
-    const raster::Mapper* mapper = raster::find_mapper(args[0]);
-    if (!mapper) {
+void describe_world(lib::JsonLine& r) {
+    const raster::World& w = worlds::world();
+    r.u32("version", 2)
+        .u32("textures", uint32_t(w.texture_count))
+        .u32("meshes", uint32_t(w.mesh_count))
+        .u32("objects", uint32_t(w.object_count))
+        .u32("faces", uint32_t(w.face_count))
+        .u32("positions", uint32_t(w.position_count))
+        .u32("frames", uint32_t(w.frames))
+        .str("palette", w.palette_texture >= 0 ? w.textures[w.palette_texture].name : "default");
+    r.begin_object("budget").boolean("given", w.budget.given).i32("max_error", w.budget.max_error).boolean("exact_coverage", w.budget.exact_coverage).end_object();
+}
+
+// Loads a scene file of either version as the current scene of its kind.
+void load_and_reply(const char* cmd, const files::File& f) {
+    raster::ParseError e;
+    const char* text = reinterpret_cast<const char*>(f.data);
+    int version = raster::scene_version(text, f.size, &e);
+    bool ok = version == 1 ? scenes::load(text, f.size, &e) : version == 2 ? worlds::load(f.name, f.data, f.size, &e) : false;
+    if (!ok) {
+        reply_parse_error(cmd, f.name, e);
+        return;
+    }
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", cmd).str("name", f.name).str("origin", files::origin_name(f.origin)).u32("bytes", uint32_t(f.size));
+    if (version == 1) describe_screen_scene(r);
+    else describe_world(r);
+    r.end();
+}
+
+bool parse_upload(const char* cmd, StrView bytes, StrView crc, uint32_t* length, uint32_t* crc32) {
+    if (!lib::parse_u32(bytes, length) || *length == 0 || *length > files::MAX_UPLOAD || !lib::parse_u32(crc, crc32)) {
+        lib::Fmt m;
+        m.s("bad length or checksum: BYTES 1..").u(uint32_t(files::MAX_UPLOAD)).s(", CRC32 decimal or 0x hex");
+        reply::error(cmd, m.c_str());
+        return false;
+    }
+    return true;
+}
+
+constexpr const char* UPLOADED_SCENE = "upload.scene";
+
+void cmd_scene(Context&, const StrView* args, size_t) {
+    uint32_t length, crc;
+    if (!parse_upload("scene", args[0], args[1], &length, &crc)) return;
+    lib::Fmt error;
+    if (!files::upload(StrView{UPLOADED_SCENE, lib::c_length(UPLOADED_SCENE)}, length, crc, &error)) {
+        reply::begin(false).str("cmd", "scene").str("error", error.c_str()).u32("line", 0).end();
+        return;
+    }
+    load_and_reply("scene", *files::find(StrView{UPLOADED_SCENE, lib::c_length(UPLOADED_SCENE)}));
+}
+
+void cmd_file(Context&, const StrView* args, size_t) {
+    uint32_t length, crc;
+    if (!parse_upload("file", args[1], args[2], &length, &crc)) return;
+    if (args[0].size == 0 || args[0].size >= size_t(raster::MAX_FILE_NAME)) {
+        reply::error("file", "bad name: 1 to 63 characters");
+        return;
+    }
+    lib::Fmt error;
+    if (!files::upload(args[0], length, crc, &error)) {
+        reply::error("file", error.c_str());
+        return;
+    }
+    const files::File* f = files::find(args[0]);
+    reply::begin(true).str("cmd", "file").str("name", f->name).u32("bytes", uint32_t(f->size)).u64("upload_space_used", files::upload_space_used()).end();
+}
+
+void cmd_files(Context&, const StrView*, size_t) {
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "files").begin_array("files");
+    for (int i = 0; i < files::count(); ++i) {
+        const files::File& f = files::at(i);
+        r.begin_item_object().str("name", f.name).str("origin", files::origin_name(f.origin)).u32("bytes", uint32_t(f.size)).end_object();
+    }
+    r.end_array().u64("upload_space_used", files::upload_space_used()).u64("upload_space", files::UPLOAD_SPACE).end();
+}
+
+void cmd_load(Context&, const StrView* args, size_t) {
+    const files::File* f = files::find(args[0]);
+    if (!f) {
+        lib::Fmt m;
+        m.s("no file '").s(args[0]).s("' (see 'files')");
+        reply::error("load", m.c_str());
+        return;
+    }
+    load_and_reply("load", *f);
+}
+
+// --- drawing -------------------------------------------------------------------------------
+
+// MAPPER PAGE [SURFACE [asm|twin]] (PAGE absent for play): what every drawing command takes.
+struct DrawArgs {
+    const raster::Mapper* mapper = nullptr;
+    int page = 0;
+    scenes::Surface surface = scenes::Surface::Linear;
+    raster::Variant variant = raster::Variant::Asm;
+    raster::Axis axis = raster::Axis::Rows;
+};
+
+bool parse_draw_args(const char* cmd, const StrView* args, size_t nargs, bool with_page, DrawArgs* d) {
+    d->mapper = raster::find_mapper(args[0]);
+    if (!d->mapper) {
         lib::Fmt m;
         m.s("unknown mapper '").s(args[0]).s("' (mappers:");
         for (int i = 0; i < raster::MAPPER_COUNT; ++i) m.s(" ").s(raster::MAPPERS[i].name);
         m.s(")");
-        reply::error("render", m.c_str());
-        return;
+        reply::error(cmd, m.c_str());
+        return false;
     }
     if (vga::mode() != vga::Mode::ModeX) {
-        reply::error("render", "render draws into Mode X pages: send 'mode modex' first");
-        return;
+        lib::Fmt m;
+        m.s(cmd).s(" draws into Mode X pages: send 'mode modex' first");
+        reply::error(cmd, m.c_str());
+        return false;
     }
-    int page;
-    if (!parse_page("render", args[1], &page)) return;
-    scenes::Surface surface = scenes::Surface::Linear;
-    if (nargs > 2 && !scenes::surface_from_name(args[2], &surface)) {
-        reply::error("render", "unknown surface (linear: rows in RAM then blit; planar: columns in RAM then blit; vga: columns into the page)");
-        return;
+    size_t next = 1;
+    if (with_page && !parse_page(cmd, args[next++], &d->page)) return false;
+    if (nargs > next && !scenes::surface_from_name(args[next], &d->surface)) {
+        reply::error(cmd, "unknown surface (linear: rows in RAM then blit; planar: columns in RAM then blit; vga: columns into the page)");
+        return false;
     }
-    raster::Variant variant = raster::Variant::Asm;
-    if (nargs > 3) {
-        if (args[3].equals("twin")) variant = raster::Variant::Twin;
-        else if (!args[3].equals("asm")) {
-            reply::error("render", "unknown variant (asm: the NASM loop where there is one; twin: the C++ twin)");
-            return;
+    ++next;
+    if (nargs > next) {
+        if (args[next].equals("twin")) d->variant = raster::Variant::Twin;
+        else if (!args[next].equals("asm")) {
+            reply::error(cmd, "unknown variant (asm: the NASM loop where there is one; twin: the C++ twin)");
+            return false;
         }
     }
+    const raster::Mapper& mp = *d->mapper;
+    d->axis = scenes::surface_axis(mp, d->surface);
+    if (!raster::mapper_walks(mp, d->axis) || !raster::mapper_targets(mp, scenes::probe_target(d->surface), d->axis)) {
+        lib::Fmt m;
+        m.s("mapper ").s(mp.name).s(" cannot draw through surface ").s(scenes::surface_name(d->surface)).s(" (it walks");
+        if (mp.axes & raster::AXIS_ROWS) m.s(" rows");
+        if (mp.axes & raster::AXIS_COLUMNS) m.s(" columns");
+        if (mp.needs & raster::NEED_PLANAR_TARGET) m.s(" into Mode X planes: surface planar or vga");
+        m.s(")");
+        reply::error(cmd, m.c_str());
+        return false;
+    }
+    return true;
+}
+
+void render_fields(lib::JsonLine& r, const DrawArgs& d, const scenes::RenderResult& res) {
+    r.str("mapper", d.mapper->name)
+        .u32("page", uint32_t(d.page))
+        .str("surface", scenes::surface_name(d.surface))
+        .str("walker", d.axis == raster::Axis::Rows ? "rows" : "columns")
+        .str("loop", res.used_asm ? "asm" : "twin")
+        .u32("polygons", res.stats.polygons)
+        .u32("skipped", res.stats.skipped)
+        .u32("rejected", res.stats.rejected)
+        .u32("spans", res.stats.spans)
+        .u32("pixels", res.stats.pixels);
+}
+
+void cmd_render(Context&, const StrView* args, size_t nargs) {
+    DrawArgs d;
+    if (!parse_draw_args("render", args, nargs, true, &d)) return;
     if (!scenes::loaded()) {
-        reply::error("render", "no scene: upload one with 'scene BYTES CRC32' first");
+        reply::error("render", "no screen-space scene: upload one with 'scene BYTES CRC32' or 'load NAME' first");
         return;
     }
     const raster::Texture& tex = scenes::texture();
-    if (!raster::mapper_accepts(*mapper, tex)) {
+    if (!raster::mapper_accepts(*d.mapper, tex)) {
         lib::Fmt m;
-        m.s("mapper ").s(mapper->name).s(" cannot take this scene's ").u(uint32_t(tex.width)).s("x").u(uint32_t(tex.height)).s(" texture (needs:");
-        if (mapper->needs & raster::NEED_POW2) m.s(" power-of-two sizes");
-        if (mapper->needs & raster::NEED_WIDTH_256) m.s(" width 256");
-        if (mapper->needs & raster::NEED_ALIGNED256) m.s(" 256x256, repeating");
+        m.s("mapper ").s(d.mapper->name).s(" cannot take this scene's ").u(uint32_t(tex.width)).s("x").u(uint32_t(tex.height)).s(" texture (needs:");
+        if (d.mapper->needs & raster::NEED_POW2) m.s(" power-of-two sizes");
+        if (d.mapper->needs & raster::NEED_WIDTH_256) m.s(" width 256");
+        if (d.mapper->needs & raster::NEED_ALIGNED256) m.s(" 256x256, repeating");
         m.s(")");
         reply::error("render", m.c_str());
         return;
     }
-    raster::Axis axis = scenes::surface_axis(*mapper, surface);
-    if (!raster::mapper_walks(*mapper, axis) || !raster::mapper_targets(*mapper, scenes::probe_target(surface), axis)) {
-        lib::Fmt m;
-        m.s("mapper ").s(mapper->name).s(" cannot draw through surface ").s(scenes::surface_name(surface)).s(" (it walks");
-        if (mapper->axes & raster::AXIS_ROWS) m.s(" rows");
-        if (mapper->axes & raster::AXIS_COLUMNS) m.s(" columns");
-        if (mapper->needs & raster::NEED_PLANAR_TARGET) m.s(" into Mode X planes: surface planar or vga");
-        m.s(")");
-        reply::error("render", m.c_str());
-        return;
-    }
-    scenes::RenderResult r = scenes::render(*mapper, surface, page, variant);
-    reply::begin(true)
-        .str("cmd", "render")
-        .str("mapper", mapper->name)
-        .u32("page", uint32_t(page))
-        .str("surface", scenes::surface_name(surface))
-        .str("walker", axis == raster::Axis::Rows ? "rows" : "columns")
-        .str("loop", r.used_asm ? "asm" : "twin")
-        .u32("polygons", r.stats.polygons)
-        .u32("skipped", r.stats.skipped)
-        .u32("rejected", r.stats.rejected)
-        .u32("spans", r.stats.spans)
-        .u32("pixels", r.stats.pixels)
-        .u64("ticks", r.ticks_clear + r.ticks_draw + r.ticks_blit)
-        .u64("ticks_clear", r.ticks_clear)
-        .u64("ticks_draw", r.ticks_draw)
-        .u64("ticks_blit", r.ticks_blit)
+    scenes::RenderResult res = scenes::render(*d.mapper, d.surface, d.page, d.variant);
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "render");
+    render_fields(r, d, res);
+    r.u64("ticks", res.ticks_clear + res.ticks_draw + res.ticks_blit)
+        .u64("ticks_clear", res.ticks_clear)
+        .u64("ticks_draw", res.ticks_draw)
+        .u64("ticks_blit", res.ticks_blit)
         .end();
+}
+
+bool need_world(const char* cmd) {
+    if (worlds::loaded()) return true;
+    reply::error(cmd, "no 3D scene: 'load NAME' one (see 'files') or upload one with 'scene BYTES CRC32'");
+    return false;
+}
+
+void frame_fields(lib::JsonLine& r, const worlds::FrameResult& f) {
+    r.u32("faces", f.frame.faces)
+        .u32("culled", f.frame.culled)
+        .u32("outside", f.frame.outside)
+        .u32("clipped", f.frame.clipped)
+        .u32("overflow", f.frame.overflow)
+        .u64("ticks", f.ticks_geometry + f.render.ticks_clear + f.render.ticks_draw + f.render.ticks_blit)
+        .u64("ticks_geometry", f.ticks_geometry)
+        .u64("ticks_clear", f.render.ticks_clear)
+        .u64("ticks_draw", f.render.ticks_draw)
+        .u64("ticks_blit", f.render.ticks_blit);
+}
+
+void cmd_frame(Context&, const StrView* args, size_t nargs) {
+    uint32_t n;
+    if (!lib::parse_u32(args[0], &n) || n >= uint32_t(raster::MAX_FRAMES)) {
+        reply::error("frame", "bad frame number: 0..1048575 (frame n shows time n/30 s)");
+        return;
+    }
+    DrawArgs d;
+    if (!parse_draw_args("frame", args + 1, nargs - 1, true, &d) || !need_world("frame")) return;
+    worlds::FrameResult f = worlds::render(int32_t(n), *d.mapper, d.surface, d.page, d.variant);
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "frame").str("scene", worlds::name()).u32("frame", n);
+    render_fields(r, d, f.render);
+    frame_fields(r, f);
+    r.end();
+}
+
+constexpr uint32_t MAX_PLAY_FRAMES = 100000;
+uint32_t g_play_ticks[MAX_PLAY_FRAMES];
+
+void cmd_play(Context&, const StrView* args, size_t nargs) {
+    uint32_t frames;
+    if (!lib::parse_u32(args[0], &frames) || frames == 0 || frames > MAX_PLAY_FRAMES) {
+        reply::error("play", "bad frame count: 1..100000");
+        return;
+    }
+    DrawArgs d;
+    if (!parse_draw_args("play", args + 1, nargs - 1, false, &d) || !need_world("play")) return;
+    uint64_t pixels = 0, total = 0, t_start = timer::rdtsc();
+    for (uint32_t i = 0; i < frames; ++i) {
+        int32_t n = int32_t(i % uint32_t(worlds::world().frames));
+        d.page = vga::shown_page() == 0 ? 1 : 0;  // draw into the hidden page, then show it
+        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant);
+        uint64_t t0 = timer::rdtsc();
+        bool retrace = vga::flip(d.page);
+        uint64_t flip_ticks = timer::rdtsc() - t0;
+        uint64_t ticks = f.ticks_geometry + f.render.ticks_clear + f.render.ticks_draw + f.render.ticks_blit;
+        g_play_ticks[i] = ticks > 0xFFFFFFFFu ? 0xFFFFFFFFu : uint32_t(ticks);
+        pixels += f.render.stats.pixels;
+        total += ticks;
+        lib::JsonLine(serial::sink())
+            .str("event", "frame")
+            .u32("n", uint32_t(i))
+            .u32("frame", uint32_t(n))
+            .u32("page", uint32_t(d.page))
+            .u32("polygons", f.render.stats.polygons)
+            .u32("pixels", f.render.stats.pixels)
+            .u64("ticks", ticks)
+            .u64("ticks_geometry", f.ticks_geometry)
+            .u64("ticks_draw", f.render.ticks_draw)
+            .u64("ticks_flip", flip_ticks)
+            .boolean("retrace", retrace)
+            .end();
+    }
+    uint64_t wall = timer::rdtsc() - t_start;
+    // the median: a partial selection sort over the first half is enough and needs no room
+    uint32_t lo = 0xFFFFFFFFu, hi = 0;
+    for (uint32_t i = 0; i < frames; ++i) {
+        if (g_play_ticks[i] < lo) lo = g_play_ticks[i];
+        if (g_play_ticks[i] > hi) hi = g_play_ticks[i];
+    }
+    for (uint32_t i = 0; i <= frames / 2; ++i) {
+        uint32_t m = i;
+        for (uint32_t k = i + 1; k < frames; ++k)
+            if (g_play_ticks[k] < g_play_ticks[m]) m = k;
+        uint32_t t = g_play_ticks[i];
+        g_play_ticks[i] = g_play_ticks[m], g_play_ticks[m] = t;
+    }
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "play").str("scene", worlds::name()).u32("frames", frames).str("mapper", d.mapper->name);
+    r.str("surface", scenes::surface_name(d.surface)).str("walker", d.axis == raster::Axis::Rows ? "rows" : "columns");
+    r.u64("pixels", pixels).u64("ticks", total).u32("ticks_min", lo).u32("ticks_median", g_play_ticks[frames / 2]).u32("ticks_max", hi);
+    r.u64("ticks_wall", wall).end();
 }
 
 void cmd_mappers(Context&, const StrView*, size_t) {
@@ -387,8 +593,13 @@ constexpr Command COMMANDS[] = {
     {"flip", "flip PAGE", 1, 1, cmd_flip},
     {"readback", "readback PAGE", 1, 1, cmd_readback},
     {"fault", "fault [ud|de|gp|triple|hang]", 0, 1, cmd_fault},
-    {"scene", "scene BYTES CRC32 (then BYTES bytes of scene text)", 2, 2, cmd_scene},
-    {"render", "render MAPPER PAGE [linear|planar|vga] [asm|twin]", 2, 4, cmd_render},
+    {"scene", "scene BYTES CRC32 (then BYTES bytes of scene text, either version)", 2, 2, cmd_scene},
+    {"file", "file NAME BYTES CRC32 (then BYTES bytes: a texture or scene file)", 3, 3, cmd_file},
+    {"files", "files", 0, 0, cmd_files},
+    {"load", "load NAME (a scene file: built in, a module or uploaded)", 1, 1, cmd_load},
+    {"render", "render MAPPER PAGE [linear|planar|vga] [asm|twin] (the screen-space scene)", 2, 4, cmd_render},
+    {"frame", "frame N MAPPER PAGE [linear|planar|vga] [asm|twin] (frame N of the 3D scene)", 3, 5, cmd_frame},
+    {"play", "play FRAMES MAPPER [linear|planar|vga] [asm|twin] (the 3D scene, page-flipped)", 2, 4, cmd_play},
     {"mappers", "mappers", 0, 0, cmd_mappers},
     {"selftest", "selftest [CASES]", 0, 1, cmd_selftest},
     {"vbe", "vbe on", 1, 1, cmd_vbe},

@@ -63,12 +63,12 @@ void KernelLink::send_raw(const std::string& bytes) {
     channel_.write_all(bytes);
 }
 
-json KernelLink::request(const std::string& command, std::chrono::milliseconds timeout) {
+json KernelLink::request(const std::string& command, std::chrono::milliseconds timeout, const EventFn& on_event) {
     send_raw(command + "\n");
-    return read_reply("'" + command + "'", timeout);
+    return read_reply("'" + command + "'", timeout, on_event);
 }
 
-json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds timeout) {
+json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds timeout, const EventFn& on_event) {
     auto deadline = Clock::now() + timeout;
     for (;;) {
         auto line = channel_.read_line(deadline);
@@ -79,7 +79,11 @@ json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds t
         case KernelLine::Kind::Blank: continue;
         case KernelLine::Kind::BootEvent: throw HarnessError("the kernel rebooted while waiting for the reply to " + what);
         case KernelLine::Kind::PanicEvent: throw HarnessError("kernel panic: " + k.body.value("error", "?"));
-        case KernelLine::Kind::OtherEvent: throw HarnessError("unexpected event while waiting for the reply to " + what + ": " + k.body.dump());
+        case KernelLine::Kind::OtherEvent:
+            if (!on_event) throw HarnessError("unexpected event while waiting for the reply to " + what + ": " + k.body.dump());
+            on_event(k.body);
+            deadline = Clock::now() + timeout;
+            continue;
         case KernelLine::Kind::Reply:
         case KernelLine::Kind::Fault: break;
         }

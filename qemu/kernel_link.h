@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <deque>
+#include <functional>
 #include <string>
 
 #include "qemu/json.h"
@@ -44,15 +45,20 @@ public:
     // in the transcript and skipped. Throws on a panic line, a timeout or the end of the stream.
     json wait_boot(std::chrono::milliseconds timeout);
 
+    // Events a command may send before its reply (the frames of `play`): each goes to the callback,
+    // and each restarts the timeout (the command is making progress).
+    using EventFn = std::function<void(const json&)>;
+
     // Sends one command line and returns its reply (ok true or false). Throws KernelFault on a CPU
-    // exception, HarnessError on a timeout, a wrong seq, a garbled line, a panic or an unexpected boot.
-    json request(const std::string& command, std::chrono::milliseconds timeout);
+    // exception, HarnessError on a timeout, a wrong seq, a garbled line, a panic, an unexpected boot,
+    // or an event when `on_event` is empty.
+    json request(const std::string& command, std::chrono::milliseconds timeout, const EventFn& on_event = nullptr);
 
     // Sends raw bytes (tests of malformed input); no reply is awaited.
     void send_raw(const std::string& bytes);
 
     // Reads the reply to a command sent with send_raw.
-    json read_reply(const std::string& what, std::chrono::milliseconds timeout);
+    json read_reply(const std::string& what, std::chrono::milliseconds timeout, const EventFn& on_event = nullptr);
 
     uint32_t next_seq() const { return next_seq_; }
 

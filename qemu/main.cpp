@@ -1,5 +1,8 @@
-// modexlab: the host harness's command line. `run` boots the kernel and shows every pattern with
-// screenshots checked against the host's rendering; `exec` sends the given commands and prints the replies.
+// modexlab: the host harness's command line. `run` boots the kernel, shows every pattern and plays
+// every demo scene, with screenshots checked against the host's rendering; `exec` sends the given
+// commands and prints the replies.
+#include <unistd.h>
+
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -9,8 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "qemu/demo_scenes.h"
 #include "qemu/error.h"
 #include "qemu/image.h"
+#include "qemu/measure.h"
 #include "qemu/session.h"
 
 namespace {
@@ -18,16 +23,21 @@ namespace {
 using namespace harness;
 
 const char* USAGE =
-    "usage: modexlab run  [BOOT] [--out DIR]\n"
+    "usage: modexlab run  [BOOT] [--out DIR] [--scene NAME] [--mapper NAME] [--frames N] [--display]\n"
     "       modexlab exec [BOOT] [--full] COMMAND...\n"
-    "BOOT:  --kernel ELF [--append OPTIONS] | --iso ISO [--usb]   (default: build/kernel/modexlab.elf)\n"
+    "BOOT:  --kernel ELF [--append OPTIONS] [--module PATH[=NAME]]... | --iso ISO [--usb]\n"
+    "                     (default: build/kernel/modexlab.elf; a module's name is its path unless given)\n"
     "       --icount      count guest instructions (rdtsc = instructions executed)\n"
-    "run:   boots, says hello, sets Mode X and draws, shows and screenshots every test pattern;\n"
-    "       each screendump and readback must equal the host's rendering. Screenshots go to DIR\n"
-    "       (default build/run).\n"
+    "run:   boots, says hello, sets Mode X; draws, shows and screenshots every test pattern; then\n"
+    "       plays every demo scene (or NAME) for N frames (default 90: three seconds of its\n"
+    "       animation) with the mapper (default persp-subdiv-16), page-flipped, and screenshots the\n"
+    "       last frame. Each screenshot must equal the host's rendering. Screenshots go to DIR\n"
+    "       (default build/run). --display: a QEMU window playing the scene(s) until it is closed.\n"
     "exec:  sends each COMMAND (one kernel command line, quote it) and prints the JSON replies;\n"
     "       'screendump:NAME' saves a screendump as NAME.png in the run directory instead;\n"
-    "       'scene:FILE' uploads a scene file (scene BYTES CRC32 and the bytes).\n"
+    "       'scene:FILE' uploads a scene file (scene BYTES CRC32 and the bytes);\n"
+    "       'file:NAME=PATH' uploads a file under NAME (file NAME BYTES CRC32 and the bytes).\n"
+    "       Events a command sends before its reply (play's frames) are printed as they come.\n"
     "       Long \"data\" fields are shortened unless --full.\n";
 
 struct Args {
@@ -36,6 +46,8 @@ struct Args {
     std::string out;
     bool full = false;
     std::vector<std::string> commands;
+    std::string scene, mapper = "persp-subdiv-16";
+    int frames = 90;
 };
 
 [[noreturn]] void usage_error(const std::string& why) {
@@ -71,8 +83,22 @@ Args parse(int argc, char** argv) {
             a.session.append = value();
         } else if (s == "--icount") {
             a.session.icount = true;
+        } else if (s == "--display" && a.verb == "run") {
+            a.session.display = true;
+        } else if (s == "--module") {
+            std::string m = value();
+            size_t eq = m.find('=');
+            a.session.modules.push_back(eq == std::string::npos ? m : m.substr(0, eq) + " " + m.substr(eq + 1));
         } else if (s == "--out" && a.verb == "run") {
             a.out = value();
+        } else if (s == "--scene" && a.verb == "run") {
+            a.scene = value();
+        } else if (s == "--mapper" && a.verb == "run") {
+            a.mapper = value();
+            if (!raster::find_mapper({a.mapper.data(), a.mapper.size()})) usage_error("unknown mapper '" + a.mapper + "'");
+        } else if (s == "--frames" && a.verb == "run") {
+            a.frames = std::atoi(value().c_str());
+            if (a.frames < 1 || a.frames > 100000) usage_error("--frames takes 1..100000");
         } else if (s == "--full" && a.verb == "exec") {
             a.full = true;
         } else if (s.rfind("--", 0) == 0) {
@@ -96,7 +122,65 @@ std::string shorten_data(json reply, bool full) {
     return reply.dump();
 }
 
+// `run --display`: the boot show in a window, until the window is closed.
+int watch(Args& a) {
+    a.session.name = "watch";
+    a.session.append = "boot=demo mapper=" + a.mapper + (a.scene.empty() ? "" : " scene=" + a.scene + ".scene");
+    std::printf("modexlab run: a QEMU window plays %s with %s; close it to stop\n", a.scene.empty() ? "every demo scene" : a.scene.c_str(),
+                a.mapper.c_str());
+    std::fflush(stdout);
+    Session s(a.session);
+    ExitInfo e = s.wait_exit(std::chrono::hours(24 * 365));
+    std::printf("%s\n", e.describe().c_str());
+    return 0;
+}
+
+// Plays every demo scene (or one) and checks the last frame of each against the host.
+int play_scenes(Args& a, Session& s) {
+    int failures = 0;
+    std::vector<const DemoScene*> scenes;
+    for (const DemoScene& d : demo_scenes())
+        if (a.scene.empty() || a.scene == d.name) scenes.push_back(&d);
+    if (scenes.empty()) throw HarnessError("no demo scene '" + a.scene + "' (modexlab-scene list)");
+    const raster::Mapper& mapper = *raster::find_mapper({a.mapper.data(), a.mapper.size()});
+    const bool progress = isatty(1);  // frame counts on a terminal, not in logs
+    std::printf("\nscenes, %d frames each (%.1f s of animation), drawn with %s; ticks are TSC ticks%s\n", a.frames,
+                double(a.frames) / raster::FRAMES_PER_SECOND, a.mapper.c_str(), a.session.icount ? " (icount: instructions)" : " (QEMU TCG, not a real PC)");
+    std::printf("%-9s %6s %9s %11s %12s %10s  %-28s %s\n", "scene", "frames", "polygons", "pixels", "ticks/frame", "ticks/px", "screenshot", "vs host");
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        const DemoScene& d = *scenes[i];
+        s.ok(std::string("load ") + d.name + ".scene");
+        json last;
+        json r = s.ok("play " + std::to_string(a.frames) + " " + a.mapper, [&](const json& e) {
+            last = e;
+            if (progress && e["n"].get<int>() % 10 == 9) {
+                std::printf("\r  scene %zu/%zu %s: frame %d/%d", i + 1, scenes.size(), d.name, e["n"].get<int>() + 1, a.frames);
+                std::fflush(stdout);
+            }
+        });
+        if (progress) std::printf("\r%60s\r", "");
+        LoadedWorld host = load_world_file("scenes/" + std::string(d.name) + ".scene");
+        auto frame = world_frame(host, last["frame"].get<int32_t>());
+        IndexImage want = render_world_frame(host, *frame, mapper, default_axis(mapper));
+        std::string stem = std::string("scene-") + d.name;
+        RgbImage dump = s.screendump(stem);
+        bool same = dump.rgb == screendump_of(want, host.world->palette).rgb && compare(s.readback(last["page"].get<int>()), want).equal();
+        std::filesystem::copy_file(s.run_dir() + "/" + stem + ".png", a.out + "/" + stem + ".png", std::filesystem::copy_options::overwrite_existing);
+        uint64_t pixels = r["pixels"].get<uint64_t>();
+        std::printf("%-9s %6d %9d %11llu %12llu %10.1f  %-28s %s\n", d.name, a.frames, last["polygons"].get<int>(), (unsigned long long)pixels,
+                    (unsigned long long)r["ticks_median"].get<uint64_t>(), pixels ? double(r["ticks"].get<uint64_t>()) / double(pixels) : 0.0,
+                    (a.out + "/" + stem + ".png").c_str(), same ? "equal" : "DIFFERS");
+        if (!same) {
+            ++failures;
+            save_png(a.out + "/" + stem + "-expected.png", screendump_of(want, host.world->palette));
+        }
+        std::fflush(stdout);
+    }
+    return failures;
+}
+
 int run(Args& a) {
+    if (a.session.display) return watch(a);
     a.session.name = "run";
     std::printf("modexlab run: booting %s in QEMU (TCG%s, headless)\n",
                 a.session.image.empty() ? (build_dir() + "/kernel/modexlab.elf").c_str() : a.session.image.c_str(),
@@ -141,9 +225,10 @@ int run(Args& a) {
         if (!by_readback.equal()) ++failures;
         std::fflush(stdout);
     }
+    failures += play_scenes(a, s);
     s.ok("exit 0");
     ExitInfo e = s.wait_exit();
-    std::printf("screenshots (640x480, QEMU screendump): %s/pattern-*.png\n", a.out.c_str());
+    std::printf("screenshots (640x480, QEMU screendump): %s/pattern-*.png, %s/scene-*.png\n", a.out.c_str(), a.out.c_str());
     std::printf("serial log: %s/serial.log\n%s\n", s.run_dir().c_str(), e.describe().c_str());
     if (failures) std::printf("modexlab run: %d comparison(s) FAILED\n", failures);
     return failures || !(e.exited && e.status == 1) ? 1 : 0;
@@ -163,13 +248,16 @@ int exec(Args& a) {
         }
         json reply;
         if (c.rfind("scene:", 0) == 0) {
-            std::ifstream in(c.substr(6), std::ios::binary);
-            if (!in) throw HarnessError("cannot open " + c.substr(6));
-            std::stringstream text;
-            text << in.rdbuf();
-            reply = s.upload_scene(text.str());
+            reply = s.upload_scene(read_whole_file(c.substr(6)));
+        } else if (c.rfind("file:", 0) == 0) {
+            size_t eq = c.find('=');
+            if (eq == std::string::npos) throw HarnessError("'" + c + "': file:NAME=PATH");
+            reply = s.upload_file(c.substr(5, eq - 5), read_whole_file(c.substr(eq + 1)));
         } else {
-            reply = s.command(c);
+            reply = s.command(c, [&](const json& event) {
+                std::printf("%s\n", event.dump().c_str());
+                std::fflush(stdout);
+            });
         }
         std::printf("%s\n", shorten_data(reply, a.full).c_str());
         std::fflush(stdout);

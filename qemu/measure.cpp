@@ -1,6 +1,8 @@
 // Scene loading and the pictures the metrics compare.
 #include "qemu/measure.h"
 
+#include <filesystem>
+#include <map>
 #include <fstream>
 #include <sstream>
 
@@ -28,12 +30,58 @@ LoadedScene parse_scene_text(const std::string& text, const std::string& name) {
     return make_loaded_scene(std::move(scene), name);
 }
 
-LoadedScene load_scene_file(const std::string& path) {
+std::string read_whole_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw HarnessError(path + ": cannot open");
     std::stringstream ss;
     ss << in.rdbuf();
-    return parse_scene_text(ss.str(), path);
+    return ss.str();
+}
+
+LoadedScene load_scene_file(const std::string& path) { return parse_scene_text(read_whole_file(path), path); }
+
+LoadedWorld parse_world_text(const std::string& text, const std::string& name, const std::vector<std::string>& search) {
+    struct Finder {
+        const std::vector<std::string>* search;
+        std::map<std::string, std::string> read;  // the files read, kept while parsing
+    } finder{&search, {}};
+    FileResolver r;
+    r.context = &finder;
+    r.find = [](const void* ctx, lib::StrView file, const uint8_t** data, size_t* size) {
+        auto& f = *static_cast<Finder*>(const_cast<void*>(ctx));
+        std::string wanted(file.data, file.size);
+        for (const std::string& dir : *f.search) {
+            std::filesystem::path p = std::filesystem::path(dir) / wanted;
+            if (!std::filesystem::is_regular_file(p)) continue;
+            std::string& bytes = f.read[wanted] = read_whole_file(p.string());
+            *data = reinterpret_cast<const uint8_t*>(bytes.data()), *size = bytes.size();
+            return true;
+        }
+        return false;
+    };
+    LoadedWorld w;
+    w.name = name;
+    w.world = std::make_unique<World>();
+    ParseError e;
+    if (!parse_world(text.data(), text.size(), r, w.world.get(), &e))
+        throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message);
+    w.textures = std::make_unique<TextureSet>();
+    build_texture_set(*w.world, w.textures.get());
+    return w;
+}
+
+std::vector<std::string> world_search_path(const std::string& scene_path) {
+    std::string dir = std::filesystem::path(scene_path).parent_path().string();
+    return {dir.empty() ? "." : dir, std::string(MODEXLAB_BUILD_DIR) + "/scenes"};
+}
+
+LoadedWorld load_world_file(const std::string& path) { return parse_world_text(read_whole_file(path), path, world_search_path(path)); }
+
+std::unique_ptr<Frame> world_frame(const LoadedWorld& w, int32_t n) {
+    auto frame = std::make_unique<Frame>();
+    auto scratch = std::make_unique<FrameScratch>();
+    build_frame(*w.world, n, frame.get(), scratch.get());
+    return frame;
 }
 
 Picture::Picture(int32_t width, int32_t height)
@@ -98,6 +146,14 @@ std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper
 }
 
 }  // namespace
+
+IndexImage render_world_frame(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis, RenderStats* stats) {
+    HostSurface surface(mapper, BACKGROUND);
+    Target target = surface.target();
+    RenderStats st = render_frame(frame, *w.textures, mapper, axis, target);
+    if (stats) *stats = st;
+    return IndexImage{SCREEN_WIDTH, SCREEN_HEIGHT, surface.linear()};
+}
 
 bool mapper_takes(const LoadedScene& s, const Mapper& mapper) {
     HostTexture t(s.texture, mapper);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/raster/frame.h"
 #include "kernel/raster/mappers.h"
 #include "kernel/raster/metrics.h"
 #include "kernel/raster/reference.h"
@@ -57,5 +58,30 @@ IndexImage render_mapper(const LoadedScene& s, const raster::Mapper& mapper, ras
 // time on a scratch surface), and the texel it read (from renders with coordinate textures whose
 // texels hold their own coordinates, 8 bits at a time). Only the mapper's drawing path is used.
 std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const raster::Mapper& mapper, raster::Axis axis);
+
+// A 3D scene (version 2) on the host, its texture files found in `search` directories in order,
+// with the textures as the mappers take them.
+struct LoadedWorld {
+    std::string name;
+    std::unique_ptr<raster::World> world;
+    std::unique_ptr<raster::TextureSet> textures;
+};
+
+// Throws HarnessError "NAME:LINE: message" on a bad scene or a texture file it cannot read.
+LoadedWorld parse_world_text(const std::string& text, const std::string& name, const std::vector<std::string>& search);
+// The file's own directory first, then <build>/scenes (the files made at build time).
+LoadedWorld load_world_file(const std::string& path);
+std::vector<std::string> world_search_path(const std::string& scene_path);
+
+// Frame n, as the kernel builds it.
+std::unique_ptr<raster::Frame> world_frame(const LoadedWorld& w, int32_t n);
+
+// The frame drawn with the mapper on a cleared surface (linear, or planes for mappers that write
+// planes), as a linear picture in the scene's palette indices.
+IndexImage render_world_frame(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper, raster::Axis axis,
+                              raster::RenderStats* stats = nullptr);
+
+// Reads a whole file; throws HarnessError when it cannot.
+std::string read_whole_file(const std::string& path);
 
 }  // namespace harness

@@ -65,7 +65,7 @@ std::string ExitInfo::describe() const {
 std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& serial_socket,
                                         const std::string& qmp_socket) {
     std::vector<std::string> a = {
-        "-machine", "pc,accel=tcg", "-m", "64", "-display", "none", "-vga", "std", "-no-reboot",
+        "-machine", "pc,accel=tcg", "-m", "128", "-vga", "std", "-no-reboot",
         "-device", "isa-debug-exit,iobase=0xf4,iosize=0x04",
         "-chardev", "socket,id=com1,path=" + serial_socket + ",logfile=" + c.run_dir + "/serial.log",
         "-serial", "chardev:com1",
@@ -73,11 +73,20 @@ std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& 
         "-mon", "chardev=qmp,mode=control",
         "-parallel", "none", "-net", "none",
     };
+    if (!c.display) a.insert(a.end(), {"-display", "none"});
     if (c.icount) a.insert(a.end(), {"-icount", "shift=0,align=off,sleep=off"});
     switch (c.medium) {
     case BootMedium::Kernel:
         a.insert(a.end(), {"-kernel", c.image});
         if (!c.append.empty()) a.insert(a.end(), {"-append", c.append});
+        if (!c.modules.empty()) {
+            std::string list;  // QEMU splits -initrd at commas; a comma in a path is written twice
+            for (const std::string& m : c.modules) {
+                if (!list.empty()) list += ",";
+                for (char ch : m) list += ch == ',' ? std::string(",,") : std::string(1, ch);
+            }
+            a.insert(a.end(), {"-initrd", list});
+        }
         break;
     case BootMedium::Cdrom: a.insert(a.end(), {"-cdrom", c.image, "-boot", "d"}); break;
     case BootMedium::Usb:

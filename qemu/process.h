@@ -19,6 +19,8 @@ struct QemuConfig {
     BootMedium medium = BootMedium::Kernel;
     std::string image;       // the ELF (-kernel) or the ISO (CD or USB stick)
     std::string append;      // multiboot command line, -kernel only
+    std::vector<std::string> modules;  // -kernel only: Multiboot modules (-initrd), each "PATH" or "PATH NAME"
+    bool display = false;    // a window (QEMU's default display) instead of none
     bool icount = false;     // -icount shift=0,align=off,sleep=off: rdtsc counts guest instructions
     std::string run_dir;     // serial.log and qemu.log go here
     std::vector<std::string> extra_args;

@@ -1,7 +1,9 @@
-// modexlab-render: renders a screen-space scene on the host with a mapper or the reference, writes
-// a PNG and, with --compare, prints the accuracy metrics against the reference. The output lines
-// are "key value" pairs whose names and meanings are fixed (docs/accuracy.md, "modexlab-render").
+// modexlab-render: renders a screen-space scene (or a frame of a 3D scene) on the host with a mapper
+// or the reference, writes a PNG and, with --compare, prints the accuracy metrics against the
+// reference. The output lines are "key value" pairs whose names and meanings are fixed
+// (docs/accuracy.md, "modexlab-render").
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -15,11 +17,12 @@ using namespace harness;
 
 const char* USAGE =
     "usage: modexlab-render SCENE --mapper NAME|reference [--axis rows|columns] --out FILE.png\n"
-    "                       [--compare [--diff FILE.png]]\n"
-    "  --mapper   a mapper (affine, exact) or 'reference'\n"
+    "                       [--frame N] [--compare [--diff FILE.png]]\n"
+    "  --frame    a 3D scene's frame (default 0; frame n shows time n/30 s)\n"
+    "  --mapper   a mapper of the registry (docs/mappers.md: exact, affine, fast-affine, ...) or 'reference'\n"
     "  --axis     the walker: rows or columns (default: the mapper's own, rows for those that walk\n"
     "             both; our generic walkers cover the same pixels either way)\n"
-    "  --out      the picture, 320x240, in the default palette\n"
+    "  --out      the picture, 320x240, in the scene's palette\n"
     "  --compare  print the accuracy metrics against the reference\n"
     "  --diff     with --compare: a picture of the differences (red: palette index differs,\n"
     "             yellow: drawn but not covered by the reference, blue: covered but not drawn)\n";
@@ -48,6 +51,44 @@ RgbImage difference_picture(const raster::PixelImage& ref, const raster::PixelIm
 
 double share(uint32_t part, uint32_t whole) { return whole ? double(part) / double(whole) : 0.0; }
 
+RgbImage colourise_with(const IndexImage& img, const raster::Palette& pal) {
+    RgbImage out{img.width, img.height, std::vector<uint8_t>(img.index.size() * 3)};
+    for (size_t i = 0; i < img.index.size(); ++i) {
+        const raster::Rgb6& c = pal.entry[img.index[i]];
+        out.rgb[3 * i] = uint8_t(qemu_widen(c.r)), out.rgb[3 * i + 1] = uint8_t(qemu_widen(c.g)), out.rgb[3 * i + 2] = uint8_t(qemu_widen(c.b));
+    }
+    return out;
+}
+
+// A frame of a 3D scene: the picture and the frame's and the drawing's figures.
+int render_world(const std::string& path, const std::string& text, const raster::Mapper* mapper, raster::Axis axis, int32_t n,
+                 const std::string& out, bool compare) {
+    if (compare) throw HarnessError("--compare takes screen-space scenes; a 3D scene's accuracy is in the report");
+    LoadedWorld w = parse_world_text(text, path, world_search_path(path));
+    auto frame = world_frame(w, n);
+    std::printf("modexlab-render 1\nscene %s\nversion 2\nframe %d\n", path.c_str(), n);
+    const raster::FrameStats& f = frame->stats;
+    std::printf("faces %u\nculled %u\noutside %u\nclipped %u\npolygons %u\noverflow %u\n", f.faces, f.culled, f.outside, f.clipped,
+                f.polygons, f.overflow);
+    IndexImage picture;
+    if (!mapper) {
+        Picture ref(raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT);
+        raster::reference_frame(*frame, *w.textures, ref.view);
+        picture = IndexImage{ref.view.width, ref.view.height, ref.index};
+        uint32_t covered = 0;
+        for (uint8_t c : ref.coverage) covered += c ? 1 : 0;
+        std::printf("mapper reference\npixels_drawn %u\n", covered);
+    } else {
+        raster::RenderStats stats;
+        picture = render_world_frame(w, *frame, *mapper, axis, &stats);
+        std::printf("mapper %s %s\n", mapper->name, axis == raster::Axis::Rows ? "rows" : "columns");
+        std::printf("polygons_drawn %u\npolygons_skipped %u\npolygons_rejected %u\nspans %u\npixels_drawn %u\n", stats.polygons,
+                    stats.skipped, stats.rejected, stats.spans, stats.pixels);
+    }
+    save_png(out, colourise_with(picture, w.world->palette));
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -55,6 +96,7 @@ int main(int argc, char** argv) {
     bool compare_to_reference = false;
     raster::Axis axis = raster::Axis::Rows;
     bool axis_given = false;
+    int32_t frame = 0;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
         auto value = [&]() -> std::string {
@@ -65,6 +107,13 @@ int main(int argc, char** argv) {
         else if (a == "--out") out = value();
         else if (a == "--diff") diff = value();
         else if (a == "--compare") compare_to_reference = true;
+        else if (a == "--frame") {
+            std::string v = value();
+            char* end = nullptr;
+            long n = std::strtol(v.c_str(), &end, 10);
+            if (v.empty() || *end || n < 0 || n >= raster::MAX_FRAMES) usage_error("--frame takes 0..1048575");
+            frame = int32_t(n);
+        }
         else if (a == "--axis") {
             std::string v = value();
             if (v == "rows") axis = raster::Axis::Rows;
@@ -94,7 +143,10 @@ int main(int argc, char** argv) {
         if (!raster::mapper_walks(*mapper, axis)) usage_error(mapper_name + " does not walk " + (axis == raster::Axis::Rows ? "rows" : "columns"));
     }
     try {
-        LoadedScene s = load_scene_file(scene_path);
+        std::string text = read_whole_file(scene_path);
+        raster::ParseError version_error;
+        if (raster::scene_version(text.data(), text.size(), &version_error) == 2) return render_world(scene_path, text, mapper, axis, frame, out, compare_to_reference);
+        LoadedScene s = parse_scene_text(text, scene_path);
         const raster::Palette& pal = raster::palette(raster::PaletteId::Default);
         std::printf("modexlab-render 1\n");
         std::printf("scene %s\n", scene_path.c_str());

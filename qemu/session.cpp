@@ -28,6 +28,8 @@ Session::Session(SessionOptions options) : options_(std::move(options)) {
                    : options_.medium == BootMedium::Kernel ? build_dir() + "/kernel/modexlab.elf"
                                                             : build_dir() + "/modexlab.iso";
     config.append = options_.append;
+    config.modules = options_.modules;
+    config.display = options_.display;
     config.icount = options_.icount;
     config.run_dir = run_dir_;
     qemu_ = std::make_unique<QemuProcess>(config);
@@ -73,12 +75,12 @@ json Session::guarded(const std::function<json()>& exchange) {
     }
 }
 
-json Session::command(const std::string& line) {
-    return guarded([&] { return link_.request(line, options_.command_timeout); });
+json Session::command(const std::string& line, const KernelLink::EventFn& on_event) {
+    return guarded([&] { return link_.request(line, options_.command_timeout, on_event); });
 }
 
-json Session::ok(const std::string& line) {
-    json reply = command(line);
+json Session::ok(const std::string& line, const KernelLink::EventFn& on_event) {
+    json reply = command(line, on_event);
     if (!reply["ok"].get<bool>()) fail("'" + line + "' failed: " + reply.value("error", "(no error text)"));
     return reply;
 }
@@ -94,6 +96,12 @@ json Session::upload_scene(const std::string& text) {
     char crc[16];
     std::snprintf(crc, sizeof crc, "0x%08x", lib::crc32(0, reinterpret_cast<const uint8_t*>(text.data()), text.size()));
     return raw("scene " + std::to_string(text.size()) + " " + crc + "\n" + text);
+}
+
+json Session::upload_file(const std::string& name, const std::string& bytes) {
+    char crc[16];
+    std::snprintf(crc, sizeof crc, "0x%08x", lib::crc32(0, reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()));
+    return raw("file " + name + " " + std::to_string(bytes.size()) + " " + crc + "\n" + bytes);
 }
 
 RgbImage Session::screendump(const std::string& name) {

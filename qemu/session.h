@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "qemu/json.h"
 
@@ -26,6 +27,8 @@ struct SessionOptions {
     BootMedium medium = BootMedium::Kernel;
     std::string image;                 // empty: build/kernel/modexlab.elf, or build/modexlab.iso for CD/USB
     std::string append = "boot=serve"; // -kernel only; an ISO boots its GRUB menu's default entry
+    std::vector<std::string> modules;  // -kernel only: -initrd entries, each "PATH" or "PATH NAME"
+    bool display = false;              // a QEMU window (for people watching)
     bool icount = false;
     std::string name = "session";      // the run directory is build/runs/NAME
     std::chrono::milliseconds boot_timeout{60000};
@@ -43,14 +46,16 @@ public:
 
     // The reply to `line`, ok true or false. Throws KernelFault on a CPU exception (after QEMU has
     // exited, see exit_info()), HarnessError on any protocol failure, a timeout or QEMU's end.
-    json command(const std::string& line);
+    json command(const std::string& line, const KernelLink::EventFn& on_event = nullptr);
     // As command(), but an ok:false reply is a failure too.
-    json ok(const std::string& line);
+    json ok(const std::string& line, const KernelLink::EventFn& on_event = nullptr);
     // Sends bytes as they are (malformed input tests) and reads one reply.
     json raw(const std::string& bytes);
 
     // `scene BYTES CRC32` followed by the text: the reply (ok true or false).
     json upload_scene(const std::string& text);
+    // `file NAME BYTES CRC32` followed by the bytes: the reply (ok true or false).
+    json upload_file(const std::string& name, const std::string& bytes);
 
     // QMP stop, screendump (PNG, saved as RUN_DIR/NAME.png), cont.
     RgbImage screendump(const std::string& name);

@@ -155,24 +155,31 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         }
         first_position[o] = used;
         const Placement place = Placement::of(object, time);
-        for (int32_t i = 0; i < mesh.position_count; ++i)
-            scratch->positions[used + i] = view.clip(place.apply(world.positions[mesh.first_position + i]));
+        for (int32_t i = 0; i < mesh.position_count; ++i) {
+            const ClipVertex p = view.clip(place.apply(world.positions[mesh.first_position + i]));
+            uint8_t code = 0;
+            for (int plane = 0; plane < 6; ++plane) code |= uint8_t((distance(p, plane, near, far) < 0) << plane);
+            scratch->positions[used + i] = p;
+            scratch->outcodes[used + i] = code;
+        }
         used += mesh.position_count;
         for (int32_t k = 0; k < mesh.face_count; ++k) {
             const Face& face = world.faces[mesh.first_face + k];
             ClipVertex c[MAX_FACE_CORNERS];
-            bool outside[6] = {true, true, true, true, true, true};
+            uint8_t all = 0x3F, any = 0;  // planes every corner is outside; planes some corner is
             double depth = 0;
             for (int32_t i = 0; i < face.count; ++i) {
-                c[i] = scratch->positions[first_position[o] + world.corners[face.first_corner + i].position - mesh.first_position];
+                int32_t at = first_position[o] + world.corners[face.first_corner + i].position - mesh.first_position;
+                c[i] = scratch->positions[at];
                 depth += c[i].w;
-                for (int plane = 0; plane < 6; ++plane) outside[plane] = outside[plane] && distance(c[i], plane, near, far) < 0;
+                all &= scratch->outcodes[at];
+                any |= scratch->outcodes[at];
             }
             if (object.cull == Cull::Back && !(facing(c, face.count) > 0)) {
                 ++f.stats.culled;
                 continue;
             }
-            if (outside[0] || outside[1] || outside[2] || outside[3] || outside[4] || outside[5]) {
+            if (all) {
                 ++f.stats.outside;
                 continue;
             }
@@ -180,7 +187,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
                 ++f.stats.overflow;
                 continue;
             }
-            scratch->entries[entries++] = FrameScratch::Entry{depth / face.count, o, k};
+            scratch->entries[entries++] = FrameScratch::Entry{depth / face.count, o, k, any != 0};
         }
     }
     sort_entries(scratch->entries, scratch->sorted, entries);
@@ -198,18 +205,23 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             c[i].u = world.uvs[corner.uv].u * texture.width;
             c[i].v = world.uvs[corner.uv].v * texture.height;
         }
-        int n = clip_polygon(c, face.count, near, far, clipped);
-        if (n < 3) {
-            ++f.stats.outside;
-            continue;
+        int n = face.count;
+        const ClipVertex* corners = c;
+        if (entry.cut) {  // (a face inside every plane is its own clipped polygon)
+            n = clip_polygon(c, face.count, near, far, clipped);
+            corners = clipped;
+            if (n < 3) {
+                ++f.stats.outside;
+                continue;
+            }
+            ++f.stats.clipped;
         }
-        if (n != face.count) ++f.stats.clipped;
         if (f.vertex_count + n > MAX_FRAME_VERTICES) {
             ++f.stats.overflow;
             continue;
         }
         for (int i = 0; i < n; ++i) {
-            const ClipVertex& p = clipped[i];
+            const ClipVertex& p = corners[i];
             double x = 160.0 + 160.0 * (p.x / p.w), y = 120.0 - 120.0 * (p.y / p.w);
             f.vertices[f.vertex_count + i] = Vertex{snap(x), snap(y), p.w, p.u, p.v};
         }
@@ -238,6 +250,17 @@ void build_texture_set(const World& world, TextureSet* out) {
         out->objects[o].bordered = copies[world.objects[o].texture];
         out->objects[o].aligned256 = aligned[world.objects[o].texture];
     }
+}
+
+int32_t reference_frame(const Frame& frame, const TextureSet& textures, PixelImage& img) {
+    int32_t rejected = 0;
+    const Vertex* v = frame.vertices;
+    for (int32_t i = 0; i < frame.polygon_count; ++i) {
+        SetupStatus s = reference_polygon(v, frame.polygon_size[i], textures.objects[frame.polygon_object[i]], img);
+        if (s != SetupStatus::Ok && s != SetupStatus::Degenerate) ++rejected;
+        v += frame.polygon_size[i];
+    }
+    return rejected;
 }
 
 RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target, Variant variant) {

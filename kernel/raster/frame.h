@@ -8,13 +8,14 @@
 
 #include <stdint.h>
 
+#include "kernel/raster/reference.h"
 #include "kernel/raster/render.h"
 #include "kernel/raster/world.h"
 
 namespace raster {
 
 constexpr int32_t MAX_FRAME_POLYGONS = 32768;
-constexpr int32_t MAX_FRAME_VERTICES = 196608;
+constexpr int32_t MAX_FRAME_VERTICES = 131072;
 constexpr int32_t MAX_FRAME_POSITIONS = 65536;  // object positions transformed in one frame
 // Clip space keeps |x|, |y| <= GUARD_BAND * w: on screen within 160 +- 5120 and 120 +- 3840
 // pixels, inside the setup's limits and the classics' +-8192.
@@ -48,9 +49,11 @@ struct ClipVertex {
 // Working memory for build_frame (large: kept apart so that it can be static in the kernel).
 struct FrameScratch {
     ClipVertex positions[MAX_FRAME_POSITIONS];
+    uint8_t outcodes[MAX_FRAME_POSITIONS];  // bit k: outside clip plane k
     struct Entry {
         double depth;  // mean w of the face's corners
         int32_t object, face;
+        bool cut;      // some corner outside some plane: to be clipped
     } entries[MAX_FRAME_POLYGONS], sorted[MAX_FRAME_POLYGONS];
 };
 
@@ -87,6 +90,10 @@ struct TextureSet {
     uint8_t aligned[MAX_WORLD_TEXTURES][ALIGNED256_BYTES];
 };
 void build_texture_set(const World& world, TextureSet* out);
+
+// The reference's picture of the frame (reference_polygon for each polygon in order, with its
+// object's texture); returns how many polygons it rejected.
+int32_t reference_frame(const Frame& frame, const TextureSet& textures, PixelImage& img);
 
 // Draws the frame's polygons in order into `target`.
 RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target,

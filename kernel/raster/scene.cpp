@@ -96,15 +96,11 @@ bool parse_scene(const char* text, size_t length, Scene* scene, ParseError* erro
     if (version == 0) return false;
     if (version != 1)
         return scene_text::fail(error, lines.line, "a version 2 (3D) scene: load it as a world, not as a screen-space scene");
-    for (;;) {
-        const char* bad = nullptr;
-        if (!lines.next(buf, &bad)) {
-            if (bad) return scene_text::fail(error, lines.line, bad);
-            break;
-        }
+    bool ok = scene_text::each_line(lines, buf, error, [&](char* line) {
         p.line = lines.line;
-        if (!parse_line(p, buf)) return false;
-    }
+        return parse_line(p, line);
+    });
+    if (!ok) return false;
     if (!p.have_texture) return scene_text::fail(error, 0, "no 'texture' line");
     return true;
 }

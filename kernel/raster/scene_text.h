@@ -39,4 +39,15 @@ private:
 // Reads the header line 'modexlab-scene N'; returns N (1 or 2), or 0 with the error set.
 int read_header(Lines& lines, char* buf, ParseError* error);
 
+// Calls on_line(buf) for every line after the header, lines.line telling its number; stops at
+// the first false. False when on_line failed (it set the error) or a line was bad (set here).
+template <typename OnLine>
+bool each_line(Lines& lines, char* buf, ParseError* error, OnLine&& on_line) {
+    for (;;) {
+        const char* bad = nullptr;
+        if (!lines.next(buf, &bad)) return bad ? fail(error, lines.line, bad) : true;
+        if (!on_line(buf)) return false;
+    }
+}
+
 }  // namespace raster::scene_text

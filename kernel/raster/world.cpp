@@ -382,24 +382,18 @@ bool parse_world(const char* text, size_t length, const FileResolver& files, Wor
     int version = scene_text::read_header(lines, buf, error);
     if (version == 0) return false;
     if (version != 2) return scene_text::fail(error, lines.line, "a version 1 (screen-space) scene, not a 3D one");
-    for (;;) {
-        const char* bad = nullptr;
-        if (!lines.next(buf, &bad)) {
-            if (bad) return scene_text::fail(error, lines.line, bad);
-            break;
-        }
+    bool ok = scene_text::each_line(lines, buf, error, [&](char* line) {
         p.line = lines.line;
         StrView w[MAX_LINE_WORDS];
-        size_t n = lib::split_words(buf, w, MAX_LINE_WORDS);
+        size_t n = lib::split_words(line, w, MAX_LINE_WORDS);
         if (n > size_t(MAX_LINE_WORDS)) return p.fail(Fmt().s("too many words on one line"));
-        bool ok;
-        if (p.block != Block::None && w[0].equals("end")) ok = usage(p, n, 1, "end") && end_block(p);
-        else if (p.block == Block::Mesh) ok = mesh_line(p, w, n);
-        else if (p.block == Block::Object) ok = object_line(p, w, n);
-        else if (p.block == Block::Camera) ok = camera_line(p, w, n);
-        else ok = top_line(p, w, n);
-        if (!ok) return false;
-    }
+        if (p.block != Block::None && w[0].equals("end")) return usage(p, n, 1, "end") && end_block(p);
+        if (p.block == Block::Mesh) return mesh_line(p, w, n);
+        if (p.block == Block::Object) return object_line(p, w, n);
+        if (p.block == Block::Camera) return camera_line(p, w, n);
+        return top_line(p, w, n);
+    });
+    if (!ok) return false;
     if (p.block != Block::None) {
         p.line = p.block_line;
         return p.fail(Fmt().s("this block has no 'end'"));

@@ -47,24 +47,38 @@ int pattern_shown(const IndexImage& shown) {
     return -1;
 }
 
-// The ISO's default GRUB entry starts the pattern show in Mode X (a pattern every 2 s, always drawn
-// into a hidden page before the flip); the first command ends it.
+size_t lit_pixels(const RgbImage& dump) {
+    size_t lit = 0;
+    for (size_t i = 0; i < dump.rgb.size(); i += 3) lit += (dump.rgb[i] | dump.rgb[i + 1] | dump.rgb[i + 2]) ? 1 : 0;
+    return lit;
+}
+
+// The ISO's default GRUB entry loads every demo scene and its textures as Multiboot modules and
+// starts the show, which plays them in Mode X; the first command ends it. The modules are then
+// the scenes `load` finds (a module comes before a built-in of the same name).
 void boot_iso(BootMedium medium, bool watch_the_show) {
     SessionOptions o = options_for_this_test();
     o.medium = medium;
     Session s(o);
     EXPECT_EQ(s.boot_line()["cmdline"], "boot=demo") << "GRUB passes the menu entry's options";
     EXPECT_EQ(s.boot_line()["boot"], "demo");
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    int first = pattern_shown(s.screenshot("show-1", MODE_X, default_palette()));
-    EXPECT_GE(first, 0) << "the show has a whole pattern on screen";
+    EXPECT_EQ(s.boot_line()["modules"], 11) << "six scenes and five texture files";
+    EXPECT_EQ(s.boot_line()["modules_skipped"], 0);
     if (watch_the_show) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(2500));
-        int second = pattern_shown(s.screenshot("show-2", MODE_X, default_palette()));
-        EXPECT_GE(second, 0);
-        EXPECT_NE(second, first) << "the show moved on to the next pattern";
+        std::this_thread::sleep_for(std::chrono::milliseconds(700));
+        RgbImage first = s.screendump("show-1");
+        std::this_thread::sleep_for(std::chrono::milliseconds(700));
+        RgbImage second = s.screendump("show-2");
+        EXPECT_GT(lit_pixels(first), 4000u) << "a scene on screen";
+        EXPECT_NE(first.rgb, second.rgb) << "and moving";
     }
     expect_hello(s, "modex");
+    json load = s.ok("load freedoom.scene");
+    EXPECT_EQ(load["origin"], "module");
+    EXPECT_EQ(load["palette"], "floor");
+    json f = s.ok("frame 0 exact 0");
+    EXPECT_EQ(f["pixels"], 76800) << "the corridor fills the screen";
+    EXPECT_EQ(f["rejected"], 0);
     s.ok("exit 5");
     EXPECT_EQ(s.wait_exit().status, 11);
 }
@@ -72,6 +86,21 @@ void boot_iso(BootMedium medium, bool watch_the_show) {
 TEST(Boot, IsoAsCdrom) { boot_iso(BootMedium::Cdrom, true); }
 
 TEST(Boot, IsoAsUsbStick) { boot_iso(BootMedium::Usb, false); }
+
+// show=patterns: the test patterns in turn, every 2 s (always drawn into a hidden page first).
+TEST(Boot, ThePatternShow) {
+    SessionOptions o = options_for_this_test();
+    o.append = "boot=demo show=patterns";
+    Session s(o);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    int first = pattern_shown(s.screenshot("show-1", MODE_X, default_palette()));
+    EXPECT_GE(first, 0) << "the show has a whole pattern on screen";
+    std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+    int second = pattern_shown(s.screenshot("show-2", MODE_X, default_palette()));
+    EXPECT_GE(second, 0);
+    EXPECT_NE(second, first) << "the show moved on to the next pattern";
+    expect_hello(s, "modex");
+}
 
 TEST(Boot, OptionsAreParsedAndUnknownOnesReported) {
     SessionOptions o = options_for_this_test();

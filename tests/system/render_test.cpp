@@ -145,7 +145,7 @@ TEST(Render, BadUploadsAreRefusedWithTheHostsMessageAndTheSceneStays) {
     auto scene = std::make_unique<raster::Scene>();
     raster::ParseError e;
     ASSERT_FALSE(raster::parse_scene(bad.data(), bad.size(), scene.get(), &e));
-    EXPECT_EQ(r["error"].get<std::string>(), "line 3: " + std::string(e.message)) << "kernel and host say the same";
+    EXPECT_EQ(r["error"].get<std::string>(), "upload.scene: line 3: " + std::string(e.message)) << "kernel and host say the same";
 
     // a wrong checksum
     r = s.raw("scene " + std::to_string(good.size()) + " 0x12345678\n" + good);
@@ -153,7 +153,7 @@ TEST(Render, BadUploadsAreRefusedWithTheHostsMessageAndTheSceneStays) {
     EXPECT_NE(r["error"].get<std::string>().find("checksum mismatch"), std::string::npos);
     // a length out of range: refused before any byte is read
     EXPECT_FALSE(s.command("scene 0 0")["ok"].get<bool>());
-    EXPECT_FALSE(s.command("scene 2000000 0")["ok"].get<bool>());
+    EXPECT_FALSE(s.command("scene 5000000 0")["ok"].get<bool>());
     EXPECT_FALSE(s.command("render marble 0")["ok"].get<bool>());
     EXPECT_FALSE(s.command("render exact 0 sideways")["ok"].get<bool>());
 

@@ -1,0 +1,50 @@
+// The files the kernel knows: built into its image (the demo scenes and their textures), loaded
+// by the boot loader as Multiboot modules, and uploaded over COM1. Scenes and the texture files
+// they name are found here by name (uploads first, then modules, then built-ins).
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "kernel/lib/fmt.h"
+#include "kernel/lib/words.h"
+#include "kernel/multiboot.h"
+#include "kernel/raster/world.h"
+
+namespace files {
+
+enum class Origin : uint8_t { Builtin, Module, Upload };
+const char* origin_name(Origin o);
+
+constexpr int MAX_FILES = 96;
+constexpr size_t UPLOAD_SPACE = 6 << 20;   // bytes for all uploads of a boot
+constexpr size_t MAX_UPLOAD = 4 << 20;     // one upload
+
+struct File {
+    char name[raster::MAX_FILE_NAME];
+    const uint8_t* data;
+    size_t size;
+    Origin origin;
+};
+
+// Registers the built-in files and the boot loader's modules (a module's name is the last word of
+// its string: GRUB's `module /boot/x.bmp textures/x.bmp` and QEMU's -initrd "path name" both name
+// it). Modules that overlap the kernel or run past memory are skipped and counted.
+void init(const multiboot::Info* info, uint32_t* skipped_modules);
+
+int count();
+const File& at(int i);
+const File* find(lib::StrView name);
+
+// Receives `length` bytes from COM1 (a stall of 5 s between bytes ends it) and checks their CRC-32;
+// on success the file named `name` is (re)placed in the upload space. False with `error` otherwise.
+bool upload(lib::StrView name, size_t length, uint32_t crc32, lib::Fmt* error);
+size_t upload_space_used();
+
+// Receives bytes from COM1 into `out` with the same rules (for callers with their own buffer).
+bool receive(uint8_t* out, size_t length, uint32_t crc32, lib::Fmt* error);
+
+// For parse_world: finds files here.
+raster::FileResolver resolver();
+
+}  // namespace files

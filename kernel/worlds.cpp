@@ -1,0 +1,51 @@
+// The current 3D scene and its frames.
+#include "kernel/worlds.h"
+
+#include "drivers/timer.h"
+#include "drivers/vga.h"
+#include "kernel/files.h"
+
+namespace worlds {
+
+namespace {
+
+raster::World g_world;
+raster::TextureSet g_textures;
+raster::Frame g_frame;
+raster::FrameScratch g_scratch;
+bool g_loaded = false;
+char g_name[raster::MAX_FILE_NAME];
+
+}  // namespace
+
+bool load(const char* name, const uint8_t* text, size_t length, raster::ParseError* error) {
+    g_loaded = false;
+    if (!raster::parse_world(reinterpret_cast<const char*>(text), length, files::resolver(), &g_world, error)) return false;
+    raster::build_texture_set(g_world, &g_textures);
+    size_t i = 0;
+    for (; name[i] && i + 1 < sizeof g_name; ++i) g_name[i] = name[i];
+    g_name[i] = 0;
+    g_loaded = true;
+    if (vga::mode() != vga::Mode::Text) vga::load_palette(g_world.palette);
+    return true;
+}
+
+bool loaded() { return g_loaded; }
+const raster::World& world() { return g_world; }
+const char* name() { return g_name; }
+
+FrameResult render(int32_t n, const raster::Mapper& mapper, scenes::Surface surface, int page, raster::Variant variant) {
+    FrameResult r{};
+    uint64_t t0 = timer::rdtsc();
+    raster::build_frame(g_world, n, &g_frame, &g_scratch);
+    r.ticks_geometry = timer::rdtsc() - t0;
+    r.frame = g_frame.stats;
+    r.render = scenes::render_with(mapper, surface, page, variant,
+                                   [](void* m, raster::Target& target, raster::Axis axis, raster::Variant v) {
+                                       return raster::render_frame(g_frame, g_textures, *static_cast<const raster::Mapper*>(m), axis, target, v);
+                                   },
+                                   const_cast<raster::Mapper*>(&mapper));
+    return r;
+}
+
+}  // namespace worlds

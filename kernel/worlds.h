@@ -1,0 +1,30 @@
+// The kernel's current 3D scene (a version 2 scene file): loaded from the file table, its textures
+// prepared once, its frames built and drawn into Mode X pages.
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "kernel/raster/frame.h"
+#include "kernel/scenes.h"
+
+namespace worlds {
+
+// Parses a version 2 scene text (its texture files found in the file table) and makes it the
+// current one; loads its palette into the DAC when a graphics mode is on. On failure no 3D scene
+// is loaded (the parser works in place) and `error` says why.
+bool load(const char* name, const uint8_t* text, size_t length, raster::ParseError* error);
+bool loaded();
+const raster::World& world();
+const char* name();
+
+struct FrameResult {
+    raster::FrameStats frame;
+    scenes::RenderResult render;
+    uint64_t ticks_geometry;
+};
+
+// Builds frame `n` and draws it with `mapper` into `page` through `surface`.
+FrameResult render(int32_t n, const raster::Mapper& mapper, scenes::Surface surface, int page, raster::Variant variant);
+
+}  // namespace worlds

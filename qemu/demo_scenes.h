@@ -1,0 +1,23 @@
+// The demo scenes (scenes/*.scene), made by code so that their meshes are exact and can be made
+// again: `modexlab-scene make NAME` prints one; a test checks the committed files are its output.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace harness {
+
+struct DemoScene {
+    const char* name;      // the file is scenes/NAME.scene
+    const char* exercises; // what it is for (docs/scene-format.md lists them)
+    std::string (*make)();
+};
+
+const std::vector<DemoScene>& demo_scenes();
+
+// A mesh block from a Wavefront OBJ subset (v, vt, f; f corners v/vt or v/vt/vn, negative indices
+// relative; other lines ignored): `v` flipped so that rows run down (OBJ's v runs up), faces of
+// more than 10 corners refused. Throws HarnessError "NAME:LINE: message" on anything it cannot take.
+std::string obj_to_mesh(const std::string& obj_text, const std::string& mesh_name, const std::string& file_name);
+
+}  // namespace harness

@@ -1,0 +1,218 @@
+// System tests for 3D scenes: every demo scene at fixed frames, built in, loaded as a Multiboot
+// module and uploaded, equals the host's frame pixel for pixel (screendump and readback); bad files
+// are refused with the host's message while the kernel keeps serving; play reports every frame;
+// the boot show plays scenes and gives way to the first command.
+#include "tests/system/system.h"
+
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "qemu/demo_scenes.h"
+#include "qemu/measure.h"
+
+namespace {
+
+using namespace systest;
+
+std::string scene_path(const std::string& name) { return "scenes/" + name + ".scene"; }
+
+// The kernel's shown page (screendump, in the scene's palette as QEMU widens it) and the page read
+// back (palette indices) against the host's frame.
+void expect_same_frame(Session& s, const IndexImage& want, const raster::Palette& palette, int page, const std::string& stem) {
+    RgbImage dump = s.screendump(stem);
+    RgbImage expected = screendump_of(want, palette);
+    ASSERT_EQ(dump.width, expected.width);
+    ASSERT_EQ(dump.height, expected.height);
+    size_t differing = 0;
+    for (size_t i = 0; i < dump.rgb.size(); i += 3)
+        differing += dump.rgb[i] != expected.rgb[i] || dump.rgb[i + 1] != expected.rgb[i + 1] || dump.rgb[i + 2] != expected.rgb[i + 2];
+    if (differing) save_png(s.run_dir() + "/" + stem + "-expected.png", expected);
+    EXPECT_EQ(differing, 0u) << stem << ": screendump pixels differ (see " << s.run_dir() << "/" << stem << "{,-expected}.png)";
+    Comparison rb = compare(s.readback(page), want);
+    EXPECT_TRUE(rb.equal()) << stem << " readback: " << rb.summary();
+}
+
+// Draws `frame` of the loaded scene with `mapper` into `page`, shows it, and compares.
+void check_frame(Session& s, const LoadedWorld& host, int32_t frame, const std::string& mapper, const std::string& surface, int page,
+                 const std::string& stem) {
+    const raster::Mapper* m = raster::find_mapper({mapper.data(), mapper.size()});
+    ASSERT_NE(m, nullptr);
+    json r = s.ok("frame " + std::to_string(frame) + " " + mapper + " " + std::to_string(page) + " " + surface);
+    raster::Axis axis = r["walker"] == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
+    auto f = world_frame(host, frame);
+    raster::RenderStats stats;
+    IndexImage want = render_world_frame(host, *f, *m, axis, &stats);
+    EXPECT_EQ(r["polygons"], stats.polygons) << stem;
+    EXPECT_EQ(r["pixels"], stats.pixels) << stem;
+    EXPECT_EQ(r["rejected"], stats.rejected) << stem;
+    EXPECT_EQ(r["culled"], f->stats.culled) << stem;
+    EXPECT_EQ(r["clipped"], f->stats.clipped) << stem;
+    s.ok("flip " + std::to_string(page));
+    expect_same_frame(s, want, host.world->palette, page, stem);
+}
+
+TEST(Scenes3d, EveryBuiltInSceneEqualsTheHostAtFixedFrames) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    const std::vector<std::pair<std::string, std::string>> mappers = {
+        {"exact", "linear"}, {"persp-subdiv-16", "planar"}, {"fast-affine", "linear"}, {"fast-columns", "vga"}, {"quake-subdiv16", "linear"}};
+    int checked = 0;
+    for (const DemoScene& d : demo_scenes()) {
+        SCOPED_TRACE(d.name);
+        LoadedWorld host = load_world_file(scene_path(d.name));
+        json load = s.ok(std::string("load ") + d.name + ".scene");
+        EXPECT_EQ(load["origin"], "builtin");
+        EXPECT_EQ(load["version"], 2);
+        EXPECT_EQ(load["faces"], host.world->face_count);
+        EXPECT_EQ(load["frames"], host.world->frames);
+        const int32_t frames[2] = {37, host.world->frames / 2 + 11};
+        for (int k = 0; k < 2; ++k) {
+            const auto& [mapper, surface] = mappers[size_t(checked) % mappers.size()];
+            check_frame(s, host, frames[k], mapper, surface, checked % 3, std::string(d.name) + "-" + std::to_string(frames[k]) + "-" + mapper);
+            ++checked;
+        }
+    }
+    EXPECT_EQ(checked, 2 * int(demo_scenes().size()));
+}
+
+TEST(Scenes3d, ModulesAndUploadsAreScenesToo) {
+    SessionOptions o = options_for_this_test();
+    // a module under a name of its own, and one that takes a built-in's name (it wins)
+    o.modules = {"scenes/cube.scene cube-module.scene", "scenes/rotozoom.scene ball.scene"};
+    Session s(o);
+    EXPECT_EQ(s.boot_line()["modules"], 2);
+    s.ok("mode modex");
+    json files = s.ok("files");
+    int modules = 0;
+    for (const json& f : files["files"]) modules += f["origin"] == "module";
+    EXPECT_EQ(modules, 2);
+
+    json cube = s.ok("load cube-module.scene");
+    EXPECT_EQ(cube["origin"], "module");
+    LoadedWorld host_cube = load_world_file("scenes/cube.scene");
+    check_frame(s, host_cube, 50, "persp-subdiv-8", "linear", 1, "cube-module-50");
+
+    json ball = s.ok("load ball.scene");
+    EXPECT_EQ(ball["origin"], "module") << "a module takes the place of a built-in of its name";
+    EXPECT_EQ(ball["faces"], 1) << "it is the rotozoom quad";
+
+    // an upload: a scene whose texture is a file uploaded under a path of our choosing
+    std::string bmp = read_whole_file(build_dir() + "/scenes/freedoom/startan3.bmp");
+    json up = s.upload_file("walls/stone.bmp", bmp);
+    ASSERT_TRUE(up["ok"].get<bool>()) << up.dump();
+    EXPECT_EQ(up["bytes"], bmp.size());
+    std::string text = "modexlab-scene 2\ntexture stone file walls/stone.bmp\npalette stone\n"
+                       "mesh quad\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 1\nvt 2 1\nvt 2 0\nvt 0 0\nf 1/1 2/2 3/3 4/4\nend\n"
+                       "object q\nmesh quad\ntexture stone\nspin 0 0 1 30\nend\n"
+                       "camera\nposition 0 0.3 2\ntarget 0 0 0\nend\n";
+    json scene = s.upload_scene(text);
+    ASSERT_TRUE(scene["ok"].get<bool>()) << scene.dump();
+    EXPECT_EQ(scene["origin"], "upload");
+    EXPECT_EQ(scene["palette"], "stone");
+    // the host reads the same texture under the same name
+    std::filesystem::path dir = std::filesystem::path(s.run_dir()) / "upload" / "walls";
+    std::filesystem::create_directories(dir);
+    std::filesystem::copy_file(build_dir() + "/scenes/freedoom/startan3.bmp", dir / "stone.bmp", std::filesystem::copy_options::overwrite_existing);
+    LoadedWorld host = parse_world_text(text, "upload.scene", {s.run_dir() + "/upload"});
+    check_frame(s, host, 20, "exact", "linear", 2, "upload-20");
+    check_frame(s, host, 20, "hecker-steptable", "linear", 0, "upload-20-hecker");
+}
+
+TEST(Scenes3d, BadFilesAreRefusedWithTheHostsMessageAndTheKernelServesOn) {
+    Session s(options_for_this_test());
+    const std::string good = read_whole_file("scenes/cube.scene");
+    struct Case {
+        std::string text, want;
+    };
+    std::vector<Case> cases = {
+        {"modexlab-scene 2\ntexture t checker 8 8\nmesh m\nv 0 0 0\nf 1/1 1/1 1/1\nend\n", ""},
+        {"modexlab-scene 2\ntexture t file nowhere.bmp\n", ""},
+        {good.substr(0, good.size() / 2), ""},
+        {"modexlab-scene 9\n", ""},
+        {good + "frames 0\n", ""},
+    };
+    for (Case& c : cases) {
+        try {
+            parse_world_text(c.text, "upload.scene", {"/nonexistent"});
+            ADD_FAILURE() << "the host took a bad scene: " << c.text.substr(0, 60);
+        } catch (const HarnessError& e) {
+            c.want = e.what();  // "upload.scene:LINE: message"
+        }
+        json r = s.upload_scene(c.text);
+        EXPECT_FALSE(r["ok"].get<bool>());
+        std::string got = r.value("error", "");
+        // the kernel says "upload.scene: line N: message"; the host "upload.scene:N: message"
+        std::string message = c.want.substr(c.want.find(": ") + 2);
+        EXPECT_NE(got.find(message), std::string::npos) << "kernel: " << got << "\nhost: " << c.want;
+        EXPECT_EQ(r.value("file", ""), "upload.scene");
+    }
+    // a texture file the decoder refuses
+    json bad = s.upload_file("broken.bmp", "BM not really a bitmap");
+    ASSERT_TRUE(bad["ok"].get<bool>());
+    json r = s.upload_scene("modexlab-scene 2\ntexture t file broken.bmp\n");
+    EXPECT_NE(r.value("error", "").find("texture 't' (broken.bmp): byte"), std::string::npos) << r.dump();
+    // uploads that break the protocol
+    EXPECT_NE(s.command("file x.bmp 10 0x12345678").value("error", "").find("upload stalled"), std::string::npos);
+    EXPECT_NE(s.command("file x.bmp 99999999 0").value("error", "").find("bad length"), std::string::npos);
+    EXPECT_NE(s.command("load nothing.scene").value("error", "").find("no file 'nothing.scene'"), std::string::npos);
+    EXPECT_NE(s.command("frame 0 exact 0").value("error", "").find("Mode X"), std::string::npos);
+    s.ok("mode modex");
+    EXPECT_NE(s.command("frame 0 exact 0").value("error", "").find("no 3D scene"), std::string::npos) << "the failed loads left none";
+    // and it still draws
+    s.ok("load cube.scene");
+    EXPECT_GT(s.ok("frame 10 exact 0")["pixels"].get<int>(), 1000);
+}
+
+TEST(Scenes3d, PlayReportsEveryFrameAndFlipsPages) {
+    SessionOptions o = options_for_this_test();
+    o.icount = true;
+    Session s(o);
+    s.ok("mode modex");
+    s.ok("load mesh.scene");
+    std::vector<json> events;
+    json r = s.ok("play 12 fast-affine", [&](const json& e) { events.push_back(e); });
+    ASSERT_EQ(events.size(), 12u);
+    uint64_t pixels = 0;
+    for (size_t i = 0; i < events.size(); ++i) {
+        EXPECT_EQ(events[i]["event"], "frame");
+        EXPECT_EQ(events[i]["n"], i);
+        EXPECT_EQ(events[i]["page"], i % 2 == 0 ? 1 : 0) << "into the hidden page, then shown";
+        EXPECT_GT(events[i]["pixels"].get<int>(), 1000);
+        pixels += events[i]["pixels"].get<uint64_t>();
+    }
+    EXPECT_EQ(r["frames"], 12);
+    EXPECT_EQ(r["pixels"], pixels);
+    EXPECT_LE(r["ticks_min"].get<uint64_t>(), r["ticks_median"].get<uint64_t>());
+    EXPECT_LE(r["ticks_median"].get<uint64_t>(), r["ticks_max"].get<uint64_t>());
+    // the last frame drawn is on the screen
+    LoadedWorld host = load_world_file("scenes/mesh.scene");
+    auto f = world_frame(host, 11);
+    expect_same_frame(s, render_world_frame(host, *f, *raster::find_mapper({"fast-affine", 11}), raster::Axis::Rows), host.world->palette,
+                      events.back()["page"], "play-last");
+    // icount: the same frame costs the same instructions every time
+    json again = s.ok("play 12 fast-affine", [&](const json& e) { EXPECT_EQ(e["ticks"], events[e["n"].get<size_t>()]["ticks"]); });
+    EXPECT_EQ(again["ticks"], r["ticks"]);
+}
+
+TEST(Scenes3d, TheBootShowPlaysAScene) {
+    SessionOptions o = options_for_this_test();
+    o.append = "boot=demo scene=cube.scene mapper=exact";
+    Session s(o);
+    EXPECT_EQ(s.boot_line()["boot"], "demo");
+    // the show draws while nobody speaks: some frames later the screen holds the cube
+    RgbImage dump;
+    int lit = 0;
+    for (int tries = 0; tries < 50 && lit < 1000; ++tries) {
+        usleep(100000);
+        dump = s.screendump("show");
+        lit = 0;
+        for (size_t i = 0; i < dump.rgb.size(); i += 3) lit += dump.rgb[i] | dump.rgb[i + 1] | dump.rgb[i + 2] ? 1 : 0;
+    }
+    EXPECT_GE(lit, 1000 * 4) << "the cube covers thousands of pixels (2x2 in the dump)";
+    // the first command stops the show and is answered
+    json hello = s.ok("hello");
+    EXPECT_EQ(hello["mode"], "modex");
+}
+
+}  // namespace

@@ -1,0 +1,112 @@
+// The demo scenes: the committed files are what their generator makes, each parses and animates,
+// every mapper draws their frames (the sanitizer build runs this too); the OBJ converter.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "qemu/demo_scenes.h"
+#include "qemu/error.h"
+#include "qemu/measure.h"
+
+namespace {
+
+using namespace harness;
+
+TEST(DemoScenes, TheCommittedFilesAreTheGeneratorsOutput) {
+    ASSERT_EQ(demo_scenes().size(), 6u);
+    for (const DemoScene& d : demo_scenes())
+        EXPECT_EQ(read_whole_file(std::string("scenes/") + d.name + ".scene"), d.make())
+            << d.name << ": regenerate with build/host/modexlab-scene make all scenes";
+}
+
+TEST(DemoScenes, EveryMapperDrawsTheirFrames) {
+    for (const DemoScene& d : demo_scenes()) {
+        SCOPED_TRACE(d.name);
+        LoadedWorld w = load_world_file(std::string("scenes/") + d.name + ".scene");
+        ASSERT_GT(w.world->frames, 60);
+        for (int32_t n : {0, w.world->frames / 3}) {
+            auto frame = world_frame(w, n);
+            EXPECT_GT(frame->polygon_count, 0) << "frame " << n;
+            EXPECT_EQ(frame->stats.overflow, 0u);
+            for (int m = 0; m < raster::MAPPER_COUNT; ++m) {
+                const raster::Mapper& mapper = raster::MAPPERS[m];
+                raster::RenderStats stats;
+                IndexImage img = render_world_frame(w, *frame, mapper, default_axis(mapper), &stats);
+                EXPECT_EQ(stats.polygons + stats.skipped + stats.rejected, uint32_t(frame->polygon_count)) << mapper.name;
+                if (std::string(mapper.family) == "ours" && !(mapper.needs & raster::NEED_ALIGNED256)) {
+                    EXPECT_EQ(stats.rejected, 0u) << mapper.name << " takes every texture";
+                }
+            }
+        }
+    }
+}
+
+// Back-face culling against an independent computation: in world space, a face is kept when the
+// eye lies on the side its (Newell) normal points to.
+TEST(DemoScenes, CullingKeepsTheFacesTurnedToTheEye) {
+    for (const char* name : {"ball", "mesh", "cube"}) {
+        LoadedWorld w = load_world_file(std::string("scenes/") + name + ".scene");
+        const raster::World& world = *w.world;
+        int frames = 0;
+        for (int32_t n = 0; n < world.frames; n += 17, ++frames) {
+            auto frame = world_frame(w, n);
+            const double t = raster::frame_time(n);
+            const raster::Vec3 eye = raster::View::of(world.camera, t).eye;
+            uint32_t facing = 0;
+            for (int32_t o = 0; o < world.object_count; ++o) {
+                const raster::Mesh& mesh = world.meshes[world.objects[o].mesh];
+                const raster::Placement place = raster::Placement::of(world.objects[o], t);
+                for (int32_t k = 0; k < mesh.face_count; ++k) {
+                    const raster::Face& face = world.faces[mesh.first_face + k];
+                    raster::Vec3 normal, first = place.apply(world.positions[world.corners[face.first_corner].position]);
+                    for (int32_t i = 0; i < face.count; ++i) {
+                        raster::Vec3 a = place.apply(world.positions[world.corners[face.first_corner + i].position]);
+                        raster::Vec3 b = place.apply(world.positions[world.corners[face.first_corner + (i + 1) % face.count].position]);
+                        normal.x += (a.y - b.y) * (a.z + b.z), normal.y += (a.z - b.z) * (a.x + b.x), normal.z += (a.x - b.x) * (a.y + b.y);
+                    }
+                    facing += raster::dot(normal, eye - first) > 0;
+                }
+            }
+            EXPECT_EQ(frame->stats.faces - frame->stats.culled, facing) << name << " frame " << n;
+        }
+        EXPECT_GT(frames, 5);
+    }
+}
+
+TEST(Obj, ConvertsTheSubsetAndFlipsV) {
+    std::string obj =
+        "# a unit quad, as a modeller writes it\n"
+        "o quad\nmtllib q.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0.5\nvn 0 0 1\n"
+        "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 0.25\ns off\nusemtl stone\n"
+        "f 1/1/1 2/2/1 3/3/1 4/4/1\n"
+        "f -4/-4 -2/-2 -1/-1\n";
+    std::string mesh = obj_to_mesh(obj, "quad", "q.obj");
+    EXPECT_EQ(mesh,
+              "mesh quad\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0.5\nvt 0 1\nvt 1 1\nvt 1 0\nvt 0 0.75\n"
+              "f 1/1 2/2 3/3 4/4\nf 1/1 3/3 4/4\nend\n");
+    // it makes a scene the parser takes
+    std::string scene = "modexlab-scene 2\ntexture t checker 8 8\n" + mesh + "object o\nmesh quad\ntexture t\nend\ncamera\nend\n";
+    EXPECT_NO_THROW(parse_world_text(scene, "obj.scene", {"."}));
+}
+
+TEST(Obj, RefusesWhatItCannotTake) {
+    const std::pair<std::string, std::string> cases[] = {
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "q.obj:4: corner '1' has no texture coordinate"},
+        {"v 0 0 0\nvt 0 0\nf 1/1 2/1 1/1\n", "q.obj:3: corner '2/1' points past the list"},
+        {"v 0 0 x\n", "q.obj:1: bad number 'x'"},
+        {"v 0 0\n", "q.obj:1: v needs x y z"},
+        {"v 0 0 0\nvt 0 0\nf 1/0 1/1 1/1\n", "q.obj:3: bad index in corner '1/0'"},
+        {"v 0 0 0\nvt 0 0\nf 1/1 1/1 1/1 1/1 1/1 1/1 1/1 1/1 1/1 1/1 1/1\n", "q.obj:3: a face needs 3 to 10 corners"},
+        {"v 0 0 0\n", "q.obj:0: no faces"},
+    };
+    for (const auto& [obj, want] : cases) {
+        try {
+            obj_to_mesh(obj, "m", "q.obj");
+            ADD_FAILURE() << "took " << obj;
+        } catch (const HarnessError& e) {
+            EXPECT_NE(std::string(e.what()).find(want), std::string::npos) << e.what();
+        }
+    }
+}
+
+}  // namespace
