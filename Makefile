@@ -1,7 +1,8 @@
 # modexlab: the kernel (freestanding i686 C++ and NASM), its ISO, the host harness and the tests.
 #   make all    kernel ELF + ISO            make run    boot in QEMU, play the demo scenes, save screenshots
 #   make test   every test, one summary      make clean  remove build/
-#   make deps   install missing tools (run and test do it themselves)
+#   make bench  the speed/accuracy report (build/report)
+#   make deps   install missing tools (run, bench and test do it themselves)
 
 MAKEFLAGS += -rR --no-print-directory
 .SUFFIXES:
@@ -39,7 +40,8 @@ DEPS := \
 	/usr/include/gtest/gtest.h:libgtest-dev \
 	/usr/src/googletest/googletest/src/gtest-all.cc:googletest \
 	i686-linux-gnu-g++:g++-i686-linux-gnu \
-	/usr/share/games/doom/freedoom1.wad:freedoom
+	/usr/share/games/doom/freedoom1.wad:freedoom \
+	gnuplot:gnuplot-nox
 
 # ---- kernel ------------------------------------------------------------------------------------
 
@@ -98,12 +100,16 @@ GTEST_SRC := /usr/src/googletest/googletest
 H32CXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -DMODEXLAB_ASM_LOOPS -I. \
 	-isystem $(GTEST_SRC)/include -MMD -MP
 ASM_TESTS := $(H32BUILD)/modexlab-asm-tests
+# real host cycles of the mappers, C++ twins and NASM loops, 32-bit static (modexlab-bench runs it)
+CYCLES := $(H32BUILD)/modexlab-cycles
+CYCLES_CXX := qemu/cycles_main.cpp kernel/lib/words.cpp kernel/lib/fmt.cpp $(wildcard kernel/raster/*.cpp)
 ASM_TEST_CXX := tests/main.cpp $(wildcard tests/asm/*.cpp) kernel/lib/words.cpp kernel/lib/fmt.cpp $(wildcard kernel/raster/*.cpp)
 
 HARNESS := $(HBUILD)/modexlab
 RENDER := $(HBUILD)/modexlab-render
 WAD := $(HBUILD)/modexlab-wad
 SCENE_TOOL := $(HBUILD)/modexlab-scene
+BENCH := $(HBUILD)/modexlab-bench
 TESTS := $(HBUILD)/modexlab-tests
 # the unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer
 SBUILD := $(BUILD)/host-san
@@ -115,11 +121,11 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures run test deps clean
+.PHONY: all iso kernel host fixtures run bench report test deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(TESTS) $(SAN_TESTS) $(ASM_TESTS)
+host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 deps:
@@ -212,15 +218,9 @@ $(HARNESS): $(HBUILD)/qemu/main.cpp.o $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
 
-$(RENDER): $(HBUILD)/qemu/render_main.cpp.o $(HARNESS_OBJS)
-	$(call say,LINK,$@)
-	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
-
-$(WAD): $(HBUILD)/qemu/wad_main.cpp.o $(HARNESS_OBJS)
-	$(call say,LINK,$@)
-	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
-
-$(SCENE_TOOL): $(HBUILD)/qemu/scene_main.cpp.o $(HARNESS_OBJS)
+# the other command-line tools: modexlab-NAME from qemu/NAME_main.cpp (objects kept)
+.SECONDARY: $(patsubst %,$(HBUILD)/%.o,$(wildcard qemu/*_main.cpp))
+$(HBUILD)/modexlab-%: $(HBUILD)/qemu/%_main.cpp.o $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
 
@@ -245,7 +245,11 @@ $(H32BUILD)/gtest-all.o: | deps
 
 $(ASM_TESTS): $(ASM_TEST_CXX:%=$(H32BUILD)/%.o) $(LOOP_ASM:%=$(KBUILD)/%.o) $(H32BUILD)/gtest-all.o
 	$(call say,LINK,$@)
-	$(Q)$(H32CXX) -static -m32 -Wl,-z,noexecstack -o $@ $^ -lpthread 2>&1 | { grep -v getaddrinfo || true; }
+	$(Q)$(H32CXX) -static -m32 -Wl,-z,noexecstack -o $@ $^ -lpthread 2>&1 | { grep -v -e getaddrinfo -e MakeConnection || true; }
+
+$(CYCLES): $(CYCLES_CXX:%=$(H32BUILD)/%.o) $(LOOP_ASM:%=$(KBUILD)/%.o)
+	$(call say,LINK,$@)
+	$(Q)$(H32CXX) -static -m32 -Wl,-z,noexecstack -o $@ $^
 
 $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 	$(call say,LINK,$@)
@@ -258,6 +262,13 @@ run: deps
 	@$(MAKE) -s -j$(NPROC) all host
 	DISPLAY=$(X_DISPLAY) $(HARNESS) run --kernel $(KERNEL) --out $(BUILD)/run $(if $(SCENE),--scene $(SCENE)) \
 		$(if $(MAPPER),--mapper $(MAPPER)) $(if $(filter 1,$(DISPLAY)),--display)
+
+# `make bench`: every mapper on every demo scene; the report in build/report (docs/bench.md).
+# SCENES=a,b MAPPERS=x,y FRAMES=N narrow it.
+bench report: deps
+	@$(MAKE) -s -j$(NPROC) all host
+	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
+		$(if $(FRAMES),--frames $(FRAMES))
 
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures

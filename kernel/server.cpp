@@ -458,14 +458,35 @@ void cmd_frame(Context&, const StrView* args, size_t nargs) {
 constexpr uint32_t MAX_PLAY_FRAMES = 100000;
 uint32_t g_play_ticks[MAX_PLAY_FRAMES];
 
+uint32_t clamp32(uint64_t v) { return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : uint32_t(v); }
+
+// Puts the median of v[0..n) at v[n / 2] (the upper one of an even count) and returns it: a
+// partial selection sort over the first half, no room needed. The order of v changes.
+uint32_t median_in_place(uint32_t* v, uint32_t n) {
+    for (uint32_t i = 0; i <= n / 2; ++i) {
+        uint32_t m = i;
+        for (uint32_t k = i + 1; k < n; ++k)
+            if (v[k] < v[m]) m = k;
+        uint32_t t = v[i];
+        v[i] = v[m], v[m] = t;
+    }
+    return v[n / 2];
+}
+
+// The arguments of play and bench: FRAMES (1..most) MAPPER [surface] [variant], and a 3D scene.
+bool parse_animation_args(const char* cmd, const StrView* args, size_t nargs, uint32_t most, const char* bad_count,
+                          uint32_t* frames, DrawArgs* d) {
+    if (!lib::parse_u32(args[0], frames) || *frames == 0 || *frames > most) {
+        reply::error(cmd, bad_count);
+        return false;
+    }
+    return parse_draw_args(cmd, args + 1, nargs - 1, false, d) && need_world(cmd);
+}
+
 void cmd_play(Context&, const StrView* args, size_t nargs) {
     uint32_t frames;
-    if (!lib::parse_u32(args[0], &frames) || frames == 0 || frames > MAX_PLAY_FRAMES) {
-        reply::error("play", "bad frame count: 1..100000");
-        return;
-    }
     DrawArgs d;
-    if (!parse_draw_args("play", args + 1, nargs - 1, false, &d) || !need_world("play")) return;
+    if (!parse_animation_args("play", args, nargs, MAX_PLAY_FRAMES, "bad frame count: 1..100000", &frames, &d)) return;
     uint64_t pixels = 0, total = 0, t_start = timer::rdtsc();
     for (uint32_t i = 0; i < frames; ++i) {
         int32_t n = int32_t(i % uint32_t(worlds::world().frames));
@@ -475,7 +496,7 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
         bool retrace = vga::flip(d.page);
         uint64_t flip_ticks = timer::rdtsc() - t0;
         uint64_t ticks = f.ticks_geometry + f.render.ticks_clear + f.render.ticks_draw + f.render.ticks_blit;
-        g_play_ticks[i] = ticks > 0xFFFFFFFFu ? 0xFFFFFFFFu : uint32_t(ticks);
+        g_play_ticks[i] = clamp32(ticks);
         pixels += f.render.stats.pixels;
         total += ticks;
         lib::JsonLine(serial::sink())
@@ -493,24 +514,83 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
             .end();
     }
     uint64_t wall = timer::rdtsc() - t_start;
-    // the median: a partial selection sort over the first half is enough and needs no room
     uint32_t lo = 0xFFFFFFFFu, hi = 0;
     for (uint32_t i = 0; i < frames; ++i) {
         if (g_play_ticks[i] < lo) lo = g_play_ticks[i];
         if (g_play_ticks[i] > hi) hi = g_play_ticks[i];
     }
-    for (uint32_t i = 0; i <= frames / 2; ++i) {
-        uint32_t m = i;
-        for (uint32_t k = i + 1; k < frames; ++k)
-            if (g_play_ticks[k] < g_play_ticks[m]) m = k;
-        uint32_t t = g_play_ticks[i];
-        g_play_ticks[i] = g_play_ticks[m], g_play_ticks[m] = t;
-    }
+    uint32_t median = median_in_place(g_play_ticks, frames);
     lib::JsonLine r = reply::begin(true);
     r.str("cmd", "play").str("scene", worlds::name()).u32("frames", frames).str("mapper", d.mapper->name);
     r.str("surface", scenes::surface_name(d.surface)).str("walker", d.axis == raster::Axis::Rows ? "rows" : "columns");
-    r.u64("pixels", pixels).u64("ticks", total).u32("ticks_min", lo).u32("ticks_median", g_play_ticks[frames / 2]).u32("ticks_max", hi);
+    r.u64("pixels", pixels).u64("ticks", total).u32("ticks_min", lo).u32("ticks_median", median).u32("ticks_max", hi);
     r.u64("ticks_wall", wall).end();
+}
+
+// bench: each frame drawn twice, once plainly (the totals) and once with the probe (setup and
+// inner loops; walking is the rest of the plain drawing time), then flipped.
+constexpr uint32_t MAX_BENCH_FRAMES = 1000;
+enum BenchField : uint32_t {
+    B_TICKS, B_GEOMETRY, B_CLEAR, B_DRAW, B_SETUP, B_WALK, B_INNER, B_BLIT, B_FLIP, B_FIELDS
+};
+const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry", "ticks_clear", "ticks_draw", "ticks_setup",
+                                                 "ticks_walk", "ticks_inner",    "ticks_blit",  "ticks_flip"};
+uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
+
+uint64_t bench_clock() { return timer::rdtsc(); }
+
+void cmd_bench(Context&, const StrView* args, size_t nargs) {
+    uint32_t frames;
+    DrawArgs d;
+    if (!parse_animation_args("bench", args, nargs, MAX_BENCH_FRAMES, "bad frame count: 1..1000 (spread evenly over the scene's animation)",
+                              &frames, &d))
+        return;
+    raster::Probe probe;
+    probe.clock = bench_clock;
+    probe.calibrate();
+    const uint32_t length = uint32_t(worlds::world().frames);
+    uint64_t polygons = 0, rejected = 0, spans = 0, pixels = 0;
+    bool used_asm = false;
+    for (uint32_t i = 0; i < frames; ++i) {
+        int32_t n = int32_t(uint64_t(i) * length / frames);
+        d.page = vga::shown_page() == 0 ? 1 : 0;
+        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant);
+        raster::Probe timed = probe;
+        worlds::render(n, *d.mapper, d.surface, d.page, d.variant, &timed);
+        uint64_t t0 = timer::rdtsc();
+        bool retrace = vga::flip(d.page);
+        uint64_t flip = timer::rdtsc() - t0;
+        const scenes::RenderResult& r = f.render;
+        uint64_t setup = timed.net(raster::Phase::Setup), inner = timed.net(raster::Phase::Inner);
+        uint64_t walk = r.ticks_draw > setup + inner ? r.ticks_draw - setup - inner : 0;
+        uint64_t figures[B_FIELDS] = {f.ticks_geometry + r.ticks_clear + r.ticks_draw + r.ticks_blit,
+                                      f.ticks_geometry, r.ticks_clear, r.ticks_draw, setup, walk, inner, r.ticks_blit, flip};
+        lib::JsonLine e(serial::sink());
+        e.str("event", "bench").u32("n", i).u32("frame", uint32_t(n)).u32("page", uint32_t(d.page));
+        e.u32("polygons", r.stats.polygons).u32("rejected", r.stats.rejected).u32("spans", r.stats.spans).u32("pixels", r.stats.pixels);
+        for (uint32_t k = 0; k < B_FIELDS; ++k) {
+            g_bench[k][i] = clamp32(figures[k]);
+            e.u64(BENCH_FIELD_NAMES[k], figures[k]);
+        }
+        e.boolean("retrace", retrace).end();
+        polygons += r.stats.polygons, rejected += r.stats.rejected, spans += r.stats.spans, pixels += r.stats.pixels;
+        used_asm = r.used_asm;
+    }
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "bench").str("scene", worlds::name()).u32("frames", frames).str("mapper", d.mapper->name);
+    r.str("surface", scenes::surface_name(d.surface)).str("walker", d.axis == raster::Axis::Rows ? "rows" : "columns");
+    r.str("loop", used_asm ? "asm" : "twin").u64("lap_cost", probe.lap_cost);
+    r.u64("polygons", polygons).u64("rejected", rejected).u64("spans", spans).u64("pixels", pixels);
+    for (uint32_t k = 0; k < B_FIELDS; ++k) {
+        uint64_t sum = 0;
+        uint32_t lo = 0xFFFFFFFFu;
+        for (uint32_t i = 0; i < frames; ++i) {
+            sum += g_bench[k][i];
+            if (g_bench[k][i] < lo) lo = g_bench[k][i];
+        }
+        r.begin_object(BENCH_FIELD_NAMES[k]).u64("sum", sum).u32("min", lo).u32("median", median_in_place(g_bench[k], frames)).end_object();
+    }
+    r.end();
 }
 
 void cmd_mappers(Context&, const StrView*, size_t) {
@@ -600,6 +680,7 @@ constexpr Command COMMANDS[] = {
     {"render", "render MAPPER PAGE [linear|planar|vga] [asm|twin] (the screen-space scene)", 2, 4, cmd_render},
     {"frame", "frame N MAPPER PAGE [linear|planar|vga] [asm|twin] (frame N of the 3D scene)", 3, 5, cmd_frame},
     {"play", "play FRAMES MAPPER [linear|planar|vga] [asm|twin] (the 3D scene, page-flipped)", 2, 4, cmd_play},
+    {"bench", "bench FRAMES MAPPER [linear|planar|vga] [asm|twin] (the 3D scene: timings per frame)", 2, 4, cmd_bench},
     {"mappers", "mappers", 0, 0, cmd_mappers},
     {"selftest", "selftest [CASES]", 0, 1, cmd_selftest},
     {"vbe", "vbe on", 1, 1, cmd_vbe},

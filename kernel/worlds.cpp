@@ -34,17 +34,24 @@ bool loaded() { return g_loaded; }
 const raster::World& world() { return g_world; }
 const char* name() { return g_name; }
 
-FrameResult render(int32_t n, const raster::Mapper& mapper, scenes::Surface surface, int page, raster::Variant variant) {
+FrameResult render(int32_t n, const raster::Mapper& mapper, scenes::Surface surface, int page, raster::Variant variant,
+                   raster::Probe* probe) {
     FrameResult r{};
     uint64_t t0 = timer::rdtsc();
     raster::build_frame(g_world, n, &g_frame, &g_scratch);
     r.ticks_geometry = timer::rdtsc() - t0;
     r.frame = g_frame.stats;
+    struct Drawing {
+        const raster::Mapper* mapper;
+        raster::Probe* probe;
+    } drawing{&mapper, probe};
     r.render = scenes::render_with(mapper, surface, page, variant,
-                                   [](void* m, raster::Target& target, raster::Axis axis, raster::Variant v) {
-                                       return raster::render_frame(g_frame, g_textures, *static_cast<const raster::Mapper*>(m), axis, target, v);
+                                   [](void* ctx, raster::Target& target, raster::Axis axis, raster::Variant v) {
+                                       auto* d = static_cast<Drawing*>(ctx);
+                                       if (d->probe) d->probe->start();
+                                       return raster::render_frame(g_frame, g_textures, *d->mapper, axis, target, v, d->probe);
                                    },
-                                   const_cast<raster::Mapper*>(&mapper));
+                                   &drawing);
     return r;
 }
 

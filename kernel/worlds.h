@@ -24,7 +24,9 @@ struct FrameResult {
     uint64_t ticks_geometry;
 };
 
-// Builds frame `n` and draws it with `mapper` into `page` through `surface`.
-FrameResult render(int32_t n, const raster::Mapper& mapper, scenes::Surface surface, int page, raster::Variant variant);
+// Builds frame `n` and draws it with `mapper` into `page` through `surface`; with a probe, times
+// the drawing's phases (the probe's clock must be set).
+FrameResult render(int32_t n, const raster::Mapper& mapper, scenes::Surface surface, int page, raster::Variant variant,
+                   raster::Probe* probe = nullptr);
 
 }  // namespace worlds

@@ -168,8 +168,9 @@ std::string corridor() {
     return "modexlab-scene 2\n"
            "# A corridor 120 units deep: floor, ceiling and walls each one polygon receding from the\n"
            "# eye to the far end (the perspective stress case: depth ratios in the thousands, and the\n"
-           "# near plane cutting every face).\n"
-           "texture tiles checker 64 64\ntexture panels grid 64 64\ntexture plates numbered 128 128\n" +
+           "# near plane cutting every face). Its textures are 256 x 256, so the mappers that need that\n"
+           "# size can draw it too.\n"
+           "texture tiles checker 256 256\ntexture panels grid 256 256\ntexture plates numbered 256 256\n" +
            floor.text() + ceiling.text() + walls[0].text() +
            "object floor\n  mesh floor\n  texture tiles\nend\n"
            "object ceiling\n  mesh ceiling\n  texture panels\nend\n"

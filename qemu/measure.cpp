@@ -136,6 +136,28 @@ struct HostTexture {
     }
 };
 
+// The pixels a polygon can touch: every mapper draws inside the box of its vertices, give or take
+// a pixel; clipped to the screen.
+struct Box {
+    int32_t x0, y0, x1, y1;  // inclusive
+    static Box around(const Vertex* v, int n) {
+        int64_t min_x = v[0].x.raw, max_x = v[0].x.raw, min_y = v[0].y.raw, max_y = v[0].y.raw;
+        for (int k = 1; k < n; ++k) {
+            min_x = std::min<int64_t>(min_x, v[k].x.raw), max_x = std::max<int64_t>(max_x, v[k].x.raw);
+            min_y = std::min<int64_t>(min_y, v[k].y.raw), max_y = std::max<int64_t>(max_y, v[k].y.raw);
+        }
+        return Box{int32_t(std::max<int64_t>(0, floor_div(min_x, SUBPIXEL_ONE) - 1)),
+                   int32_t(std::max<int64_t>(0, floor_div(min_y, SUBPIXEL_ONE) - 1)),
+                   int32_t(std::min<int64_t>(SCREEN_WIDTH - 1, floor_div(max_x, SUBPIXEL_ONE) + 1)),
+                   int32_t(std::min<int64_t>(SCREEN_HEIGHT - 1, floor_div(max_y, SUBPIXEL_ONE) + 1))};
+    }
+    template <typename F>
+    void each(F&& f) const {
+        for (int32_t y = y0; y <= y1; ++y)
+            for (int32_t x = x0; x <= x1; ++x) f(x, y);
+    }
+};
+
 std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper& mapper, Axis axis, RenderStats* stats) {
     HostSurface surface(mapper, BACKGROUND);
     HostTexture t(tex, mapper);
@@ -199,29 +221,93 @@ std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const Mapper& mapp
     for (int32_t i = 0; i < s.scene->polygon_count; ++i) {
         int n = s.scene->polygon_size[i];
         if (draw_polygon(v, n, ones_texture.texture, mapper, axis, t, &ignored) == SetupStatus::Ok) {
-            // every mapper draws inside the box of its vertices (whole pixels around it)
-            int64_t min_x = v[0].x.raw, max_x = v[0].x.raw, min_y = v[0].y.raw, max_y = v[0].y.raw;
-            for (int k = 1; k < n; ++k) {
-                min_x = std::min<int64_t>(min_x, v[k].x.raw), max_x = std::max<int64_t>(max_x, v[k].x.raw);
-                min_y = std::min<int64_t>(min_y, v[k].y.raw), max_y = std::max<int64_t>(max_y, v[k].y.raw);
-            }
-            int64_t x0 = std::max<int64_t>(0, floor_div(min_x, SUBPIXEL_ONE) - 1);
-            int64_t x1 = std::min<int64_t>(SCREEN_WIDTH - 1, floor_div(max_x, SUBPIXEL_ONE) + 1);
-            int64_t y0 = std::max<int64_t>(0, floor_div(min_y, SUBPIXEL_ONE) - 1);
-            int64_t y1 = std::min<int64_t>(SCREEN_HEIGHT - 1, floor_div(max_y, SUBPIXEL_ONE) + 1);
-            for (int64_t y = y0; y <= y1; ++y)
-                for (int64_t x = x0; x <= x1; ++x) {
-                    uint8_t& c = scratch.at(int32_t(x), int32_t(y));
-                    size_t i2 = size_t(y) * SCREEN_WIDTH + size_t(x);
-                    if (c && p->coverage[i2] < 255) ++p->coverage[i2];
-                    c = 0;
-                }
+            Box::around(v, n).each([&](int32_t x, int32_t y) {
+                uint8_t& c = scratch.at(x, y);
+                size_t i2 = size_t(y) * SCREEN_WIDTH + size_t(x);
+                if (c && p->coverage[i2] < 255) ++p->coverage[i2];
+                c = 0;
+            });
         }
         v += n;
     }
     for (size_t i = 0; i < p->index.size(); ++i)
         if (!p->coverage[i]) p->tu[i] = p->tv[i] = -1;
     return p;
+}
+
+namespace {
+
+// A texture's stand-ins for measuring: ones (coverage) and four that hold their own coordinates
+// (u low and high byte, v low and high byte), each with the copies the mapper reads.
+struct MeasureTextures {
+    std::vector<uint8_t> texels[5];
+    std::unique_ptr<HostTexture> textures[5];
+    MeasureTextures(const Texture& t, const Mapper& mapper) {
+        const int32_t w = t.width, h = t.height;
+        for (int k = 0; k < 5; ++k) {
+            texels[k].resize(size_t(w) * size_t(h));
+            for (int32_t v = 0; v < h; ++v)
+                for (int32_t u = 0; u < w; ++u) {
+                    int32_t c = k == 0 ? 1 : k < 3 ? u : v;
+                    texels[k][size_t(v) * size_t(w) + size_t(u)] = uint8_t(k == 0 ? 1 : k % 2 ? c & 255 : c >> 8);
+                }
+            textures[k] = std::make_unique<HostTexture>(Texture{texels[k].data(), w, h, t.wrap}, mapper);
+        }
+    }
+};
+
+}  // namespace
+
+AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis) {
+    AccuracyMetrics m;
+    std::vector<uint8_t> ref_count(SCREEN_PIXELS, 0), drawn_count(SCREEN_PIXELS, 0);
+    Picture ref(SCREEN_WIDTH, SCREEN_HEIGHT);  // one polygon at a time
+    std::vector<HostSurface> scratch;
+    for (int k = 0; k < 5; ++k) scratch.emplace_back(mapper, 0);
+    std::map<int32_t, std::unique_ptr<MeasureTextures>> stand_ins;  // by object
+    uint64_t error_sum = 0;
+    const Vertex* v = frame.vertices;
+    for (int32_t i = 0; i < frame.polygon_count; ++i) {
+        const int n = frame.polygon_size[i];
+        const int32_t object = frame.polygon_object[i];
+        const Texture& tex = w.textures->objects[object];
+        auto& stand_in = stand_ins[object];
+        if (!stand_in) stand_in = std::make_unique<MeasureTextures>(tex, mapper);
+        reference_polygon(v, n, tex, ref.view);
+        bool drawn = true;
+        for (int k = 0; k < 5 && drawn; ++k) {
+            Target t = scratch[size_t(k)].target();
+            RenderStats ignored;
+            drawn = draw_polygon(v, n, stand_in->textures[k]->texture, mapper, axis, t, &ignored) == SetupStatus::Ok;
+        }
+        Box::around(v, n).each([&](int32_t x, int32_t y) {
+            size_t p = size_t(y) * SCREEN_WIDTH + size_t(x);
+            bool rc = ref.coverage[p] != 0, dc = drawn && scratch[0].at(x, y) != 0;
+            if (rc && ref_count[p] < 255) ++ref_count[p];
+            if (dc && drawn_count[p] < 255) ++drawn_count[p];
+            if (rc && dc) {
+                int32_t tu = scratch[1].at(x, y) | (scratch[2].at(x, y) << 8), tv = scratch[3].at(x, y) | (scratch[4].at(x, y) << 8);
+                uint32_t du = texel_distance(ref.tu[p], tu, tex.width, tex.wrap), dv = texel_distance(ref.tv[p], tv, tex.height, tex.wrap);
+                add_texel_error(m, du > dv ? du : dv, &error_sum);
+            }
+            ref.coverage[p] = 0;
+            for (HostSurface& s : scratch) s.at(x, y) = 0;
+        });
+        v += n;
+    }
+    m.mean_texel_error = m.compared ? double(error_sum) / double(m.compared) : 0.0;
+    for (size_t p = 0; p < size_t(SCREEN_PIXELS); ++p) add_coverage(m, ref_count[p], drawn_count[p]);
+
+    // the palette indices: the whole pictures
+    Picture whole(SCREEN_WIDTH, SCREEN_HEIGHT);
+    reference_frame(frame, *w.textures, whole.view);
+    IndexImage mine = render_world_frame(w, frame, mapper, axis);
+    for (size_t p = 0; p < size_t(SCREEN_PIXELS); ++p) {
+        if (!whole.coverage[p] && !drawn_count[p]) continue;
+        ++m.union_pixels;
+        if (whole.index[p] != mine.index[p]) ++m.index_differs;
+    }
+    return m;
 }
 
 }  // namespace harness

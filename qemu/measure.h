@@ -81,6 +81,12 @@ std::unique_ptr<raster::Frame> world_frame(const LoadedWorld& w, int32_t n);
 IndexImage render_world_frame(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper, raster::Axis axis,
                               raster::RenderStats* stats = nullptr);
 
+// What the mapper draws of a frame against the reference (docs/accuracy.md, 3D frames): each
+// polygon alone, its texel errors on the pixels both cover for it, with its own texture's size and
+// wrap; coverage counts summed over the polygons; palette indices on the whole pictures.
+raster::AccuracyMetrics measure_world_frame(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper,
+                                            raster::Axis axis);
+
 // Reads a whole file; throws HarnessError when it cannot.
 std::string read_whole_file(const std::string& path);
 

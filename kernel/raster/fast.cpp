@@ -33,6 +33,7 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
     if (status != SetupStatus::Ok) return status;
     EdgeWalker walker(s, Axis::Rows, c.target.clip);
     const Planes p(s);
+    setup_done(c);
     uint32_t tally[2] = {0, 0};
     FastRunArgs a;
     a.pitch = c.target.pitch;
@@ -63,7 +64,7 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
         a.row = c.target.base + line * c.target.pitch;
         a.u = p.u(0, line);
         a.v = p.v(0, line);
-        c.loop(&a);
+        run_loop(c, &a);
     }
     c.stats->spans += tally[0];
     c.stats->pixels += tally[1];
@@ -77,6 +78,7 @@ SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count
     if (status != SetupStatus::Ok) return status;
     EdgeWalker walker(s, Axis::Columns, c.target.clip);
     const Planes p(s);
+    setup_done(c);
     FastColumnArgs a;
     a.texture = c.tex.aligned256;
     a.du = int32_t(p.udy);
@@ -89,7 +91,7 @@ SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count
         a.count = span.count;
         a.u = int32_t(p.u(span.x, span.y));
         a.v = int32_t(p.v(span.x, span.y));
-        c.loop(&a);
+        run_loop(c, &a);
         ++spans;
         pixels += uint32_t(span.count);
     }

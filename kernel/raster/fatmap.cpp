@@ -111,6 +111,7 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
             v += dv;
         }
     }
+    setup_done(c);
     const Target& t = c.target;
     const ClipRect& clip = t.clip;
     for (int32_t y = v1->y;; ++y) {
@@ -131,7 +132,7 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
                     int32_t first = skipped < table_length ? skipped : table_length - 1;
                     a.table = g_lut + first;
                     a.count = a.count < table_length - first ? a.count : table_length - first;
-                    c.loop(&a);
+                    run_loop(c, &a);
                     c.stats->pixels += uint32_t(a.count);
                 } else {
                     FatmapArgs a;
@@ -142,7 +143,7 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
                     a.v = int32_t(uint32_t(left.v) + uint32_t(skipped) * uint32_t(dvdx));
                     a.du = dudx;
                     a.dv = dvdx;
-                    c.loop(&a);
+                    run_loop(c, &a);
                     c.stats->pixels += uint32_t(a.count);
                 }
                 ++c.stats->spans;

@@ -263,8 +263,10 @@ int32_t reference_frame(const Frame& frame, const TextureSet& textures, PixelIma
     return rejected;
 }
 
-RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target, Variant variant) {
+RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target, Variant variant,
+                         Probe* probe) {
     RenderStats stats;
+    stats.probe = probe;
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
         draw_polygon(v, frame.polygon_size[i], textures.objects[frame.polygon_object[i]], mapper, axis, target, &stats, variant);

@@ -95,8 +95,8 @@ void build_texture_set(const World& world, TextureSet* out);
 // object's texture); returns how many polygons it rejected.
 int32_t reference_frame(const Frame& frame, const TextureSet& textures, PixelImage& img);
 
-// Draws the frame's polygons in order into `target`.
+// Draws the frame's polygons in order into `target`; with a probe, times the phases (probe.h).
 RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target,
-                         Variant variant = Variant::Twin);
+                         Variant variant = Variant::Twin, Probe* probe = nullptr);
 
 }  // namespace raster

@@ -221,18 +221,27 @@ void draw_triangle(const DrawContext& c, const Vertex28* v) {
     int64_t side = int64_t(v[bottom].x - v[top].x) * (v[middle].y - v[top].y) - int64_t(v[bottom].y - v[top].y) * (v[middle].x - v[top].x);
     bool middle_is_left = side > 0;
     Edge top_to_bottom(g, v, top, bottom), top_to_middle(g, v, top, middle), middle_to_bottom(g, v, middle, bottom);
+    setup_done(c);
     const ClipRect& clip = c.target.clip;
     Edge* left = middle_is_left ? &top_to_middle : &top_to_bottom;
     Edge* right = middle_is_left ? &top_to_bottom : &top_to_middle;
     for (int64_t h = top_to_middle.height; h-- > 0;) {
-        if (left->y >= clip.y0 && left->y < clip.y1) draw_scan_line(c, g, *left, *right);
+        if (left->y >= clip.y0 && left->y < clip.y1) {
+            inner_begins(c);  // the span routine (its divides and pieces) is the inner loop
+            draw_scan_line(c, g, *left, *right);
+            inner_ends(c);
+        }
         top_to_middle.step();
         top_to_bottom.step();
     }
     left = middle_is_left ? &middle_to_bottom : &top_to_bottom;
     right = middle_is_left ? &top_to_bottom : &middle_to_bottom;
     for (int64_t h = middle_to_bottom.height; h-- > 0;) {
-        if (left->y >= clip.y0 && left->y < clip.y1) draw_scan_line(c, g, *left, *right);
+        if (left->y >= clip.y0 && left->y < clip.y1) {
+            inner_begins(c);  // the span routine (its divides and pieces) is the inner loop
+            draw_scan_line(c, g, *left, *right);
+            inner_ends(c);
+        }
         middle_to_bottom.step();
         top_to_bottom.step();
     }

@@ -7,6 +7,7 @@
 
 #include "kernel/lib/words.h"
 #include "kernel/raster/loops.h"
+#include "kernel/raster/probe.h"
 #include "kernel/raster/setup.h"
 #include "kernel/raster/surface.h"
 #include "kernel/raster/texture.h"
@@ -49,6 +50,7 @@ struct RenderStats {
     uint32_t rejected = 0;   // not convex, too many vertices, out of range, or not for this mapper
     uint32_t spans = 0;
     uint32_t pixels = 0;
+    Probe* probe = nullptr;  // the bench's lap timer, when it times the phases
 };
 
 // A mapper with its own setup and edge walking (the classics) draws whole polygons.
@@ -60,6 +62,17 @@ struct DrawContext {
     LoopFn loop;
 };
 using DrawFn = SetupStatus (*)(const DrawContext& c, const Vertex* vertices, int count);
+
+// For the bench's probe (probe.h): a polygon driver marks the end of its setup, and runs its
+// per-span (per-column) code through these, so that its time counts as the inner loop's.
+inline void setup_done(const DrawContext& c) { probe_lap(c.stats->probe, Phase::Setup); }
+inline void inner_begins(const DrawContext& c) { probe_lap(c.stats->probe, Phase::Walk); }
+inline void inner_ends(const DrawContext& c) { probe_lap(c.stats->probe, Phase::Inner); }
+inline void run_loop(const DrawContext& c, const void* args) {
+    inner_begins(c);
+    c.loop(args);
+    inner_ends(c);
+}
 
 // What a mapper promises about accuracy, in checkable form (tests/unit/promise_test.cpp checks it
 // on every screen-space scene; the prose is in `promise`).
@@ -90,6 +103,7 @@ struct Mapper {
 extern const Mapper MAPPERS[];
 extern const int MAPPER_COUNT;
 const Mapper* find_mapper(lib::StrView name);
+inline const Mapper* find_mapper(const char* name) { return find_mapper(lib::StrView{name, lib::c_length(name)}); }
 
 inline bool mapper_accepts(const Mapper& m, const Texture& t) {
     bool pow2 = (t.width & (t.width - 1)) == 0 && (t.height & (t.height - 1)) == 0;

@@ -23,6 +23,18 @@ struct AccuracyMetrics {
     uint32_t union_pixels = 0;      // pixels covered by either
 };
 
+// The distance between texel columns (rows) a and b of a texture `size` wide (high): with repeat,
+// 0 and size-1 are one texel apart.
+uint32_t texel_distance(int32_t a, int32_t b, int32_t size, Wrap wrap);
+
+// The pieces of the metrics, for measures built pixel by pixel elsewhere (3D frames): a compared
+// pixel with texel error e (the caller sets mean_texel_error = *error_sum / compared at the end);
+// a pixel the reference covers rc times and the mapper draws dc times.
+void add_texel_error(AccuracyMetrics& m, uint32_t e, uint64_t* error_sum);
+void add_coverage(AccuracyMetrics& m, uint32_t rc, uint32_t dc);
+// Adds m into total (counts summed, the maximum kept, the mean weighted by compared pixels).
+void accumulate(AccuracyMetrics& total, const AccuracyMetrics& m);
+
 // Texture size and wrap give the distance: with repeat, 0 and width-1 are one texel apart.
 AccuracyMetrics compare_to_reference(const PixelImage& reference, const PixelImage& drawn, int32_t tex_width,
                                      int32_t tex_height, Wrap wrap);

@@ -48,13 +48,14 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
     a.s_stepu_n = a.s_stepu * N, a.t_stepu_n = a.t_stepu * N, a.z_stepu_n = a.z_stepu * N;
 
     EdgeWalker walker(setup, Axis::Rows, c.target.clip);
+    setup_done(c);
     Span span;
     while (walker.next(&span)) {
         a.dst = c.target.base + span.y * c.target.pitch + span.x;
         a.count = span.count;
         a.x = span.x;
         a.y = span.y;
-        c.loop(&a);
+        run_loop(c, &a);
         ++c.stats->spans;
         c.stats->pixels += uint32_t(span.count);
     }

@@ -16,8 +16,8 @@ namespace raster {
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant = Variant::Twin);
 
-// Draws every polygon of the scene in order.
+// Draws every polygon of the scene in order; with a probe, times the phases (probe.h).
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                         Variant variant = Variant::Twin);
+                         Variant variant = Variant::Twin, Probe* probe = nullptr);
 
 }  // namespace raster

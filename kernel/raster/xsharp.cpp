@@ -239,12 +239,15 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count, R
     right.direction = 1;
     set_up_edge(left, min_vert, p);
     set_up_edge(right, min_vert, p);
+    setup_done(c);
     const ClipRect& clip = c.target.clip;
     for (int32_t y = p.v[min_vert].y;; ++y) {
         if (y >= clip.y1) break;
         SpanSetup s;
         if (y >= clip.y0 && span_setup(left, right, clip, &s)) {
+            inner_begins(c);  // the span routine is the inner loop
             span(c, s, y);
+            inner_ends(c);
             ++c.stats->spans;
             c.stats->pixels += uint32_t(s.count);
         }
@@ -285,7 +288,7 @@ void column_span(const DrawContext& c, const Edge& top, const Edge& bottom, int3
     a.base = xs.whole + ys.whole * pitch;
     a.row = ys.carry_advance * pitch;
     a.backwards = step_x < 0;
-    c.loop(&a);
+    run_loop(c, &a);
     ++c.stats->spans;
     c.stats->pixels += uint32_t(a.count);
 }
@@ -308,6 +311,7 @@ SetupStatus draw_column(const DrawContext& c, const Vertex* vertices, int count)
     bottom.direction = -1;
     set_up_edge(top, min_vert, p);
     set_up_edge(bottom, min_vert, p);
+    setup_done(c);
     for (int32_t x = p.v[min_vert].x;; ++x) {
         if (x >= c.target.clip.x1) break;
         if (x >= c.target.clip.x0) column_span(c, top, bottom, x);

@@ -1,0 +1,54 @@
+// A lap timer for the bench: splits a drawing's time into polygon setup, edge walking and the
+// inner loops. The core has no clock of its own; the caller lends one (rdtsc in the kernel and on
+// the host). Every lap costs a clock read and a few instructions: `calibrate` measures that cost
+// and `net` takes it off again.
+#pragma once
+
+#include <stdint.h>
+
+namespace raster {
+
+enum class Phase : uint8_t { Setup, Walk, Inner, Count };
+
+struct Probe {
+    uint64_t (*clock)() = nullptr;
+    uint64_t last = 0;
+    uint64_t ticks[int(Phase::Count)] = {};
+    uint32_t laps[int(Phase::Count)] = {};
+    uint64_t lap_cost = 0;  // ticks one lap adds to the interval it closes (calibrate)
+
+    // Charges the time since the last lap to `phase`.
+    void lap(Phase phase) {
+        uint64_t now = clock();
+        ticks[int(phase)] += now - last;
+        ++laps[int(phase)];
+        last = now;
+    }
+    void start() { last = clock(); }
+    // The cost of a lap: the least interval between two back-to-back laps (least: an interrupt
+    // or a cache miss only ever adds). Exact under QEMU's icount, where ticks are instructions.
+    void calibrate() {
+        Probe p;
+        p.clock = clock;
+        p.start();
+        uint64_t best = ~uint64_t(0);
+        for (int i = 0; i < 64; ++i) {
+            uint64_t before = p.ticks[0];
+            p.lap(Phase::Setup);
+            if (p.ticks[0] - before < best) best = p.ticks[0] - before;
+        }
+        lap_cost = best;
+    }
+    // The phase's ticks without the laps' own cost.
+    uint64_t net(Phase phase) const {
+        uint64_t cost = lap_cost * laps[int(phase)];
+        return ticks[int(phase)] > cost ? ticks[int(phase)] - cost : 0;
+    }
+};
+
+// For the drawing code: a lap when a probe is attached.
+inline void probe_lap(Probe* p, Phase phase) {
+    if (p) p->lap(phase);
+}
+
+}  // namespace raster

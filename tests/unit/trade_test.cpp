@@ -1,0 +1,185 @@
+// The bench's pieces on the host: the Pareto front on hand-made points, the report files, the
+// phase probe (it must not change a picture, and its phases add up), and the 3D accuracy measure
+// (the exact mapper measures as exact; the pixels a mapper counts are the pixels the reference
+// covers for every mapper that promises exact coverage).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "kernel/raster/frame.h"
+#include "kernel/raster/render.h"
+#include "qemu/measure.h"
+#include "qemu/trade.h"
+
+namespace {
+
+using namespace harness;
+using namespace raster;
+
+TEST(Trade, ParetoFrontOfHandMadePoints) {
+    //                 0       1       2       3       4       5         6         7
+    std::vector<std::pair<double, double>> p = {{1, 5}, {2, 3}, {3, 3}, {4, 1}, {2, 6}, {5, 0.5}, {5, 0.5}, {6, 0.5}};
+    // 2 is beaten by 1 (as exact, faster); 4 by 0 (faster and more exact); 7 by 5 and 6; 5 and 6 tie
+    EXPECT_EQ(pareto_front(p), (std::vector<size_t>{0, 1, 3, 5, 6}));
+    EXPECT_EQ(pareto_front({}), std::vector<size_t>{});
+    EXPECT_EQ(pareto_front({{3, 3}}), std::vector<size_t>{0});
+}
+
+TradeRow row(const std::string& scene, const std::string& mapper, uint64_t draw, double mean_error, uint64_t rejected = 0) {
+    TradeRow r;
+    r.scene = scene, r.mapper = mapper;
+    r.pixels = 100, r.polygons = 4, r.spans = 10, r.rejected = rejected;
+    r.draw = draw, r.ticks = draw + 500, r.inner = draw / 2, r.setup = draw / 4, r.walk = draw - draw / 2 - draw / 4;
+    r.accuracy.compared = 100, r.accuracy.mean_texel_error = mean_error;
+    return r;
+}
+
+TEST(Trade, ParetoIsPerSceneAndLeavesOutMappersThatRefusePolygons) {
+    std::vector<TradeRow> rows = {row("a", "slow-exact", 9000, 0), row("a", "fast-rough", 1000, 5), row("a", "middle", 5000, 6),
+                                  row("a", "fastest-partial", 500, 0, 3), row("b", "slow-exact", 9000, 0), row("b", "fast-rough", 1000, 0)};
+    rows.push_back(row("b", "nothing", 0, 0));
+    rows.back().pixels = 0;
+    mark_pareto(rows);
+    EXPECT_TRUE(rows[0].pareto);
+    EXPECT_TRUE(rows[1].pareto);
+    EXPECT_FALSE(rows[2].pareto);  // slower and less exact than fast-rough
+    EXPECT_FALSE(rows[3].pareto);  // refuses polygons: not comparable
+    EXPECT_FALSE(rows[4].pareto);  // in scene b, fast-rough is as exact and faster
+    EXPECT_TRUE(rows[5].pareto);
+    EXPECT_FALSE(rows[6].pareto);
+}
+
+
+TEST(Trade, TheCsvHasAUnitForEveryColumnAndAFieldForEveryColumn) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "affine", 3000, 2.5)};
+    rows[1].host_ratio = 0.5;
+    mark_pareto(rows);
+    std::string dir = testing::TempDir() + "/trade_csv";
+    write_csv(dir + "/trade.csv", rows);
+    auto lines = read_csv(dir + "/trade.csv");
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_EQ(lines[0], csv_header());
+    for (size_t i = 6; i < lines[0].size(); ++i) EXPECT_NE(lines[0][i].find('['), std::string::npos) << lines[0][i];
+    std::map<std::string, size_t> column;
+    for (size_t i = 0; i < lines[0].size(); ++i) column[lines[0][i]] = i;
+    for (size_t r = 1; r < lines.size(); ++r) ASSERT_EQ(lines[r].size(), lines[0].size()) << "row " << r;
+    EXPECT_EQ(lines[2][column["mapper"]], "affine");
+    EXPECT_DOUBLE_EQ(std::stod(lines[2][column["draw_per_pixel[instructions/pixel]"]]), 30.0);
+    EXPECT_DOUBLE_EQ(std::stod(lines[2][column["frame_per_pixel[instructions/pixel]"]]), 35.0);
+    EXPECT_DOUBLE_EQ(std::stod(lines[2][column["host_cycles_ratio[ratio]"]]), 0.5);
+    EXPECT_EQ(lines[1][column["host_cycles_ratio[ratio]"]], "");  // not measured
+    EXPECT_EQ(lines[1][column["pareto[bool]"]], "true");
+    EXPECT_EQ(lines[2][column["pareto[bool]"]], "true");
+
+    ReportInfo info;
+    info.how = "by hand";
+    info.command = "make bench";
+    write_markdown(dir + "/trade.md", rows, info);
+    std::ifstream md(dir + "/trade.md");
+    std::stringstream text;
+    text << md.rdbuf();
+    // sorted by speed: affine (30 per pixel) before exact (90)
+    size_t affine = text.str().find("\n| affine |"), exact = text.str().find("\n| exact |");
+    ASSERT_NE(affine, std::string::npos);
+    ASSERT_NE(exact, std::string::npos);
+    EXPECT_LT(affine, exact);
+}
+
+LoadedWorld demo(const char* name) { return load_world_file(std::string("scenes/") + name + ".scene"); }
+
+Axis natural_axis(const Mapper& m) { return m.axes == AXIS_COLUMNS ? Axis::Columns : Axis::Rows; }
+
+// A clock that counts its own reads: deterministic phases.
+uint64_t g_clock = 0;
+uint64_t counting_clock() { return g_clock += 7; }
+
+TEST(Probe, ChangesNoPictureAndItsPhasesAddUp) {
+    LoadedWorld w = demo("cube");
+    auto frame = world_frame(w, 40);
+    int probed = 0;
+    for (int i = 0; i < MAPPER_COUNT; ++i) {
+        const Mapper& m = MAPPERS[i];
+        Axis axis = natural_axis(m);
+        RenderStats plain;
+        IndexImage want = render_world_frame(w, *frame, m, axis, &plain);
+        // the same drawing through the probe, on the same kind of surface
+        std::vector<uint8_t> surface(SCREEN_PIXELS, 0);
+        bool planar = m.needs & NEED_PLANAR_TARGET;
+        Target t = planar ? planar_target(surface.data()) : linear_target(surface.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+        Probe probe;
+        probe.clock = counting_clock;
+        probe.calibrate();
+        EXPECT_EQ(probe.lap_cost, 7u);
+        probe.start();
+        const uint64_t start = probe.last;
+        RenderStats stats = render_frame(*frame, *w.textures, m, axis, t, Variant::Twin, &probe);
+        EXPECT_EQ(stats.pixels, plain.pixels) << m.name;
+        std::vector<uint8_t> mine = surface;
+        if (planar) linear_from_planar(surface.data(), mine.data());
+        EXPECT_EQ(mine, want.index) << m.name;
+        uint64_t sum = probe.ticks[0] + probe.ticks[1] + probe.ticks[2];
+        EXPECT_EQ(sum, probe.last - start) << m.name;
+        if (stats.polygons) {
+            ++probed;
+            EXPECT_GT(probe.laps[int(Phase::Setup)], 0u) << m.name;
+            EXPECT_GT(probe.laps[int(Phase::Inner)], 0u) << m.name << ": its per-span code is never timed";
+            // each lap read the clock once: with the cost taken off, nothing is left
+            EXPECT_EQ(probe.net(Phase::Setup), 0u) << m.name;
+            EXPECT_EQ(probe.net(Phase::Inner), 0u) << m.name;
+        }
+    }
+    EXPECT_GE(probed, 10);
+}
+
+TEST(Measure3d, TheExactMapperMeasuresAsExact) {
+    for (const char* name : {"ball", "corridor", "cube"}) {
+        LoadedWorld w = demo(name);
+        auto frame = world_frame(w, 25);
+        AccuracyMetrics m = measure_world_frame(w, *frame, *find_mapper("exact"), Axis::Rows);
+        EXPECT_GT(m.reference_pixels, 1000u) << name;
+        EXPECT_EQ(m.compared, m.exact) << name;
+        EXPECT_EQ(m.max_texel_error, 0u) << name;
+        EXPECT_EQ(m.gaps + m.overdraw + m.overlaps + m.index_differs, 0u) << name;
+    }
+}
+
+TEST(Measure3d, MappersThatPromiseExactCoverageCountThePixelsTheReferenceCovers) {
+    for (const char* name : {"corridor", "mesh", "rotozoom"}) {
+        LoadedWorld w = demo(name);
+        auto frame = world_frame(w, 60);
+        // the reference's pixels, polygon by polygon (what a frame's pixel count adds up)
+        uint64_t covered = 0;
+        Picture p(SCREEN_WIDTH, SCREEN_HEIGHT);
+        const Vertex* v = frame->vertices;
+        for (int32_t i = 0; i < frame->polygon_count; ++i) {
+            clear_pixel_image(p.view, 0);
+            reference_polygon(v, frame->polygon_size[i], w.textures->objects[frame->polygon_object[i]], p.view);
+            for (uint8_t c : p.coverage) covered += c;
+            v += frame->polygon_size[i];
+        }
+        ASSERT_GT(covered, 0u);
+        for (int i = 0; i < MAPPER_COUNT; ++i) {
+            const Mapper& m = MAPPERS[i];
+            if (!m.guarantee.exact_coverage) continue;
+            RenderStats stats;
+            render_world_frame(w, *frame, m, natural_axis(m), &stats);
+            if (stats.rejected) continue;  // textures it cannot take
+            EXPECT_EQ(stats.pixels, covered) << name << " " << m.name;
+            AccuracyMetrics a = measure_world_frame(w, *frame, m, natural_axis(m));
+            EXPECT_EQ(a.gaps + a.overdraw + a.overlaps, 0u) << name << " " << m.name;
+        }
+    }
+}
+
+TEST(Measure3d, AffineIsWorseThanSubdividedPerspectiveOnTheCorridor) {
+    LoadedWorld w = demo("corridor");
+    auto frame = world_frame(w, 0);
+    AccuracyMetrics affine = measure_world_frame(w, *frame, *find_mapper("affine"), Axis::Rows);
+    AccuracyMetrics subdiv = measure_world_frame(w, *frame, *find_mapper("persp-subdiv-8"), Axis::Rows);
+    EXPECT_GT(affine.mean_texel_error, 10 * subdiv.mean_texel_error);
+    EXPECT_GT(subdiv.exact, affine.exact);
+}
+
+}  // namespace
