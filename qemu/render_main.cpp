@@ -23,8 +23,8 @@ const char* USAGE =
     "  --axis     the walker: rows or columns (default: the mapper's own, rows for those that walk\n"
     "             both; our generic walkers cover the same pixels either way)\n"
     "  --out      the picture, 320x240, in the scene's palette\n"
-    "  --compare  print the accuracy metrics against the reference\n"
-    "  --diff     with --compare: a picture of the differences (red: palette index differs,\n"
+    "  --compare  print the accuracy metrics against the reference (a 3D frame: polygon by polygon)\n"
+    "  --diff     with --compare, screen-space scenes: a picture of the differences (red: palette index differs,\n"
     "             yellow: drawn but not covered by the reference, blue: covered but not drawn)\n";
 
 [[noreturn]] void usage_error(const std::string& why) {
@@ -60,10 +60,20 @@ RgbImage colourise_with(const IndexImage& img, const raster::Palette& pal) {
     return out;
 }
 
-// A frame of a 3D scene: the picture and the frame's and the drawing's figures.
+// The accuracy metrics, as `key value` lines (docs/accuracy.md).
+void print_metrics(const raster::AccuracyMetrics& m) {
+    std::printf("reference_pixels %u\noverdraw %u\ngaps %u\noverlaps %u\ncompared_pixels %u\n", m.reference_pixels, m.overdraw,
+                m.gaps, m.overlaps, m.compared);
+    std::printf("max_texel_error %u\nmean_texel_error %.6f\nshare_exact %.6f\nshare_within_one %.6f\n", m.max_texel_error,
+                m.mean_texel_error, share(m.exact, m.compared), share(m.within_one, m.compared));
+    std::printf("pixels_index_differs %u\nshare_index_differs %.6f\n", m.index_differs, share(m.index_differs, m.union_pixels));
+}
+
+// A frame of a 3D scene: the picture and the frame's and the drawing's figures; with compare, the
+// metrics measured polygon by polygon (docs/accuracy.md, 3D frames).
 int render_world(const std::string& path, const std::string& text, const raster::Mapper* mapper, raster::Axis axis, int32_t n,
-                 const std::string& out, bool compare) {
-    if (compare) throw HarnessError("--compare takes screen-space scenes; a 3D scene's accuracy is in the report");
+                 const std::string& out, bool compare, bool diff) {
+    if (diff) throw HarnessError("--diff takes screen-space scenes (a 3D frame's metrics come polygon by polygon)");
     LoadedWorld w = parse_world_text(text, path, world_search_path(path));
     auto frame = world_frame(w, n);
     std::printf("modexlab-render 1\nscene %s\nversion 2\nframe %d\n", path.c_str(), n);
@@ -84,6 +94,7 @@ int render_world(const std::string& path, const std::string& text, const raster:
         std::printf("mapper %s %s\n", mapper->name, axis == raster::Axis::Rows ? "rows" : "columns");
         std::printf("polygons_drawn %u\npolygons_skipped %u\npolygons_rejected %u\nspans %u\npixels_drawn %u\n", stats.polygons,
                     stats.skipped, stats.rejected, stats.spans, stats.pixels);
+        if (compare) print_metrics(measure_world_frame(w, *frame, *mapper, axis));
     }
     save_png(out, colourise_with(picture, w.world->palette));
     return 0;
@@ -145,7 +156,7 @@ int main(int argc, char** argv) {
     try {
         std::string text = read_whole_file(scene_path);
         raster::ParseError version_error;
-        if (raster::scene_version(text.data(), text.size(), &version_error) == 2) return render_world(scene_path, text, mapper, axis, frame, out, compare_to_reference);
+        if (raster::scene_version(text.data(), text.size(), &version_error) == 2) return render_world(scene_path, text, mapper, axis, frame, out, compare_to_reference, !diff.empty());
         LoadedScene s = parse_scene_text(text, scene_path);
         const raster::Palette& pal = raster::palette(raster::PaletteId::Default);
         std::printf("modexlab-render 1\n");
@@ -175,12 +186,7 @@ int main(int argc, char** argv) {
                     stats.skipped, stats.rejected, stats.spans, stats.pixels);
         if (!compare_to_reference) return 0;
         std::unique_ptr<Picture> drawn = measure_mapper(s, *mapper, axis);
-        raster::AccuracyMetrics m = raster::compare_to_reference(ref->view, drawn->view, s.texture.width, s.texture.height, s.texture.wrap);
-        std::printf("reference_pixels %u\noverdraw %u\ngaps %u\noverlaps %u\ncompared_pixels %u\n", m.reference_pixels, m.overdraw,
-                    m.gaps, m.overlaps, m.compared);
-        std::printf("max_texel_error %u\nmean_texel_error %.6f\nshare_exact %.6f\nshare_within_one %.6f\n", m.max_texel_error,
-                    m.mean_texel_error, share(m.exact, m.compared), share(m.within_one, m.compared));
-        std::printf("pixels_index_differs %u\nshare_index_differs %.6f\n", m.index_differs, share(m.index_differs, m.union_pixels));
+        print_metrics(raster::compare_to_reference(ref->view, drawn->view, s.texture.width, s.texture.height, s.texture.wrap));
         if (!diff.empty()) save_png(diff, difference_picture(ref->view, drawn->view));
         return 0;
     } catch (const std::exception& e) {

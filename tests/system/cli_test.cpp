@@ -81,6 +81,29 @@ TEST(RenderTool, TheExactMapperHasNoError) {
     EXPECT_EQ(keys(ref.out)["mapper"], "reference");
 }
 
+TEST(RenderTool, Compares3dFramesPolygonByPolygon) {
+    std::map<std::string, double> mean;
+    for (const char* m : {"exact", "persp-subdiv-8", "affine"}) {
+        ToolRun r = run(std::string("scenes/corridor.scene --frame 45 --mapper ") + m + " --out " + tmp("corridor.png") + " --compare");
+        ASSERT_EQ(r.status, 0) << r.out;
+        auto k = keys(r.out);
+        EXPECT_EQ(k["frame"], "45");
+        EXPECT_EQ(k["gaps"], "0") << m;
+        EXPECT_EQ(k["overdraw"], "0") << m;
+        EXPECT_EQ(k["reference_pixels"], "76800") << m << ": the corridor fills the screen";
+        mean[m] = std::stod(k["mean_texel_error"]);
+        if (std::string(m) == "exact") {
+            EXPECT_EQ(k["max_texel_error"], "0");
+        }
+    }
+    EXPECT_EQ(mean["exact"], 0.0);
+    EXPECT_GT(mean["persp-subdiv-8"], 0.0);
+    EXPECT_GT(mean["affine"], 10 * mean["persp-subdiv-8"]) << "the corridor is the perspective stress case";
+    ToolRun d = run("scenes/corridor.scene --mapper affine --out " + tmp("corridor.png") + " --compare --diff " + tmp("d.png"));
+    EXPECT_EQ(d.status, 1);
+    EXPECT_NE(d.out.find("--diff takes screen-space scenes"), std::string::npos) << d.out;
+}
+
 TEST(RenderTool, BadInputGetsAClearError) {
     ToolRun unknown = run("scenes/screen/tunnel.scene --mapper marble --out " + tmp("x.png"));
     EXPECT_EQ(unknown.status, 2);
