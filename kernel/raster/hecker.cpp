@@ -223,28 +223,22 @@ void draw_triangle(const DrawContext& c, const Vertex28* v) {
     Edge top_to_bottom(g, v, top, bottom), top_to_middle(g, v, top, middle), middle_to_bottom(g, v, middle, bottom);
     setup_done(c);
     const ClipRect& clip = c.target.clip;
-    Edge* left = middle_is_left ? &top_to_middle : &top_to_bottom;
-    Edge* right = middle_is_left ? &top_to_bottom : &top_to_middle;
-    for (int64_t h = top_to_middle.height; h-- > 0;) {
-        if (left->y >= clip.y0 && left->y < clip.y1) {
-            inner_begins(c);  // the span routine (its divides and pieces) is the inner loop
-            draw_scan_line(c, g, *left, *right);
-            inner_ends(c);
+    // the upper half between top-middle and top-bottom, then the lower half (Hecker's two loops)
+    auto scan = [&](Edge& short_edge) {
+        Edge* left = middle_is_left ? &short_edge : &top_to_bottom;
+        Edge* right = middle_is_left ? &top_to_bottom : &short_edge;
+        for (int64_t h = short_edge.height; h-- > 0;) {
+            if (left->y >= clip.y0 && left->y < clip.y1) {
+                inner_begins(c);  // the span routine (its divides and pieces) is the inner loop
+                draw_scan_line(c, g, *left, *right);
+                inner_ends(c);
+            }
+            short_edge.step();
+            top_to_bottom.step();
         }
-        top_to_middle.step();
-        top_to_bottom.step();
-    }
-    left = middle_is_left ? &middle_to_bottom : &top_to_bottom;
-    right = middle_is_left ? &top_to_bottom : &middle_to_bottom;
-    for (int64_t h = middle_to_bottom.height; h-- > 0;) {
-        if (left->y >= clip.y0 && left->y < clip.y1) {
-            inner_begins(c);  // the span routine (its divides and pieces) is the inner loop
-            draw_scan_line(c, g, *left, *right);
-            inner_ends(c);
-        }
-        middle_to_bottom.step();
-        top_to_bottom.step();
-    }
+    };
+    scan(top_to_middle);
+    scan(middle_to_bottom);
 }
 
 }  // namespace
