@@ -24,6 +24,8 @@ double period_shift(double lo, int32_t size, Wrap wrap) {
 }  // namespace
 
 SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double* shift_u, double* shift_v) {
+    if (n > MAX_VERTICES) return SetupStatus::TooManyVertices;
+    if (n < 3) return SetupStatus::Degenerate;
     for (int i = 0; i < n; ++i) {
         const Vertex& v = in[i];
         if (!(v.u == v.u) || !(v.v == v.v) || v.u > MAX_UV || v.u < -MAX_UV || v.v > MAX_UV || v.v < -MAX_UV) return SetupStatus::OutOfRange;
@@ -46,8 +48,6 @@ SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double* s
 
 SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_offset, Vertex16* out, int* count) {
     *count = 0;
-    if (n > MAX_VERTICES) return SetupStatus::TooManyVertices;
-    if (n < 3) return SetupStatus::Degenerate;
     double shift_u, shift_v;
     SetupStatus status = texture_shift(in, n, tex, &shift_u, &shift_v);
     if (status != SetupStatus::Ok) return status;

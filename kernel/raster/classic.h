@@ -29,8 +29,9 @@ constexpr int MAX_VERTICES = MAX_POLYGON_VERTICES;
 constexpr int32_t MAX_COORD = 8192;
 
 // The whole-period shifts (repeat) that bring a polygon's smallest texture coordinates into
-// [0, size); OutsideTexture when the shifted coordinates still leave [0, width] x [0, height],
-// OutOfRange for coordinates beyond MAX_COORD or non-finite texture coordinates.
+// [0, size); TooManyVertices beyond MAX_VERTICES, Degenerate below 3, OutsideTexture when the
+// shifted coordinates still leave [0, width] x [0, height], OutOfRange for coordinates beyond
+// MAX_COORD or non-finite texture coordinates. Every classic's driver starts with it.
 SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double* shift_u, double* shift_v);
 
 // Converts a polygon: x and y rounded to the nearest pixel corner (ties up); clockwise screen order

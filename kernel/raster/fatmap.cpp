@@ -168,8 +168,6 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
 }
 
 SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count, bool lut, double limit) {
-    if (count > classic::MAX_VERTICES) return SetupStatus::TooManyVertices;
-    if (count < 3) return SetupStatus::Degenerate;
     double shift_u, shift_v;
     // the loops wrap at 256 (fatmap-lut does not); the 16:16 arithmetic holds +-32768 texels
     Texture range = c.tex;

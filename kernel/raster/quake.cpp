@@ -18,8 +18,6 @@ namespace {
 
 template <int SHIFT>
 SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
-    if (count > classic::MAX_VERTICES) return SetupStatus::TooManyVertices;
-    if (count < 3) return SetupStatus::Degenerate;
     double shift_u, shift_v;
     SetupStatus status = classic::texture_shift(vertices, count, c.tex, &shift_u, &shift_v);
     if (status != SetupStatus::Ok) return status;
