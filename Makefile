@@ -50,9 +50,11 @@ ISO := $(BUILD)/modexlab.iso
 
 LOOP_ASM := $(wildcard asm/*.asm)
 KERNEL_ASM := boot/entry.asm boot/isr.asm $(LOOP_ASM)
-KERNEL_CXX := $(wildcard kernel/*.cpp kernel/lib/*.cpp kernel/raster/*.cpp drivers/*.cpp)
+# the portable core, the mappers and the scene code, built for the kernel and the host alike
+PORTABLE_DIRS := kernel/core kernel/mappers kernel/scene
+KERNEL_CXX := $(wildcard kernel/*.cpp kernel/lib/*.cpp kernel/server/*.cpp $(PORTABLE_DIRS:%=%/*.cpp) drivers/*.cpp)
 KERNEL_OBJS := $(KERNEL_ASM:%=$(KBUILD)/%.o) $(KERNEL_CXX:%=$(KBUILD)/%.o)
-# the argument-block offsets the NASM loops include, generated from kernel/raster/loops.h
+# the argument-block offsets the NASM loops include, generated from kernel/mappers/loops.h
 OFFSETS_INC := $(KBUILD)/gen/offsets.inc
 
 # The built-in files: the demo scenes, and the freedoom scene's textures made at build time from
@@ -83,9 +85,10 @@ NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error -I$(KBUILD)/gen/ -Iasm/
 # ---- host --------------------------------------------------------------------------------------
 
 # portable kernel code the host builds too (no port I/O, no inline asm)
-PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp \
-	$(wildcard kernel/raster/*.cpp)
-HARNESS_CXX := $(filter-out qemu/main.cpp qemu/%_main.cpp,$(wildcard qemu/*.cpp))
+CORE_CXX := $(wildcard $(PORTABLE_DIRS:%=%/*.cpp))
+PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp $(CORE_CXX)
+# host-only code: the exact reference and the accuracy measures, the harness, the tools' libraries
+HARNESS_CXX := $(filter-out %/main.cpp %_main.cpp,$(wildcard qemu/*/*.cpp))
 HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
 TEST_CXX := $(wildcard tests/*.cpp tests/unit/*.cpp tests/system/*.cpp)
 
@@ -102,8 +105,8 @@ H32CXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -
 ASM_TESTS := $(H32BUILD)/modexlab-asm-tests
 # real host cycles of the mappers, C++ twins and NASM loops, 32-bit static (modexlab-bench runs it)
 CYCLES := $(H32BUILD)/modexlab-cycles
-CYCLES_CXX := qemu/cycles_main.cpp kernel/lib/words.cpp kernel/lib/fmt.cpp $(wildcard kernel/raster/*.cpp)
-ASM_TEST_CXX := tests/main.cpp $(wildcard tests/asm/*.cpp) kernel/lib/words.cpp kernel/lib/fmt.cpp $(wildcard kernel/raster/*.cpp)
+CYCLES_CXX := qemu/tools/cycles_main.cpp kernel/lib/words.cpp kernel/lib/fmt.cpp $(CORE_CXX)
+ASM_TEST_CXX := tests/main.cpp $(wildcard tests/asm/*.cpp) kernel/lib/words.cpp kernel/lib/fmt.cpp $(CORE_CXX)
 
 HARNESS := $(HBUILD)/modexlab
 RENDER := $(HBUILD)/modexlab-render
@@ -152,7 +155,7 @@ $(KBUILD)/%.cpp.o: %.cpp | deps
 	$(call say,KCXX,$<)
 	$(Q)$(KCXX) $(KCXXFLAGS) -c $< -o $@
 
-$(OFFSETS_INC): asm/offsets.cpp kernel/raster/loops.h | deps
+$(OFFSETS_INC): asm/offsets.cpp kernel/mappers/loops.h | deps
 	@mkdir -p $(@D)
 	$(call say,GEN,$@)
 	$(Q)$(KCXX) $(KCXXFLAGS_NODEP) -S -o - asm/offsets.cpp | sed -n 's/.*@@@ \([A-Z0-9_]*\) \([0-9]*\).*/%define \1 \2/p' > $@
@@ -214,13 +217,13 @@ $(HBUILD)/%.cpp.o: %.cpp | deps
 	$(call say,CXX,$<)
 	$(Q)$(HCXX) $(HCXXFLAGS) -c $< -o $@
 
-$(HARNESS): $(HBUILD)/qemu/main.cpp.o $(HARNESS_OBJS)
+$(HARNESS): $(HBUILD)/qemu/harness/main.cpp.o $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
 
-# the other command-line tools: modexlab-NAME from qemu/NAME_main.cpp (objects kept)
-.SECONDARY: $(patsubst %,$(HBUILD)/%.o,$(wildcard qemu/*_main.cpp))
-$(HBUILD)/modexlab-%: $(HBUILD)/qemu/%_main.cpp.o $(HARNESS_OBJS)
+# the host tools: modexlab-NAME from qemu/tools/NAME_main.cpp (objects kept)
+.SECONDARY: $(patsubst %,$(HBUILD)/%.o,$(wildcard qemu/tools/*_main.cpp))
+$(HBUILD)/modexlab-%: $(HBUILD)/qemu/tools/%_main.cpp.o $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
 

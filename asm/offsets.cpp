@@ -2,7 +2,7 @@
 // the argument-block layouts of kernel/raster/loops.h for the NASM loops.
 #include <stddef.h>
 
-#include "kernel/raster/loops.h"
+#include "kernel/mappers/loops.h"
 
 #define OFFSET(symbol, type, member) asm volatile("\n.ascii \"@@@ " #symbol " %c0\"" : : "i"(offsetof(type, member)))
 #define SIZE(symbol, type) asm volatile("\n.ascii \"@@@ " #symbol " %c0\"" : : "i"(sizeof(type)))

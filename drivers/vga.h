@@ -5,8 +5,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "kernel/raster/palette.h"
-#include "kernel/raster/surface.h"
+#include "kernel/scene/palette.h"
+#include "kernel/core/surface.h"
 
 namespace vga {
 

@@ -1,7 +1,7 @@
 // Drawing the named test patterns into a VGA page of the current mode.
 #pragma once
 
-#include "kernel/raster/pattern.h"
+#include "kernel/scene/pattern.h"
 
 namespace draw {
 

@@ -9,7 +9,7 @@
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/words.h"
 #include "kernel/multiboot.h"
-#include "kernel/raster/world.h"
+#include "kernel/scene/world.h"
 
 namespace files {
 

@@ -5,7 +5,7 @@
 #include "drivers/serial.h"
 #include "drivers/vga.h"
 #include "kernel/lib/fmt.h"
-#include "kernel/reply.h"
+#include "kernel/server/reply.h"
 
 extern "C" const uint32_t isr_stub_table[32];
 

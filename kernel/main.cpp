@@ -13,8 +13,8 @@
 #include "kernel/lib/json.h"
 #include "kernel/lib/words.h"
 #include "kernel/multiboot.h"
-#include "kernel/raster/mappers.h"
-#include "kernel/server.h"
+#include "kernel/core/mapper.h"
+#include "kernel/server/server.h"
 #include "kernel/show.h"
 #include "kernel/version.h"
 

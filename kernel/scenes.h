@@ -5,8 +5,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "kernel/raster/render.h"
-#include "kernel/raster/scene.h"
+#include "kernel/core/render.h"
+#include "kernel/scene/scene.h"
 
 namespace scenes {
 

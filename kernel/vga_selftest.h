@@ -2,7 +2,7 @@
 // real Mode X memory, the twin into RAM planes, and the planes are read back and compared.
 #pragma once
 
-#include "kernel/raster/selftest.h"
+#include "kernel/core/selftest.h"
 
 namespace vga_selftest {
 

@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "kernel/raster/frame.h"
+#include "kernel/scene/frame.h"
 #include "kernel/scenes.h"
 
 namespace worlds {

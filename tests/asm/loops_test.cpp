@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "kernel/raster/selftest.h"
+#include "kernel/core/selftest.h"
 
 namespace {
 

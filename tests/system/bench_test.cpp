@@ -11,8 +11,8 @@
 #include <set>
 #include <sstream>
 
-#include "qemu/measure.h"
-#include "qemu/trade.h"
+#include "qemu/accuracy/measure.h"
+#include "qemu/tools/trade.h"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // The host tools as users run them: modexlab-render's output lines, files and error handling.
 #include "tests/system/system.h"
 
-#include "kernel/raster/mappers.h"
+#include "kernel/core/mapper.h"
 
 #include <filesystem>
 #include <fstream>

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "kernel/lib/encode.h"
-#include "kernel/raster/selftest.h"
-#include "qemu/measure.h"
+#include "kernel/core/selftest.h"
+#include "qemu/accuracy/measure.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <string>
 
-#include "qemu/session.h"
+#include "qemu/harness/session.h"
 
 namespace systest {
 

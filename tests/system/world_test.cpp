@@ -8,8 +8,8 @@
 
 #include <filesystem>
 
-#include "qemu/demo_scenes.h"
-#include "qemu/measure.h"
+#include "qemu/tools/demo_scenes.h"
+#include "qemu/accuracy/measure.h"
 
 namespace {
 

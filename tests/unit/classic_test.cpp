@@ -2,7 +2,7 @@
 // algorithm says what it does (docs/mappers.md).
 #include <gtest/gtest.h>
 
-#include "kernel/raster/classic.h"
+#include "kernel/mappers/classic.h"
 #include "tests/unit/raster_helpers.h"
 
 namespace {

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "qemu/demo_scenes.h"
-#include "qemu/error.h"
-#include "qemu/measure.h"
+#include "qemu/tools/demo_scenes.h"
+#include "qemu/lib/error.h"
+#include "qemu/accuracy/measure.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <limits>
 #include <random>
 
-#include "kernel/raster/fixed.h"
+#include "kernel/core/fixed.h"
 
 namespace {
 

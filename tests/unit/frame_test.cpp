@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/raster/frame.h"
+#include "kernel/scene/frame.h"
 
 namespace {
 

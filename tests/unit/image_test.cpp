@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "qemu/error.h"
-#include "qemu/image.h"
-#include "qemu/session.h"
+#include "qemu/lib/error.h"
+#include "qemu/lib/image.h"
+#include "qemu/harness/session.h"
 
 namespace {
 

@@ -4,9 +4,9 @@
 #include <set>
 #include <tuple>
 
-#include "kernel/raster/palette.h"
-#include "kernel/raster/pattern.h"
-#include "qemu/image.h"
+#include "kernel/scene/palette.h"
+#include "kernel/scene/pattern.h"
+#include "qemu/lib/image.h"
 
 namespace {
 

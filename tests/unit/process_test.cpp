@@ -4,9 +4,9 @@
 #include <algorithm>
 
 #include "kernel/lib/encode.h"
-#include "qemu/error.h"
-#include "qemu/process.h"
-#include "qemu/readback.h"
+#include "qemu/lib/error.h"
+#include "qemu/harness/process.h"
+#include "qemu/harness/readback.h"
 
 namespace {
 

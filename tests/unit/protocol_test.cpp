@@ -7,10 +7,10 @@
 
 #include <thread>
 
-#include "qemu/channel.h"
-#include "qemu/error.h"
-#include "qemu/kernel_link.h"
-#include "qemu/qmp.h"
+#include "qemu/harness/channel.h"
+#include "qemu/lib/error.h"
+#include "qemu/harness/kernel_link.h"
+#include "qemu/harness/qmp.h"
 
 namespace {
 

@@ -6,10 +6,10 @@
 #include <random>
 #include <vector>
 
-#include "kernel/raster/render.h"
-#include "kernel/raster/setup.h"
-#include "kernel/raster/walk.h"
-#include "qemu/measure.h"
+#include "kernel/core/render.h"
+#include "kernel/core/setup.h"
+#include "kernel/core/walk.h"
+#include "qemu/accuracy/measure.h"
 
 namespace rastertest {
 

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "qemu/error.h"
-#include "qemu/session.h"
+#include "qemu/lib/error.h"
+#include "qemu/harness/session.h"
 #include "tests/unit/raster_helpers.h"
 
 namespace {

@@ -4,7 +4,7 @@
 // stays the definition's.
 #include <gtest/gtest.h>
 
-#include "kernel/raster/classic.h"
+#include "kernel/mappers/classic.h"
 #include "tests/unit/raster_helpers.h"
 
 namespace {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/raster/image.h"
+#include "kernel/scene/image.h"
 #include "tests/unit/texture_files.h"
 
 namespace {

@@ -8,10 +8,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "kernel/raster/frame.h"
-#include "kernel/raster/render.h"
-#include "qemu/measure.h"
-#include "qemu/trade.h"
+#include "kernel/scene/frame.h"
+#include "kernel/core/render.h"
+#include "qemu/accuracy/measure.h"
+#include "qemu/tools/trade.h"
 
 namespace {
 

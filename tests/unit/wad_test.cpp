@@ -7,9 +7,9 @@
 #include <functional>
 #include <iterator>
 
-#include "qemu/error.h"
-#include "qemu/session.h"
-#include "qemu/wad.h"
+#include "qemu/lib/error.h"
+#include "qemu/harness/session.h"
+#include "qemu/tools/wad.h"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/raster/world.h"
+#include "kernel/scene/world.h"
 #include "tests/unit/texture_files.h"
 
 namespace {

@@ -1,0 +1,23 @@
+// Drawing polygons: setup, the walker for the axis, the mapper per span, into a target.
+#pragma once
+
+#include <stdint.h>
+
+#include "kernel/core/mapper.h"
+#include "kernel/scene/scene.h"
+#include "kernel/core/setup.h"
+#include "kernel/core/surface.h"
+
+namespace raster {
+
+// Draws one convex polygon. Returns the setup status; nothing is drawn (and the polygon counts as
+// rejected) unless it is Ok, the mapper walks `axis`, accepts the texture and can draw into the
+// target (mapper_targets).
+SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
+                         Target& target, RenderStats* stats, Variant variant = Variant::Twin);
+
+// Draws every polygon of the scene in order; with a probe, times the phases (probe.h).
+RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
+                         Variant variant = Variant::Twin, Probe* probe = nullptr);
+
+}  // namespace raster

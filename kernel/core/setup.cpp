@@ -1,0 +1,190 @@
+// Polygon setup: orientation, repeated-vertex removal, range and convexity checks, edges, planes.
+#include "kernel/core/setup.h"
+
+namespace raster {
+
+namespace {
+
+bool finite(double x) { return x == x && x - x == 0.0; }
+
+bool in_range(const Vertex& v) {
+    constexpr int32_t LIMIT = MAX_COORD_PIXELS << SUBPIXEL_BITS;
+    if (v.x.raw > LIMIT || v.x.raw < -LIMIT || v.y.raw > LIMIT || v.y.raw < -LIMIT) return false;
+    if (!finite(v.w) || !finite(v.u) || !finite(v.v)) return false;
+    if (v.w < MIN_W || v.w > MAX_W) return false;
+    return v.u <= MAX_UV && v.u >= -MAX_UV && v.v <= MAX_UV && v.v >= -MAX_UV;
+}
+
+int64_t edge_function(const Edge& e, int64_t x, int64_t y) { return e.dx * (y - e.py) - e.dy * (x - e.px); }
+
+// Twice the signed area of triangle (a, b, c): the cross product (b - a) x (c - a).
+int64_t fan_area2(const Vertex& a, const Vertex& b, const Vertex& c) {
+    int64_t xb = int64_t(b.x.raw) - a.x.raw, yb = int64_t(b.y.raw) - a.y.raw;
+    int64_t xc = int64_t(c.x.raw) - a.x.raw, yc = int64_t(c.y.raw) - a.y.raw;
+    return xb * yc - xc * yb;
+}
+
+// How often the outline's direction along y (or x) reverses, going once round; edges along the
+// other axis do not count.
+int direction_changes(const PolygonSetup& s, bool along_y) {
+    int changes = 0, last = 0;
+    for (int pass = 0; pass < 2; ++pass)
+        for (int i = 0; i < s.edge_count; ++i) {
+            int64_t d = along_y ? s.edges[i].dy : s.edges[i].dx;
+            int sign = d > 0 ? 1 : d < 0 ? -1 : 0;
+            if (sign == 0) continue;
+            if (pass == 1 && last != 0 && sign != last) ++changes;
+            last = sign;
+        }
+    return changes;
+}
+
+// The plane through three (X, Y, value) points, X and Y relative to the first; d = Xb*Yc - Xc*Yb != 0.
+Plane plane_through(double ra, double rb, double rc, double xb, double yb, double xc, double yc, double d) {
+    Plane p;
+    p.a0 = ra;
+    p.gx = ((rb - ra) * yc - (rc - ra) * yb) / d;
+    p.gy = ((rc - ra) * xb - (rb - ra) * xc) / d;
+    return p;
+}
+
+}  // namespace
+
+const char* setup_status_name(SetupStatus s) {
+    switch (s) {
+    case SetupStatus::Ok: return "ok";
+    case SetupStatus::Degenerate: return "degenerate";
+    case SetupStatus::NotConvex: return "not convex";
+    case SetupStatus::TooManyVertices: return "too many vertices";
+    case SetupStatus::OutOfRange: return "out of range";
+    case SetupStatus::OutsideTexture: return "outside the texture";
+    case SetupStatus::Unsupported: return "unsupported by the mapper";
+    }
+    return "?";
+}
+
+SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupPlanes planes) {
+    if (count > MAX_POLYGON_VERTICES) return SetupStatus::TooManyVertices;
+    if (count < 3) return SetupStatus::Degenerate;
+    for (int i = 0; i < count; ++i)
+        if (!in_range(in[i])) return SetupStatus::OutOfRange;
+
+    // Drop vertices that repeat their predecessor (a zero-length edge would exclude everything).
+    const Vertex* v[MAX_POLYGON_VERTICES];
+    int n = 0;
+    for (int i = 0; i < count; ++i)
+        if (n == 0 || in[i].x.raw != v[n - 1]->x.raw || in[i].y.raw != v[n - 1]->y.raw) v[n++] = &in[i];
+    while (n > 1 && v[n - 1]->x.raw == v[0]->x.raw && v[n - 1]->y.raw == v[0]->y.raw) --n;
+    if (n < 3) return SetupStatus::Degenerate;
+
+    // Twice the signed area, as the fan of triangles (0, k, k+1); positive is clockwise on the
+    // y-down screen.
+    int64_t area2 = 0;
+    for (int k = 1; k + 1 < n; ++k) area2 += fan_area2(*v[0], *v[k], *v[k + 1]);
+    if (area2 == 0) {
+        // all on one line: degenerate; otherwise lobes of opposite winding (a bow tie): malformed
+        for (int i = 2; i < n; ++i) {
+            int64_t cross = (int64_t(v[1]->x.raw) - v[0]->x.raw) * (int64_t(v[i]->y.raw) - v[0]->y.raw) -
+                            (int64_t(v[1]->y.raw) - v[0]->y.raw) * (int64_t(v[i]->x.raw) - v[0]->x.raw);
+            if (cross != 0) return SetupStatus::NotConvex;
+        }
+        return SetupStatus::Degenerate;
+    }
+    if (area2 < 0) {
+        for (int i = 0, j = n - 1; i < j; ++i, --j) {
+            const Vertex* t = v[i];
+            v[i] = v[j];
+            v[j] = t;
+        }
+    }
+
+    PolygonSetup& s = *out;
+    s.edge_count = n;
+    for (int i = 0; i < n; ++i) {
+        const Vertex& a = *v[i];
+        const Vertex& b = *v[i + 1 < n ? i + 1 : 0];
+        Edge& e = s.edges[i];
+        e.px = a.x.raw;
+        e.py = a.y.raw;
+        e.dx = int64_t(b.x.raw) - a.x.raw;
+        e.dy = int64_t(b.y.raw) - a.y.raw;
+        // top edge: horizontal with the inside below (dx > 0); left edge: going up (dy < 0)
+        e.threshold = (e.dy < 0 || (e.dy == 0 && e.dx > 0)) ? 0 : 1;
+    }
+    if (n > 3) {  // (a triangle with positive area is convex and winds once)
+        // Convex: every vertex on the inner side of (or on) every edge. Exact; rejects stars too.
+        for (int i = 0; i < n; ++i)
+            for (int k = 0; k < n; ++k)
+                if (edge_function(s.edges[i], v[k]->x.raw, v[k]->y.raw) < 0) return SetupStatus::NotConvex;
+        // ... and winding once: going round, y (and x) turns back exactly twice. A convex outline
+        // traced twice passes the test above; the walkers rely on one chain of edges a side.
+        if (direction_changes(s, true) != 2 || direction_changes(s, false) != 2) return SetupStatus::NotConvex;
+    }
+
+    s.min_x = s.max_x = v[0]->x.raw;
+    s.min_y = s.max_y = v[0]->y.raw;
+    for (int i = 1; i < n; ++i) {
+        if (v[i]->x.raw < s.min_x) s.min_x = v[i]->x.raw;
+        if (v[i]->x.raw > s.max_x) s.max_x = v[i]->x.raw;
+        if (v[i]->y.raw < s.min_y) s.min_y = v[i]->y.raw;
+        if (v[i]->y.raw > s.max_y) s.max_y = v[i]->y.raw;
+    }
+    s.ref_x = v[0]->x.raw;
+    s.ref_y = v[0]->y.raw;
+    if (planes == PLANES_NONE) return SetupStatus::Ok;
+
+    // The planes come from the fan triangle (0, k, k+1) of largest area: the best-conditioned one.
+    int best = 1;
+    int64_t best_area = area2 < 0 ? -area2 : area2;  // a triangle's own
+    if (n > 3) {
+        best_area = -1;
+        for (int k = 1; k + 1 < n; ++k) {
+            int64_t a = fan_area2(*v[0], *v[k], *v[k + 1]);
+            if (a > best_area) {
+                best_area = a;
+                best = k;
+            }
+        }
+    }
+    const Vertex& va = *v[0];
+    const Vertex& vb = *v[best];
+    const Vertex& vc = *v[best + 1];
+    double xb = double(int64_t(vb.x.raw) - va.x.raw), yb = double(int64_t(vb.y.raw) - va.y.raw);
+    double xc = double(int64_t(vc.x.raw) - va.x.raw), yc = double(int64_t(vc.y.raw) - va.y.raw);
+    double d = double(best_area);
+    if (planes & PLANES_PERSPECTIVE) {
+        double qa = 1.0 / va.w, qb = 1.0 / vb.w, qc = 1.0 / vc.w;
+        s.q = plane_through(qa, qb, qc, xb, yb, xc, yc, d);
+        s.pu = plane_through(va.u / va.w, vb.u / vb.w, vc.u / vc.w, xb, yb, xc, yc, d);
+        s.pv = plane_through(va.v / va.w, vb.v / vb.w, vc.v / vc.w, xb, yb, xc, yc, d);
+    }
+    if (!(planes & PLANES_AFFINE)) return SetupStatus::Ok;
+    s.u = plane_through(va.u, vb.u, vc.u, xb, yb, xc, yc, d);
+    s.v = plane_through(va.v, vb.v, vc.v, xb, yb, xc, yc, d);
+    // the fixed-point planes: anchored at the pixel whose centre is nearest the reference vertex;
+    // the anchor value reduced modulo 65536 texels (what 16.16 holds), which changes no texel
+    int32_t x0 = int32_t(floor_div(s.ref_x, SUBPIXEL_ONE)), y0 = int32_t(floor_div(s.ref_y, SUBPIXEL_ONE));
+    double ax = centre_x(s, x0), ay = centre_y(s, y0);
+    const Plane* affine[2] = {&s.u, &s.v};
+    FixedPlane* fixed[2] = {&s.u_fx, &s.v_fx};
+    for (int k = 0; k < 2; ++k) {
+        double at = affine[k]->at(ax, ay);
+        at -= 65536.0 * double(floor_i64(at / 65536.0));
+        fixed[k]->x0 = x0;
+        fixed[k]->y0 = y0;
+        fixed[k]->at = int32_t(uint32_t(floor_i64(at * 65536.0 + 0.5)));
+        fixed[k]->dx = Fixed16_16::from_double(affine[k]->gx * double(SUBPIXEL_ONE)).raw;
+        fixed[k]->dy = Fixed16_16::from_double(affine[k]->gy * double(SUBPIXEL_ONE)).raw;
+    }
+    return SetupStatus::Ok;
+}
+
+bool covers(const PolygonSetup& s, int32_t x, int32_t y) {
+    int64_t px = int64_t(x) * SUBPIXEL_ONE + SUBPIXEL_HALF;
+    int64_t py = int64_t(y) * SUBPIXEL_ONE + SUBPIXEL_HALF;
+    for (int i = 0; i < s.edge_count; ++i)
+        if (edge_function(s.edges[i], px, py) < s.edges[i].threshold) return false;
+    return true;
+}
+
+}  // namespace raster

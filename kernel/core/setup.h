@@ -1,0 +1,125 @@
+// Polygon setup: snapped vertices, exact integer edge functions with the top-left rule, and the
+// attribute planes (u/w, v/w, 1/w, u, v) over the polygon. docs/accuracy.md has the maths.
+#pragma once
+
+#include <stdint.h>
+
+#include "kernel/core/fixed.h"
+
+namespace raster {
+
+// The subpixel grid: vertices snap to 1/256 pixel (Fixed24_8), as D3D's 8 fractional bits.
+constexpr int SUBPIXEL_BITS = 8;
+constexpr int64_t SUBPIXEL_ONE = 1 << SUBPIXEL_BITS;
+constexpr int64_t SUBPIXEL_HALF = SUBPIXEL_ONE / 2;
+// Vertex coordinates must lie within +-16384 pixels (a guard band far beyond the 320x240 screen):
+// then every edge-function product fits comfortably in 64 bits (|E| < 2^47).
+constexpr int32_t MAX_COORD_PIXELS = 16384;
+// Attribute limits: 0 < w, 2^-16 <= w <= 2^24, |u|, |v| <= 2^24 texels.
+constexpr double MIN_W = 1.0 / 65536.0;
+constexpr double MAX_W = 16777216.0;
+constexpr double MAX_UV = 16777216.0;
+constexpr int MAX_POLYGON_VERTICES = 16;
+
+// A vertex as the scene gives it, x and y already snapped to the subpixel grid.
+struct Vertex {
+    Fixed24_8 x, y;  // pixels, y down
+    double w;        // clip-space w: 1/w is interpolated linearly in screen space
+    double u, v;     // texels
+};
+
+// Half-open pixel rectangle [x0, x1) x [y0, y1).
+struct ClipRect {
+    int32_t x0, y0, x1, y1;
+};
+
+// Edge i runs from vertex i to vertex i+1 of the polygon in clockwise screen order (y down);
+// E(P) = dx * (P.y - py) - dy * (P.x - px) is positive inside. A pixel centre P is inside
+// when E(P) >= threshold for every edge: threshold 0 on top and left edges, 1 on the others.
+struct Edge {
+    int64_t px, py;  // start vertex, subpixels
+    int64_t dx, dy;  // direction, subpixels
+    int32_t threshold;
+};
+
+// An affine texture coordinate in 16.16 per whole pixel: at pixel (x, y) it is
+// at + (x - x0) * dx + (y - y0) * dy, in wrapping 32-bit arithmetic (exact modulo 65536 texels, so
+// exact for any texture size dividing that). (x0, y0) is the pixel whose centre is nearest the
+// reference vertex; `at` its value, rounded; the gradients rounded to nearest 2^-16 texel.
+struct FixedPlane {
+    int32_t x0, y0;
+    int32_t at, dx, dy;
+    int32_t value(int32_t x, int32_t y) const {
+        return int32_t(uint32_t(at) + uint32_t(x - x0) * uint32_t(dx) + uint32_t(y - y0) * uint32_t(dy));
+    }
+};
+
+// A linear function of the pixel centre: a(P) = (a0 + gy * Y) + gx * X, with X = P.x - ref_x and
+// Y = P.y - ref_y in subpixels. This order of operations is part of the definition: the reference
+// and the exact mapper evaluate exactly this, so they agree to the last bit.
+struct Plane {
+    double a0, gx, gy;
+    double at(double x, double y) const { return (a0 + gy * y) + gx * x; }
+};
+
+enum class SetupStatus : uint8_t {
+    Ok,
+    Degenerate,       // zero area (collinear or repeated vertices): nothing to draw
+    NotConvex,
+    TooManyVertices,
+    OutOfRange,       // a coordinate, w, u or v beyond the limits above, or not finite
+    OutsideTexture,   // a mapper that cannot wrap got texture coordinates beyond the texture
+    Unsupported,      // the mapper cannot take this texture, target or walker
+};
+
+const char* setup_status_name(SetupStatus s);
+
+struct PolygonSetup {
+    int32_t edge_count = 0;
+    Edge edges[MAX_POLYGON_VERTICES];
+    int64_t ref_x = 0, ref_y = 0;           // the plane's reference vertex, subpixels
+    int64_t min_x = 0, min_y = 0, max_x = 0, max_y = 0;  // bounding box of the vertices, subpixels
+    Plane q, pu, pv;                        // 1/w, u/w, v/w: perspective
+    Plane u, v;                             // u and v themselves: affine
+    FixedPlane u_fx, v_fx;                  // u and v in 16.16 per pixel (the fast affine mappers)
+};
+
+// Snaps a pixel coordinate to the subpixel grid: round to nearest, ties up.
+inline Fixed24_8 snap(double pixels) { return Fixed24_8::from_double(pixels); }
+
+// Which attribute planes setup_polygon computes; the others are left as they were (unspecified).
+// Coverage (edges, bounding box, reference vertex) is always there.
+enum SetupPlanes : uint8_t {
+    PLANES_NONE = 0,         // coverage only: a classic's own driver checking its input
+    PLANES_AFFINE = 1,       // u, v, u_fx, v_fx
+    PLANES_PERSPECTIVE = 2,  // q, pu, pv
+    PLANES_ALL = 3,
+};
+
+// Orients the polygon, drops repeated vertices, checks range and convexity, builds the edges and
+// the planes. Any input is safe: on anything but Ok, `out` must not be drawn.
+SetupStatus setup_polygon(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL);
+
+// Whether the pixel centre (x + 0.5, y + 0.5) is inside: the definition the walkers implement.
+bool covers(const PolygonSetup& s, int32_t x, int32_t y);
+
+// The pixel centre relative to the reference vertex, subpixels (exact in a double).
+inline double centre_x(const PolygonSetup& s, int32_t x) { return double(int64_t(x) * SUBPIXEL_ONE + SUBPIXEL_HALF - s.ref_x); }
+inline double centre_y(const PolygonSetup& s, int32_t y) { return double(int64_t(y) * SUBPIXEL_ONE + SUBPIXEL_HALF - s.ref_y); }
+
+// The exact texel at a pixel centre (X, Y relative to the reference vertex, subpixels): the
+// perspective-correct u = (u/w)/(1/w) and v = (v/w)/(1/w), floored. This is the reference's
+// definition; the `exact` mapper and its NASM twin compute exactly this. In the kernel the x87
+// runs with 53-bit precision (boot/entry.asm), so these double operations give the same bits as
+// the host's SSE2.
+inline void perspective_texel(const Plane& q, const Plane& pu, const Plane& pv, double x, double y, int32_t* tu, int32_t* tv) {
+    double qq = q.at(x, y);
+    *tu = floor_i32(pu.at(x, y) / qq);
+    *tv = floor_i32(pv.at(x, y) / qq);
+}
+
+inline void perspective_texel(const PolygonSetup& s, double x, double y, int32_t* tu, int32_t* tv) {
+    perspective_texel(s.q, s.pu, s.pv, x, y, tu, tv);
+}
+
+}  // namespace raster

@@ -1,0 +1,118 @@
+// Edge walkers: the spans (rows) or columns of a set-up polygon inside a clip rectangle, with
+// all-integer stepping. Both walkers cover exactly the pixels covers() accepts.
+#pragma once
+
+#include <stdint.h>
+
+#include "kernel/core/setup.h"
+
+namespace raster {
+
+enum class Axis : uint8_t { Rows, Columns };
+
+// Rows: pixels (x .. x+count-1, y). Columns: pixels (x, y .. y+count-1). count >= 1.
+struct Span {
+    int32_t x, y, count;
+};
+
+// One edge's bound on the minor coordinate of a line (its first or last inside pixel):
+// floor(m / d) for d > 0, where m grows by a constant each line, stepped exactly: quotient q,
+// remainder r < d, and the step's quotient and remainder. A walker's bound is live on the lines
+// whose centre lies within its edge's closed extent (first..last); there the bound lies within the
+// edge's own extent, so 32 bits hold it. The NASM run loop steps these in place (offsets.inc).
+struct EdgeBound {
+    int32_t first, last;
+    int32_t q, dq;
+    uint32_t r, dr, d;  // r < d, dr < d <= 2^31
+    void init(int64_t m, int64_t divisor, int64_t increment);
+    void step() {
+        q += dq;
+        r += dr;  // r < d and dr < d, so no wrap below 2^32
+        if (r >= d) {
+            r -= d;
+            ++q;
+        }
+    }
+    // A bound that stays at q on every line.
+    static EdgeBound constant(int32_t q) { return EdgeBound{0, 0, q, 0, 0, 0, 1}; }
+};
+
+class EdgeWalker {
+public:
+    EdgeWalker(const PolygonSetup& setup, Axis axis, const ClipRect& clip);
+
+    // The next non-empty span, in increasing row (or column) order; false when done. (Inline: it
+    // runs once a line, and the fast mappers' drivers want it in their loop.)
+    bool next(Span* out) {
+        while (line_ <= last_line_) {
+            const int32_t line = line_++;
+            int32_t lo = tightest<true>(&lower_cur_, line, minor_lo_);
+            int32_t hi = tightest<false>(&upper_cur_, line, minor_hi_);
+            if (lo > hi) continue;
+            if (axis_ == Axis::Rows) *out = Span{lo, line, hi - lo + 1};
+            else *out = Span{line, lo, hi - lo + 1};
+            return true;
+        }
+        return false;
+    }
+
+    // A run: the lines from the current one on where each side has exactly one live bound (no
+    // vertex on a line's centre in between), the clip not applied. Returns its length, with its
+    // first line and the two bounds, which the caller steps once a line and then skips the run; 0
+    // when the current line has two live bounds on a side (walk it with next()) or the walk is done.
+    int32_t run(int32_t* line, EdgeBound** lower, EdgeBound** upper) {
+        if (line_ > last_line_) return 0;
+        EdgeBound* lo = lower_cur_;
+        while (lo->last < line_) ++lo;
+        lower_cur_ = lo;
+        EdgeBound* hi = upper_cur_;
+        while (hi->last < line_) ++hi;
+        upper_cur_ = hi;
+        if (lo[1].first <= line_ || hi[1].first <= line_) return 0;
+        int32_t end = last_line_;
+        if (lo->last < end) end = lo->last;
+        if (hi->last < end) end = hi->last;
+        if (lo[1].first - 1 < end) end = lo[1].first - 1;  // (sentinels: first = INT32_MAX)
+        if (hi[1].first - 1 < end) end = hi[1].first - 1;
+        *line = line_;
+        *lower = lo;
+        *upper = hi;
+        return end - line_ + 1;
+    }
+    void skip(int32_t lines) { line_ += lines; }
+    // The clip rectangle across a line, inclusive.
+    int32_t minor_lo() const { return minor_lo_; }
+    int32_t minor_hi() const { return minor_hi_; }
+
+private:
+    using Bound = EdgeBound;
+    // Sorts by first line, then seals the list with a sentinel that is never live and never binds.
+    static void seal(Bound* list, int32_t count, int32_t never);
+    // The tightest of `bound` and the chain's bounds live on `line`; steps those to the next line.
+    // Every walked line's centre lies within some edge of each chain, so the cursor stops at a live
+    // bound, never at the sentinel; a second one is live only where a vertex lies on the centre.
+    template <bool LOWER>
+    static int32_t tightest(Bound** cursor, int32_t line, int32_t bound) {
+        Bound* b = *cursor;
+        while (b->last < line) ++b;
+        *cursor = b;
+        for (; b->first <= line; ++b) {
+            if (LOWER ? b->q > bound : b->q < bound) bound = b->q;
+            b->step();
+        }
+        return bound;
+    }
+
+    Axis axis_;
+    int32_t line_, last_line_;     // current and last major coordinate (row y, or column x)
+    int32_t minor_lo_, minor_hi_;  // the clip rectangle across a line, inclusive
+    // Each side's bounds form one chain (the polygon is convex and winds once): by first line,
+    // the spent ones behind the cursor, at most two live on a line (where a vertex lies exactly on
+    // the line's centre) and those two next to each other.
+    Bound lower_[MAX_POLYGON_VERTICES + 1];  // first inside pixel: lower bounds on the line
+    Bound upper_[MAX_POLYGON_VERTICES + 1];  // last inside pixel: upper bounds
+    Bound* lower_cur_ = lower_;
+    Bound* upper_cur_ = upper_;
+};
+
+}  // namespace raster

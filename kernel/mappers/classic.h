@@ -1,0 +1,53 @@
+// What the classic mappers share: the fixed-point arithmetic of their time, and the conversion of a
+// scene polygon to their inputs (whole-pixel vertices, clockwise on screen, texture coordinates
+// placed inside the texture, since their loops cannot wrap).
+#pragma once
+
+#include <stdint.h>
+
+#include "kernel/core/setup.h"
+#include "kernel/core/texture.h"
+
+namespace raster::classic {
+
+// X-Sharp's FIXED.ASM: FixedDiv truncates toward zero ((a << 16) / b in 64 bits), FixedMul rounds
+// (adds 0x8000 before taking the middle 32 bits). FixedDiv saturates where the original would have
+// raised a divide error (a quotient beyond 16.16); b must not be 0.
+int32_t fixed_div(int32_t a, int32_t b);
+int32_t fixed_mul(int32_t a, int32_t b);
+
+// A vertex as the classics take it: screen coordinates in whole pixels (their vertices had no
+// fractional bits), texture coordinates in 16.16.
+struct Vertex16 {
+    int32_t x, y;
+    int32_t u, v;  // 16.16, in the mapper's texel space (see texel_offset below)
+    double w;
+};
+
+constexpr int MAX_VERTICES = MAX_POLYGON_VERTICES;
+// Their 16.16 arithmetic holds line lengths below 32768 pixels: vertices must lie within +-8192.
+constexpr int32_t MAX_COORD = 8192;
+
+// The whole-period shifts (repeat) that bring a polygon's smallest texture coordinates into
+// [0, size); TooManyVertices beyond MAX_VERTICES, Degenerate below 3, OutsideTexture when the
+// shifted coordinates still leave [0, width] x [0, height], OutOfRange for coordinates beyond
+// MAX_COORD or non-finite texture coordinates. Every classic's driver starts with it.
+SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double* shift_u, double* shift_v);
+
+// Converts a polygon: x and y rounded to the nearest pixel corner (ties up); clockwise screen order
+// (the classics relied on back-face culling for it; here the winding is fixed up instead); texture
+// coordinates shifted by whole periods so the smallest lies in [0, size) (repeat) and then required
+// to lie within [0, width] x [0, height] at every vertex, with texel_offset added (X-Sharp and
+// Hecker put texel centres at integers: -0.5; Quake and fatmap at half-integers: 0).
+// Returns Ok, Degenerate (zero area after rounding: nothing to draw), TooManyVertices, OutOfRange
+// (beyond MAX_COORD, or u, v not finite) or OutsideTexture; `count` receives the vertex count.
+SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_offset, Vertex16* out, int* count);
+
+// Whether both vertex chains from the first vertex of least y (x for columns) to the first of
+// greatest y (x) run monotonically: the classics' "every horizontal (vertical) line crosses exactly
+// two active edges". A polygon that fails would send their edge walkers past its ends, reading
+// far outside the texture; the drivers refuse it (NotConvex). Convex polygons pass, also after
+// their vertices are rounded to whole pixels.
+bool monotone(const Vertex16* v, int n, bool columns);
+
+}  // namespace raster::classic

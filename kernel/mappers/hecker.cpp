@@ -1,0 +1,292 @@
+// hecker-steptable: Chris Hecker's subdividing perspective mapper ("Perspective Texture Mapping",
+// Game Developer 1995-96, parts III-V; his SUBAFXFL.CPP setup and part V's listing 2 inner loop),
+// reproduced with its rules and limits (docs/mappers.md):
+//   28.4 vertices with pixel centres at integer coordinates; top-left fill by ceil; edges stepped
+//   by an exact floor-div/mod DDA and prestepped once; gradients of 1/z, u/z, v/z constant per
+//   triangle; spans subdivided every 8 pixels, u and v exact at each subdivision point and affine
+//   (16.16, start truncated, delta truncated after dividing by 8) between; the last piece ends on
+//   the last pixel; texels picked with the 0x8000 / 0x7FFF rounding modifier chosen per triangle
+//   from the sign of du/dx (GRADIENT.TXT); the inner loop steps one texel pointer with the sbb/adc
+//   two-entry step table, so any texture width works, and nothing wraps.
+// Deviations, forced by this lab: doubles where Hecker used floats (the kernel's x87 and the
+// host's SSE2 must agree bit for bit), clipping (his demo drew unclipped), polygons drawn as fans.
+#include "kernel/mappers/hecker.h"
+
+#include "kernel/mappers/classic.h"
+
+namespace raster::hecker {
+
+namespace {
+
+constexpr int AFFINE_LENGTH = 8;
+constexpr int32_t HALF = 0x8000;
+
+struct Vertex28 {
+    int32_t x, y;       // 28.4, pixel centres at integers
+    double one_over_z;  // 1/w
+    double u_over_z, v_over_z;
+};
+
+struct Gradients {
+    double one_over_z[3], u_over_z[3], v_over_z[3];
+    double d_one_over_z_dx, d_one_over_z_dy, d_u_over_z_dx, d_u_over_z_dy, d_v_over_z_dx, d_v_over_z_dy;
+    int32_t du_dx_modifier, dv_dx_modifier;
+};
+
+// ceil(v / 16) for a 28.4 value (Hecker's Ceil28_4)
+int64_t ceil28_4(int64_t v) { return floor_div(v - 1 + 16, 16); }
+
+// Hecker's FloorDivMod: the mathematical floor and a non-negative remainder.
+void floor_div_mod(int64_t numerator, int64_t denominator, int64_t* floor, int64_t* mod) {
+    *floor = floor_div(numerator, denominator);
+    *mod = numerator - *floor * denominator;
+}
+
+// C's float-to-int cast in 16.16: truncation toward zero, saturated where the cast would be undefined.
+int32_t to_fixed16_16(double x) {
+    double t = x * 65536.0;
+    if (!(t == t)) return 0;
+    if (t >= 2147483647.0) return INT32_MAX;
+    if (t <= -2147483648.0) return INT32_MIN;
+    return int32_t(t);
+}
+
+// Returns false for a triangle whose 28.4 cross product is zero (Hecker would divide by zero).
+bool make_gradients(const Vertex28* v, Gradients* g) {
+    for (int i = 0; i < 3; ++i) {
+        g->one_over_z[i] = v[i].one_over_z;
+        g->u_over_z[i] = v[i].u_over_z;
+        g->v_over_z[i] = v[i].v_over_z;
+    }
+    // Fixed28_4Mul: (a * b) / 16, C division
+    int64_t x1y0 = (int64_t(v[1].x - v[2].x) * (v[0].y - v[2].y)) / 16;
+    int64_t x0y1 = (int64_t(v[0].x - v[2].x) * (v[1].y - v[2].y)) / 16;
+    if (x1y0 - x0y1 == 0) return false;
+    double one_over_dx = 1.0 / (double(x1y0 - x0y1) / 16.0);
+    double one_over_dy = -one_over_dx;
+    double y0y2 = double(v[0].y - v[2].y) / 16.0, y1y2 = double(v[1].y - v[2].y) / 16.0;
+    double x0x2 = double(v[0].x - v[2].x) / 16.0, x1x2 = double(v[1].x - v[2].x) / 16.0;
+    auto ddx = [&](const double* c) { return one_over_dx * (((c[1] - c[2]) * y0y2) - ((c[0] - c[2]) * y1y2)); };
+    auto ddy = [&](const double* c) { return one_over_dy * (((c[1] - c[2]) * x0x2) - ((c[0] - c[2]) * x1x2)); };
+    g->d_one_over_z_dx = ddx(g->one_over_z);
+    g->d_one_over_z_dy = ddy(g->one_over_z);
+    g->d_u_over_z_dx = ddx(g->u_over_z);
+    g->d_u_over_z_dy = ddy(g->u_over_z);
+    g->d_v_over_z_dx = ddx(g->v_over_z);
+    g->d_v_over_z_dy = ddy(g->v_over_z);
+    // GRADIENT.TXT: the sign of du/dx's numerator picks floor(u + 1/2) or ceil(u - 1/2)
+    auto modifier = [&](double d_dx, double d_dy, const double* c) {
+        double x_indicator = d_dx * g->one_over_z[0] - c[0] * g->d_one_over_z_dx;
+        if (x_indicator > 0) return HALF;
+        if (x_indicator < 0) return HALF - 1;
+        double y_indicator = d_dy * g->one_over_z[0] - c[0] * g->d_one_over_z_dy;
+        return y_indicator >= 0 ? HALF : HALF - 1;
+    };
+    g->du_dx_modifier = modifier(g->d_u_over_z_dx, g->d_u_over_z_dy, g->u_over_z);
+    g->dv_dx_modifier = modifier(g->d_v_over_z_dx, g->d_v_over_z_dy, g->v_over_z);
+    return true;
+}
+
+// An edge from top to bottom: x by the floor-div/mod DDA, the interpolants prestepped to the
+// first pixel centre and stepped along with it (with the extra x-gradient on a DDA carry).
+struct Edge {
+    int64_t x, x_step, numerator, denominator, error_term;
+    int64_t y, height;
+    double one_over_z, one_over_z_step, one_over_z_extra;
+    double u_over_z, u_over_z_step, u_over_z_extra;
+    double v_over_z, v_over_z_step, v_over_z_extra;
+
+    Edge(const Gradients& g, const Vertex28* v, int top, int bottom) {
+        y = ceil28_4(v[top].y);
+        int64_t y_end = ceil28_4(v[bottom].y);
+        height = y_end - y;
+        x = 0, x_step = 0, numerator = 0, denominator = 1, error_term = 0;
+        one_over_z = u_over_z = v_over_z = 0;
+        one_over_z_step = u_over_z_step = v_over_z_step = 0;
+        one_over_z_extra = u_over_z_extra = v_over_z_extra = 0;
+        if (!height) return;
+        int64_t dn = int64_t(v[bottom].y) - v[top].y, dm = int64_t(v[bottom].x) - v[top].x;
+        int64_t initial = dm * 16 * y - dm * v[top].y + dn * v[top].x - 1 + dn * 16;
+        floor_div_mod(initial, dn * 16, &x, &error_term);
+        floor_div_mod(dm * 16, dn * 16, &x_step, &numerator);
+        denominator = dn * 16;
+        double y_prestep = double(y * 16 - v[top].y) / 16.0;
+        double x_prestep = double(x * 16 - v[top].x) / 16.0;
+        one_over_z = g.one_over_z[top] + y_prestep * g.d_one_over_z_dy + x_prestep * g.d_one_over_z_dx;
+        one_over_z_step = double(x_step) * g.d_one_over_z_dx + g.d_one_over_z_dy;
+        one_over_z_extra = g.d_one_over_z_dx;
+        u_over_z = g.u_over_z[top] + y_prestep * g.d_u_over_z_dy + x_prestep * g.d_u_over_z_dx;
+        u_over_z_step = double(x_step) * g.d_u_over_z_dx + g.d_u_over_z_dy;
+        u_over_z_extra = g.d_u_over_z_dx;
+        v_over_z = g.v_over_z[top] + y_prestep * g.d_v_over_z_dy + x_prestep * g.d_v_over_z_dx;
+        v_over_z_step = double(x_step) * g.d_v_over_z_dx + g.d_v_over_z_dy;
+        v_over_z_extra = g.d_v_over_z_dx;
+    }
+
+    void step() {
+        x += x_step;
+        ++y;
+        --height;
+        one_over_z += one_over_z_step;
+        u_over_z += u_over_z_step;
+        v_over_z += v_over_z_step;
+        error_term += numerator;
+        if (error_term >= denominator) {
+            ++x;
+            error_term -= denominator;
+            one_over_z += one_over_z_extra;
+            u_over_z += u_over_z_extra;
+            v_over_z += v_over_z_extra;
+        }
+    }
+};
+
+// Draws pixels [x0, x0 + n) of the row with u, v starting at the 16.16 values u and v (pixel x0)
+// and stepping du, dv; only the part inside [clip_lo, clip_hi) is drawn, the state advanced past
+// the rest exactly as stepping would.
+void affine_piece(const DrawContext& c, uint8_t* row, int64_t x0, int64_t n, int32_t u, int32_t v, int32_t du, int32_t dv) {
+    int64_t lo = x0 < c.target.clip.x0 ? c.target.clip.x0 : x0;
+    int64_t hi = x0 + n > c.target.clip.x1 ? c.target.clip.x1 : x0 + n;
+    if (lo >= hi) return;
+    uint32_t skip = uint32_t(lo - x0);
+    u = int32_t(uint32_t(u) + skip * uint32_t(du));
+    v = int32_t(uint32_t(v) + skip * uint32_t(dv));
+    const int32_t pitch = bordered_pitch(c.tex);
+    HeckerArgs a;
+    a.dst = row + lo;
+    a.count = int32_t(hi - lo);
+    a.texel = bordered_origin(c.tex) + (u >> 16) + (v >> 16) * pitch;
+    a.u_frac = uint32_t(u) << 16;
+    a.v_frac = uint32_t(v) << 16;
+    a.du_frac = uint32_t(du) << 16;
+    a.dv_frac = uint32_t(dv) << 16;
+    a.step_no_carry = (du >> 16) + (dv >> 16) * pitch;
+    a.step_carry = a.step_no_carry + pitch;
+    c.loop(&a);
+    ++c.stats->spans;
+    c.stats->pixels += uint32_t(a.count);
+}
+
+// SUBAFXFL's DrawScanLine: subdivide every 8 pixels; the last piece aims at the last pixel.
+void draw_scan_line(const DrawContext& c, const Gradients& g, const Edge& left, const Edge& right) {
+    int64_t x_start = left.x, width = right.x - x_start;
+    if (width <= 0) return;
+    const Target& t = c.target;
+    uint8_t* row = t.base + left.y * t.pitch;
+    double one_over_z_left = left.one_over_z, u_over_z_left = left.u_over_z, v_over_z_left = left.v_over_z;
+    double d_one_over_z_aff = g.d_one_over_z_dx * AFFINE_LENGTH;
+    double d_u_over_z_aff = g.d_u_over_z_dx * AFFINE_LENGTH, d_v_over_z_aff = g.d_v_over_z_dx * AFFINE_LENGTH;
+    double one_over_z_right = one_over_z_left + d_one_over_z_aff;
+    double u_over_z_right = u_over_z_left + d_u_over_z_aff, v_over_z_right = v_over_z_left + d_v_over_z_aff;
+    double z_left = 1 / one_over_z_left, u_left = z_left * u_over_z_left, v_left = z_left * v_over_z_left;
+    int64_t subdivisions = width / AFFINE_LENGTH, width_mod_length = width % AFFINE_LENGTH;
+    if (!width_mod_length) {
+        --subdivisions;
+        width_mod_length = AFFINE_LENGTH;
+    }
+    int64_t x = x_start;
+    while (subdivisions-- > 0) {
+        double z_right = 1 / one_over_z_right;
+        double u_right = z_right * u_over_z_right, v_right = z_right * v_over_z_right;
+        int32_t u = to_fixed16_16(u_left) + g.du_dx_modifier, v = to_fixed16_16(v_left) + g.dv_dx_modifier;
+        int32_t du = to_fixed16_16(u_right - u_left) / AFFINE_LENGTH, dv = to_fixed16_16(v_right - v_left) / AFFINE_LENGTH;
+        affine_piece(c, row, x, AFFINE_LENGTH, u, v, du, dv);
+        x += AFFINE_LENGTH;
+        u_left = u_right;
+        v_left = v_right;
+        one_over_z_right += d_one_over_z_aff;
+        u_over_z_right += d_u_over_z_aff;
+        v_over_z_right += d_v_over_z_aff;
+    }
+    // the last piece: from the current left values to the last pixel of the span
+    double z_right = 1 / (right.one_over_z - g.d_one_over_z_dx);
+    double u_right = z_right * (right.u_over_z - g.d_u_over_z_dx), v_right = z_right * (right.v_over_z - g.d_v_over_z_dx);
+    int32_t u = to_fixed16_16(u_left) + g.du_dx_modifier, v = to_fixed16_16(v_left) + g.dv_dx_modifier;
+    int32_t du = 0, dv = 0;  // a 1-pixel piece never steps (Hecker left them unset)
+    if (width_mod_length > 1) {
+        du = to_fixed16_16(u_right - u_left) / int32_t(width_mod_length - 1);
+        dv = to_fixed16_16(v_right - v_left) / int32_t(width_mod_length - 1);
+    }
+    affine_piece(c, row, x, width_mod_length, u, v, du, dv);
+}
+
+void draw_triangle(const DrawContext& c, const Vertex28* v) {
+    Gradients g;
+    if (!make_gradients(v, &g)) return;
+    // top, middle, bottom by y; the middle vertex is on the left when it lies left of top-bottom
+    int top = 0, middle = 1, bottom = 2;
+    if (v[middle].y < v[top].y) { int t = top; top = middle; middle = t; }
+    if (v[bottom].y < v[middle].y) { int t = middle; middle = bottom; bottom = t; }
+    if (v[middle].y < v[top].y) { int t = top; top = middle; middle = t; }
+    int64_t side = int64_t(v[bottom].x - v[top].x) * (v[middle].y - v[top].y) - int64_t(v[bottom].y - v[top].y) * (v[middle].x - v[top].x);
+    bool middle_is_left = side > 0;
+    Edge top_to_bottom(g, v, top, bottom), top_to_middle(g, v, top, middle), middle_to_bottom(g, v, middle, bottom);
+    setup_done(c);
+    const ClipRect& clip = c.target.clip;
+    // the upper half between top-middle and top-bottom, then the lower half (Hecker's two loops)
+    auto scan = [&](Edge& short_edge) {
+        Edge* left = middle_is_left ? &short_edge : &top_to_bottom;
+        Edge* right = middle_is_left ? &top_to_bottom : &short_edge;
+        for (int64_t h = short_edge.height; h-- > 0;) {
+            if (left->y >= clip.y0 && left->y < clip.y1) {
+                inner_begins(c);  // the span routine (its divides and pieces) is the inner loop
+                draw_scan_line(c, g, *left, *right);
+                inner_ends(c);
+            }
+            short_edge.step();
+            top_to_bottom.step();
+        }
+    };
+    scan(top_to_middle);
+    scan(middle_to_bottom);
+}
+
+}  // namespace
+
+SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
+    double shift_u, shift_v;
+    SetupStatus status = classic::texture_shift(vertices, count, c.tex, &shift_u, &shift_v);
+    if (status != SetupStatus::Ok) return status;
+    // A convex polygon must really be one: Hecker drew triangles, here its fan.
+    PolygonSetup check;
+    status = setup_polygon(vertices, count, &check, PLANES_NONE);
+    if (status != SetupStatus::Ok) return status;
+    Vertex28 v[classic::MAX_VERTICES];
+    for (int i = 0; i < count; ++i) {
+        const Vertex& in = vertices[i];
+        // 28.4 with pixel centres at integers: (x - 1/2) * 16, truncated as FloatToFixed28_4 did
+        v[i].x = (in.x.raw - int32_t(SUBPIXEL_HALF)) / 16;
+        v[i].y = (in.y.raw - int32_t(SUBPIXEL_HALF)) / 16;
+        v[i].one_over_z = 1.0 / in.w;
+        v[i].u_over_z = (in.u + shift_u - 0.5) / in.w;  // texel centres at integers
+        v[i].v_over_z = (in.v + shift_v - 0.5) / in.w;
+    }
+    for (int k = 1; k + 1 < count; ++k) {
+        Vertex28 tri[3] = {v[0], v[k], v[k + 1]};
+        draw_triangle(c, tri);
+    }
+    return SetupStatus::Ok;
+}
+
+}  // namespace raster::hecker
+
+namespace raster {
+
+void hecker_loop(const void* raw) {
+    const auto& a = *static_cast<const HeckerArgs*>(raw);
+    uint8_t* dst = a.dst;
+    const uint8_t* texel = a.texel;
+    uint32_t u = a.u_frac, v = a.v_frac;
+    for (int32_t n = 0; n < a.count; ++n) {
+        *dst++ = *texel;
+        uint32_t v_next = v + a.dv_frac;
+        bool v_carry = v_next < v;  // add; sbb ebp, ebp
+        v = v_next;
+        uint32_t u_next = u + a.du_frac;
+        int32_t u_carry = u_next < u;
+        u = u_next;
+        texel += (v_carry ? a.step_carry : a.step_no_carry) + u_carry;  // adc esi, [table + 4*ebp]
+    }
+}
+
+}  // namespace raster

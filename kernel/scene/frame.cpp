@@ -1,0 +1,267 @@
+// From a 3D scene to a frame of screen-space polygons, and drawing them.
+#include "kernel/scene/frame.h"
+
+namespace raster {
+
+namespace {
+
+// The path's point at `time`: keys loop over the last key's time; linear between keys.
+PathKey on_path(const PathKey* keys, int32_t count, double time) {
+    if (count == 1) return keys[0];
+    const double period = keys[count - 1].time;
+    if (period > 0) time -= period * double(floor_i64(time / period));
+    if (time <= keys[0].time) return keys[0];
+    for (int32_t i = 1; i < count; ++i)
+        if (time <= keys[i].time) {
+            double t = (time - keys[i - 1].time) / (keys[i].time - keys[i - 1].time);
+            return PathKey{time, lerp(keys[i - 1].position, keys[i].position, t), lerp(keys[i - 1].target, keys[i].target, t)};
+        }
+    return keys[count - 1];
+}
+
+// Twice the signed area of a face in clip space, as seen from the eye: the sum over its fan of
+// det[A, B, C] with rows (x, y, w). Positive: the face's front (counter-clockwise in a right-handed
+// world) is toward the eye, for any w, so faces reaching behind the eye are culled correctly too.
+double facing(const ClipVertex* c, int n) {
+    double sum = 0;
+    for (int k = 1; k + 1 < n; ++k) {
+        const ClipVertex &a = c[0], &b = c[k], &d = c[k + 1];
+        sum += (a.x * (b.y * d.w - b.w * d.y) - a.y * (b.x * d.w - b.w * d.x)) + a.w * (b.x * d.y - b.y * d.x);
+    }
+    return sum;
+}
+
+// Signed distance to clip plane `plane` (inside: >= 0).
+double distance(const ClipVertex& p, int plane, double near, double far) {
+    switch (plane) {
+    case 0: return p.w - near;
+    case 1: return far - p.w;
+    case 2: return GUARD_BAND * p.w + p.x;
+    case 3: return GUARD_BAND * p.w - p.x;
+    case 4: return GUARD_BAND * p.w + p.y;
+    default: return GUARD_BAND * p.w - p.y;
+    }
+}
+
+ClipVertex between(const ClipVertex& a, const ClipVertex& b, double t) {
+    return ClipVertex{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.w + t * (b.w - a.w), a.u + t * (b.u - a.u), a.v + t * (b.v - a.v)};
+}
+
+// Far before near; equal depths by object, then face: a total order, the same everywhere.
+bool before(const FrameScratch::Entry& a, const FrameScratch::Entry& b) {
+    if (a.depth != b.depth) return a.depth > b.depth;
+    if (a.object != b.object) return a.object < b.object;
+    return a.face < b.face;
+}
+
+// Bottom-up merge sort of entries[0..n) (through `sorted`); the result in entries.
+void sort_entries(FrameScratch::Entry* entries, FrameScratch::Entry* tmp, int32_t n) {
+    FrameScratch::Entry *from = entries, *to = tmp;
+    for (int32_t width = 1; width < n; width *= 2) {
+        for (int32_t lo = 0; lo < n; lo += 2 * width) {
+            int32_t mid = lo + width < n ? lo + width : n, hi = lo + 2 * width < n ? lo + 2 * width : n;
+            int32_t i = lo, j = mid, k = lo;
+            while (i < mid && j < hi) to[k++] = before(from[j], from[i]) ? from[j++] : from[i++];
+            while (i < mid) to[k++] = from[i++];
+            while (j < hi) to[k++] = from[j++];
+        }
+        FrameScratch::Entry* t = from;
+        from = to, to = t;
+    }
+    if (from != entries)
+        for (int32_t i = 0; i < n; ++i) entries[i] = from[i];
+}
+
+}  // namespace
+
+View View::of(const Camera& camera, double time) {
+    View v;
+    Vec3 target = camera.target;
+    v.eye = camera.position;
+    if (camera.key_count > 0) {
+        PathKey k = on_path(camera.keys, camera.key_count, time);
+        v.eye = k.position, target = k.target;
+    }
+    v.forward = normalize(target - v.eye);
+    v.side = normalize(cross(v.forward, camera.up));
+    v.up = cross(v.side, v.forward);
+    double s, c;
+    sin_cos_degrees(camera.fov_degrees / 2, &s, &c);
+    v.focal_y = c / s;  // 1 / tan(fov / 2)
+    v.focal_x = v.focal_y / SCREEN_ASPECT;
+    return v;
+}
+
+ClipVertex View::clip(Vec3 p) const {
+    Vec3 d = p - eye;
+    return ClipVertex{focal_x * dot(side, d), focal_y * dot(up, d), dot(forward, d), 0, 0};
+}
+
+Placement Placement::of(const Object& o, double time) {
+    Placement p;
+    Rotation fixed = Rotation::about(o.rotate_axis, o.rotate_degrees);
+    p.rotation = o.spin_degrees_per_second != 0 ? Rotation::about(o.spin_axis, o.spin_degrees_per_second * time).after(fixed) : fixed;
+    p.scale = o.scale;
+    p.position = o.key_count > 0 ? on_path(o.keys, o.key_count, time).position : o.position;
+    return p;
+}
+
+int clip_polygon(const ClipVertex* in, int count, double near, double far, ClipVertex* out) {
+    ClipVertex a[MAX_POLYGON_VERTICES + 6], b[MAX_POLYGON_VERTICES + 6];
+    const ClipVertex* from = in;
+    ClipVertex* to = a;
+    int n = count;
+    for (int plane = 0; plane < 6 && n > 0; ++plane) {
+        int m = 0;
+        for (int i = 0; i < n; ++i) {
+            const ClipVertex &p = from[i], &q = from[i + 1 < n ? i + 1 : 0];
+            double dp = distance(p, plane, near, far), dq = distance(q, plane, near, far);
+            if (dp >= 0) to[m++] = p;
+            if ((dp >= 0) != (dq >= 0)) to[m++] = between(p, q, dp / (dp - dq));
+        }
+        n = m;
+        from = to;
+        to = to == a ? b : a;
+    }
+    for (int i = 0; i < n; ++i) {
+        out[i] = from[i];
+        // interpolation may land a hair outside [near, far]: the setup's w limits must hold
+        if (out[i].w < near) out[i].w = near;
+        if (out[i].w > far) out[i].w = far;
+    }
+    return n;
+}
+
+void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScratch* scratch) {
+    Frame& f = *out;
+    f.number = frame_number;
+    f.polygon_count = f.vertex_count = 0;
+    f.stats = FrameStats{};
+    const double time = frame_time(frame_number);
+    const View view = View::of(world.camera, time);
+    const double near = world.camera.near, far = world.camera.far;
+
+    // every object's positions in clip space; every face that might show, with its depth
+    int32_t first_position[MAX_WORLD_OBJECTS];
+    int32_t used = 0, entries = 0;
+    for (int32_t o = 0; o < world.object_count; ++o) {
+        const Object& object = world.objects[o];
+        const Mesh& mesh = world.meshes[object.mesh];
+        f.stats.faces += uint32_t(mesh.face_count);
+        if (used + mesh.position_count > MAX_FRAME_POSITIONS) {
+            f.stats.overflow += uint32_t(mesh.face_count);
+            first_position[o] = -1;
+            continue;
+        }
+        first_position[o] = used;
+        const Placement place = Placement::of(object, time);
+        for (int32_t i = 0; i < mesh.position_count; ++i) {
+            const ClipVertex p = view.clip(place.apply(world.positions[mesh.first_position + i]));
+            uint8_t code = 0;
+            for (int plane = 0; plane < 6; ++plane) code |= uint8_t((distance(p, plane, near, far) < 0) << plane);
+            scratch->positions[used + i] = p;
+            scratch->outcodes[used + i] = code;
+        }
+        used += mesh.position_count;
+        for (int32_t k = 0; k < mesh.face_count; ++k) {
+            const Face& face = world.faces[mesh.first_face + k];
+            ClipVertex c[MAX_FACE_CORNERS];
+            uint8_t all = 0x3F, any = 0;  // planes every corner is outside; planes some corner is
+            double depth = 0;
+            for (int32_t i = 0; i < face.count; ++i) {
+                int32_t at = first_position[o] + world.corners[face.first_corner + i].position - mesh.first_position;
+                c[i] = scratch->positions[at];
+                depth += c[i].w;
+                all &= scratch->outcodes[at];
+                any |= scratch->outcodes[at];
+            }
+            if (object.cull == Cull::Back && !(facing(c, face.count) > 0)) {
+                ++f.stats.culled;
+                continue;
+            }
+            if (all) {
+                ++f.stats.outside;
+                continue;
+            }
+            if (entries == MAX_FRAME_POLYGONS) {
+                ++f.stats.overflow;
+                continue;
+            }
+            scratch->entries[entries++] = FrameScratch::Entry{depth / face.count, o, k, any != 0};
+        }
+    }
+    sort_entries(scratch->entries, scratch->sorted, entries);
+
+    for (int32_t e = 0; e < entries; ++e) {
+        const FrameScratch::Entry& entry = scratch->entries[e];
+        const Object& object = world.objects[entry.object];
+        const Mesh& mesh = world.meshes[object.mesh];
+        const WorldTexture& texture = world.textures[object.texture];
+        const Face& face = world.faces[mesh.first_face + entry.face];
+        ClipVertex c[MAX_FACE_CORNERS], clipped[MAX_FACE_CORNERS + 6];
+        for (int32_t i = 0; i < face.count; ++i) {
+            const Corner& corner = world.corners[face.first_corner + i];
+            c[i] = scratch->positions[first_position[entry.object] + corner.position - mesh.first_position];
+            c[i].u = world.uvs[corner.uv].u * texture.width;
+            c[i].v = world.uvs[corner.uv].v * texture.height;
+        }
+        int n = face.count;
+        const ClipVertex* corners = c;
+        if (entry.cut) {  // (a face inside every plane is its own clipped polygon)
+            n = clip_polygon(c, face.count, near, far, clipped);
+            corners = clipped;
+            if (n < 3) {
+                ++f.stats.outside;
+                continue;
+            }
+            ++f.stats.clipped;
+        }
+        if (f.vertex_count + n > MAX_FRAME_VERTICES) {
+            ++f.stats.overflow;
+            continue;
+        }
+        for (int i = 0; i < n; ++i) {
+            const ClipVertex& p = corners[i];
+            double x = 160.0 + 160.0 * (p.x / p.w), y = 120.0 - 120.0 * (p.y / p.w);
+            f.vertices[f.vertex_count + i] = Vertex{snap(x), snap(y), p.w, p.u, p.v};
+        }
+        f.polygon_size[f.polygon_count] = uint8_t(n);
+        f.polygon_object[f.polygon_count] = uint8_t(entry.object);
+        ++f.polygon_count;
+        f.vertex_count += n;
+        ++f.stats.polygons;
+    }
+}
+
+void build_texture_set(const World& world, TextureSet* out) {
+    size_t bordered = 0;
+    const uint8_t* copies[MAX_WORLD_TEXTURES];
+    const uint8_t* aligned[MAX_WORLD_TEXTURES];
+    for (int32_t i = 0; i < world.texture_count; ++i) {
+        const WorldTexture& t = world.textures[i];
+        Texture view{world.texels + t.offset, t.width, t.height, Wrap::Repeat};
+        make_bordered(view, out->bordered + bordered);
+        copies[i] = out->bordered + bordered;
+        bordered += size_t(bordered_bytes(t.width, t.height));
+        aligned[i] = t.width == 256 && t.height == 256 ? make_aligned256(view, out->aligned[i]) : nullptr;
+    }
+    for (int32_t o = 0; o < world.object_count; ++o) {
+        out->objects[o] = world.texture_of(o);
+        out->objects[o].bordered = copies[world.objects[o].texture];
+        out->objects[o].aligned256 = aligned[world.objects[o].texture];
+    }
+}
+
+RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target, Variant variant,
+                         Probe* probe) {
+    RenderStats stats;
+    stats.probe = probe;
+    const Vertex* v = frame.vertices;
+    for (int32_t i = 0; i < frame.polygon_count; ++i) {
+        draw_polygon(v, frame.polygon_size[i], textures.objects[frame.polygon_object[i]], mapper, axis, target, &stats, variant);
+        v += frame.polygon_size[i];
+    }
+    return stats;
+}
+
+}  // namespace raster

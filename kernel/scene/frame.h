@@ -1,0 +1,97 @@
+// A frame of a 3D scene: the camera and the objects at the frame's time, back faces culled, faces
+// clipped against the near and far planes and a guard band in homogeneous clip space, projected,
+// snapped, and ordered far to near (painter's algorithm: no depth buffer, the mappers stay span
+// loops). Then drawn, each polygon with its object's texture, through the same draw_polygon as
+// screen-space scenes. Portable: kernel and host build the same frame to the last bit
+// (docs/scene-format.md, "From 3D to the screen").
+#pragma once
+
+#include <stdint.h>
+
+#include "kernel/core/render.h"
+#include "kernel/scene/world.h"
+
+namespace raster {
+
+constexpr int32_t MAX_FRAME_POLYGONS = 32768;
+constexpr int32_t MAX_FRAME_VERTICES = 131072;
+constexpr int32_t MAX_FRAME_POSITIONS = 65536;  // object positions transformed in one frame
+// Clip space keeps |x|, |y| <= GUARD_BAND * w: on screen within 160 +- 5120 and 120 +- 3840
+// pixels, inside the setup's limits and the classics' +-8192.
+constexpr double GUARD_BAND = 32;
+constexpr double SCREEN_ASPECT = 4.0 / 3.0;  // 320 x 240, square pixels
+
+struct FrameStats {
+    uint32_t faces = 0;         // faces of all objects
+    uint32_t culled = 0;        // facing away (objects with cull back)
+    uint32_t outside = 0;       // entirely outside the view volume, or clipped to nothing
+    uint32_t clipped = 0;       // cut by a plane and kept
+    uint32_t polygons = 0;      // out: on their way to the mappers
+    uint32_t overflow = 0;      // dropped for lack of room (beyond the limits above)
+};
+
+struct Frame {
+    int32_t number = 0;
+    int32_t polygon_count = 0, vertex_count = 0;
+    FrameStats stats;
+    uint8_t polygon_size[MAX_FRAME_POLYGONS];
+    uint8_t polygon_object[MAX_FRAME_POLYGONS];  // whose texture (and wrap) it takes
+    Vertex vertices[MAX_FRAME_VERTICES];
+};
+
+// A point in clip space with its texture coordinates in texels.
+struct ClipVertex {
+    double x = 0, y = 0, w = 0;  // w: the depth along the view direction
+    double u = 0, v = 0;
+};
+
+// Working memory for build_frame (large: kept apart so that it can be static in the kernel).
+struct FrameScratch {
+    ClipVertex positions[MAX_FRAME_POSITIONS];
+    uint8_t outcodes[MAX_FRAME_POSITIONS];  // bit k: outside clip plane k
+    struct Entry {
+        double depth;  // mean w of the face's corners
+        int32_t object, face;
+        bool cut;      // some corner outside some plane: to be clipped
+    } entries[MAX_FRAME_POLYGONS], sorted[MAX_FRAME_POLYGONS];
+};
+
+// The camera and projection of a frame: clip-space coordinates of world points.
+struct View {
+    Vec3 eye, side, up, forward;  // right-handed: forward = toward the target; side = forward x up
+    double focal_x = 1, focal_y = 1;  // clip x = focal_x * (side . p), y = focal_y * (up . p)
+    static View of(const Camera& camera, double time);
+    ClipVertex clip(Vec3 world_point) const;
+};
+
+// An object's placement at a time: world = rotation(scale * model) + position.
+struct Placement {
+    Rotation rotation;
+    double scale = 1;
+    Vec3 position;
+    static Placement of(const Object& object, double time);
+    Vec3 apply(Vec3 p) const { return rotation.apply(scale * p) + position; }
+};
+
+void build_frame(const World& world, int32_t frame, Frame* out, FrameScratch* scratch);
+
+// Clips a convex polygon (in clip space) against the view volume: w >= near, w <= far,
+// |x| <= GUARD_BAND w, |y| <= GUARD_BAND w, one plane after the other (Sutherland-Hodgman,
+// attributes linear in clip space). Returns the corners written to `out` (room for count + 6).
+int clip_polygon(const ClipVertex* in, int count, double near, double far, ClipVertex* out);
+
+// The textures as the mappers take them, one per object (its wrap), with the copies the classic
+// loops read (bordered; 64 KiB-aligned for 256 x 256 textures).
+struct TextureSet {
+    Texture objects[MAX_WORLD_OBJECTS];
+    static constexpr size_t BORDERED_BYTES = size_t(MAX_TEXEL_POOL) + 2 * MAX_WORLD_TEXTURES * 2 * (MAX_TEXTURE_SIZE + 2);
+    uint8_t bordered[BORDERED_BYTES];
+    uint8_t aligned[MAX_WORLD_TEXTURES][ALIGNED256_BYTES];
+};
+void build_texture_set(const World& world, TextureSet* out);
+
+// Draws the frame's polygons in order into `target`; with a probe, times the phases (probe.h).
+RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target,
+                         Variant variant = Variant::Twin, Probe* probe = nullptr);
+
+}  // namespace raster

@@ -1,0 +1,154 @@
+// 3D scenes (scene format version 2, docs/scene-format.md): textures (procedural or BMP/PCX files),
+// one palette, meshes, objects with transforms and animation, a camera, an accuracy budget. Parsed
+// by the same code in the kernel and on the host; files the scene names come from a resolver
+// (the host's file system, the kernel's modules, uploads and built-ins).
+#pragma once
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "kernel/lib/words.h"
+#include "kernel/scene/math3d.h"
+#include "kernel/scene/palette.h"
+#include "kernel/scene/scene.h"
+#include "kernel/core/texture.h"
+
+namespace raster {
+
+// Limits (docs/scene-format.md); the parser refuses a scene beyond any of them with a message.
+constexpr int32_t MAX_WORLD_TEXTURES = 16;
+constexpr int32_t MAX_TEXEL_POOL = 4 << 20;  // bytes of texels, all textures together
+constexpr int32_t MAX_WORLD_MESHES = 16;
+constexpr int32_t MAX_WORLD_POSITIONS = 32768;
+constexpr int32_t MAX_WORLD_UVS = 32768;
+constexpr int32_t MAX_WORLD_FACES = 32768;
+constexpr int32_t MAX_WORLD_CORNERS = 131072;
+constexpr int32_t MAX_FACE_CORNERS = 10;  // clipping against six planes adds at most six: setup takes 16
+constexpr int32_t MAX_WORLD_OBJECTS = 64;
+constexpr int32_t MAX_PATH_KEYS = 32;
+constexpr int32_t MAX_WORLD_NAME = 32;  // names of textures, meshes, objects (with the NUL)
+constexpr int32_t MAX_FILE_NAME = 64;   // file names (with the NUL)
+constexpr double MAX_WORLD_COORD = 1e6;  // positions, path points, scales
+constexpr double MAX_TEXCOORD = 16384;   // vt, in texture sizes
+constexpr int32_t FRAMES_PER_SECOND = 30;  // frame n shows time n / 30 s: kernel and host agree on frames
+constexpr int32_t MAX_FRAMES = 1 << 20;
+
+enum class TextureSource : uint8_t { Procedural, File };
+
+struct WorldTexture {
+    char name[MAX_WORLD_NAME] = {};
+    TextureSource source = TextureSource::Procedural;
+    TextureKind kind = TextureKind::Checker;  // procedural
+    char file[MAX_FILE_NAME] = {};            // file
+    int32_t width = 0, height = 0;
+    uint32_t offset = 0;  // first texel in World::texels
+};
+
+struct Mesh {
+    char name[MAX_WORLD_NAME] = {};
+    int32_t first_position = 0, position_count = 0;
+    int32_t first_uv = 0, uv_count = 0;
+    int32_t first_face = 0, face_count = 0;
+};
+
+// A convex planar face: `count` corners from `first_corner` on, counter-clockwise seen from its
+// front (right-handed, the OBJ convention).
+struct Face {
+    int32_t first_corner = 0;
+    int32_t count = 0;
+};
+
+struct Corner {
+    int32_t position = 0, uv = 0;  // indices into World::positions and World::uvs
+};
+
+struct TexCoord {
+    double u = 0, v = 0;  // in texture sizes: (1, 1) is the far corner; v grows downward (rows)
+};
+
+// A path key: at `time` seconds, the position (objects), or the camera's position and target.
+struct PathKey {
+    double time = 0;
+    Vec3 position, target;
+};
+
+enum class Cull : uint8_t { Back, None };
+
+struct Object {
+    char name[MAX_WORLD_NAME] = {};
+    int32_t mesh = -1, texture = -1;
+    Wrap wrap = Wrap::Repeat;
+    Cull cull = Cull::Back;
+    Vec3 position;                 // where the path is not given
+    Vec3 rotate_axis{0, 1, 0};     // a fixed rotation
+    double rotate_degrees = 0;
+    double scale = 1;
+    Vec3 spin_axis{0, 1, 0};       // and a rotation growing with time, applied after it
+    double spin_degrees_per_second = 0;
+    int32_t key_count = 0;         // a looping path of positions, linear between keys
+    PathKey keys[MAX_PATH_KEYS];
+};
+
+struct Camera {
+    Vec3 position{0, 0, 5}, target{0, 0, 0}, up{0, 1, 0};
+    double fov_degrees = 60;  // vertical
+    double near = 0.1, far = 1000;
+    int32_t key_count = 0;    // a looping path of positions and targets
+    PathKey keys[MAX_PATH_KEYS];
+};
+
+// What the scene requires of a mapper (kept for the selection policy).
+struct Budget {
+    bool given = false;
+    int32_t max_error = -1;       // texel error; -1: any
+    bool exact_coverage = false;  // no gaps, no overdraw
+};
+
+struct World {
+    int32_t texture_count = 0;
+    WorldTexture textures[MAX_WORLD_TEXTURES];
+    uint32_t texel_count = 0;  // used in `texels`
+    uint8_t texels[MAX_TEXEL_POOL];
+    int32_t palette_texture = -1;  // the palette: the default one, or that image texture's
+    Palette palette;               // remapped textures index it
+
+    int32_t mesh_count = 0;
+    Mesh meshes[MAX_WORLD_MESHES];
+    int32_t position_count = 0, uv_count = 0, face_count = 0, corner_count = 0;
+    Vec3 positions[MAX_WORLD_POSITIONS];
+    TexCoord uvs[MAX_WORLD_UVS];
+    Face faces[MAX_WORLD_FACES];
+    Corner corners[MAX_WORLD_CORNERS];
+
+    int32_t object_count = 0;
+    Object objects[MAX_WORLD_OBJECTS];
+    Camera camera;
+    Budget budget;
+    int32_t frames = 150;  // the animation's length: the demo plays frames 0..frames-1 and loops
+
+    // texture i as the mappers see it for object `o` (its wrap), without the derived copies
+    Texture texture_of(int32_t object) const {
+        const WorldTexture& t = textures[objects[object].texture];
+        return Texture{texels + t.offset, t.width, t.height, objects[object].wrap};
+    }
+};
+
+// Where the files a scene names come from. `find` returns false when there is no such file.
+struct FileResolver {
+    const void* context = nullptr;
+    bool (*find)(const void* context, lib::StrView name, const uint8_t** data, size_t* size) = nullptr;
+};
+
+// The version a scene text declares on its first line (1: screen space, 2: 3D); 0 with an error
+// when the text is not a scene.
+int scene_version(const char* text, size_t length, ParseError* error);
+
+// Parses a version 2 scene into `world` (which it overwrites; on failure it holds nothing usable),
+// reading the texture files it names through `files`, remapping every texture to the scene's
+// palette. False with the first error (its line; 0 when it is about the whole file).
+bool parse_world(const char* text, size_t length, const FileResolver& files, World* world, ParseError* error);
+
+// The scene's time at frame n, in seconds.
+inline double frame_time(int32_t frame) { return double(frame) / FRAMES_PER_SECOND; }
+
+}  // namespace raster

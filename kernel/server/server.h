@@ -1,0 +1,20 @@
+// The command server on COM1: one ASCII command per line in, one JSON reply line out (docs/protocol.md).
+#pragma once
+
+#include <stdint.h>
+
+#include "drivers/cpu.h"
+#include "kernel/scene/palette.h"
+
+namespace server {
+
+struct Context {
+    const char* cmdline = "";
+    cpu::Info cpu;
+    uint64_t tsc_hz = 0;
+    raster::PaletteId palette = raster::PaletteId::Default;
+};
+
+[[noreturn]] void run(Context& ctx);
+
+}  // namespace server

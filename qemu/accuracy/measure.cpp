@@ -1,0 +1,313 @@
+// Scene loading and the pictures the metrics compare.
+#include "qemu/accuracy/measure.h"
+
+#include <filesystem>
+#include <map>
+#include <fstream>
+#include <sstream>
+
+#include "qemu/lib/error.h"
+
+namespace harness {
+
+using namespace raster;
+
+LoadedScene make_loaded_scene(std::unique_ptr<Scene> scene, const std::string& name) {
+    LoadedScene s;
+    s.name = name;
+    s.scene = std::move(scene);
+    s.texels.resize(size_t(s.scene->texture_width) * size_t(s.scene->texture_height));
+    generate_texture(s.scene->texture_kind, s.scene->texture_width, s.scene->texture_height, s.texels.data());
+    s.texture = Texture{s.texels.data(), s.scene->texture_width, s.scene->texture_height, s.scene->wrap};
+    return s;
+}
+
+LoadedScene parse_scene_text(const std::string& text, const std::string& name) {
+    auto scene = std::make_unique<Scene>();
+    ParseError e;
+    if (!parse_scene(text.data(), text.size(), scene.get(), &e))
+        throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message);
+    return make_loaded_scene(std::move(scene), name);
+}
+
+std::string read_whole_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw HarnessError(path + ": cannot open");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+LoadedScene load_scene_file(const std::string& path) { return parse_scene_text(read_whole_file(path), path); }
+
+LoadedWorld parse_world_text(const std::string& text, const std::string& name, const std::vector<std::string>& search) {
+    struct Finder {
+        const std::vector<std::string>* search;
+        std::map<std::string, std::string> read;  // the files read, kept while parsing
+    } finder{&search, {}};
+    FileResolver r;
+    r.context = &finder;
+    r.find = [](const void* ctx, lib::StrView file, const uint8_t** data, size_t* size) {
+        auto& f = *static_cast<Finder*>(const_cast<void*>(ctx));
+        std::string wanted(file.data, file.size);
+        for (const std::string& dir : *f.search) {
+            std::filesystem::path p = std::filesystem::path(dir) / wanted;
+            if (!std::filesystem::is_regular_file(p)) continue;
+            std::string& bytes = f.read[wanted] = read_whole_file(p.string());
+            *data = reinterpret_cast<const uint8_t*>(bytes.data()), *size = bytes.size();
+            return true;
+        }
+        return false;
+    };
+    LoadedWorld w;
+    w.name = name;
+    w.world = std::make_unique<World>();
+    ParseError e;
+    if (!parse_world(text.data(), text.size(), r, w.world.get(), &e))
+        throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message);
+    w.textures = std::make_unique<TextureSet>();
+    build_texture_set(*w.world, w.textures.get());
+    return w;
+}
+
+std::vector<std::string> world_search_path(const std::string& scene_path) {
+    std::string dir = std::filesystem::path(scene_path).parent_path().string();
+    return {dir.empty() ? "." : dir, std::string(MODEXLAB_BUILD_DIR) + "/scenes"};
+}
+
+LoadedWorld load_world_file(const std::string& path) { return parse_world_text(read_whole_file(path), path, world_search_path(path)); }
+
+std::unique_ptr<Frame> world_frame(const LoadedWorld& w, int32_t n) {
+    auto frame = std::make_unique<Frame>();
+    auto scratch = std::make_unique<FrameScratch>();
+    build_frame(*w.world, n, frame.get(), scratch.get());
+    return frame;
+}
+
+Picture::Picture(int32_t width, int32_t height)
+    : index(size_t(width) * size_t(height)), coverage(index.size()), tu(index.size()), tv(index.size()) {
+    view = PixelImage{width, height, index.data(), coverage.data(), tu.data(), tv.data()};
+    clear_pixel_image(view, BACKGROUND);
+}
+
+std::unique_ptr<Picture> render_reference(const LoadedScene& s) {
+    auto p = std::make_unique<Picture>(SCREEN_WIDTH, SCREEN_HEIGHT);
+    reference_scene(*s.scene, s.texture, p->view);
+    return p;
+}
+
+namespace {
+
+// A 320x240 surface of the kind the mapper draws into: linear, or Mode X planes in RAM for the
+// mappers that write planes themselves.
+struct HostSurface {
+    bool planar;
+    std::vector<uint8_t> data;
+    explicit HostSurface(const Mapper& m, uint8_t fill) : planar(m.needs & NEED_PLANAR_TARGET), data(SCREEN_PIXELS, fill) {}
+    Target target() {
+        return planar ? planar_target(data.data()) : linear_target(data.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+    }
+    uint8_t& at(int32_t x, int32_t y) {
+        return planar ? data[size_t(x & 3) * PLANE_BYTES + size_t(y) * PLANE_ROW_BYTES + size_t(x >> 2)]
+                      : data[size_t(y) * SCREEN_WIDTH + size_t(x)];
+    }
+    std::vector<uint8_t> linear() const {
+        if (!planar) return data;
+        std::vector<uint8_t> out(SCREEN_PIXELS);
+        linear_from_planar(data.data(), out.data());
+        return out;
+    }
+};
+
+// A texture with the copies the classic loops read (bordered, 64 KiB-aligned), when the mapper needs them.
+struct HostTexture {
+    Texture texture;
+    std::vector<uint8_t> bordered, aligned;
+    HostTexture(const Texture& t, const Mapper& m) : texture(t) {
+        if (m.needs & NEED_BORDERED) {
+            bordered.resize(size_t(bordered_bytes(t.width, t.height)));
+            make_bordered(t, bordered.data());
+            texture.bordered = bordered.data();
+        }
+        if ((m.needs & NEED_ALIGNED256) && t.width == 256 && t.height == 256) {
+            aligned.resize(ALIGNED256_BYTES);
+            texture.aligned256 = make_aligned256(t, aligned.data());
+        }
+    }
+};
+
+// The pixels a polygon can touch: every mapper draws inside the box of its vertices, give or take
+// a pixel; clipped to the screen.
+struct Box {
+    int32_t x0, y0, x1, y1;  // inclusive
+    static Box around(const Vertex* v, int n) {
+        int64_t min_x = v[0].x.raw, max_x = v[0].x.raw, min_y = v[0].y.raw, max_y = v[0].y.raw;
+        for (int k = 1; k < n; ++k) {
+            min_x = std::min<int64_t>(min_x, v[k].x.raw), max_x = std::max<int64_t>(max_x, v[k].x.raw);
+            min_y = std::min<int64_t>(min_y, v[k].y.raw), max_y = std::max<int64_t>(max_y, v[k].y.raw);
+        }
+        return Box{int32_t(std::max<int64_t>(0, floor_div(min_x, SUBPIXEL_ONE) - 1)),
+                   int32_t(std::max<int64_t>(0, floor_div(min_y, SUBPIXEL_ONE) - 1)),
+                   int32_t(std::min<int64_t>(SCREEN_WIDTH - 1, floor_div(max_x, SUBPIXEL_ONE) + 1)),
+                   int32_t(std::min<int64_t>(SCREEN_HEIGHT - 1, floor_div(max_y, SUBPIXEL_ONE) + 1))};
+    }
+    template <typename F>
+    void each(F&& f) const {
+        for (int32_t y = y0; y <= y1; ++y)
+            for (int32_t x = x0; x <= x1; ++x) f(x, y);
+    }
+};
+
+std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper& mapper, Axis axis, RenderStats* stats) {
+    HostSurface surface(mapper, BACKGROUND);
+    HostTexture t(tex, mapper);
+    Target target = surface.target();
+    RenderStats st = render_scene(*s.scene, t.texture, mapper, axis, target);
+    if (stats) *stats = st;
+    return surface.linear();
+}
+
+}  // namespace
+
+IndexImage render_world_frame(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis, RenderStats* stats) {
+    HostSurface surface(mapper, BACKGROUND);
+    Target target = surface.target();
+    RenderStats st = render_frame(frame, *w.textures, mapper, axis, target);
+    if (stats) *stats = st;
+    return IndexImage{SCREEN_WIDTH, SCREEN_HEIGHT, surface.linear()};
+}
+
+bool mapper_takes(const LoadedScene& s, const Mapper& mapper) {
+    HostTexture t(s.texture, mapper);
+    return mapper_accepts(mapper, t.texture);
+}
+
+Axis default_axis(const Mapper& mapper) { return mapper.axes == AXIS_COLUMNS ? Axis::Columns : Axis::Rows; }
+
+IndexImage render_mapper(const LoadedScene& s, const Mapper& mapper, Axis axis, RenderStats* stats) {
+    return IndexImage{SCREEN_WIDTH, SCREEN_HEIGHT, draw(s, s.texture, mapper, axis, stats)};
+}
+
+std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const Mapper& mapper, Axis axis) {
+    auto p = std::make_unique<Picture>(SCREEN_WIDTH, SCREEN_HEIGHT);
+    std::vector<uint8_t> indices = draw(s, s.texture, mapper, axis, nullptr);
+    std::copy(indices.begin(), indices.end(), p->index.begin());
+
+    // texel coordinates: four renders with textures that hold their own coordinates
+    const int32_t w = s.texture.width, h = s.texture.height;
+    std::vector<uint8_t> coord(size_t(w) * size_t(h));
+    std::vector<uint8_t> parts[4];
+    for (int k = 0; k < 4; ++k) {
+        for (int32_t v = 0; v < h; ++v)
+            for (int32_t u = 0; u < w; ++u) {
+                int32_t c = k < 2 ? u : v;
+                coord[size_t(v) * size_t(w) + size_t(u)] = uint8_t(k % 2 == 0 ? c & 255 : c >> 8);
+            }
+        parts[k] = draw(s, Texture{coord.data(), w, h, s.texture.wrap}, mapper, axis, nullptr);
+    }
+    for (size_t i = 0; i < p->index.size(); ++i) {
+        p->tu[i] = parts[0][i] | (parts[1][i] << 8);
+        p->tv[i] = parts[2][i] | (parts[3][i] << 8);
+    }
+
+    // coverage counts: each polygon alone on a scratch surface, with a texture of ones of the
+    // scene's size (mappers that cannot wrap check coordinates against it)
+    HostSurface scratch(mapper, 0);
+    std::vector<uint8_t> ones(size_t(w) * size_t(h), 1);
+    HostTexture ones_texture(Texture{ones.data(), w, h, s.texture.wrap}, mapper);
+    Target t = scratch.target();
+    const Vertex* v = s.scene->vertices;
+    RenderStats ignored;
+    for (int32_t i = 0; i < s.scene->polygon_count; ++i) {
+        int n = s.scene->polygon_size[i];
+        if (draw_polygon(v, n, ones_texture.texture, mapper, axis, t, &ignored) == SetupStatus::Ok) {
+            Box::around(v, n).each([&](int32_t x, int32_t y) {
+                uint8_t& c = scratch.at(x, y);
+                size_t i2 = size_t(y) * SCREEN_WIDTH + size_t(x);
+                if (c && p->coverage[i2] < 255) ++p->coverage[i2];
+                c = 0;
+            });
+        }
+        v += n;
+    }
+    for (size_t i = 0; i < p->index.size(); ++i)
+        if (!p->coverage[i]) p->tu[i] = p->tv[i] = -1;
+    return p;
+}
+
+namespace {
+
+// A texture's stand-ins for measuring: ones (coverage) and four that hold their own coordinates
+// (u low and high byte, v low and high byte), each with the copies the mapper reads.
+struct MeasureTextures {
+    std::vector<uint8_t> texels[5];
+    std::unique_ptr<HostTexture> textures[5];
+    MeasureTextures(const Texture& t, const Mapper& mapper) {
+        const int32_t w = t.width, h = t.height;
+        for (int k = 0; k < 5; ++k) {
+            texels[k].resize(size_t(w) * size_t(h));
+            for (int32_t v = 0; v < h; ++v)
+                for (int32_t u = 0; u < w; ++u) {
+                    int32_t c = k == 0 ? 1 : k < 3 ? u : v;
+                    texels[k][size_t(v) * size_t(w) + size_t(u)] = uint8_t(k == 0 ? 1 : k % 2 ? c & 255 : c >> 8);
+                }
+            textures[k] = std::make_unique<HostTexture>(Texture{texels[k].data(), w, h, t.wrap}, mapper);
+        }
+    }
+};
+
+}  // namespace
+
+AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis) {
+    AccuracyMetrics m;
+    std::vector<uint8_t> ref_count(SCREEN_PIXELS, 0), drawn_count(SCREEN_PIXELS, 0);
+    Picture ref(SCREEN_WIDTH, SCREEN_HEIGHT);  // one polygon at a time
+    std::vector<HostSurface> scratch;
+    for (int k = 0; k < 5; ++k) scratch.emplace_back(mapper, 0);
+    std::map<int32_t, std::unique_ptr<MeasureTextures>> stand_ins;  // by object
+    uint64_t error_sum = 0;
+    const Vertex* v = frame.vertices;
+    for (int32_t i = 0; i < frame.polygon_count; ++i) {
+        const int n = frame.polygon_size[i];
+        const int32_t object = frame.polygon_object[i];
+        const Texture& tex = w.textures->objects[object];
+        auto& stand_in = stand_ins[object];
+        if (!stand_in) stand_in = std::make_unique<MeasureTextures>(tex, mapper);
+        reference_polygon(v, n, tex, ref.view);
+        bool drawn = true;
+        for (int k = 0; k < 5 && drawn; ++k) {
+            Target t = scratch[size_t(k)].target();
+            RenderStats ignored;
+            drawn = draw_polygon(v, n, stand_in->textures[k]->texture, mapper, axis, t, &ignored) == SetupStatus::Ok;
+        }
+        Box::around(v, n).each([&](int32_t x, int32_t y) {
+            size_t p = size_t(y) * SCREEN_WIDTH + size_t(x);
+            bool rc = ref.coverage[p] != 0, dc = drawn && scratch[0].at(x, y) != 0;
+            if (rc && ref_count[p] < 255) ++ref_count[p];
+            if (dc && drawn_count[p] < 255) ++drawn_count[p];
+            if (rc && dc) {
+                int32_t tu = scratch[1].at(x, y) | (scratch[2].at(x, y) << 8), tv = scratch[3].at(x, y) | (scratch[4].at(x, y) << 8);
+                uint32_t du = texel_distance(ref.tu[p], tu, tex.width, tex.wrap), dv = texel_distance(ref.tv[p], tv, tex.height, tex.wrap);
+                add_texel_error(m, du > dv ? du : dv, &error_sum);
+            }
+            ref.coverage[p] = 0;
+            for (HostSurface& s : scratch) s.at(x, y) = 0;
+        });
+        v += n;
+    }
+    m.mean_texel_error = m.compared ? double(error_sum) / double(m.compared) : 0.0;
+    for (size_t p = 0; p < size_t(SCREEN_PIXELS); ++p) add_coverage(m, ref_count[p], drawn_count[p]);
+
+    // the palette indices: the whole pictures
+    Picture whole(SCREEN_WIDTH, SCREEN_HEIGHT);
+    reference_frame(frame, *w.textures, whole.view);
+    IndexImage mine = render_world_frame(w, frame, mapper, axis);
+    for (size_t p = 0; p < size_t(SCREEN_PIXELS); ++p) {
+        if (!whole.coverage[p] && !drawn_count[p]) continue;
+        ++m.union_pixels;
+        if (whole.index[p] != mine.index[p]) ++m.index_differs;
+    }
+    return m;
+}
+
+}  // namespace harness

@@ -1,0 +1,93 @@
+// Host-side rendering of screen-space scenes: loading scene files, the reference picture, a
+// mapper's picture, and what a mapper drew measured pixel by pixel for the accuracy metrics.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernel/scene/frame.h"
+#include "kernel/core/mapper.h"
+#include "qemu/accuracy/metrics.h"
+#include "qemu/accuracy/reference.h"
+#include "kernel/core/render.h"
+#include "kernel/scene/scene.h"
+#include "qemu/lib/image.h"
+
+namespace harness {
+
+struct LoadedScene {
+    std::string name;
+    std::unique_ptr<raster::Scene> scene;
+    std::vector<uint8_t> texels;
+    raster::Texture texture;
+};
+
+// Throws HarnessError "NAME:LINE: message" (the parser's message) on a bad scene.
+LoadedScene parse_scene_text(const std::string& text, const std::string& name);
+// A scene built in code: generates its texture.
+LoadedScene make_loaded_scene(std::unique_ptr<raster::Scene> scene, const std::string& name);
+LoadedScene load_scene_file(const std::string& path);
+
+// A PixelImage with its own storage.
+struct Picture {
+    std::vector<uint8_t> index, coverage;
+    std::vector<int32_t> tu, tv;
+    raster::PixelImage view;
+    Picture(int32_t width, int32_t height);
+    Picture(const Picture&) = delete;
+    Picture& operator=(const Picture&) = delete;
+};
+
+constexpr uint8_t BACKGROUND = 0;  // the colour a picture is cleared to before drawing
+
+std::unique_ptr<Picture> render_reference(const LoadedScene& s);
+
+// Whether the mapper takes the scene's texture, given the copies the host builds for it (bordered,
+// 64 KiB-aligned): what the kernel's `render` accepts.
+bool mapper_takes(const LoadedScene& s, const raster::Mapper& mapper);
+
+// The walker a mapper uses by default: its only one, or rows.
+raster::Axis default_axis(const raster::Mapper& mapper);
+
+// The mapper's picture on a cleared 320x240 surface (linear, or planes for mappers that write
+// planes), as a linear picture (rows or columns); stats if wanted.
+IndexImage render_mapper(const LoadedScene& s, const raster::Mapper& mapper, raster::Axis axis, raster::RenderStats* stats = nullptr);
+
+// What the mapper drew: its palette indices, how often each pixel was drawn (one polygon at a
+// time on a scratch surface), and the texel it read (from renders with coordinate textures whose
+// texels hold their own coordinates, 8 bits at a time). Only the mapper's drawing path is used.
+std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const raster::Mapper& mapper, raster::Axis axis);
+
+// A 3D scene (version 2) on the host, its texture files found in `search` directories in order,
+// with the textures as the mappers take them.
+struct LoadedWorld {
+    std::string name;
+    std::unique_ptr<raster::World> world;
+    std::unique_ptr<raster::TextureSet> textures;
+};
+
+// Throws HarnessError "NAME:LINE: message" on a bad scene or a texture file it cannot read.
+LoadedWorld parse_world_text(const std::string& text, const std::string& name, const std::vector<std::string>& search);
+// The file's own directory first, then <build>/scenes (the files made at build time).
+LoadedWorld load_world_file(const std::string& path);
+std::vector<std::string> world_search_path(const std::string& scene_path);
+
+// Frame n, as the kernel builds it.
+std::unique_ptr<raster::Frame> world_frame(const LoadedWorld& w, int32_t n);
+
+// The frame drawn with the mapper on a cleared surface (linear, or planes for mappers that write
+// planes), as a linear picture in the scene's palette indices.
+IndexImage render_world_frame(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper, raster::Axis axis,
+                              raster::RenderStats* stats = nullptr);
+
+// What the mapper draws of a frame against the reference (docs/accuracy.md, 3D frames): each
+// polygon alone, its texel errors on the pixels both cover for it, with its own texture's size and
+// wrap; coverage counts summed over the polygons; palette indices on the whole pictures.
+raster::AccuracyMetrics measure_world_frame(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper,
+                                            raster::Axis axis);
+
+// Reads a whole file; throws HarnessError when it cannot.
+std::string read_whole_file(const std::string& path);
+
+}  // namespace harness

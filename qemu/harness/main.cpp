@@ -1,0 +1,283 @@
+// modexlab: the host harness's command line. `run` boots the kernel, shows every pattern and plays
+// every demo scene, with screenshots checked against the host's rendering; `exec` sends the given
+// commands and prints the replies.
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "qemu/tools/demo_scenes.h"
+#include "qemu/lib/error.h"
+#include "qemu/lib/image.h"
+#include "qemu/accuracy/measure.h"
+#include "qemu/harness/session.h"
+
+namespace {
+
+using namespace harness;
+
+const char* USAGE =
+    "usage: modexlab run  [BOOT] [--out DIR] [--scene NAME] [--mapper NAME] [--frames N] [--display]\n"
+    "       modexlab exec [BOOT] [--full] COMMAND...\n"
+    "BOOT:  --kernel ELF [--append OPTIONS] [--module PATH[=NAME]]... | --iso ISO [--usb]\n"
+    "                     (default: build/kernel/modexlab.elf; a module's name is its path unless given)\n"
+    "       --icount      count guest instructions (rdtsc = instructions executed)\n"
+    "run:   boots, says hello, sets Mode X; draws, shows and screenshots every test pattern; then\n"
+    "       plays every demo scene (or NAME) for N frames (default 90: three seconds of its\n"
+    "       animation) with the mapper (default persp-subdiv-16), page-flipped, and screenshots the\n"
+    "       last frame. Each screenshot must equal the host's rendering. Screenshots go to DIR\n"
+    "       (default build/run). --display: a QEMU window playing the scene(s) until it is closed.\n"
+    "exec:  sends each COMMAND (one kernel command line, quote it) and prints the JSON replies;\n"
+    "       'screendump:NAME' saves a screendump as NAME.png in the run directory instead;\n"
+    "       'scene:FILE' uploads a scene file (scene BYTES CRC32 and the bytes);\n"
+    "       'file:NAME=PATH' uploads a file under NAME (file NAME BYTES CRC32 and the bytes).\n"
+    "       Events a command sends before its reply (play's frames) are printed as they come.\n"
+    "       Long \"data\" fields are shortened unless --full.\n";
+
+struct Args {
+    std::string verb;
+    SessionOptions session;
+    std::string out;
+    bool full = false;
+    std::vector<std::string> commands;
+    std::string scene, mapper = "persp-subdiv-16";
+    int frames = 90;
+};
+
+[[noreturn]] void usage_error(const std::string& why) {
+    std::fprintf(stderr, "modexlab: %s\n%s", why.c_str(), USAGE);
+    std::exit(2);
+}
+
+Args parse(int argc, char** argv) {
+    if (argc < 2) usage_error("no verb");
+    Args a;
+    a.verb = argv[1];
+    if (a.verb == "-h" || a.verb == "--help") {
+        std::fputs(USAGE, stdout);
+        std::exit(0);
+    }
+    if (a.verb != "run" && a.verb != "exec") usage_error("unknown verb '" + a.verb + "'");
+    a.out = build_dir() + "/run";
+    for (int i = 2; i < argc; ++i) {
+        std::string s = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) usage_error(s + " needs a value");
+            return argv[++i];
+        };
+        if (s == "--kernel") {
+            a.session.medium = BootMedium::Kernel;
+            a.session.image = value();
+        } else if (s == "--iso") {
+            if (a.session.medium == BootMedium::Kernel) a.session.medium = BootMedium::Cdrom;
+            a.session.image = value();
+        } else if (s == "--usb") {
+            a.session.medium = BootMedium::Usb;
+        } else if (s == "--append") {
+            a.session.append = value();
+        } else if (s == "--icount") {
+            a.session.icount = true;
+        } else if (s == "--display" && a.verb == "run") {
+            a.session.display = true;
+        } else if (s == "--module") {
+            std::string m = value();
+            size_t eq = m.find('=');
+            a.session.modules.push_back(eq == std::string::npos ? m : m.substr(0, eq) + " " + m.substr(eq + 1));
+        } else if (s == "--out" && a.verb == "run") {
+            a.out = value();
+        } else if (s == "--scene" && a.verb == "run") {
+            a.scene = value();
+        } else if (s == "--mapper" && a.verb == "run") {
+            a.mapper = value();
+            if (!raster::find_mapper({a.mapper.data(), a.mapper.size()})) usage_error("unknown mapper '" + a.mapper + "'");
+        } else if (s == "--frames" && a.verb == "run") {
+            a.frames = std::atoi(value().c_str());
+            if (a.frames < 1 || a.frames > 100000) usage_error("--frames takes 1..100000");
+        } else if (s == "--full" && a.verb == "exec") {
+            a.full = true;
+        } else if (s.rfind("--", 0) == 0) {
+            usage_error("unknown option " + s);
+        } else if (a.verb == "exec") {
+            a.commands.push_back(s);
+        } else {
+            usage_error("unexpected argument '" + s + "'");
+        }
+    }
+    if (a.session.medium == BootMedium::Usb && a.session.image.empty()) a.session.image = build_dir() + "/modexlab.iso";
+    if (a.verb == "exec" && a.commands.empty()) usage_error("exec needs at least one COMMAND");
+    return a;
+}
+
+std::string shorten_data(json reply, bool full) {
+    if (!full && reply.contains("data") && reply["data"].is_string()) {
+        std::string d = reply["data"];
+        if (d.size() > 48) reply["data"] = d.substr(0, 48) + "...(" + std::to_string(d.size()) + " chars)";
+    }
+    return reply.dump();
+}
+
+// `run --display`: the boot show in a window, until the window is closed.
+int watch(Args& a) {
+    a.session.name = "watch";
+    a.session.append = "boot=demo mapper=" + a.mapper + (a.scene.empty() ? "" : " scene=" + a.scene + ".scene");
+    std::printf("modexlab run: a QEMU window plays %s with %s; close it to stop\n", a.scene.empty() ? "every demo scene" : a.scene.c_str(),
+                a.mapper.c_str());
+    std::fflush(stdout);
+    Session s(a.session);
+    ExitInfo e = s.wait_exit(std::chrono::hours(24 * 365));
+    std::printf("%s\n", e.describe().c_str());
+    return 0;
+}
+
+// Plays every demo scene (or one) and checks the last frame of each against the host.
+int play_scenes(Args& a, Session& s) {
+    int failures = 0;
+    std::vector<const DemoScene*> scenes;
+    for (const DemoScene& d : demo_scenes())
+        if (a.scene.empty() || a.scene == d.name) scenes.push_back(&d);
+    if (scenes.empty()) throw HarnessError("no demo scene '" + a.scene + "' (modexlab-scene list)");
+    const raster::Mapper& mapper = *raster::find_mapper({a.mapper.data(), a.mapper.size()});
+    const bool progress = isatty(1);  // frame counts on a terminal, not in logs
+    std::printf("\nscenes, %d frames each (%.1f s of animation), drawn with %s; ticks are TSC ticks%s\n", a.frames,
+                double(a.frames) / raster::FRAMES_PER_SECOND, a.mapper.c_str(), a.session.icount ? " (icount: instructions)" : " (QEMU TCG, not a real PC)");
+    std::printf("%-9s %6s %9s %11s %12s %10s  %-28s %s\n", "scene", "frames", "polygons", "pixels", "ticks/frame", "ticks/px", "screenshot", "vs host");
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        const DemoScene& d = *scenes[i];
+        s.ok(std::string("load ") + d.name + ".scene");
+        json last;
+        json r = s.ok("play " + std::to_string(a.frames) + " " + a.mapper, [&](const json& e) {
+            last = e;
+            if (progress && e["n"].get<int>() % 10 == 9) {
+                std::printf("\r  scene %zu/%zu %s: frame %d/%d", i + 1, scenes.size(), d.name, e["n"].get<int>() + 1, a.frames);
+                std::fflush(stdout);
+            }
+        });
+        if (progress) std::printf("\r%60s\r", "");
+        LoadedWorld host = load_world_file("scenes/" + std::string(d.name) + ".scene");
+        auto frame = world_frame(host, last["frame"].get<int32_t>());
+        IndexImage want = render_world_frame(host, *frame, mapper, default_axis(mapper));
+        std::string stem = std::string("scene-") + d.name;
+        RgbImage dump = s.screendump(stem);
+        bool same = dump.rgb == screendump_of(want, host.world->palette).rgb && compare(s.readback(last["page"].get<int>()), want).equal();
+        std::filesystem::copy_file(s.run_dir() + "/" + stem + ".png", a.out + "/" + stem + ".png", std::filesystem::copy_options::overwrite_existing);
+        uint64_t pixels = r["pixels"].get<uint64_t>();
+        std::printf("%-9s %6d %9d %11llu %12llu %10.1f  %-28s %s\n", d.name, a.frames, last["polygons"].get<int>(), (unsigned long long)pixels,
+                    (unsigned long long)r["ticks_median"].get<uint64_t>(), pixels ? double(r["ticks"].get<uint64_t>()) / double(pixels) : 0.0,
+                    (a.out + "/" + stem + ".png").c_str(), same ? "equal" : "DIFFERS");
+        if (!same) {
+            ++failures;
+            save_png(a.out + "/" + stem + "-expected.png", screendump_of(want, host.world->palette));
+        }
+        std::fflush(stdout);
+    }
+    return failures;
+}
+
+int run(Args& a) {
+    if (a.session.display) return watch(a);
+    a.session.name = "run";
+    std::printf("modexlab run: booting %s in QEMU (TCG%s, headless)\n",
+                a.session.image.empty() ? (build_dir() + "/kernel/modexlab.elf").c_str() : a.session.image.c_str(),
+                a.session.icount ? ", icount" : "");
+    std::fflush(stdout);
+    Session s(a.session);
+    std::filesystem::create_directories(a.out);
+
+    json hello = s.ok("hello");
+    const json& cpu = hello["cpu"];
+    std::printf("hello: modexlab %s on %s (family %d, model %d); TSC %.3f MHz; mode %s\n",
+                hello["version"].get<std::string>().c_str(), cpu["vendor"].get<std::string>().c_str(),
+                cpu["family"].get<int>(), cpu["model"].get<int>(), hello["tsc_hz"].get<double>() / 1e6,
+                hello["mode"].get<std::string>().c_str());
+    std::printf("       features: %s\n", cpu["features"].dump().c_str());
+
+    json mode = s.ok("mode modex");
+    std::printf("mode modex: %dx%d, %d pages, set in %llu TSC ticks\n", mode["width"].get<int>(), mode["height"].get<int>(),
+                mode["pages"].get<int>(), mode["ticks"].get<unsigned long long>());
+    const raster::Palette& palette = raster::palette(raster::PaletteId::Default);
+
+    int failures = 0;
+    std::printf("%-8s %-4s %-12s %-30s %s\n", "pattern", "page", "draw ticks", "screendump vs host", "readback vs host");
+    for (int i = 0; i < raster::PATTERN_COUNT; ++i) {
+        auto pattern = raster::Pattern(i);
+        std::string name = raster::pattern_name(pattern);
+        int page = i % 3;
+        json drawn = s.ok("pattern " + name + " " + std::to_string(page));
+        s.ok("flip " + std::to_string(page));
+        IndexImage expected = render_pattern(pattern, MODE_X);
+        IndexImage shot = s.screenshot("pattern-" + name, MODE_X, palette);
+        std::filesystem::copy_file(s.run_dir() + "/pattern-" + name + ".png", a.out + "/pattern-" + name + ".png",
+                                   std::filesystem::copy_options::overwrite_existing);
+        Comparison by_dump = compare(shot, expected);
+        Comparison by_readback = compare(s.readback(page), expected);
+        std::printf("%-8s %-4d %-12llu %-30s %s\n", name.c_str(), page, drawn["ticks"].get<unsigned long long>(),
+                    by_dump.equal() ? "equal" : by_dump.summary().c_str(), by_readback.equal() ? "equal" : by_readback.summary().c_str());
+        if (!by_dump.equal()) {
+            ++failures;
+            std::printf("         %s\n", write_mismatch(a.out, "pattern-" + name, shot, expected, palette).c_str());
+        }
+        if (!by_readback.equal()) ++failures;
+        std::fflush(stdout);
+    }
+    failures += play_scenes(a, s);
+    s.ok("exit 0");
+    ExitInfo e = s.wait_exit();
+    std::printf("screenshots (640x480, QEMU screendump): %s/pattern-*.png, %s/scene-*.png\n", a.out.c_str(), a.out.c_str());
+    std::printf("serial log: %s/serial.log\n%s\n", s.run_dir().c_str(), e.describe().c_str());
+    if (failures) std::printf("modexlab run: %d comparison(s) FAILED\n", failures);
+    return failures || !(e.exited && e.status == 1) ? 1 : 0;
+}
+
+int exec(Args& a) {
+    a.session.name = "exec";
+    Session s(a.session);
+    std::printf("%s\n", s.boot_line().dump().c_str());
+    bool all_ok = true;
+    for (const std::string& c : a.commands) {
+        if (c.rfind("screendump:", 0) == 0) {
+            std::string name = c.substr(11);
+            RgbImage img = s.screendump(name);
+            std::printf("screendump %s/%s.png (%dx%d)\n", s.run_dir().c_str(), name.c_str(), img.width, img.height);
+            continue;
+        }
+        json reply;
+        if (c.rfind("scene:", 0) == 0) {
+            reply = s.upload_scene(read_whole_file(c.substr(6)));
+        } else if (c.rfind("file:", 0) == 0) {
+            size_t eq = c.find('=');
+            if (eq == std::string::npos) throw HarnessError("'" + c + "': file:NAME=PATH");
+            reply = s.upload_file(c.substr(5, eq - 5), read_whole_file(c.substr(eq + 1)));
+        } else {
+            reply = s.command(c, [&](const json& event) {
+                std::printf("%s\n", event.dump().c_str());
+                std::fflush(stdout);
+            });
+        }
+        std::printf("%s\n", shorten_data(reply, a.full).c_str());
+        std::fflush(stdout);
+        all_ok = all_ok && reply["ok"].get<bool>();
+        if (reply.value("cmd", "") == "exit" && reply["ok"].get<bool>()) {
+            std::printf("%s\n", s.wait_exit().describe().c_str());
+            return all_ok ? 0 : 1;
+        }
+    }
+    return all_ok ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Args a = parse(argc, argv);
+    try {
+        return a.verb == "run" ? run(a) : exec(a);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "modexlab %s: FAILED: %s\n", a.verb.c_str(), e.what());
+        return 1;
+    }
+}

@@ -1,0 +1,200 @@
+// fork/exec of QEMU with a death signal tied to the harness, Unix-socket rendezvous, exit decoding.
+#include "qemu/harness/process.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "qemu/lib/error.h"
+
+namespace harness {
+
+namespace {
+
+std::string errno_text(const std::string& what) { return what + ": " + std::strerror(errno); }
+
+int listen_unix(const std::string& path) {
+    int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd < 0) throw HarnessError(errno_text("socket"));
+    sockaddr_un addr{};
+    addr.sun_family = AF_UNIX;
+    if (path.size() >= sizeof addr.sun_path) throw HarnessError("socket path too long: " + path);
+    std::memcpy(addr.sun_path, path.c_str(), path.size() + 1);
+    if (::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) < 0 || ::listen(fd, 1) < 0) {
+        std::string e = errno_text("bind/listen " + path);
+        ::close(fd);
+        throw HarnessError(e);
+    }
+    return fd;
+}
+
+ExitInfo exit_from_wait_status(int status) {
+    ExitInfo e;
+    e.exited = WIFEXITED(status);
+    e.status = e.exited ? WEXITSTATUS(status) : 0;
+    e.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    return e;
+}
+
+}  // namespace
+
+std::string ExitInfo::describe() const {
+    if (!exited) return "QEMU killed by signal " + std::to_string(signal);
+    if (status == 0) return "QEMU exit status 0: reset or triple fault under -no-reboot (never a pass)";
+    if (status % 2 == 0) return "QEMU exit status " + std::to_string(status) + " (not from isa-debug-exit)";
+    int value = status >> 1;
+    std::string s = "QEMU exit status " + std::to_string(status) + ": ";
+    if (value <= 0x3F) return s + "kernel exit code " + std::to_string(value);
+    if (value < 0x60) return s + "CPU exception, vector " + std::to_string(value - 0x40);
+    if (value == 0x60) return s + "kernel panic";
+    return s + "unknown isa-debug-exit value " + std::to_string(value);
+}
+
+std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& serial_socket,
+                                        const std::string& qmp_socket) {
+    std::vector<std::string> a = {
+        "-machine", "pc,accel=tcg", "-m", "128", "-vga", "std", "-no-reboot",
+        "-device", "isa-debug-exit,iobase=0xf4,iosize=0x04",
+        "-chardev", "socket,id=com1,path=" + serial_socket + ",logfile=" + c.run_dir + "/serial.log",
+        "-serial", "chardev:com1",
+        "-chardev", "socket,id=qmp,path=" + qmp_socket,
+        "-mon", "chardev=qmp,mode=control",
+        "-parallel", "none", "-net", "none",
+    };
+    if (!c.display) a.insert(a.end(), {"-display", "none"});
+    if (c.icount) a.insert(a.end(), {"-icount", "shift=0,align=off,sleep=off"});
+    switch (c.medium) {
+    case BootMedium::Kernel:
+        a.insert(a.end(), {"-kernel", c.image});
+        if (!c.append.empty()) a.insert(a.end(), {"-append", c.append});
+        if (!c.modules.empty()) {
+            std::string list;  // QEMU splits -initrd at commas; a comma in a path is written twice
+            for (const std::string& m : c.modules) {
+                if (!list.empty()) list += ",";
+                for (char ch : m) list += ch == ',' ? std::string(",,") : std::string(1, ch);
+            }
+            a.insert(a.end(), {"-initrd", list});
+        }
+        break;
+    case BootMedium::Cdrom: a.insert(a.end(), {"-cdrom", c.image, "-boot", "d"}); break;
+    case BootMedium::Usb:
+        a.insert(a.end(), {"-drive", "if=none,id=stick,format=raw,file=" + c.image, "-device", "nec-usb-xhci,id=xhci",
+                           "-device", "usb-storage,bus=xhci.0,drive=stick,bootindex=0"});
+        break;
+    }
+    a.insert(a.end(), c.extra_args.begin(), c.extra_args.end());
+    return a;
+}
+
+QemuProcess::QemuProcess(const QemuConfig& config) {
+    if (!std::filesystem::exists(config.image)) throw HarnessError("boot image not found: " + config.image);
+    std::filesystem::create_directories(config.run_dir);
+    log_path_ = config.run_dir + "/qemu.log";
+
+    // Socket paths must be short (108 bytes): a private directory under /tmp.
+    char dir_template[] = "/tmp/modexlab-XXXXXX";
+    if (!::mkdtemp(dir_template)) throw HarnessError(errno_text("mkdtemp"));
+    socket_dir_ = dir_template;
+    std::string serial_path = socket_dir_ + "/com1", qmp_path = socket_dir_ + "/qmp";
+    int serial_listen = listen_unix(serial_path);
+    int qmp_listen = listen_unix(qmp_path);
+
+    std::vector<std::string> args = qemu_arguments(config, serial_path, qmp_path);
+    args.insert(args.begin(), "qemu-system-i386");
+    std::vector<char*> argv;
+    for (auto& s : args) argv.push_back(s.data());
+    argv.push_back(nullptr);
+
+    int log_fd = ::open(log_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    pid_t parent = ::getpid();
+    pid_ = ::fork();
+    if (pid_ < 0) throw HarnessError(errno_text("fork"));
+    if (pid_ == 0) {
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // QEMU never outlives the harness
+        if (::getppid() != parent) ::_exit(127);
+        if (log_fd >= 0) {
+            ::dup2(log_fd, 1);
+            ::dup2(log_fd, 2);
+        }
+        int null_fd = ::open("/dev/null", O_RDONLY);
+        if (null_fd >= 0) ::dup2(null_fd, 0);
+        ::execvp(argv[0], argv.data());
+        ::dprintf(2, "exec qemu-system-i386: %s\n", std::strerror(errno));
+        ::_exit(127);
+    }
+    if (log_fd >= 0) ::close(log_fd);
+
+    auto accept_one = [&](int listen_fd, const char* what) {
+        auto deadline = Clock::now() + std::chrono::seconds(20);
+        while (Clock::now() < deadline) {
+            if (poll_exit()) break;
+            pollfd p{listen_fd, POLLIN, 0};
+            if (::poll(&p, 1, 50) > 0) {
+                int fd = ::accept4(listen_fd, nullptr, nullptr, SOCK_CLOEXEC);
+                if (fd >= 0) return fd;
+            }
+        }
+        ::close(serial_listen);
+        ::close(qmp_listen);
+        std::string why = exit_ ? exit_->describe() : std::string("timeout");
+        kill();
+        throw HarnessError(std::string("QEMU did not connect its ") + what + " socket (" + why + ")\n" + log_tail());
+    };
+    int serial_fd = accept_one(serial_listen, "serial");
+    int qmp_fd = accept_one(qmp_listen, "QMP");
+    ::close(serial_listen);
+    ::close(qmp_listen);
+    serial_ = LineChannel(serial_fd);
+    qmp_ = LineChannel(qmp_fd);
+}
+
+QemuProcess::~QemuProcess() {
+    kill();
+    std::error_code ec;
+    if (!socket_dir_.empty()) std::filesystem::remove_all(socket_dir_, ec);
+}
+
+std::optional<ExitInfo> QemuProcess::poll_exit() {
+    if (exit_ || pid_ <= 0) return exit_;
+    int status = 0;
+    pid_t r = ::waitpid(pid_, &status, WNOHANG);
+    if (r == pid_) exit_ = exit_from_wait_status(status);
+    return exit_;
+}
+
+std::optional<ExitInfo> QemuProcess::wait_exit(std::chrono::milliseconds timeout) {
+    auto deadline = Clock::now() + timeout;
+    while (!poll_exit() && Clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    return exit_;
+}
+
+void QemuProcess::kill() {
+    if (pid_ <= 0 || exit_) return;
+    ::kill(pid_, SIGKILL);
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    exit_ = exit_from_wait_status(status);
+}
+
+std::string QemuProcess::log_tail(size_t lines) const {
+    std::ifstream in(log_path_);
+    std::vector<std::string> all;
+    for (std::string line; std::getline(in, line);) all.push_back(line);
+    std::string out;
+    for (size_t i = all.size() > lines ? all.size() - lines : 0; i < all.size(); ++i) out += "  qemu: " + all[i] + "\n";
+    return out;
+}
+
+}  // namespace harness

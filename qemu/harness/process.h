@@ -1,0 +1,70 @@
+// Starting qemu-system-i386 (TCG, headless, -no-reboot, isa-debug-exit, COM1 and QMP on Unix sockets),
+// watching it, and always killing it.
+#pragma once
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "qemu/harness/channel.h"
+
+namespace harness {
+
+enum class BootMedium { Kernel, Cdrom, Usb };
+
+struct QemuConfig {
+    BootMedium medium = BootMedium::Kernel;
+    std::string image;       // the ELF (-kernel) or the ISO (CD or USB stick)
+    std::string append;      // multiboot command line, -kernel only
+    std::vector<std::string> modules;  // -kernel only: Multiboot modules (-initrd), each "PATH" or "PATH NAME"
+    bool display = false;    // a window (QEMU's default display) instead of none
+    bool icount = false;     // -icount shift=0,align=off,sleep=off: rdtsc counts guest instructions
+    std::string run_dir;     // serial.log and qemu.log go here
+    std::vector<std::string> extra_args;
+};
+
+// How QEMU ended. isa-debug-exit makes the status (v << 1) | 1 for a value v the kernel wrote.
+struct ExitInfo {
+    bool exited = false;  // false: killed by a signal
+    int status = 0;
+    int signal = 0;
+    std::string describe() const;  // what the status means for modexlab (docs/protocol.md)
+};
+
+// The argument vector (without the program name) for the given sockets.
+std::vector<std::string> qemu_arguments(const QemuConfig& config, const std::string& serial_socket,
+                                        const std::string& qmp_socket);
+
+class QemuProcess {
+public:
+    // Listens on two fresh Unix sockets, starts QEMU as their client and accepts both connections.
+    // Throws HarnessError (with QEMU's own messages) when it cannot.
+    explicit QemuProcess(const QemuConfig& config);
+    ~QemuProcess();
+    QemuProcess(const QemuProcess&) = delete;
+    QemuProcess& operator=(const QemuProcess&) = delete;
+
+    LineChannel take_serial() { return std::move(serial_); }
+    LineChannel take_qmp() { return std::move(qmp_); }
+
+    std::optional<ExitInfo> poll_exit();
+    std::optional<ExitInfo> wait_exit(std::chrono::milliseconds timeout);
+    void kill();  // SIGKILL and reap; safe to call twice
+    bool running() const { return pid_ > 0 && !exit_; }
+
+    std::string log_tail(size_t lines = 10) const;  // QEMU's stderr/stdout
+    const std::string& log_path() const { return log_path_; }
+
+private:
+    pid_t pid_ = -1;
+    std::optional<ExitInfo> exit_;
+    std::string socket_dir_;
+    std::string log_path_;
+    LineChannel serial_;
+    LineChannel qmp_;
+};
+
+}  // namespace harness

@@ -1,0 +1,141 @@
+// Session: boot, talk, snapshot, and on any failure kill QEMU and say what happened around it.
+#include "qemu/harness/session.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include "kernel/lib/encode.h"
+#include "qemu/harness/readback.h"
+
+#ifndef MODEXLAB_BUILD_DIR
+#define MODEXLAB_BUILD_DIR "build"
+#endif
+
+namespace harness {
+
+std::string build_dir() {
+    const char* env = std::getenv("MODEXLAB_BUILD_DIR");
+    return env && *env ? env : MODEXLAB_BUILD_DIR;
+}
+
+Session::Session(SessionOptions options) : options_(std::move(options)) {
+    run_dir_ = build_dir() + "/runs/" + options_.name;
+    std::filesystem::remove_all(run_dir_);
+    std::filesystem::create_directories(run_dir_);
+    QemuConfig config;
+    config.medium = options_.medium;
+    config.image = !options_.image.empty() ? options_.image
+                   : options_.medium == BootMedium::Kernel ? build_dir() + "/kernel/modexlab.elf"
+                                                            : build_dir() + "/modexlab.iso";
+    config.append = options_.append;
+    config.modules = options_.modules;
+    config.display = options_.display;
+    config.icount = options_.icount;
+    config.run_dir = run_dir_;
+    qemu_ = std::make_unique<QemuProcess>(config);
+    link_ = KernelLink(qemu_->take_serial());
+    qmp_ = QmpClient(qemu_->take_qmp());
+    try {
+        qmp_.handshake(std::chrono::seconds(20));
+        boot_line_ = link_.wait_boot(options_.boot_timeout);
+    } catch (const HarnessError& e) {
+        fail(std::string("boot failed: ") + e.what());
+    }
+}
+
+Session::~Session() = default;  // QemuProcess kills QEMU
+
+std::string Session::context() const {
+    std::string s = "\nlast serial lines (" + run_dir_ + "/serial.log):\n" + link_.transcript_tail();
+    std::string log = qemu_ ? qemu_->log_tail() : "";
+    if (!log.empty()) s += "QEMU said:\n" + log;
+    return s;
+}
+
+void Session::fail(const std::string& what) {
+    std::string status;
+    if (qemu_) {
+        auto e = qemu_->wait_exit(std::chrono::seconds(1));  // a closed line usually means QEMU is ending
+        status = e ? "\n" + e->describe() : "\nQEMU was still running: killed";
+        qemu_->kill();
+    }
+    throw HarnessError(what + status + context());
+}
+
+json Session::guarded(const std::function<json()>& exchange) {
+    try {
+        return exchange();
+    } catch (const KernelFault& f) {
+        auto e = qemu_->wait_exit(std::chrono::seconds(5));
+        std::string status = e ? e->describe() : "QEMU did not exit after the fault: killed";
+        qemu_->kill();
+        throw KernelFault(std::string(f.what()) + "\n" + status + context(), f.report());
+    } catch (const HarnessError& e) {
+        fail(e.what());
+    }
+}
+
+json Session::command(const std::string& line, const KernelLink::EventFn& on_event) {
+    return guarded([&] { return link_.request(line, options_.command_timeout, on_event); });
+}
+
+json Session::ok(const std::string& line, const KernelLink::EventFn& on_event) {
+    json reply = command(line, on_event);
+    if (!reply["ok"].get<bool>()) fail("'" + line + "' failed: " + reply.value("error", "(no error text)"));
+    return reply;
+}
+
+json Session::raw(const std::string& bytes) {
+    return guarded([&] {
+        link_.send_raw(bytes);
+        return link_.read_reply("raw input", options_.command_timeout);
+    });
+}
+
+json Session::upload_scene(const std::string& text) {
+    char crc[16];
+    std::snprintf(crc, sizeof crc, "0x%08x", lib::crc32(0, reinterpret_cast<const uint8_t*>(text.data()), text.size()));
+    return raw("scene " + std::to_string(text.size()) + " " + crc + "\n" + text);
+}
+
+json Session::upload_file(const std::string& name, const std::string& bytes) {
+    char crc[16];
+    std::snprintf(crc, sizeof crc, "0x%08x", lib::crc32(0, reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()));
+    return raw("file " + name + " " + std::to_string(bytes.size()) + " " + crc + "\n" + bytes);
+}
+
+RgbImage Session::screendump(const std::string& name) {
+    std::string path = run_dir_ + "/" + name + ".png";
+    try {
+        qmp_.execute("stop");
+        qmp_.execute("screendump", {{"filename", path}, {"format", "png"}});
+        qmp_.execute("cont");
+        return load_image(path);
+    } catch (const HarnessError& e) {
+        fail(std::string("screendump ") + name + ": " + e.what());
+    }
+}
+
+IndexImage Session::screenshot(const std::string& name, ScreenMode mode, const raster::Palette& palette) {
+    RgbImage dump = screendump(name);
+    DecodeResult d = decode_screendump(dump, palette, mode);
+    if (!d.ok) fail("screendump " + run_dir_ + "/" + name + ".png: " + d.error);
+    return d.image;
+}
+
+IndexImage Session::readback(int page) {
+    json reply = ok("readback " + std::to_string(page));
+    try {
+        return decode_readback(reply);
+    } catch (const HarnessError& e) {
+        fail(e.what());
+    }
+}
+
+ExitInfo Session::wait_exit(std::chrono::milliseconds timeout) {
+    auto e = qemu_->wait_exit(timeout);
+    if (!e) fail("QEMU still running " + std::to_string(timeout.count()) + " ms after the kernel was told to exit");
+    return *e;
+}
+
+}  // namespace harness

@@ -1,0 +1,87 @@
+// One booted kernel under the harness: QEMU, the serial protocol and QMP together, with every
+// failure reported with its context (the last serial lines and QEMU's own messages).
+#pragma once
+
+#include <chrono>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "qemu/lib/json.h"
+
+#include "qemu/lib/image.h"
+#include "qemu/harness/kernel_link.h"
+#include "qemu/harness/process.h"
+#include "qemu/harness/qmp.h"
+
+namespace harness {
+
+
+
+// The build directory (absolute) the harness takes default images from and writes runs into.
+std::string build_dir();
+
+struct SessionOptions {
+    BootMedium medium = BootMedium::Kernel;
+    std::string image;                 // empty: build/kernel/modexlab.elf, or build/modexlab.iso for CD/USB
+    std::string append = "boot=serve"; // -kernel only; an ISO boots its GRUB menu's default entry
+    std::vector<std::string> modules;  // -kernel only: -initrd entries, each "PATH" or "PATH NAME"
+    bool display = false;              // a QEMU window (for people watching)
+    bool icount = false;
+    std::string name = "session";      // the run directory is build/runs/NAME
+    std::chrono::milliseconds boot_timeout{60000};
+    std::chrono::milliseconds command_timeout{30000};
+};
+
+class Session {
+public:
+    explicit Session(SessionOptions options);  // boots and waits for the boot line
+    ~Session();
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
+
+    const json& boot_line() const { return boot_line_; }
+
+    // The reply to `line`, ok true or false. Throws KernelFault on a CPU exception (after QEMU has
+    // exited, see exit_info()), HarnessError on any protocol failure, a timeout or QEMU's end.
+    json command(const std::string& line, const KernelLink::EventFn& on_event = nullptr);
+    // As command(), but an ok:false reply is a failure too.
+    json ok(const std::string& line, const KernelLink::EventFn& on_event = nullptr);
+    // Sends bytes as they are (malformed input tests) and reads one reply.
+    json raw(const std::string& bytes);
+
+    // `scene BYTES CRC32` followed by the text: the reply (ok true or false).
+    json upload_scene(const std::string& text);
+    // `file NAME BYTES CRC32` followed by the bytes: the reply (ok true or false).
+    json upload_file(const std::string& name, const std::string& bytes);
+
+    // QMP stop, screendump (PNG, saved as RUN_DIR/NAME.png), cont.
+    RgbImage screendump(const std::string& name);
+    // screendump, decoded to palette indices for `mode`; throws when it does not decode.
+    IndexImage screenshot(const std::string& name, ScreenMode mode, const raster::Palette& palette);
+    // `readback PAGE`, decoded and checked.
+    IndexImage readback(int page);
+
+    // Waits for QEMU to end (after `exit`); throws if it is still running after `timeout`.
+    ExitInfo wait_exit(std::chrono::milliseconds timeout = std::chrono::seconds(10));
+    std::optional<ExitInfo> exit_info() { return qemu_->poll_exit(); }
+
+    const std::string& run_dir() const { return run_dir_; }
+    std::string context() const;
+
+private:
+    [[noreturn]] void fail(const std::string& what);
+    // Runs one exchange with the kernel; failures get QEMU's fate and the context added.
+    json guarded(const std::function<json()>& exchange);
+
+    SessionOptions options_;
+    std::string run_dir_;
+    std::unique_ptr<QemuProcess> qemu_;
+    KernelLink link_;
+    QmpClient qmp_;
+    json boot_line_;
+};
+
+}  // namespace harness

@@ -1,0 +1,291 @@
+// modexlab-bench: every mapper on every demo scene, speed measured in the kernel under QEMU's
+// icount, accuracy on the host twin against the exact reference, the kernel's pictures checked
+// against the host's; the report under build/report. docs/bench.md describes it all.
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "qemu/tools/demo_scenes.h"
+#include "qemu/lib/error.h"
+#include "qemu/lib/image.h"
+#include "qemu/accuracy/measure.h"
+#include "qemu/harness/session.h"
+#include "qemu/tools/trade.h"
+
+namespace {
+
+using namespace harness;
+
+const char* USAGE =
+    "usage: modexlab-bench [--scenes NAME,...] [--mappers NAME,...] [--frames N] [--out DIR] [--kernel ELF] [--no-wall]\n"
+    "  --scenes   demo scenes (default: all; modexlab-scene list) or scene files (uploaded; procedural textures only)\n"
+    "  --mappers  mappers (default: all of the registry)\n"
+    "  --frames   frames a scene, spread evenly over its animation (default 8)\n"
+    "  --out      where the report goes (default build/report): trade.csv, trade.md, trade-SCENE.png\n"
+    "  --no-wall  skip the wall-clock frames per second (QEMU without icount)\n";
+
+[[noreturn]] void usage_error(const std::string& why) {
+    std::fprintf(stderr, "modexlab-bench: %s\n%s", why.c_str(), USAGE);
+    std::exit(2);
+}
+
+std::vector<std::string> split_commas(const std::string& s) {
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    for (std::string item; std::getline(in, item, ',');)
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+struct BenchScene {
+    std::string name;  // in the report
+    std::string path;  // the file on the host
+    bool builtin;      // a demo scene: the kernel has it; else uploaded
+    LoadedWorld host;
+};
+
+struct Args {
+    std::vector<std::string> scenes, mappers;
+    int frames = 8;
+    std::string out, kernel;
+    bool wall = true;
+};
+
+Args parse(int argc, char** argv) {
+    Args a;
+    a.out = build_dir() + "/report";
+    for (int i = 1; i < argc; ++i) {
+        std::string s = argv[i];
+        auto value = [&]() -> std::string {
+            if (i + 1 >= argc) usage_error(s + " needs a value");
+            return argv[++i];
+        };
+        if (s == "-h" || s == "--help") {
+            std::fputs(USAGE, stdout);
+            std::exit(0);
+        } else if (s == "--scenes") {
+            a.scenes = split_commas(value());
+        } else if (s == "--mappers") {
+            a.mappers = split_commas(value());
+            for (const std::string& m : a.mappers)
+                if (!raster::find_mapper({m.data(), m.size()})) usage_error("unknown mapper '" + m + "'");
+        } else if (s == "--frames") {
+            a.frames = std::atoi(value().c_str());
+            if (a.frames < 1 || a.frames > 1000) usage_error("--frames takes 1..1000");
+        } else if (s == "--out") {
+            a.out = value();
+        } else if (s == "--kernel") {
+            a.kernel = value();
+        } else if (s == "--no-wall") {
+            a.wall = false;
+        } else {
+            usage_error("unknown argument '" + s + "'");
+        }
+    }
+    if (a.scenes.empty())
+        for (const DemoScene& d : demo_scenes()) a.scenes.push_back(d.name);
+    if (a.mappers.empty())
+        for (int i = 0; i < raster::MAPPER_COUNT; ++i) a.mappers.push_back(raster::MAPPERS[i].name);
+    return a;
+}
+
+BenchScene open_scene(const std::string& spec) {
+    BenchScene s;
+    bool demo = false;
+    for (const DemoScene& d : demo_scenes()) demo = demo || spec == d.name;
+    if (demo) {
+        s.name = spec, s.path = "scenes/" + spec + ".scene", s.builtin = true;
+    } else {
+        if (!std::filesystem::is_regular_file(spec)) throw HarnessError("no demo scene or scene file '" + spec + "' (modexlab-scene list)");
+        s.name = std::filesystem::path(spec).stem().string(), s.path = spec, s.builtin = false;
+    }
+    s.host = load_world_file(s.path);
+    return s;
+}
+
+// The kernel loads the scene: a built-in by name, a file by upload.
+void load_in_kernel(Session& k, const BenchScene& s) {
+    json r = s.builtin ? k.command("load " + s.name + ".scene") : k.upload_scene(read_whole_file(s.path));
+    if (!r.value("ok", false)) throw HarnessError(s.path + ": the kernel refused it: " + r.value("error", std::string("?")));
+}
+
+// The surface a mapper is measured through: straight into the page for those that write Mode X
+// planes themselves, else a linear RAM surface and its blit.
+std::string surface_of(const raster::Mapper& m) { return (m.needs & raster::NEED_PLANAR_TARGET) ? "vga" : "linear"; }
+
+uint64_t sum_of(const json& r, const char* field) { return r[field]["sum"].get<uint64_t>(); }
+
+TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frames) {
+    TradeRow row;
+    row.scene = s.name, row.mapper = m.name, row.family = m.family, row.surface = surface_of(m);
+    json last;
+    json r = k.ok("bench " + std::to_string(frames) + " " + m.name + " " + row.surface, [&](const json& e) { last = e; });
+    row.walker = r["walker"].get<std::string>(), row.loop = r["loop"].get<std::string>();
+    row.frames = r["frames"].get<uint32_t>();
+    row.polygons = r["polygons"].get<uint64_t>(), row.rejected = r["rejected"].get<uint64_t>();
+    row.spans = r["spans"].get<uint64_t>(), row.pixels = r["pixels"].get<uint64_t>();
+    row.ticks = sum_of(r, "ticks"), row.geometry = sum_of(r, "ticks_geometry"), row.clear = sum_of(r, "ticks_clear");
+    row.draw = sum_of(r, "ticks_draw"), row.setup = sum_of(r, "ticks_setup"), row.walk = sum_of(r, "ticks_walk");
+    row.inner = sum_of(r, "ticks_inner"), row.blit = sum_of(r, "ticks_blit");
+
+    // accuracy on the host twin, the same frames; the last one also against the kernel's screen
+    const raster::Axis axis = row.walker == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
+    const int32_t length = s.host.world->frames;
+    for (int i = 0; i < frames; ++i) {
+        int32_t n = int32_t(int64_t(i) * length / frames);
+        auto frame = world_frame(s.host, n);
+        raster::accumulate(row.accuracy, measure_world_frame(s.host, *frame, m, axis));
+        if (i == frames - 1) {
+            if (last["frame"].get<int32_t>() != n) throw HarnessError("the kernel benched frame " + last["frame"].dump() + ", expected " + std::to_string(n));
+            IndexImage want = render_world_frame(s.host, *frame, m, axis);
+            RgbImage dump = k.screendump("bench-" + s.name + "-" + m.name);
+            row.kernel_equals_host = dump.rgb == screendump_of(want, s.host.world->palette).rgb;
+        }
+    }
+    return row;
+}
+
+// Frames per second in QEMU without icount: the emulator's cost of VGA memory against RAM and
+// blit, on this host. Returns a Markdown table.
+std::string wall_clock(std::vector<BenchScene>& scenes, const std::string& kernel, bool tty) {
+    SessionOptions o;
+    o.name = "bench-wall";
+    o.image = kernel;
+    Session k(o);
+    double tsc_hz = k.ok("hello")["tsc_hz"].get<double>();
+    k.ok("mode modex");
+    struct Way {
+        const char* mapper;
+        const char* surface;
+    };
+    const Way ways[] = {{"persp-subdiv-16", "linear"}, {"persp-subdiv-16", "planar"}, {"persp-subdiv-16", "vga"},
+                        {"fast-affine", "linear"},     {"fast-columns", "planar"},    {"fast-columns", "vga"}};
+    std::ostringstream md;
+    md << "## Wall clock in QEMU (TCG, no icount)\n\nFrames per second of `play 60` on this host: what emulated VGA memory costs "
+          "against drawing into RAM and blitting. It measures QEMU, not a PC; run to run it varies by some percent.\n\n| scene |";
+    for (const Way& w : ways) md << " " << w.mapper << " " << w.surface << " |";
+    md << "\n|---|";
+    for (size_t i = 0; i < sizeof ways / sizeof ways[0]; ++i) md << "--:|";
+    md << "\n";
+    for (BenchScene& s : scenes) {
+        load_in_kernel(k, s);
+        md << "| " << s.name << " |";
+        for (const Way& w : ways) {
+            if (tty) std::fprintf(stderr, "\r  wall clock: %s, %s %s          ", s.name.c_str(), w.mapper, w.surface);
+            json r = k.ok(std::string("play 60 ") + w.mapper + " " + w.surface, [](const json&) {});
+            double seconds = r["ticks_wall"].get<double>() / tsc_hz;
+            bool all = r["pixels"].get<uint64_t>() > 0;
+            md << " " << (all ? std::to_string(int(60 / seconds + 0.5)) : std::string("-")) << " |";
+        }
+        md << "\n";
+    }
+    if (tty) std::fprintf(stderr, "\r%70s\r", "");
+    md << "\n(-: the mapper refuses this scene's polygons.)\n";
+    k.ok("exit 0");
+    k.wait_exit();
+    return md.str();
+}
+
+// Real host cycles (modexlab-cycles, 32-bit static): each row's cycles per pixel as a ratio to the
+// baseline mapper's on the same scene, timed in the same run. Returns the baseline's name.
+std::string host_cycles(const std::vector<BenchScene>& scenes, const std::vector<const raster::Mapper*>& mappers, int frames,
+                        std::vector<TradeRow>& rows) {
+    std::string tool = build_dir() + "/host32/modexlab-cycles";
+    if (!std::filesystem::is_regular_file(tool)) throw HarnessError(tool + " is missing: make host builds it");
+    std::string paths, names;
+    for (const BenchScene& s : scenes) paths += (paths.empty() ? "" : ",") + s.path;
+    for (const raster::Mapper* m : mappers) names += (names.empty() ? "" : ",") + std::string(m->name);
+    std::string cmd = "'" + tool + "' '" + paths + "' '" + names + "' " + std::to_string(frames) + " '" + build_dir() + "/scenes'";
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) throw HarnessError("cannot run " + tool);
+    std::map<std::pair<std::string, std::string>, double> per_pixel;
+    char line[512];
+    while (std::fgets(line, sizeof line, p)) {
+        char scene[200], mapper[100];
+        unsigned long long pixels, cycles;
+        if (std::sscanf(line, "%199s %99s %llu %llu", scene, mapper, &pixels, &cycles) == 4 && pixels)
+            per_pixel[{scene, mapper}] = double(cycles) / double(pixels);
+    }
+    if (pclose(p) != 0) throw HarnessError(tool + " failed");
+    const std::string baseline = "affine";
+    for (TradeRow& r : rows) {
+        auto mine = per_pixel.find({r.scene, r.mapper}), base = per_pixel.find({r.scene, baseline});
+        if (mine != per_pixel.end() && base != per_pixel.end()) r.host_ratio = mine->second / base->second;
+    }
+    return baseline;
+}
+
+int run(const Args& a) {
+    const bool tty = isatty(2);
+    std::vector<BenchScene> scenes;
+    for (const std::string& spec : a.scenes) scenes.push_back(open_scene(spec));
+    std::vector<const raster::Mapper*> mappers;
+    for (const std::string& name : a.mappers) mappers.push_back(raster::find_mapper({name.data(), name.size()}));
+
+    SessionOptions o;
+    o.name = "bench";
+    o.image = a.kernel;
+    o.icount = true;
+    o.command_timeout = std::chrono::milliseconds(300000);
+    std::fprintf(stderr, "modexlab-bench: %zu scenes x %zu mappers, %d frames each, in QEMU with -icount shift=0 (ticks = guest instructions)\n",
+                 scenes.size(), mappers.size(), a.frames);
+    Session k(o);
+    k.ok("mode modex");
+    std::vector<TradeRow> rows;
+    const size_t total = scenes.size() * mappers.size();
+    for (BenchScene& s : scenes) {
+        load_in_kernel(k, s);
+        for (const raster::Mapper* m : mappers) {
+            std::fprintf(stderr, "[%zu/%zu] %s %s ", rows.size() + 1, total, s.name.c_str(), m->name);
+            TradeRow row = bench_one(k, s, *m, a.frames);
+            if (row.pixels) std::fprintf(stderr, "%.1f instructions/pixel, mean texel error %.3f%s\n", row.frame_per_pixel(),
+                                         row.accuracy.mean_texel_error, row.kernel_equals_host ? "" : ", kernel DIFFERS from host");
+            else std::fprintf(stderr, "refuses every polygon\n");
+            rows.push_back(row);
+        }
+    }
+    k.ok("exit 0");
+    k.wait_exit();
+    mark_pareto(rows);
+    std::fprintf(stderr, "host cycles: every mapper again, natively (32-bit, rdtsc)\n");
+    std::string baseline = host_cycles(scenes, mappers, a.frames, rows);
+
+    ReportInfo info;
+    info.how = "Measured in the kernel under QEMU 7.2 TCG with `-icount shift=0,align=off,sleep=off`: ticks are guest "
+               "instructions, identical run to run. " + std::to_string(a.frames) + " frames a scene, spread evenly over its animation; "
+               "per-pixel figures divide by the pixels the mapper drew. Accuracy: the host build of the same code against the exact "
+               "reference, on the same frames. Host cycles: the same code built as a 32-bit static program (NASM loops "
+               "included) drawing the same frames into RAM on the machine that ran the bench, timed with rdtsc (the least of 9 "
+               "runs a frame), as a ratio to `" + baseline + "` on the same scene (below 1: faster than it).";
+    info.command = "make bench";
+    if (a.wall) info.wall_clock = wall_clock(scenes, a.kernel, tty);
+    for (const BenchScene& s : scenes) {
+        std::string png = write_plot(a.out, s.name, rows);
+        if (!png.empty()) info.plots.push_back(std::filesystem::path(png).filename().string());
+    }
+    write_csv(a.out + "/trade.csv", rows);
+    write_markdown(a.out + "/trade.md", rows, info);
+    int differs = 0;
+    for (const TradeRow& r : rows) differs += !r.kernel_equals_host;
+    std::printf("report: %s/trade.csv, %s/trade.md, %zu plots (%s/trade-SCENE.png)\n", a.out.c_str(), a.out.c_str(), info.plots.size(), a.out.c_str());
+    if (differs) std::printf("modexlab-bench: %d kernel pictures DIFFER from the host's\n", differs);
+    return differs ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(parse(argc, argv));
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "modexlab-bench: %s\n", e.what());
+        return 1;
+    }
+}

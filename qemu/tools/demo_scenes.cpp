@@ -1,0 +1,359 @@
+// The demo scenes as code, and the OBJ converter.
+#include "qemu/tools/demo_scenes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <sstream>
+
+#include "qemu/lib/error.h"
+
+namespace harness {
+
+namespace {
+
+// A decimal the scene parser takes: at most 6 digits after the point, trailing zeros trimmed.
+std::string num(double x) {
+    if (std::fabs(x) < 5e-7) x = 0;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6f", x);
+    std::string s = buf;
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    if (s == "-0") s = "0";
+    return s;
+}
+
+struct P3 {
+    double x, y, z;
+};
+P3 sub(P3 a, P3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+P3 cross3(P3 a, P3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+double dot3(P3 a, P3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+// A mesh being made: positions and texture coordinates shared by value, faces as corner lists.
+class MeshMaker {
+public:
+    explicit MeshMaker(std::string name) : name_(std::move(name)) {}
+    int position(P3 p) { return index(positions_, {num(p.x), num(p.y), num(p.z)}); }
+    int uv(double u, double v) { return index(uvs_, {num(u), num(v)}); }
+    // Adds a face given in any winding; `outward` is a direction its front must face.
+    void face(std::vector<std::pair<P3, std::pair<double, double>>> corners, P3 outward) {
+        P3 n = cross3(sub(corners[1].first, corners[0].first), sub(corners[2].first, corners[0].first));
+        if (dot3(n, outward) < 0) std::reverse(corners.begin(), corners.end());
+        std::vector<std::pair<int, int>> f;
+        for (const auto& c : corners) f.push_back({position(c.first), uv(c.second.first, c.second.second)});
+        faces_.push_back(f);
+    }
+    std::string text() const {
+        std::ostringstream o;
+        o << "mesh " << name_ << "\n";
+        for (const auto& p : ordered(positions_)) o << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
+        for (const auto& t : ordered(uvs_)) o << "vt " << t[0] << " " << t[1] << "\n";
+        for (const auto& f : faces_) {
+            o << "f";
+            for (const auto& [p, t] : f) o << " " << p << "/" << t;
+            o << "\n";
+        }
+        o << "end\n";
+        return o.str();
+    }
+
+private:
+    using Key = std::vector<std::string>;
+    static int index(std::map<Key, int>& m, const Key& k) {
+        auto it = m.find(k);
+        if (it != m.end()) return it->second;
+        int i = int(m.size()) + 1;
+        m[k] = i;
+        return i;
+    }
+    static std::vector<Key> ordered(const std::map<Key, int>& m) {
+        std::vector<Key> out(m.size());
+        for (const auto& [k, i] : m) out[size_t(i - 1)] = k;
+        return out;
+    }
+    std::string name_;
+    std::map<Key, int> positions_, uvs_;
+    std::vector<std::vector<std::pair<int, int>>> faces_;
+};
+
+constexpr double PI = 3.14159265358979323846;
+
+// A box from `lo` to `hi` whose faces look inward (a room), cut into `segments` pieces along z:
+// floor and ceiling pieces into their makers, wall pieces into `walls` in turn (the two ends into
+// the first); texture coordinates `floor_scale` and `wall_scale` texture sizes a unit.
+void room(MeshMaker& floor, MeshMaker& ceiling, std::vector<MeshMaker>& walls, P3 lo, P3 hi, int segments, double floor_scale, double wall_scale) {
+    const double dz = (hi.z - lo.z) / segments;
+    for (int s = 0; s < segments; ++s) {
+        double z0 = lo.z + s * dz, z1 = z0 + dz;
+        auto fu = [&](double x) { return (x - lo.x) * floor_scale; };
+        auto fv = [&](double z) { return (hi.z - z) * floor_scale; };
+        floor.face({{{lo.x, lo.y, z0}, {fu(lo.x), fv(z0)}}, {{hi.x, lo.y, z0}, {fu(hi.x), fv(z0)}}, {{hi.x, lo.y, z1}, {fu(hi.x), fv(z1)}}, {{lo.x, lo.y, z1}, {fu(lo.x), fv(z1)}}},
+                   {0, 1, 0});
+        ceiling.face({{{lo.x, hi.y, z0}, {fu(lo.x), fv(z0)}}, {{hi.x, hi.y, z0}, {fu(hi.x), fv(z0)}}, {{hi.x, hi.y, z1}, {fu(hi.x), fv(z1)}}, {{lo.x, hi.y, z1}, {fu(lo.x), fv(z1)}}},
+                     {0, -1, 0});
+        MeshMaker& w = walls[size_t(s) % walls.size()];
+        auto wv = [&](double y) { return (hi.y - y) * wall_scale; };
+        for (double x : {lo.x, hi.x}) {
+            // u runs to the right as one faces the wall from inside: -z on the left wall, +z on the right
+            auto wu = [&](double z) { return (x == lo.x ? hi.z - z : z - lo.z) * wall_scale; };
+            w.face({{{x, lo.y, z0}, {wu(z0), wv(lo.y)}}, {{x, hi.y, z0}, {wu(z0), wv(hi.y)}}, {{x, hi.y, z1}, {wu(z1), wv(hi.y)}}, {{x, lo.y, z1}, {wu(z1), wv(lo.y)}}},
+                   {x == lo.x ? 1.0 : -1.0, 0, 0});
+        }
+    }
+    // the two ends
+    MeshMaker& w = walls[0];
+    for (double z : {lo.z, hi.z}) {
+        auto eu = [&](double x) { return (z == lo.z ? x - lo.x : hi.x - x) * wall_scale; };
+        auto ev = [&](double y) { return (hi.y - y) * wall_scale; };
+        w.face({{{lo.x, lo.y, z}, {eu(lo.x), ev(lo.y)}}, {{hi.x, lo.y, z}, {eu(hi.x), ev(lo.y)}}, {{hi.x, hi.y, z}, {eu(hi.x), ev(hi.y)}}, {{lo.x, hi.y, z}, {eu(lo.x), ev(hi.y)}}},
+               {0, 0, z == lo.z ? 1.0 : -1.0});
+    }
+}
+
+const char* CORRIDOR_CAMERA =
+    "camera\n"
+    "  fov 70\n"
+    "  near 0.05\n"
+    "  far 200\n"
+    "  # down the corridor, a look at the right wall, back up it, a look at the left wall\n"
+    "  key 0     0 1.5 55      0 1.4 45\n"
+    "  key 5     0.8 1.6 -50   0.5 1.3 -60\n"
+    "  key 5.5   0.8 1.6 -50   4 1.5 -50\n"
+    "  key 6     0.8 1.6 -50   0.5 1.3 -40\n"
+    "  key 11    0 1.5 55      0 1.4 65\n"
+    "  key 11.5  0 1.5 55      -4 1.5 55\n"
+    "  key 12    0 1.5 55      0 1.4 45\n"
+    "end\n"
+    "frames 360\n";
+
+std::string ball() {
+    // latitude bands of 30 degrees, 12 facets of 30 degrees around: one copy of the texture spans
+    // two neighbouring facets (u 0..0.5 on one, 0.5..1 on the next) and one band
+    MeshMaker m("ball");
+    const int bands = 6, around = 12;
+    auto at = [&](int a, int b) {
+        double lat = (90.0 - 180.0 * a / bands) * PI / 180, lon = 360.0 * b / around * PI / 180;
+        if (a == 0) return P3{0, 1, 0};
+        if (a == bands) return P3{0, -1, 0};
+        return P3{std::cos(lat) * std::cos(lon), std::sin(lat), -std::cos(lat) * std::sin(lon)};
+    };
+    for (int a = 0; a < bands; ++a)
+        for (int b = 0; b < around; ++b) {
+            double u0 = (b % 2) * 0.5, u1 = u0 + 0.5;
+            P3 p00 = at(a, b), p01 = at(a, b + 1), p10 = at(a + 1, b), p11 = at(a + 1, b + 1);
+            P3 mid{(p00.x + p11.x) / 2, (p00.y + p11.y) / 2, (p00.z + p11.z) / 2};
+            if (a == 0) m.face({{p00, {(u0 + u1) / 2, 0}}, {p10, {u0, 1}}, {p11, {u1, 1}}}, mid);
+            else if (a == bands - 1) m.face({{p00, {u0, 0}}, {p01, {u1, 0}}, {p10, {(u0 + u1) / 2, 1}}}, mid);
+            else m.face({{p00, {u0, 0}}, {p01, {u1, 0}}, {p11, {u1, 1}}, {p10, {u0, 1}}}, mid);
+        }
+    return "modexlab-scene 2\n"
+           "# X-Sharp's demo: a spinning polyhedral ball; each copy of the texture spans two\n"
+           "# neighbouring facets, so a mapper's seams and edges show where facets meet.\n"
+           "texture cells numbered 128 64\n" +
+           m.text() +
+           "object ball\n  mesh ball\n  texture cells\n  wrap repeat\n  spin 0.3 1 0.2 40\n  rotate 1 0 0 20\nend\n"
+           "camera\n  position 0 0 3.2\n  target 0 0 0\n  fov 60\nend\n"
+           "budget max-error 1 coverage any\n"
+           "frames 270\n";
+}
+
+std::string corridor() {
+    MeshMaker floor("floor"), ceiling("ceiling");
+    std::vector<MeshMaker> walls = {MeshMaker("walls")};
+    room(floor, ceiling, walls, {-2, 0, -60}, {2, 3, 60}, 1, 0.5, 0.5);
+    return "modexlab-scene 2\n"
+           "# A corridor 120 units deep: floor, ceiling and walls each one polygon receding from the\n"
+           "# eye to the far end (the perspective stress case: depth ratios in the thousands, and the\n"
+           "# near plane cutting every face). Its textures are 256 x 256, so the mappers that need that\n"
+           "# size can draw it too.\n"
+           "texture tiles checker 256 256\ntexture panels grid 256 256\ntexture plates numbered 256 256\n" +
+           floor.text() + ceiling.text() + walls[0].text() +
+           "object floor\n  mesh floor\n  texture tiles\nend\n"
+           "object ceiling\n  mesh ceiling\n  texture panels\nend\n"
+           "object walls\n  mesh walls\n  texture plates\nend\n" +
+           CORRIDOR_CAMERA + "budget max-error 1 coverage exact\n";
+}
+
+std::string rotozoom() {
+    MeshMaker m("quad");
+    m.face({{{-1, -1, 0}, {0, 1}}, {{1, -1, 0}, {1, 1}}, {{1, 1, 0}, {1, 0}}, {{-1, 1, 0}, {0, 0}}}, {0, 0, 1});
+    std::string keys;
+    // the eye's distance shrinks geometrically from 40 to 0.1 and back: every zoom gets equal time
+    const int steps = 10;
+    for (int i = 0; i <= 2 * steps; ++i) {
+        int k = i <= steps ? i : 2 * steps - i;
+        double d = 40 * std::pow(0.1 / 40, double(k) / steps);
+        keys += "  key " + num(i * 0.5) + "  0 0 " + num(d) + "  0 0 0\n";
+    }
+    return "modexlab-scene 2\n"
+           "# One quad turning through every angle (36 degrees a second) while the eye comes from 40 units\n"
+           "# (the 256 x 256 texture on a dozen pixels: heavy minification) to 0.1 (a texel over 16\n"
+           "# pixels: heavy magnification) and back.\n"
+           "texture cells numbered 256 256\n" +
+           m.text() + "object quad\n  mesh quad\n  texture cells\n  spin 0 0 1 36\nend\n" +
+           "camera\n  fov 60\n  near 0.01\n  far 100\n" + keys + "end\n" +
+           "budget max-error 0 coverage exact\n"
+           "frames 300\n";
+}
+
+std::string mesh() {
+    // a torus of 64 x 32 quads, each cut in two: 4096 small triangles
+    MeshMaker m("torus");
+    const int around = 64, tube = 32;
+    const double major = 1, minor = 0.35;
+    auto at = [&](int i, int j) {
+        double a = 2 * PI * i / around, b = 2 * PI * j / tube;
+        return P3{(major + minor * std::cos(b)) * std::cos(a), minor * std::sin(b), -(major + minor * std::cos(b)) * std::sin(a)};
+    };
+    auto centre = [&](int i) {
+        double a = 2 * PI * (i + 0.5) / around;
+        return P3{major * std::cos(a), 0, -major * std::sin(a)};
+    };
+    for (int i = 0; i < around; ++i)
+        for (int j = 0; j < tube; ++j) {
+            P3 p00 = at(i, j), p10 = at(i + 1, j), p01 = at(i, j + 1), p11 = at(i + 1, j + 1);
+            double u0 = 4.0 * i / around, u1 = 4.0 * (i + 1) / around, v0 = 2.0 * j / tube, v1 = 2.0 * (j + 1) / tube;
+            P3 c = centre(i), mid{(p00.x + p11.x) / 2, (p00.y + p11.y) / 2, (p00.z + p11.z) / 2};
+            P3 out = sub(mid, c);
+            m.face({{p00, {u0, v0}}, {p10, {u1, v0}}, {p11, {u1, v1}}}, out);
+            m.face({{p00, {u0, v0}}, {p11, {u1, v1}}, {p01, {u0, v1}}}, out);
+        }
+    return "modexlab-scene 2\n"
+           "# A closed torus of 4096 triangles a few pixels each: most spans are 1 or 2 pixels wide, so\n"
+           "# the setup and the edge walking cost more than the inner loops (fatmap's histogram).\n"
+           "texture bits xor 256 256\n" +
+           m.text() + "object torus\n  mesh torus\n  texture bits\n  spin 0.4 1 0.2 30\n  rotate 1 0 0 60\nend\n" +
+           "camera\n  position 0 0.5 7\n  target 0 0 0\n  fov 50\nend\n"
+           "budget max-error 1 coverage any\n"
+           "frames 360\n";
+}
+
+std::string cube() {
+    const char* textures[6] = {"checks", "grid", "cells", "bits", "shades", "big"};
+    std::string out =
+        "modexlab-scene 2\n"
+        "# A cube, six faces, six textures of six sizes and kinds (two of them 256 x 256, for the\n"
+        "# mappers that need it), spinning about a tilted axis.\n"
+        "texture checks checker 32 32\ntexture grid grid 64 64\ntexture cells numbered 128 128\n"
+        "texture bits xor 256 256\ntexture shades gradient 128 64\ntexture big checker 256 256\n";
+    const P3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (int f = 0; f < 6; ++f) {
+        MeshMaker m(std::string("face") + char('1' + f));
+        P3 n = normals[f];
+        // two axes across the face
+        P3 a = std::fabs(n.x) > 0 ? P3{0, 1, 0} : P3{1, 0, 0};
+        P3 b = cross3(n, a);
+        auto corner = [&](double s, double t) { return P3{n.x + s * a.x + t * b.x, n.y + s * a.y + t * b.y, n.z + s * a.z + t * b.z}; };
+        m.face({{corner(-1, -1), {0, 1}}, {corner(1, -1), {1, 1}}, {corner(1, 1), {1, 0}}, {corner(-1, 1), {0, 0}}}, n);
+        out += m.text();
+    }
+    for (int f = 0; f < 6; ++f)
+        out += std::string("object side") + char('1' + f) + "\n  mesh face" + char('1' + f) + "\n  texture " + textures[f] +
+               "\n  spin 1 1 0.3 45\nend\n";
+    return out + "camera\n  position 0 0 5\n  target 0 0 0\n  fov 60\nend\nbudget max-error 1 coverage exact\nframes 240\n";
+}
+
+std::string freedoom() {
+    MeshMaker floor("floor"), ceiling("ceiling");
+    std::vector<MeshMaker> walls = {MeshMaker("walls1"), MeshMaker("walls2"), MeshMaker("walls3")};
+    // 32 texels a unit: the flats 64 x 64 (2 units), the walls 128 high over 4 units
+    room(floor, ceiling, walls, {-2, 0, -60}, {2, 3, 60}, 15, 0.5, 0.25);
+    return "modexlab-scene 2\n"
+           "# The corridor with Freedoom's textures (BSD-licensed; made at build time from Debian's\n"
+           "# freedoom package by modexlab-wad, not committed) in Freedoom's own palette.\n"
+           "texture floor file freedoom/floor0_1.bmp\n"
+           "texture ceiling file freedoom/ceil3_5.bmp\n"
+           "texture stone file freedoom/startan3.bmp\n"
+           "texture computers file freedoom/comptall.bmp\n"
+           "texture brown file freedoom/brown1.bmp\n"
+           "palette floor\n" +
+           floor.text() + ceiling.text() + walls[0].text() + walls[1].text() + walls[2].text() +
+           "object floor\n  mesh floor\n  texture floor\nend\n"
+           "object ceiling\n  mesh ceiling\n  texture ceiling\nend\n"
+           "object walls1\n  mesh walls1\n  texture stone\nend\n"
+           "object walls2\n  mesh walls2\n  texture computers\nend\n"
+           "object walls3\n  mesh walls3\n  texture brown\nend\n" +
+           CORRIDOR_CAMERA + "budget max-error 1 coverage exact\n";
+}
+
+}  // namespace
+
+const std::vector<DemoScene>& demo_scenes() {
+    static const std::vector<DemoScene> scenes = {
+        {"ball", "X-Sharp's demo: a spinning polyhedral ball, a texture across two facets", ball},
+        {"corridor", "floor, ceiling and walls receding 120 units: the perspective stress case, near-plane clipping", corridor},
+        {"rotozoom", "one quad through every angle, from heavy minification to heavy magnification", rotozoom},
+        {"mesh", "a closed torus of 4096 triangles, spans of 1-2 pixels: the setup-bound case", mesh},
+        {"cube", "six faces, six textures of different kinds and sizes", cube},
+        {"freedoom", "the corridor in Freedoom's textures and palette (image files, a scene palette)", freedoom},
+    };
+    return scenes;
+}
+
+std::string obj_to_mesh(const std::string& obj, const std::string& mesh_name, const std::string& file) {
+    std::istringstream in(obj);
+    std::string line;
+    int line_no = 0;
+    std::vector<std::string> v, vt;
+    std::vector<std::vector<std::pair<int, int>>> faces;
+    auto fail = [&](const std::string& what) { throw HarnessError(file + ":" + std::to_string(line_no) + ": " + what); };
+    auto number = [&](const std::string& w) {
+        char* end = nullptr;
+        double x = std::strtod(w.c_str(), &end);
+        if (!end || *end || !std::isfinite(x)) fail("bad number '" + w + "'");
+        return x;
+    };
+    while (std::getline(in, line)) {
+        ++line_no;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream words(line.substr(0, line.find('#')));
+        std::string kind;
+        if (!(words >> kind)) continue;
+        std::vector<std::string> w;
+        for (std::string x; words >> x;) w.push_back(x);
+        if (kind == "v") {
+            if (w.size() < 3) fail("v needs x y z");
+            v.push_back("v " + num(number(w[0])) + " " + num(number(w[1])) + " " + num(number(w[2])));
+        } else if (kind == "vt") {
+            if (w.size() < 2) fail("vt needs u v");
+            vt.push_back("vt " + num(number(w[0])) + " " + num(1 - number(w[1])));  // OBJ's v runs up
+        } else if (kind == "f") {
+            if (w.size() < 3 || w.size() > 10) fail("a face needs 3 to 10 corners");
+            std::vector<std::pair<int, int>> f;
+            for (const std::string& c : w) {
+                size_t s1 = c.find('/');
+                if (s1 == std::string::npos) fail("corner '" + c + "' has no texture coordinate (v/vt)");
+                size_t s2 = c.find('/', s1 + 1);
+                auto resolve = [&](const std::string& s, size_t count) {
+                    char* end = nullptr;
+                    long i = std::strtol(s.c_str(), &end, 10);
+                    if (s.empty() || *end || i == 0) fail("bad index in corner '" + c + "'");
+                    long r = i > 0 ? i : long(count) + 1 + i;
+                    if (r < 1 || r > long(count)) fail("corner '" + c + "' points past the list");
+                    return int(r);
+                };
+                f.push_back({resolve(c.substr(0, s1), v.size()), resolve(c.substr(s1 + 1, s2 == std::string::npos ? std::string::npos : s2 - s1 - 1), vt.size())});
+            }
+            faces.push_back(f);
+        }  // o, g, s, vn, usemtl, mtllib and others: not needed
+    }
+    if (faces.empty()) {
+        line_no = 0;
+        fail("no faces");
+    }
+    std::string out = "mesh " + mesh_name + "\n";
+    for (const std::string& x : v) out += x + "\n";
+    for (const std::string& x : vt) out += x + "\n";
+    for (const auto& f : faces) {
+        out += "f";
+        for (const auto& [p, t] : f) out += " " + std::to_string(p) + "/" + std::to_string(t);
+        out += "\n";
+    }
+    return out + "end\n";
+}
+
+}  // namespace harness

@@ -1,0 +1,244 @@
+// The report: CSV for tools, Markdown for people, a plot per scene.
+#include "qemu/tools/trade.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "qemu/lib/error.h"
+
+namespace harness {
+
+namespace {
+
+std::string fixed(double v, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    return buf;
+}
+
+std::ofstream open_out(const std::string& path) {
+    std::filesystem::path p(path);
+    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+    std::ofstream out(path);
+    if (!out) throw HarnessError(path + ": cannot write");
+    return out;
+}
+
+std::vector<std::string> scenes_in_order(const std::vector<TradeRow>& rows) {
+    std::vector<std::string> scenes;
+    for (const TradeRow& r : rows)
+        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    return scenes;
+}
+
+std::vector<const TradeRow*> drawing_rows_by_speed(const std::vector<TradeRow>& rows, const std::string& scene) {
+    std::vector<const TradeRow*> out;
+    for (const TradeRow& r : rows)
+        if (r.scene == scene && r.pixels > 0) out.push_back(&r);
+    std::stable_sort(out.begin(), out.end(), [](const TradeRow* a, const TradeRow* b) { return a->draw_per_pixel() < b->draw_per_pixel(); });
+    return out;
+}
+
+// The classics' own published figures (cycles per pixel of the inner loop; fatmap's "ticks" are
+// his theoretical Pentium minimum). Sources in docs/mappers.md.
+struct Published {
+    const char* mapper;  // ours that is that loop, or "" when we did not build it
+    const char* loop;
+    const char* figure;
+    const char* machine;
+};
+const Published PUBLISHED[] = {
+    {"xsharp-row-out", "Abrash, Black Book listing 58.1 (57.2's loop, OUT per pixel)", "44", "486"},
+    {"", "Abrash, listing 58.2 (columns, 16-bit fractions, unrolled)", "22", "486"},
+    {"", "Abrash, packed fractions with ADC (no listing)", "10", "486"},
+    {"", "Abrash, listing 58.3 (16-bit, SS:BP texture pointer)", "9", "486"},
+    {"xsharp-column", "Abrash, listing 58.4 (32-bit)", "8", "486"},
+    {"xsharp-column", "Abrash, listing 58.4 (32-bit)", "5.5", "Pentium"},
+    {"quake-subdiv16", "id Software, d_draw16.s (Abrash's figure)", "7.5", "Pentium"},
+    {"fatmap-256", "Byggmastar, fatmap.txt 8-bit fraction loop", "5 (theoretical)", "Pentium"},
+    {"fatmap-256-16", "fatmap2.txt 8:16 loop", "4 (theoretical)", "Pentium"},
+    {"fatmap-lut", "Byggmastar, fatmap.txt table-lookup loop", "4 (theoretical)", "Pentium"},
+    {"hecker-steptable", "Hecker, Game Developer part V listing 2", "none given", ""},
+};
+
+}  // namespace
+
+std::vector<size_t> pareto_front(const std::vector<std::pair<double, double>>& points) {
+    std::vector<size_t> front;
+    for (size_t i = 0; i < points.size(); ++i) {
+        bool dominated = false;
+        for (size_t k = 0; k < points.size() && !dominated; ++k) {
+            if (k == i) continue;
+            const auto& a = points[k];
+            const auto& b = points[i];
+            dominated = a.first <= b.first && a.second <= b.second && (a.first < b.first || a.second < b.second);
+        }
+        if (!dominated) front.push_back(i);
+    }
+    return front;
+}
+
+void mark_pareto(std::vector<TradeRow>& rows) {
+    for (const std::string& scene : scenes_in_order(rows)) {
+        std::vector<size_t> index;
+        std::vector<std::pair<double, double>> points;
+        for (size_t i = 0; i < rows.size(); ++i) {
+            if (rows[i].scene != scene) continue;
+            rows[i].pareto = false;
+            if (!rows[i].draws_everything()) continue;
+            index.push_back(i);
+            points.emplace_back(rows[i].draw_per_pixel(), rows[i].accuracy.mean_texel_error);
+        }
+        for (size_t k : pareto_front(points)) rows[index[k]].pareto = true;
+    }
+}
+
+std::vector<std::string> csv_header() {
+    return {"scene", "mapper", "family", "surface", "walker", "loop", "frames[count]", "polygons[count]", "rejected[count]",
+            "spans[count]", "pixels[count]", "ticks_frame[instructions]", "ticks_geometry[instructions]",
+            "ticks_clear[instructions]", "ticks_draw[instructions]", "ticks_setup[instructions]", "ticks_walk[instructions]",
+            "ticks_inner[instructions]", "ticks_blit[instructions]", "inner_per_pixel[instructions/pixel]",
+            "draw_per_pixel[instructions/pixel]", "frame_per_pixel[instructions/pixel]", "setup_per_polygon[instructions/polygon]", "walk_per_span[instructions/span]",
+            "host_cycles_ratio[ratio]", "max_texel_error[texels]", "mean_texel_error[texels]", "share_exact[share]",
+            "share_within_one[share]", "reference_pixels[pixels]", "gaps[pixels]", "overdraw[pixels]", "overlaps[pixels]",
+            "index_differs[pixels]", "kernel_equals_host[bool]", "pareto[bool]"};
+}
+
+void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
+    std::ofstream out = open_out(path);
+    std::vector<std::string> header = csv_header();
+    for (size_t i = 0; i < header.size(); ++i) out << (i ? "," : "") << header[i];
+    out << "\n";
+    for (const TradeRow& r : rows) {
+        const raster::AccuracyMetrics& a = r.accuracy;
+        out << r.scene << "," << r.mapper << "," << r.family << "," << r.surface << "," << r.walker << "," << r.loop << ","
+            << r.frames << "," << r.polygons << "," << r.rejected << "," << r.spans << "," << r.pixels << "," << r.ticks << ","
+            << r.geometry << "," << r.clear << "," << r.draw << "," << r.setup << "," << r.walk << "," << r.inner << ","
+            << r.blit << "," << fixed(r.inner_per_pixel(), 3) << "," << fixed(r.draw_per_pixel(), 3) << "," << fixed(r.frame_per_pixel(), 3) << ","
+            << fixed(r.setup_per_polygon(), 1) << "," << fixed(r.walk_per_span(), 1) << ","
+            << (r.host_ratio > 0 ? fixed(r.host_ratio, 3) : "") << "," << a.max_texel_error << ","
+            << fixed(a.mean_texel_error, 4) << "," << fixed(r.share_exact(), 4) << ","
+            << fixed(a.compared ? double(a.within_one) / a.compared : 0.0, 4) << "," << a.reference_pixels << "," << a.gaps
+            << "," << a.overdraw << "," << a.overlaps << "," << a.index_differs << "," << (r.kernel_equals_host ? "true" : "false")
+            << "," << (r.pareto ? "true" : "false") << "\n";
+    }
+}
+
+std::vector<std::vector<std::string>> read_csv(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw HarnessError(path + ": cannot open");
+    std::vector<std::vector<std::string>> lines;
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> fields;
+        std::stringstream ss(line);
+        for (std::string f; std::getline(ss, f, ',');) fields.push_back(f);
+        if (!line.empty() && line.back() == ',') fields.push_back("");
+        lines.push_back(fields);
+    }
+    return lines;
+}
+
+void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, const ReportInfo& info) {
+    std::ofstream out = open_out(path);
+    out << "# The speed/accuracy trade\n\n" << info.how << "\n\nRegenerate: `" << info.command << "`. The figures and how they are "
+        << "measured: docs/bench.md.\n";
+    for (const std::string& scene : scenes_in_order(rows)) {
+        out << "\n## " << scene << "\n\n";
+        std::string plot = "trade-" + scene + ".png";
+        if (std::find(info.plots.begin(), info.plots.end(), plot) != info.plots.end()) out << "![" << scene << "](" << plot << ")\n\n";
+        out << "| mapper | surface | inner instr/px | draw instr/px | frame instr/px | setup instr/polygon | walk instr/span | host cycles (ratio) "
+               "| max err | mean err | exact | gaps | overdraw | kernel = host | Pareto |\n";
+        out << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|---|\n";
+        for (const TradeRow* r : drawing_rows_by_speed(rows, scene)) {
+            const raster::AccuracyMetrics& a = r->accuracy;
+            std::string front = r->pareto ? "**yes**" : r->rejected ? "partial: " + std::to_string(r->rejected) + " polygons refused" : "";
+            out << "| " << r->mapper << " | " << r->surface << " | " << fixed(r->inner_per_pixel(), 1) << " | "
+                << fixed(r->draw_per_pixel(), 1) << " | " << fixed(r->frame_per_pixel(), 1) << " | " << fixed(r->setup_per_polygon(), 0) << " | " << fixed(r->walk_per_span(), 1)
+                << " | " << (r->host_ratio > 0 ? fixed(r->host_ratio, 2) : "-") << " | " << a.max_texel_error << " | "
+                << fixed(a.mean_texel_error, 3) << " | " << fixed(100 * r->share_exact(), 1) << "% | " << a.gaps << " | " << a.overdraw
+                << " | " << (r->kernel_equals_host ? "equal" : "DIFFERS") << " | " << front << " |\n";
+        }
+        std::string refused;
+        for (const TradeRow& r : rows)
+            if (r.scene == scene && r.pixels == 0) refused += (refused.empty() ? "" : ", ") + r.mapper;
+        if (!refused.empty())
+            out << "\nCannot draw this scene (every polygon refused: the texture is not 256 x 256 repeating, or its coordinates "
+                   "leave the texture): "
+                << refused << ".\n";
+    }
+
+    // the classics' published cycles beside our instruction counts, on the scene each drew most of
+    out << "\n## The classics' published figures beside ours\n\n"
+        << "Published: cycles per pixel of the inner loop on the machine named (fatmap's figures are his theoretical minimum). "
+           "Ours: guest instructions per pixel of the same loop under QEMU icount, on the scene where the mapper drew the most "
+           "pixels without refusing a polygon. Cycles and instructions are different units: the columns sit side by side, they do "
+           "not divide.\n\n"
+        << "| loop | published cycles/px | machine | ours | inner instr/px | scene |\n|---|--:|---|---|--:|---|\n";
+    auto best_row = [&](const std::string& mapper) -> const TradeRow* {
+        const TradeRow* best = nullptr;
+        for (const TradeRow& r : rows)
+            if (r.mapper == mapper && r.draws_everything() && (!best || r.pixels > best->pixels)) best = &r;
+        return best;
+    };
+    for (const Published& p : PUBLISHED) {
+        const TradeRow* r = *p.mapper ? best_row(p.mapper) : nullptr;
+        out << "| " << p.loop << " | " << p.figure << " | " << p.machine << " | " << (*p.mapper ? p.mapper : "not built") << " | "
+            << (r ? fixed(r->inner_per_pixel(), 1) : "-") << " | " << (r ? r->scene : "-") << " |\n";
+    }
+    for (const char* ours : {"fast-affine", "fast-columns"}) {
+        const TradeRow* r = best_row(ours);
+        out << "| ours: " << ours << " | - | - | " << ours << " | " << (r ? fixed(r->inner_per_pixel(), 1) : "-") << " | "
+            << (r ? r->scene : "-") << " |\n";
+    }
+    if (!info.wall_clock.empty()) out << "\n" << info.wall_clock;
+}
+
+std::string write_plot(const std::string& dir, const std::string& scene, const std::vector<TradeRow>& rows) {
+    std::vector<const TradeRow*> points = drawing_rows_by_speed(rows, scene);
+    std::string gp = dir + "/trade-" + scene + ".gp", png = dir + "/trade-" + scene + ".png";
+    std::ofstream out = open_out(gp);
+    out << "# gnuplot script written by modexlab-bench: speed against accuracy for scene " << scene << "\n"
+        << "set terminal pngcairo size 1000,640 font ',10'\nset output '" << png << "'\n"
+        << "set title '" << scene << ": speed against accuracy (QEMU icount; Pareto front joined; hollow: refuses some polygons)'\n"
+        << "set xlabel 'guest instructions per pixel drawn: setup, walking, inner loop (lower is faster)'\n"
+        << "set ylabel 'mean texel error against the exact reference (texels; log scale, 0 shown as 0.001)'\n"
+        << "set logscale y\nset grid\nset key top right\nset offsets graph 0.02, graph 0.12, graph 0.05, graph 0.05\n";
+    // points in speed order; labels alternate above and below so that neighbours do not overprint
+    auto block = [&](const char* name, auto keep) {
+        out << "$" << name << " << EOD\n";
+        int k = 0;
+        for (const TradeRow* r : points)
+            if (keep(r, k++)) out << fixed(r->draw_per_pixel(), 3) << " " << fixed(std::max(0.001, r->accuracy.mean_texel_error), 4) << " " << r->mapper << "\n";
+        out << "EOD\n";
+    };
+    block("all", [](const TradeRow* r, int) { return r->draws_everything(); });
+    block("all_up", [](const TradeRow* r, int k) { return r->draws_everything() && k % 2 == 0; });
+    block("all_down", [](const TradeRow* r, int k) { return r->draws_everything() && k % 2 == 1; });
+    block("partial", [](const TradeRow* r, int) { return !r->draws_everything(); });
+    out << "$front << EOD\n";
+    for (const TradeRow* r : points)
+        if (r->pareto) out << fixed(r->draw_per_pixel(), 3) << " " << fixed(std::max(0.001, r->accuracy.mean_texel_error), 4) << "\n";
+    out << "EOD\n";
+    bool any_partial = std::any_of(points.begin(), points.end(), [](const TradeRow* r) { return !r->draws_everything(); });
+    out << "plot $front using 1:2 with lines lw 2 lc rgb '#c03030' title 'Pareto front', \\\n"
+        << "     $all using 1:2 with points pt 7 ps 1.2 lc rgb '#2050a0' title 'mappers', \\\n"
+        << "     $all_up using 1:2:3 with labels offset char 1,char 0.7 left font ',9' notitle, \\\n"
+        << "     $all_down using 1:2:3 with labels offset char 1,char -0.7 left font ',9' notitle";
+    if (any_partial)
+        out << ", \\\n     $partial using 1:2 with points pt 6 ps 1.2 lc rgb '#808080' title 'refuses some polygons', \\\n"
+            << "     $partial using 1:2:3 with labels offset char 1,char -0.6 left font ',9' tc rgb '#808080' notitle";
+    out << "\n";
+    out.close();
+    if (points.empty() || std::system("command -v gnuplot >/dev/null 2>&1") != 0) return "";
+    std::string cmd = "gnuplot '" + gp + "' 2>'" + gp + ".log'";
+    if (std::system(cmd.c_str()) != 0) throw HarnessError("gnuplot failed on " + gp + " (see " + gp + ".log)");
+    std::filesystem::remove(gp + ".log");
+    return png;
+}
+
+}  // namespace harness

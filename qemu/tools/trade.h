@@ -1,0 +1,63 @@
+// The speed/accuracy trade: one row per scene and mapper, the Pareto front, and the report files
+// (CSV, Markdown, gnuplot plots). docs/bench.md says what every figure is and how it is measured.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "qemu/accuracy/metrics.h"
+
+namespace harness {
+
+struct TradeRow {
+    std::string scene, mapper, family, surface, walker, loop;
+    uint32_t frames = 0;
+    // the kernel's drawing, summed over the frames: counts, and ticks (instructions under icount)
+    uint64_t polygons = 0, rejected = 0, spans = 0, pixels = 0;
+    uint64_t ticks = 0, geometry = 0, clear = 0, draw = 0, setup = 0, walk = 0, inner = 0, blit = 0;
+    raster::AccuracyMetrics accuracy;  // the host twin against the reference, summed over the same frames
+    bool kernel_equals_host = false;   // at the last frame, by screendump
+    double host_ratio = 0;             // host rdtsc cycles per pixel against the baseline mapper; 0: not measured
+    bool pareto = false;
+
+    bool draws_everything() const { return rejected == 0 && pixels > 0; }
+    double per_pixel(uint64_t t) const { return pixels ? double(t) / double(pixels) : 0.0; }
+    double inner_per_pixel() const { return per_pixel(inner); }
+    double draw_per_pixel() const { return per_pixel(draw); }  // setup, walking, inner loops: the mapper's own cost
+    double frame_per_pixel() const { return per_pixel(ticks); }
+    double setup_per_polygon() const { return polygons ? double(setup) / double(polygons) : 0.0; }
+    double walk_per_span() const { return spans ? double(walk) / double(spans) : 0.0; }
+    double share_exact() const { return accuracy.compared ? double(accuracy.exact) / accuracy.compared : 0.0; }
+};
+
+// Marks the Pareto front among the rows that draw everything, scene by scene: a row is on it when
+// no other row is at least as fast (drawing instructions per pixel) and at least as exact (mean
+// texel error) and better in one of the two. Ties in both: all of them are on it.
+void mark_pareto(std::vector<TradeRow>& rows);
+
+// The front of (cost, error) points, both to be minimised: the indices on it (the rule above).
+std::vector<size_t> pareto_front(const std::vector<std::pair<double, double>>& points);
+
+// build/report/trade.csv: a header line naming each column with its unit, then one line a row.
+void write_csv(const std::string& path, const std::vector<TradeRow>& rows);
+std::vector<std::string> csv_header();
+// Reads such a file back: a vector of fields a line (no quoting: no field holds a comma).
+std::vector<std::vector<std::string>> read_csv(const std::string& path);
+
+struct ReportInfo {
+    std::string how;       // how the figures were measured (QEMU icount, frames, ...)
+    std::string command;   // the command that regenerates the report
+    std::vector<std::string> plots;  // plot files written (for the links)
+    std::string wall_clock;          // the Markdown of the wall-clock table, if measured
+};
+
+// build/report/trade.md: per scene, a table sorted by speed; the mappers that cannot draw it; the
+// classics' published figures beside ours.
+void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, const ReportInfo& info);
+
+// trade-SCENE.gp and, when gnuplot is installed, trade-SCENE.png: speed against mean texel error,
+// each point labelled, the Pareto front joined. Returns the PNG's path, or "" when not drawn.
+std::string write_plot(const std::string& dir, const std::string& scene, const std::vector<TradeRow>& rows);
+
+}  // namespace harness
