@@ -54,8 +54,8 @@ KERNEL_ASM := boot/entry.asm boot/isr.asm $(LOOP_ASM)
 PORTABLE_DIRS := kernel/core kernel/mappers kernel/scene
 KERNEL_CXX := $(wildcard kernel/*.cpp kernel/lib/*.cpp kernel/server/*.cpp $(PORTABLE_DIRS:%=%/*.cpp) drivers/*.cpp)
 KERNEL_OBJS := $(KERNEL_ASM:%=$(KBUILD)/%.o) $(KERNEL_CXX:%=$(KBUILD)/%.o)
-# the argument-block offsets the NASM loops include, generated from kernel/mappers/loops.h
-OFFSETS_INC := $(KBUILD)/gen/offsets.inc
+# asm/NAME.asm includes the argument-block layouts of its loops, NAME.inc, generated from the
+# offsets listed in kernel/mappers/NAME.cpp (kernel/core/asm_offsets.h)
 
 # The built-in files: the demo scenes, and the freedoom scene's textures made at build time from
 # Debian's freedoom WAD (not committed). Each is named by its path under scenes/ or build/scenes/.
@@ -155,13 +155,14 @@ $(KBUILD)/%.cpp.o: %.cpp | deps
 	$(call say,KCXX,$<)
 	$(Q)$(KCXX) $(KCXXFLAGS) -c $< -o $@
 
-$(OFFSETS_INC): asm/offsets.cpp kernel/mappers/loops.h | deps
+$(KBUILD)/gen/%.inc: kernel/mappers/%.cpp | deps
 	@mkdir -p $(@D)
 	$(call say,GEN,$@)
-	$(Q)$(KCXX) $(KCXXFLAGS_NODEP) -S -o - asm/offsets.cpp | sed -n 's/.*@@@ \([A-Z0-9_]*\) \([0-9]*\).*/%define \1 \2/p' > $@
-	@test -s $@ || { echo "$@: no offsets generated"; rm -f $@; exit 1; }
+	$(Q)$(KCXX) $(KCXXFLAGS_NODEP) -DMODEXLAB_OFFSETS -MMD -MP -MF $@.d -MT $@ -S -o - $< \
+		| sed -n 's/.*@@@ \([A-Z0-9_]*\) \([0-9]*\).*/%define \1 \2/p' > $@
+	@test -s $@ || { echo "$@: no offsets generated (kernel/mappers/$*.cpp lists them under MODEXLAB_OFFSETS)"; rm -f $@; exit 1; }
 
-$(LOOP_ASM:%=$(KBUILD)/%.o): $(OFFSETS_INC)
+$(LOOP_ASM:asm/%.asm=$(KBUILD)/asm/%.asm.o): $(KBUILD)/asm/%.asm.o: $(KBUILD)/gen/%.inc
 
 $(KBUILD)/%.asm.o: %.asm | deps
 	@mkdir -p $(@D)

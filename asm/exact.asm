@@ -1,10 +1,10 @@
 ; exact_loop_asm: the exact mapper's inner loop with the x87 per-pixel divide; twin of
-; kernel/raster/exact.cpp (exact_loop), which it matches bit for bit: the same double operations
+; kernel/mappers/exact.cpp (exact_loop), which it matches bit for bit: the same double operations
 ; in the same order (the x87 runs at 53-bit precision), the same saturating floor, the same wrap.
 
 bits 32
 
-%include "offsets.inc"
+%include "exact.inc"
 %include "loop.inc"
 
 section .rodata

@@ -1,8 +1,8 @@
 ; Our fastest affine loops: fatmap2's 8:16 core unrolled eight times and entered part-way (the
 ; first block starts at pixel (-count) mod 8, the destination moved back to match), so no pixel pays
 ; for a loop counter; one pointer to the 64 KiB-aligned texture whose bh:bl is the texel's v:u.
-;   fast_run_asm (fast-affine):     a run of rows, the edge walking included (twin: fast_run_loop);
-;   fast_column_asm (fast-columns): one Mode X column (twin: fast_column_loop).
+;   fast_run_loop_asm (fast-affine):     a run of rows, the edge walking included (twin: fast_run_loop);
+;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop).
 ; The core's registers:
 ;   al: texel   eax 31..16: u fraction   ebx: texture | v whole (bh) | u whole (bl)
 ;   edx 31..16: v fraction, dh: dv whole, dl: du whole   esi 31..16: du fraction   ebp 31..16: dv fraction
@@ -10,7 +10,7 @@
 
 bits 32
 
-%include "offsets.inc"
+%include "fast.inc"
 %include "loop.inc"
 
 %macro PIXEL 1                          ; %1: the destination offset within the block
@@ -41,9 +41,9 @@ bits 32
 
 section .text
 
-; fast_column_asm: one column, pixels MODEX_ROW_BYTES apart; the map mask is the caller's.
-global fast_column_asm
-fast_column_asm:
+; fast_column_loop_asm: one column, pixels MODEX_ROW_BYTES apart; the map mask is the caller's.
+global fast_column_loop_asm
+fast_column_loop_asm:
     LOOP_ENTER 4
     mov eax, LOOP_ARG(4)
     mov ecx, [eax + FCOL_COUNT]
@@ -77,7 +77,7 @@ fast_column_asm:
 .done:
     LOOP_LEAVE 4
 
-; fast_run_asm: a run of fast-affine's rows (twin: fast_run_loop): both edge bounds stepped in place,
+; fast_run_loop_asm: a run of fast-affine's rows (twin: fast_run_loop): both edge bounds stepped in place,
 ; each row's span drawn by the same unrolled core. The core keeps its registers from row to row where
 ; it can (esi and ebp hold the fraction steps throughout); the rest of the row state lives in the frame.
 L_ARGS    equ 0
@@ -104,8 +104,8 @@ L_FRAME   equ 32
     mov [%1 + BOUND_R], ebx
 %endmacro
 
-global fast_run_asm
-fast_run_asm:
+global fast_run_loop_asm
+fast_run_loop_asm:
     LOOP_ENTER L_FRAME
     mov ecx, LOOP_ARG(L_FRAME)
     mov eax, [ecx + RUN_LINES]
@@ -191,8 +191,8 @@ fast_run_asm:
 section .rodata
 align 4
 column_entries:
-    dd fast_column_asm.e0, fast_column_asm.e1, fast_column_asm.e2, fast_column_asm.e3
-    dd fast_column_asm.e4, fast_column_asm.e5, fast_column_asm.e6, fast_column_asm.e7
+    dd fast_column_loop_asm.e0, fast_column_loop_asm.e1, fast_column_loop_asm.e2, fast_column_loop_asm.e3
+    dd fast_column_loop_asm.e4, fast_column_loop_asm.e5, fast_column_loop_asm.e6, fast_column_loop_asm.e7
 run_entries:
-    dd fast_run_asm.e0, fast_run_asm.e1, fast_run_asm.e2, fast_run_asm.e3
-    dd fast_run_asm.e4, fast_run_asm.e5, fast_run_asm.e6, fast_run_asm.e7
+    dd fast_run_loop_asm.e0, fast_run_loop_asm.e1, fast_run_loop_asm.e2, fast_run_loop_asm.e3
+    dd fast_run_loop_asm.e4, fast_run_loop_asm.e5, fast_run_loop_asm.e6, fast_run_loop_asm.e7

@@ -1,9 +1,9 @@
 ; fatmap's inner loops (Byggmastar, fatmap.txt 1996 and fatmap2.txt 1997); twins of fatmap_loop,
-; fatmap16_loop and fatmap_lut_loop in kernel/raster/fatmap.cpp.
+; fatmap16_loop and fatmap_lut_loop in kernel/mappers/fatmap.cpp.
 
 bits 32
 
-%include "offsets.inc"
+%include "fatmap.inc"
 %include "loop.inc"
 
 section .text

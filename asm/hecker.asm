@@ -1,5 +1,5 @@
 ; hecker_loop_asm: the inner loop of Hecker's part V listing 2; twin of hecker_loop in
-; kernel/raster/hecker.cpp. One pointer holds both texel coordinates; the v fraction's carry picks
+; kernel/mappers/hecker.cpp. One pointer holds both texel coordinates; the v fraction's carry picks
 ; one of two step-table entries through sbb, the u fraction's carry is added by adc.
 ;   esi: texel pointer   edi: destination   ecx: u fraction (bits 31..16)   edx: v fraction
 ;   ebx: u fraction step   ebp: 0 or -1 (v carried)   al: texel
@@ -7,7 +7,7 @@
 
 bits 32
 
-%include "offsets.inc"
+%include "hecker.inc"
 %include "loop.inc"
 
 section .text

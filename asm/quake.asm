@@ -1,6 +1,6 @@
-; quake_span_asm: Quake's span drawer with the x87 divide for the next segment's end started before
+; quake_span_loop_asm: Quake's span drawer with the x87 divide for the next segment's end started before
 ; the current segment's pixels are drawn (as d_draw16.s does), the integer loop stepping one texel
-; pointer with a two-entry advance table (sbb/adc). Twin of quake_span_loop in kernel/raster/quake.cpp,
+; pointer with a two-entry advance table (sbb/adc). Twin of quake_span_loop in kernel/mappers/quake.cpp,
 ; whose arithmetic (d_scan.c's C) it follows operation for operation: the x87 runs at 53-bit
 ; precision and rounds to nearest, and only the float-to-int conversions chop.
 ;
@@ -10,7 +10,7 @@
 
 bits 32
 
-%include "offsets.inc"
+%include "quake.inc"
 %include "loop.inc"
 
 section .rodata
@@ -147,8 +147,8 @@ section .text
 %1_done:
 %endmacro
 
-global quake_span_asm
-quake_span_asm:
+global quake_span_loop_asm
+quake_span_loop_asm:
     LOOP_ENTER LOCALS
     mov eax, LOOP_ARG(LOCALS)
     mov [esp + L_ARGS], eax

@@ -1,9 +1,9 @@
 ; X-Sharp's Mode X inner loops (Abrash, Black Book ch. 57-58), in 32-bit flat code; twins of
-; xsharp_row_loop and xsharp_column_loop in kernel/raster/xsharp.cpp.
+; xsharp_row_loop and xsharp_column_loop in kernel/mappers/xsharp.cpp.
 
 bits 32
 
-%include "offsets.inc"
+%include "xsharp.inc"
 %include "loop.inc"
 
 SC_INDEX    equ 0x3C4
@@ -12,13 +12,13 @@ MAP_MASK    equ 2
 
 section .text
 
-; xsharp_row_asm: listing 57.2's TexScanLoop (= listing 58.1): an OUT to the Map Mask before every
+; xsharp_row_loop_asm: listing 57.2's TexScanLoop (= listing 58.1): an OUT to the Map Mask before every
 ; pixel. The fractions live in memory, as 57.2's BP-relative locals did (a copy on our stack).
 ;   al:  plane mask, the plane bit in both nibbles (rol carries out of bit 7 when the plane wraps)
 ;   dx:  SC_DATA          esi: texel pointer (both integer parts)     edi: destination byte
 ;   ebp: pixels left      cx:  fraction scratch                        ebx: the args copy
-global xsharp_row_asm
-xsharp_row_asm:
+global xsharp_row_loop_asm
+xsharp_row_loop_asm:
     LOOP_ENTER 0
     mov esi, LOOP_ARG(0)
     sub esp, XROW_ARGS_SIZE
@@ -59,7 +59,7 @@ xsharp_row_asm:
 .done:
     LOOP_LEAVE XROW_ARGS_SIZE
 
-; xsharp_column_asm: listing 58.4's loop as X-Sharp 22 shipped it: unrolled twice, the odd pixel
+; xsharp_column_loop_asm: listing 58.4's loop as X-Sharp 22 shipped it: unrolled twice, the odd pixel
 ; entered half-way with the destination moved back a row, and a second loop (SBB) for X running
 ; backwards. The map mask is already set for the column.
 ;   edx: fractions (X in 31..16, Y >> 1 in 14..0, bit 15 the Y carry)   ebp: the packed steps
@@ -77,8 +77,8 @@ xsharp_row_asm:
 %3:
 %endmacro
 
-global xsharp_column_asm
-xsharp_column_asm:
+global xsharp_column_loop_asm
+xsharp_column_loop_asm:
     LOOP_ENTER 4
     mov ebx, LOOP_ARG(4)
     mov eax, [ebx + XCOL_COUNT]

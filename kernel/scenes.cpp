@@ -9,8 +9,6 @@ namespace scenes {
 
 namespace {
 
-constexpr const char* SURFACE_NAMES[3] = {"linear", "planar", "vga"};  // in Surface's order
-
 raster::Scene g_parsed;     // parsed into here first, so a bad upload leaves the current scene alone
 raster::Scene g_scene;
 bool g_loaded = false;
@@ -23,22 +21,12 @@ alignas(4) uint8_t g_planes[raster::SCREEN_PIXELS];
 
 }  // namespace
 
-bool surface_from_name(lib::StrView name, Surface* out) {
-    int i = lib::find_name(name, SURFACE_NAMES, 3);
-    if (i >= 0) *out = Surface(i);
-    return i >= 0;
-}
-
-const char* surface_name(Surface s) { return SURFACE_NAMES[int(s)]; }
-
 bool load(const char* text, size_t length, raster::ParseError* error) {
     if (!raster::parse_scene(text, length, &g_parsed, error)) return false;
     memcpy(&g_scene, &g_parsed, sizeof g_scene);
     raster::generate_texture(g_scene.texture_kind, g_scene.texture_width, g_scene.texture_height, g_texels);
     g_texture = raster::Texture{g_texels, g_scene.texture_width, g_scene.texture_height, g_scene.wrap};
-    raster::make_bordered(g_texture, g_bordered);
-    g_texture.bordered = g_bordered;
-    if (g_texture.width == 256 && g_texture.height == 256) g_texture.aligned256 = raster::make_aligned256(g_texture, g_aligned);
+    raster::prepare_texture(&g_texture, g_bordered, g_aligned);
     g_loaded = true;
     return true;
 }
@@ -46,35 +34,23 @@ bool load(const char* text, size_t length, raster::ParseError* error) {
 bool loaded() { return g_loaded; }
 const raster::Texture& texture() { return g_texture; }
 
-raster::Axis surface_axis(const raster::Mapper& mapper, Surface surface) {
-    if (mapper.axes == raster::AXIS_ROWS) return raster::Axis::Rows;
-    if (mapper.axes == raster::AXIS_COLUMNS) return raster::Axis::Columns;
-    return surface == Surface::Linear ? raster::Axis::Rows : raster::Axis::Columns;
-}
-
-raster::Target probe_target(Surface surface) {
-    raster::Target t;
-    t.planar = surface != Surface::Linear;
-    t.vga = surface == Surface::Vga;
-    return t;
-}
 const raster::Scene& scene() { return g_scene; }
 
-RenderResult render_with(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant, DrawFn draw, void* ctx) {
+RenderResult render_with(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant, DrawFn draw, void* ctx) {
     RenderResult r{};
     uint64_t t0 = timer::rdtsc();
     raster::Target target;
-    raster::Axis axis = surface_axis(mapper, surface);
+    raster::Axis axis = raster::surface_axis(mapper, surface);
     switch (surface) {
-    case Surface::Linear:
+    case raster::Surface::Linear:
         memset(g_linear, 0, sizeof g_linear);
         target = raster::linear_target(g_linear, raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT, raster::SCREEN_WIDTH);
         break;
-    case Surface::Planar:
+    case raster::Surface::Planar:
         memset(g_planes, 0, sizeof g_planes);
         target = raster::planar_target(g_planes);
         break;
-    case Surface::Vga:
+    case raster::Surface::Vga:
         vga::clear_page(page, 0);
         target = vga::page_target(page);
         break;
@@ -84,8 +60,8 @@ RenderResult render_with(const raster::Mapper& mapper, Surface surface, int page
     r.used_asm = loop && loop == mapper.asm_loop;
     r.stats = draw(ctx, target, axis, variant);
     uint64_t t2 = timer::rdtsc();
-    if (surface == Surface::Linear) vga::blit_linear(g_linear, page);
-    if (surface == Surface::Planar) vga::blit_planar(g_planes, page);
+    if (surface == raster::Surface::Linear) vga::blit_linear(g_linear, page);
+    if (surface == raster::Surface::Planar) vga::blit_planar(g_planes, page);
     uint64_t t3 = timer::rdtsc();
     r.ticks_clear = t1 - t0;
     r.ticks_draw = t2 - t1;
@@ -93,7 +69,7 @@ RenderResult render_with(const raster::Mapper& mapper, Surface surface, int page
     return r;
 }
 
-RenderResult render(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant) {
+RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant) {
     return render_with(mapper, surface, page, variant,
                        [](void* m, raster::Target& target, raster::Axis axis, raster::Variant v) {
                            return raster::render_scene(g_scene, g_texture, *static_cast<const raster::Mapper*>(m), axis, target, v);

@@ -5,19 +5,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "kernel/core/policy.h"
 #include "kernel/core/render.h"
 #include "kernel/scene/scene.h"
 
 namespace scenes {
-
-// Where a render goes on its way to the page.
-enum class Surface : uint8_t {
-    Linear,  // rows into a linear RAM surface, then blit_linear
-    Planar,  // columns into a planar RAM surface, then blit_planar
-    Vga,     // columns straight into the page
-};
-bool surface_from_name(lib::StrView name, Surface* out);
-const char* surface_name(Surface s);
 
 // Parses a version 1 scene text and makes it the current one (its texture generated). On failure
 // the previous scene stays and `error` says why (parser errors carry a line).
@@ -35,18 +27,11 @@ struct RenderResult {
 // The kernel's texture for the current scene (with its bordered copy).
 const raster::Texture& texture();
 
-// The walker a render uses: the mapper's only one, or for mappers that walk both, rows into the
-// linear surface and columns into the planar ones.
-raster::Axis surface_axis(const raster::Mapper& mapper, Surface surface);
-
-// A target of the kind `surface` renders into, for checking what a mapper can take (no pixels).
-raster::Target probe_target(Surface surface);
-
 // Clears the surface to 0, draws the scene with `mapper`, and blits (unless drawn in place).
-RenderResult render(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant);
+RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant);
 
 // The same for any drawing: clears the surface, calls draw(target, axis), blits; times each step.
 using DrawFn = raster::RenderStats (*)(void* ctx, raster::Target& target, raster::Axis axis, raster::Variant variant);
-RenderResult render_with(const raster::Mapper& mapper, Surface surface, int page, raster::Variant variant, DrawFn draw, void* ctx);
+RenderResult render_with(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant, DrawFn draw, void* ctx);
 
 }  // namespace scenes

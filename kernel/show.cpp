@@ -26,7 +26,7 @@ bool play(const files::File& f, const raster::Mapper& mapper) {
     for (int32_t n = 0; n < worlds::world().frames; ++n) {
         if (serial::byte_ready()) return false;
         int page = vga::shown_page() == 0 ? 1 : 0;
-        worlds::render(n, mapper, scenes::Surface::Linear, page, raster::Variant::Asm);
+        worlds::render(n, mapper, raster::Surface::Linear, page, raster::Variant::Asm);
         vga::flip(page);
     }
     return true;

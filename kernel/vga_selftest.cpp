@@ -3,18 +3,14 @@
 
 #include "drivers/vga.h"
 #include "kernel/lib/mem.h"
+#include "kernel/mappers/xsharp.h"
 
 namespace vga_selftest {
 
 namespace {
 
 constexpr int PAGE = 2;
-constexpr uint8_t GUARD = 0xC3;
 alignas(4) uint8_t g_planes[raster::SCREEN_PIXELS];
-
-void fill_texels(raster::Random& r, uint8_t* texels) {
-    for (size_t i = 0; i < raster::CHECK_TEXEL_BYTES; ++i) texels[i] = uint8_t(r.next());
-}
 
 // Row y of the page, all four planes, against the RAM copy.
 bool row_matches(int32_t y) {
@@ -30,18 +26,18 @@ bool row_matches(int32_t y) {
 void clear_row(int32_t y) {
     volatile uint8_t* page = vga::page_base(PAGE);
     vga::set_map_mask(0x0F);
-    for (int32_t i = 0; i < raster::PLANE_ROW_BYTES; ++i) page[y * raster::PLANE_ROW_BYTES + i] = GUARD;
+    for (int32_t i = 0; i < raster::PLANE_ROW_BYTES; ++i) page[y * raster::PLANE_ROW_BYTES + i] = raster::CHECK_GUARD;
     for (int plane = 0; plane < 4; ++plane)
-        memset(g_planes + plane * raster::PLANE_BYTES + y * raster::PLANE_ROW_BYTES, GUARD, raster::PLANE_ROW_BYTES);
+        memset(g_planes + plane * raster::PLANE_BYTES + y * raster::PLANE_ROW_BYTES, raster::CHECK_GUARD, raster::PLANE_ROW_BYTES);
 }
 
 }  // namespace
 
-raster::LoopCheck check(const raster::CheckedLoop& loop, uint32_t seed, uint32_t cases, uint8_t* texels) {
+raster::LoopCheck check(const raster::Mapper& mapper, uint32_t seed, uint32_t cases, uint8_t* texels) {
     raster::LoopCheck result;
-    result.loop = loop.name;
+    result.loop = mapper.name;
     raster::Random r(seed);
-    fill_texels(r, texels);
+    raster::fill_check_texels(r, texels);
     for (uint32_t c = 0; c < cases; ++c) {
         raster::XSharpRowArgs a;
         int32_t x, y;
@@ -52,8 +48,8 @@ raster::LoopCheck check(const raster::CheckedLoop& loop, uint32_t seed, uint32_t
         twin.plane_bytes = raster::PLANE_BYTES;
         a.dst = const_cast<uint8_t*>(vga::page_base(PAGE)) + y * raster::PLANE_ROW_BYTES + (x >> 2);
         a.plane_bytes = 0;
-        loop.twin(&twin);
-        loop.asm_loop(&a);
+        mapper.twin(&twin);
+        mapper.asm_loop(&a);
         ++result.cases;
         result.pixels += uint32_t(a.count);
         if (!row_matches(y) && result.mismatches++ == 0) result.first_mismatch = c;

@@ -7,6 +7,6 @@
 namespace vga_selftest {
 
 // Needs Mode X on; draws over rows of page 2.
-raster::LoopCheck check(const raster::CheckedLoop& loop, uint32_t seed, uint32_t cases, uint8_t* texels);
+raster::LoopCheck check(const raster::Mapper& mapper, uint32_t seed, uint32_t cases, uint8_t* texels);
 
 }  // namespace vga_selftest

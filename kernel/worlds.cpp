@@ -34,7 +34,7 @@ bool loaded() { return g_loaded; }
 const raster::World& world() { return g_world; }
 const char* name() { return g_name; }
 
-FrameResult render(int32_t n, const raster::Mapper& mapper, scenes::Surface surface, int page, raster::Variant variant,
+FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
                    raster::Probe* probe) {
     FrameResult r{};
     uint64_t t0 = timer::rdtsc();

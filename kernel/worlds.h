@@ -26,7 +26,7 @@ struct FrameResult {
 
 // Builds frame `n` and draws it with `mapper` into `page` through `surface`; with a probe, times
 // the drawing's phases (the probe's clock must be set).
-FrameResult render(int32_t n, const raster::Mapper& mapper, scenes::Surface surface, int page, raster::Variant variant,
+FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
                    raster::Probe* probe = nullptr);
 
 }  // namespace worlds

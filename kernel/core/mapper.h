@@ -1,31 +1,48 @@
-// The texture-mapper registry: every mapper in one table with what it needs and what it promises,
-// so the tests, the bench and the selection policy iterate one list. A mapper here draws the spans
-// (rows or columns) the edge walker yields; its inner loop may have a NASM twin (loops.h).
+// What a texture mapper is: its registry row (needs, promises, loops), the contexts its span or
+// polygon driver gets, and the one path by which a driver hands pixels to its inner loop.
 #pragma once
 
 #include <stdint.h>
 
-#include "kernel/lib/words.h"
-#include "kernel/mappers/loops.h"
 #include "kernel/core/probe.h"
 #include "kernel/core/setup.h"
 #include "kernel/core/surface.h"
 #include "kernel/core/texture.h"
 #include "kernel/core/walk.h"
+#include "kernel/lib/words.h"
 
 namespace raster {
 
-// What a mapper needs from the texture; the caller must not give it anything else.
+// An inner loop: one pointer to its argument block. The C++ twin is the specification; the NASM
+// loop (asm/NAME.asm) must match it bit for bit. Naming rule: the twin is NAME_loop (or
+// NAME_KIND_loop) in namespace raster, its NASM loop the same name with _asm, extern "C".
+using LoopFn = void (*)(const void* args);
+
+#if defined(MODEXLAB_ASM_LOOPS)
+#define MODEXLAB_ASM(symbol) (&symbol)
+#else
+#define MODEXLAB_ASM(symbol) nullptr
+#endif
+// A registry row's twin and NASM loop, named by the rule above.
+#define TWIN_AND_ASM(twin) twin, MODEXLAB_ASM(twin##_asm)
+
+// What a mapper needs from the texture and the target; the caller must not give it anything else.
 enum Need : uint32_t {
     NEED_NOTHING = 0,
-    NEED_POW2 = 1 << 0,           // width and height powers of two
-    NEED_WIDTH_256 = 1 << 1,      // width exactly 256
-    NEED_BORDERED = 1 << 2,       // the texture's bordered copy (Texture::bordered)
-    NEED_INSIDE = 1 << 3,         // cannot wrap: a polygon's texture coordinates must fit in the texture
-    NEED_PLANAR_TARGET = 1 << 4,  // writes Mode X planes itself (rows on a planar target)
-    NEED_VGA_FOR_ASM = 1 << 5,    // the NASM loop programs the VGA: it runs on VGA pages only
-    NEED_ALIGNED256 = 1 << 6,     // 256 x 256, repeat, with the 64 KiB-aligned copy (Texture::aligned256)
+    NEED_BORDERED = 1 << 0,       // the texture's bordered copy (Texture::bordered)
+    NEED_INSIDE = 1 << 1,         // cannot wrap: a polygon's texture coordinates must fit in the texture
+    NEED_PLANAR_TARGET = 1 << 2,  // writes Mode X planes itself (rows on a planar target)
+    NEED_VGA_FOR_ASM = 1 << 3,    // the NASM loop programs the VGA: it runs on VGA pages only
+    NEED_ALIGNED256 = 1 << 4,     // 256 x 256, repeat, with the 64 KiB-aligned copy (Texture::aligned256)
 };
+// Each need's name (the `mappers` reply) and its words (error messages), in one table.
+struct NeedName {
+    Need need;
+    const char* name;
+    const char* words;
+};
+extern const NeedName NEED_NAMES[];
+extern const int NEED_NAME_COUNT;
 
 // Which walkers a mapper works with.
 enum AxisSet : uint8_t { AXIS_ROWS = 1, AXIS_COLUMNS = 2, AXIS_BOTH = 3 };
@@ -53,25 +70,38 @@ struct RenderStats {
     Probe* probe = nullptr;  // the bench's lap timer, when it times the phases
 };
 
-// A mapper with its own setup and edge walking (the classics) draws whole polygons.
+// A mapper with its own setup and edge walking (the classics, our fast loops) draws whole polygons.
 struct DrawContext {
     const Texture& tex;
     Axis axis;
     Target& target;
-    RenderStats* stats;  // the driver adds spans and pixels
+    RenderStats* stats;  // the driver adds spans and pixels through emit() and tally()
     LoopFn loop;
 };
 using DrawFn = SetupStatus (*)(const DrawContext& c, const Vertex* vertices, int count);
 
-// For the bench's probe (probe.h): a polygon driver marks the end of its setup, and runs its
-// per-span (per-column) code through these, so that its time counts as the inner loop's.
+// A polygon driver marks the end of its setup (for the bench's probe, probe.h).
 inline void setup_done(const DrawContext& c) { probe_lap(c.stats->probe, Phase::Setup); }
-inline void inner_begins(const DrawContext& c) { probe_lap(c.stats->probe, Phase::Walk); }
-inline void inner_ends(const DrawContext& c) { probe_lap(c.stats->probe, Phase::Inner); }
-inline void run_loop(const DrawContext& c, const void* args) {
-    inner_begins(c);
-    c.loop(args);
-    inner_ends(c);
+
+// Counts what a loop drew: every driver's statistics go through here.
+inline void tally(RenderStats* stats, uint32_t spans, uint32_t pixels) {
+    stats->spans += spans;
+    stats->pixels += pixels;
+}
+
+// The one path from a driver to its inner loop: the probe's laps around `draw` (its time counts as
+// the inner loop's; what came before it, as walking), then the tally. `draw` is the loop call, or
+// a whole span routine where the original's span code is the inner loop (X-Sharp's, Hecker's).
+template <typename Draw>
+inline void emit(RenderStats* stats, uint32_t spans, uint32_t pixels, Draw&& draw) {
+    probe_lap(stats->probe, Phase::Walk);
+    draw();
+    probe_lap(stats->probe, Phase::Inner);
+    tally(stats, spans, pixels);
+}
+// The common case: the context's loop on one argument block.
+inline void emit(const DrawContext& c, const void* args, uint32_t spans, uint32_t pixels) {
+    emit(c.stats, spans, pixels, [&] { c.loop(args); });
 }
 
 // What a mapper promises about accuracy, in checkable form (tests/unit/promise_test.cpp checks it
@@ -86,6 +116,12 @@ constexpr Guarantee EXACT_COVERAGE_FLAT_ONE{true, -1, 1};  // exact coverage; wi
 constexpr Guarantee EXACT_COVERAGE{true, -1, -1};
 constexpr Guarantee NO_GUARANTEE{false, -1, -1};           // the classics: what they are
 
+struct Mapper;
+struct LoopCheck;
+struct CheckBuffers;
+// The differential check of a mapper's NASM loop against its twin (core/selftest.h).
+using CheckFn = LoopCheck (*)(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+
 struct Mapper {
     const char* name;
     const char* family;   // "ours" or "classic"
@@ -97,7 +133,9 @@ struct Mapper {
     SpanFn span;          // for the generic walker (nullptr when draw is set)
     LoopFn twin;          // the C++ inner loop (nullptr: span does all the work itself)
     LoopFn asm_loop;      // its NASM twin, or nullptr
-    DrawFn draw = nullptr;  // its own polygon driver, or nullptr for the generic walker
+    DrawFn draw = nullptr;    // its own polygon driver, or nullptr for the generic walker
+    CheckFn check = nullptr;  // random cases for its loop: NASM against twin (nullptr: no NASM loop,
+                              // or one the kernel checks on the VGA itself, NEED_VGA_FOR_ASM)
 };
 
 extern const Mapper MAPPERS[];
@@ -106,9 +144,6 @@ const Mapper* find_mapper(lib::StrView name);
 inline const Mapper* find_mapper(const char* name) { return find_mapper(lib::StrView{name, lib::c_length(name)}); }
 
 inline bool mapper_accepts(const Mapper& m, const Texture& t) {
-    bool pow2 = (t.width & (t.width - 1)) == 0 && (t.height & (t.height - 1)) == 0;
-    if ((m.needs & NEED_POW2) && !pow2) return false;
-    if ((m.needs & NEED_WIDTH_256) && t.width != 256) return false;
     if ((m.needs & NEED_BORDERED) && !t.bordered) return false;
     if ((m.needs & NEED_ALIGNED256) && (t.width != 256 || t.height != 256 || t.wrap != Wrap::Repeat || !t.aligned256)) return false;
     return true;

@@ -26,11 +26,7 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
             while (walker.next(&span)) {
                 int32_t stride;
                 uint8_t* dst = span_start(target, axis, span, &stride);
-                probe_lap(probe, Phase::Walk);
-                mapper.span(context, span, dst, stride);
-                probe_lap(probe, Phase::Inner);
-                ++stats->spans;
-                stats->pixels += uint32_t(span.count);
+                emit(stats, 1, uint32_t(span.count), [&] { mapper.span(context, span, dst, stride); });
             }
         }
     }

@@ -1,12 +1,14 @@
 // Differential checks of inner loops: random argument blocks run through the C++ twin and another
 // implementation (the NASM loop) into separate buffers, compared byte for byte, guard bytes
-// included. Portable: the 32-bit host tests and the kernel's `selftest` command run the same cases.
+// included. Each mapper's cases live beside its twin (kernel/mappers/NAME.cpp, the registry's
+// `check`); this is the machinery they share. Portable: the 32-bit host tests and the kernel's
+// `selftest` command run the same cases.
 #pragma once
 
 #include <stddef.h>
 #include <stdint.h>
 
-#include "kernel/mappers/loops.h"
+#include "kernel/core/mapper.h"
 
 namespace raster {
 
@@ -33,6 +35,11 @@ struct CheckBuffers {
 };
 constexpr size_t CHECK_DST_BYTES = 320 * 330 + 2 * 64;  // a column of 320 pixels 330 bytes apart, guards
 constexpr size_t CHECK_TEXEL_BYTES = 1024 * 1024;
+constexpr uint8_t CHECK_GUARD = 0xC3;
+constexpr size_t CHECK_GUARD_BYTES = 64;
+// Texture walks of the pointer loops start in the middle of the texel buffer; each check bounds
+// its random advances so that no walk can leave it: count * (|base| + 1 + |row|) < 512 KiB.
+constexpr int32_t CHECK_TEXEL_MID = int32_t(CHECK_TEXEL_BYTES / 2);
 
 struct LoopCheck {
     const char* loop;
@@ -42,29 +49,81 @@ struct LoopCheck {
     uint32_t pixels = 0;
 };
 
-// The loops with NASM twins, one entry each. Loops that program the VGA cannot run on the host:
-// the kernel checks those against the twin drawing into RAM planes (kernel/vga_selftest.cpp).
-struct CheckedLoop {
-    const char* name;
-    LoopFn twin;
-    LoopFn asm_loop;
-    LoopCheck (*check)(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-    bool vga;  // the NASM loop writes VGA registers: `check` is null, the kernel checks it
+// The mappers with a NASM loop, one per loop (of mappers sharing a loop, the first) in registry
+// order, whether or not this build links the loops; those with NEED_VGA_FOR_ASM have no `check`:
+// the kernel checks them on the VGA.
+int checked_loops(const Mapper** out, int capacity);
+
+// A case's destination window [lo, hi) of the buffers (its pixels and the guard bytes on either
+// side), and the pixels it draws.
+struct CheckWindow {
+    size_t lo, hi;
+    uint32_t pixels;
 };
-extern const CheckedLoop CHECKED_LOOPS[];
-extern const int CHECKED_LOOP_COUNT;
 
-LoopCheck check_exact(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-LoopCheck check_hecker(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-LoopCheck check_fatmap(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-LoopCheck check_fatmap_lut(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-LoopCheck check_quake(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-LoopCheck check_fast_run(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf);
-LoopCheck check_fast_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-LoopCheck check_xsharp_column(const CheckedLoop& loop, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+// Where a case's pointers into buffer a go in buffer b, what a loop gives back besides pixels, and
+// the block the loop takes: specialised for argument blocks with more than a destination.
+template <typename Args>
+void move_to_b(Args& b, const Args& a, const CheckBuffers& buf) {
+    b.dst = buf.b + (a.dst - buf.a);
+}
+template <typename Args>
+bool same_results(const Args&, const Args&) {
+    return true;
+}
+template <typename Args>
+const void* check_block(const Args& a) {
+    return &a;
+}
 
-// Random XSharpRowArgs for a row of up to 320 pixels starting at plane offset `offset` of a page
-// whose rows are 80 bytes (the kernel's VGA check), texel reads inside `texels` (CHECK_TEXEL_BYTES).
-void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32_t* x, int32_t* y);
+// Random texels once per check; each case views what it needs of them.
+void fill_check_texels(Random& r, uint8_t* texels);
+
+// Runs `cases` random cases: make(r, a) fills an argument block drawing into buffer a and returns
+// its window; both implementations run it, each into its own buffer, and the windows must agree
+// byte for byte (and any other results).
+template <typename Args, typename Make>
+LoopCheck check_cases(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf, Make make) {
+    LoopCheck result;
+    result.loop = m.name;
+    Random r(seed);
+    fill_check_texels(r, buf.texels);
+    for (uint32_t c = 0; c < cases; ++c) {
+        Args a;
+        CheckWindow w = make(r, a);
+        Args b = a;
+        move_to_b(b, a, buf);
+        for (size_t i = w.lo; i < w.hi; ++i) buf.a[i] = buf.b[i] = CHECK_GUARD;
+        m.twin(check_block(a));
+        other(check_block(b));
+        bool same = same_results(a, b);
+        for (size_t i = w.lo; i < w.hi && same; ++i) same = buf.a[i] == buf.b[i];
+        ++result.cases;
+        result.pixels += w.pixels;
+        if (!same && result.mismatches++ == 0) result.first_mismatch = c;
+    }
+    return result;
+}
+
+// A texture size the loops accept: 1..1024, often a power of two, sometimes an extreme.
+int32_t random_texture_size(Random& r);
+// A span of count pixels `stride` bytes apart (count >= 0, stride > 0) starting past the guard in
+// buffer a: its first pixel and its window.
+uint8_t* check_span(const CheckBuffers& buf, int32_t count, int32_t stride, CheckWindow* w);
+// The 64 KiB-aligned texture the fatmap-style loops need: the first such address in the buffer.
+const uint8_t* check_aligned_texture(const CheckBuffers& buf);
+// Three planes (a0, gx, gy each): from a real set-up triangle most of the time, else raw values up
+// to the extremes, now and then with 1/w zero everywhere (infinities and NaN).
+void random_planes(Random& r, double* q, double* pu, double* pv);
+
+// Random 16.16 coordinates and steps for the 8:16 loops: anything at all a quarter of the time,
+// else steps up to 4 texels a pixel.
+template <typename Args>
+void random_uv(Random& r, Args& a) {
+    a.u = int32_t(r.next());
+    a.v = int32_t(r.next());
+    a.du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+    a.dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+}
 
 }  // namespace raster

@@ -19,7 +19,7 @@ struct Span {
 // floor(m / d) for d > 0, where m grows by a constant each line, stepped exactly: quotient q,
 // remainder r < d, and the step's quotient and remainder. A walker's bound is live on the lines
 // whose centre lies within its edge's closed extent (first..last); there the bound lies within the
-// edge's own extent, so 32 bits hold it. The NASM run loop steps these in place (offsets.inc).
+// edge's own extent, so 32 bits hold it. The NASM run loop steps these in place (fast.inc).
 struct EdgeBound {
     int32_t first, last;
     int32_t q, dq;

@@ -1,11 +1,38 @@
-// The exact mapper's inner loop, the specification of asm/exact.asm.
-#include "kernel/mappers/loops.h"
-#include "kernel/core/setup.h"
-#include "kernel/core/texture.h"
+// exact: the span function, its loop (the specification of asm/exact.asm) and the loop's checks.
+#include "kernel/mappers/exact.h"
+
+#include "kernel/core/asm_offsets.h"
+#include "kernel/core/selftest.h"
 
 namespace raster {
 
 static_assert(sizeof(Plane) == 3 * sizeof(double), "ExactArgs copies planes as three doubles");
+
+// exact: the argument block for exact_loop / exact_loop_asm.
+void exact_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
+    const PolygonSetup& setup = c.setup;
+    ExactArgs a;
+    a.dst = dst;
+    a.stride = stride;
+    a.count = s.count;
+    a.texels = c.tex.texels;
+    a.width = c.tex.width;
+    a.height = c.tex.height;
+    a.clamp = c.tex.wrap == Wrap::Clamp;
+    a.reserved = 0;
+    a.x = centre_x(setup, s.x);
+    a.y = centre_y(setup, s.y);
+    a.step_x = c.axis == Axis::Rows ? double(SUBPIXEL_ONE) : 0.0;
+    a.step_y = c.axis == Axis::Rows ? 0.0 : double(SUBPIXEL_ONE);
+    const Plane* planes[3] = {&setup.q, &setup.pu, &setup.pv};
+    double* out[3] = {a.q, a.pu, a.pv};
+    for (int k = 0; k < 3; ++k) {
+        out[k][0] = planes[k]->a0;
+        out[k][1] = planes[k]->gx;
+        out[k][2] = planes[k]->gy;
+    }
+    c.loop(&a);
+}
 
 void exact_loop(const void* raw) {
     const auto& a = *static_cast<const ExactArgs*>(raw);
@@ -22,5 +49,53 @@ void exact_loop(const void* raw) {
         y += a.step_y;
     }
 }
+
+// The loop's random cases (core/selftest.h).
+LoopCheck check_exact(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<ExactArgs>(m, other, seed, cases, buf, [&](Random& r, ExactArgs& a) {
+        int32_t w = random_texture_size(r), h = random_texture_size(r);
+        a.texels = buf.texels;
+        a.width = w;
+        a.height = h;
+        a.clamp = int32_t(r.below(2));
+        a.reserved = 0;
+        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.stride = r.below(2) ? 1 : r.range(-330, 330);
+        if (a.stride == 0) a.stride = 80;
+        // the destination's first pixel, so that all count pixels stay between the guards
+        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0) * size_t(a.stride < 0 ? -a.stride : a.stride);
+        size_t first = CHECK_GUARD_BYTES + (a.stride < 0 ? extent : 0);
+        double sign = r.below(4) == 0 ? -1.0 : 1.0;
+        bool rows = r.below(2) == 0;
+        a.step_x = rows ? sign * 256 : 0;
+        a.step_y = rows ? 0 : sign * 256;
+        a.x = double(r.range(-120000, 120000)) + 128;
+        a.y = double(r.range(-90000, 90000)) + 128;
+        random_planes(r, a.q, a.pu, a.pv);
+        a.dst = buf.a + first;
+        return CheckWindow{0, CHECK_GUARD_BYTES + extent + 1 + CHECK_GUARD_BYTES, uint32_t(a.count > 0 ? a.count : 0)};
+    });
+}
+
+#if defined(MODEXLAB_OFFSETS)
+// The block layouts asm/exact.asm reads (core/asm_offsets.h).
+void exact_offsets() {
+    ASM_OFFSET(EXACT_DST, ExactArgs, dst);
+    ASM_OFFSET(EXACT_STRIDE, ExactArgs, stride);
+    ASM_OFFSET(EXACT_COUNT, ExactArgs, count);
+    ASM_OFFSET(EXACT_TEXELS, ExactArgs, texels);
+    ASM_OFFSET(EXACT_WIDTH, ExactArgs, width);
+    ASM_OFFSET(EXACT_HEIGHT, ExactArgs, height);
+    ASM_OFFSET(EXACT_CLAMP, ExactArgs, clamp);
+    ASM_OFFSET(EXACT_X, ExactArgs, x);
+    ASM_OFFSET(EXACT_Y, ExactArgs, y);
+    ASM_OFFSET(EXACT_STEP_X, ExactArgs, step_x);
+    ASM_OFFSET(EXACT_STEP_Y, ExactArgs, step_y);
+    ASM_OFFSET(EXACT_Q, ExactArgs, q);
+    ASM_OFFSET(EXACT_PU, ExactArgs, pu);
+    ASM_OFFSET(EXACT_PV, ExactArgs, pv);
+    ASM_SIZE(EXACT_ARGS_SIZE, ExactArgs);
+}
+#endif
 
 }  // namespace raster

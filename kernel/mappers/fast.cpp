@@ -8,6 +8,9 @@
 // the remainder, with no per-pixel loop counter.
 #include "kernel/mappers/fast.h"
 
+#include "kernel/core/asm_offsets.h"
+#include "kernel/core/selftest.h"
+
 namespace raster::fast {
 
 namespace {
@@ -34,7 +37,7 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
     EdgeWalker walker(s, Axis::Rows, c.target.clip);
     const Planes p(s);
     setup_done(c);
-    uint32_t tally[2] = {0, 0};
+    uint32_t drawn[2] = {0, 0};  // spans, pixels
     FastRunArgs a;
     a.pitch = c.target.pitch;
     a.clip_lo = walker.minor_lo();
@@ -44,7 +47,7 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
     a.v_row = p.vdy;
     a.du = int32_t(p.udx);
     a.dv = int32_t(p.vdx);
-    a.tally = tally;
+    a.tally = drawn;
     for (;;) {
         int32_t line;
         EdgeBound lone_lower, lone_upper;
@@ -64,10 +67,9 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
         a.row = c.target.base + line * c.target.pitch;
         a.u = p.u(0, line);
         a.v = p.v(0, line);
-        run_loop(c, &a);
+        emit(c, &a, 0, 0);  // the run loop counts what it draws
     }
-    c.stats->spans += tally[0];
-    c.stats->pixels += tally[1];
+    tally(c.stats, drawn[0], drawn[1]);
     return SetupStatus::Ok;
 }
 
@@ -91,12 +93,11 @@ SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count
         a.count = span.count;
         a.u = int32_t(p.u(span.x, span.y));
         a.v = int32_t(p.v(span.x, span.y));
-        run_loop(c, &a);
+        emit(c, &a, 0, 0);  // counted once for the polygon
         ++spans;
         pixels += uint32_t(span.count);
     }
-    c.stats->spans += spans;
-    c.stats->pixels += pixels;
+    tally(c.stats, spans, pixels);
     return SetupStatus::Ok;
 }
 
@@ -146,5 +147,134 @@ void fast_column_loop(const void* raw) {
         v += uint32_t(a.dv);
     }
 }
+
+// The loop's random cases (core/selftest.h).
+LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<FastColumnArgs>(m, other, seed, cases, buf, [&](Random& r, FastColumnArgs& a) {
+        a.count = r.below(8) == 0 ? r.range(0, 9) : r.range(1, 240);
+        a.texture = check_aligned_texture(buf);
+        random_uv(r, a);
+        CheckWindow w;
+        a.dst = check_span(buf, a.count, MODEX_ROW_BYTES, &w);
+        return w;
+    });
+}
+
+namespace {
+
+// fast_run_loop's block with the bounds and the tally it updates, which must come out the same.
+struct RunCase {
+    FastRunArgs args;
+    EdgeBound lower, upper;
+    uint32_t tally[2];
+};
+
+}  // namespace
+
+template <>
+void move_to_b(RunCase& b, const RunCase& a, const CheckBuffers& buf) {
+    b.args.row = buf.b + (a.args.row - buf.a);
+    b.args.lower = &b.lower;
+    b.args.upper = &b.upper;
+    b.args.tally = b.tally;
+}
+
+template <>
+bool same_results(const RunCase& a, const RunCase& b) {
+    auto same = [](const EdgeBound& x, const EdgeBound& y) { return x.q == y.q && x.r == y.r; };
+    return same(a.lower, b.lower) && same(a.upper, b.upper) && a.tally[0] == b.tally[0] && a.tally[1] == b.tally[1];
+}
+
+template <>
+const void* check_block(const RunCase& a) {
+    return &a.args;
+}
+
+namespace {
+
+// A random bound: q anywhere near the rows (often far outside the clip), steps of either sign,
+// any remainder and divisor.
+EdgeBound random_bound(Random& r, int32_t pitch) {
+    EdgeBound b;
+    b.first = b.last = 0;
+    b.q = r.below(4) == 0 ? r.range(-100000, 100000) : r.range(-20, pitch + 20);
+    b.dq = r.below(4) == 0 ? r.range(-400, 400) : r.range(-3, 3);
+    b.d = r.below(4) == 0 ? 1 + r.next() % 0x80000000u : uint32_t(r.range(1, 4096));
+    b.r = r.next() % b.d;
+    b.dr = r.next() % b.d;
+    return b;
+}
+
+}  // namespace
+
+LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<RunCase>(m, other, seed, cases, buf, [&](Random& r, RunCase& c) {
+        FastRunArgs& a = c.args;
+        // rows of up to 330 bytes; 240 of them fit the buffer with its guards
+        a.pitch = r.below(2) ? 320 : r.range(1, 330);
+        a.lines = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 240);
+        a.clip_lo = r.range(0, a.pitch - 1);
+        a.clip_hi = r.below(8) == 0 ? a.clip_lo - 1 : r.range(a.clip_lo, a.pitch - 1);  // sometimes nothing
+        c.lower = random_bound(r, a.pitch);
+        c.upper = random_bound(r, a.pitch);
+        if (r.below(2)) c.upper.q = c.lower.q + r.range(0, a.pitch), c.upper.dq = c.lower.dq + r.range(-2, 2);  // a real-looking span
+        a.texture = check_aligned_texture(buf);
+        a.u = r.next();
+        a.v = r.next();
+        a.u_row = r.next();
+        a.v_row = r.next();
+        a.du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        a.dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        c.tally[0] = c.tally[1] = 0;
+        a.lower = &c.lower;
+        a.upper = &c.upper;
+        a.tally = c.tally;
+        a.row = buf.a + CHECK_GUARD_BYTES;
+        int32_t lines = a.lines > 0 ? a.lines : 0;
+        uint32_t pixels = 0;  // what the rows will draw
+        EdgeBound lo = c.lower, hi = c.upper;
+        for (int32_t n = 0; n < lines; ++n) {
+            int32_t x0 = lo.q > a.clip_lo ? lo.q : a.clip_lo, x1 = hi.q < a.clip_hi ? hi.q : a.clip_hi;
+            if (x0 <= x1) pixels += uint32_t(x1 - x0 + 1);
+            lo.step();
+            hi.step();
+        }
+        return CheckWindow{0, CHECK_GUARD_BYTES + size_t(lines) * size_t(a.pitch) + CHECK_GUARD_BYTES, pixels};
+    });
+}
+
+#if defined(MODEXLAB_OFFSETS)
+// The block layouts asm/fast.asm reads (core/asm_offsets.h).
+void fast_offsets() {
+    ASM_OFFSET(FCOL_DST, FastColumnArgs, dst);
+    ASM_OFFSET(FCOL_COUNT, FastColumnArgs, count);
+    ASM_OFFSET(FCOL_TEXTURE, FastColumnArgs, texture);
+    ASM_OFFSET(FCOL_U, FastColumnArgs, u);
+    ASM_OFFSET(FCOL_V, FastColumnArgs, v);
+    ASM_OFFSET(FCOL_DU, FastColumnArgs, du);
+    ASM_OFFSET(FCOL_DV, FastColumnArgs, dv);
+    ASM_CONSTANT(MODEX_ROW_BYTES, MODEX_ROW_BYTES);
+    ASM_OFFSET(RUN_ROW, FastRunArgs, row);
+    ASM_OFFSET(RUN_PITCH, FastRunArgs, pitch);
+    ASM_OFFSET(RUN_LINES, FastRunArgs, lines);
+    ASM_OFFSET(RUN_CLIP_LO, FastRunArgs, clip_lo);
+    ASM_OFFSET(RUN_CLIP_HI, FastRunArgs, clip_hi);
+    ASM_OFFSET(RUN_LOWER, FastRunArgs, lower);
+    ASM_OFFSET(RUN_UPPER, FastRunArgs, upper);
+    ASM_OFFSET(RUN_TEXTURE, FastRunArgs, texture);
+    ASM_OFFSET(RUN_U, FastRunArgs, u);
+    ASM_OFFSET(RUN_V, FastRunArgs, v);
+    ASM_OFFSET(RUN_U_ROW, FastRunArgs, u_row);
+    ASM_OFFSET(RUN_V_ROW, FastRunArgs, v_row);
+    ASM_OFFSET(RUN_DU, FastRunArgs, du);
+    ASM_OFFSET(RUN_DV, FastRunArgs, dv);
+    ASM_OFFSET(RUN_TALLY, FastRunArgs, tally);
+    ASM_OFFSET(BOUND_Q, EdgeBound, q);
+    ASM_OFFSET(BOUND_DQ, EdgeBound, dq);
+    ASM_OFFSET(BOUND_R, EdgeBound, r);
+    ASM_OFFSET(BOUND_DR, EdgeBound, dr);
+    ASM_OFFSET(BOUND_D, EdgeBound, d);
+}
+#endif
 
 }  // namespace raster

@@ -1,7 +1,52 @@
-// Our fastest affine mappers (256 x 256 repeating textures): polygon drivers for the registry.
+// Our fastest affine mappers (256 x 256 repeating textures): the polygon drivers, the loops'
+// argument blocks, the twins and the NASM loops (asm/fast.asm).
 #pragma once
 
+#include <stdint.h>
+
 #include "kernel/core/mapper.h"
+
+namespace raster {
+
+// fast-affine: a run of rows of a polygon (EdgeWalker::run), the edge walking and the spans in one
+// loop. On each row: first pixel max(lower.q, clip_lo), last pixel min(upper.q, clip_hi), both
+// bounds stepped; a non-empty span drawn with fatmap2's 8:16 arithmetic (16.16 u and v, wrapping
+// at 256 texels) from u + x * du, v + x * dv at its first pixel x; then u, v and row advance.
+struct FastRunArgs {
+    uint8_t* row;            // the first row's pixel 0 (only pixels clip_lo..clip_hi are written)
+    int32_t pitch;           // bytes from row to row
+    int32_t lines;           // >= 1
+    int32_t clip_lo, clip_hi;
+    EdgeBound* lower;        // stepped in place, once a row
+    EdgeBound* upper;
+    const uint8_t* texture;  // 256 x 256, aligned to 64 KiB
+    uint32_t u, v;           // 16.16 at pixel 0 of the first row
+    uint32_t u_row, v_row;   // their change from row to row
+    int32_t du, dv;          // 16.16 per pixel
+    uint32_t* tally;         // tally[0] += the spans drawn, tally[1] += their pixels
+};
+void fast_run_loop(const void* args);
+
+// fast-columns: the same arithmetic down a Mode X column, 80 bytes between pixels.
+constexpr int32_t MODEX_ROW_BYTES = 80;
+struct FastColumnArgs {
+    uint8_t* dst;
+    int32_t count;
+    const uint8_t* texture;  // aligned to 64 KiB
+    int32_t u, v;            // 16.16
+    int32_t du, dv;          // 16.16 per pixel down the column
+};
+void fast_column_loop(const void* args);
+
+LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+
+}  // namespace raster
+
+extern "C" {
+void fast_run_loop_asm(const void* args);
+void fast_column_loop_asm(const void* args);
+}
 
 namespace raster::fast {
 

@@ -14,6 +14,9 @@
 // by the skipped count times the deltas), polygons drawn as fans.
 #include "kernel/mappers/fatmap.h"
 
+#include "kernel/core/asm_offsets.h"
+#include "kernel/core/selftest.h"
+
 #include "kernel/mappers/classic.h"
 
 namespace raster::fatmap {
@@ -132,8 +135,7 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
                     int32_t first = skipped < table_length ? skipped : table_length - 1;
                     a.table = g_lut + first;
                     a.count = a.count < table_length - first ? a.count : table_length - first;
-                    run_loop(c, &a);
-                    c.stats->pixels += uint32_t(a.count);
+                    emit(c, &a, 1, uint32_t(a.count));
                 } else {
                     FatmapArgs a;
                     a.dst = dst;
@@ -143,10 +145,8 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
                     a.v = int32_t(uint32_t(left.v) + uint32_t(skipped) * uint32_t(dvdx));
                     a.du = dudx;
                     a.dv = dvdx;
-                    run_loop(c, &a);
-                    c.stats->pixels += uint32_t(a.count);
+                    emit(c, &a, 1, uint32_t(a.count));
                 }
-                ++c.stats->spans;
             }
         }
         if (y >= clip.y1) return;
@@ -246,5 +246,52 @@ void fatmap_lut_loop(const void* raw) {
     const auto& a = *static_cast<const FatmapLutArgs*>(raw);
     for (int32_t n = 0; n < a.count; ++n) a.dst[n] = a.source[a.table[n]];
 }
+
+// The loop's random cases (core/selftest.h).
+LoopCheck check_fatmap(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<FatmapArgs>(m, other, seed, cases, buf, [&](Random& r, FatmapArgs& a) {
+        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.texture = check_aligned_texture(buf);
+        random_uv(r, a);
+        CheckWindow w;
+        a.dst = check_span(buf, a.count, 1, &w);
+        return w;
+    });
+}
+
+LoopCheck check_fatmap_lut(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    static int32_t table[321];  // count entries and the one the NASM loop reads past the last
+    return check_cases<FatmapLutArgs>(m, other, seed, cases, buf, [&](Random& r, FatmapLutArgs& a) {
+        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.source = buf.texels + CHECK_TEXEL_MID + r.range(-1000, 1000);
+        int32_t du = r.range(-512, 512), dv = r.range(-512, 512), u = 0, v = 0;
+        for (int32_t k = 0; k <= a.count; ++k) {  // as fatmap builds it (24:8 steps, pitch 256)
+            table[k] = (u >> 8) + int32_t(uint32_t(v) & 0xFFFFFF00u);
+            u += du;
+            v += dv;
+        }
+        a.table = table;
+        CheckWindow w;
+        a.dst = check_span(buf, a.count, 1, &w);
+        return w;
+    });
+}
+
+#if defined(MODEXLAB_OFFSETS)
+// The block layouts asm/fatmap.asm reads (core/asm_offsets.h).
+void fatmap_offsets() {
+    ASM_OFFSET(FATMAP_DST, FatmapArgs, dst);
+    ASM_OFFSET(FATMAP_COUNT, FatmapArgs, count);
+    ASM_OFFSET(FATMAP_TEXTURE, FatmapArgs, texture);
+    ASM_OFFSET(FATMAP_U, FatmapArgs, u);
+    ASM_OFFSET(FATMAP_V, FatmapArgs, v);
+    ASM_OFFSET(FATMAP_DU, FatmapArgs, du);
+    ASM_OFFSET(FATMAP_DV, FatmapArgs, dv);
+    ASM_OFFSET(LUT_DST, FatmapLutArgs, dst);
+    ASM_OFFSET(LUT_COUNT, FatmapLutArgs, count);
+    ASM_OFFSET(LUT_SOURCE, FatmapLutArgs, source);
+    ASM_OFFSET(LUT_TABLE, FatmapLutArgs, table);
+}
+#endif
 
 }  // namespace raster

@@ -1,7 +1,45 @@
-// Mats Byggmastar's fatmap.txt mappers (1996): the polygon drivers for the registry.
+// Mats Byggmastar's fatmap.txt mappers (1996): the polygon drivers, the loops' argument blocks, the
+// twins and the NASM loops (asm/fatmap.asm).
 #pragma once
 
+#include <stdint.h>
+
 #include "kernel/core/mapper.h"
+
+namespace raster {
+
+// fatmap-256 and fatmap-256-16 (fatmap.txt's 5-tick loop; fatmap2's 8:16 loop): a 256 x 256
+// texture at a 64 KiB boundary, the texel pointer's low 16 bits v:u, wrapping in both directions.
+// Both take u, v and the deltas in 16:16 and keep what their registers hold of them.
+struct FatmapArgs {
+    uint8_t* dst;            // count pixels left to right
+    int32_t count;
+    const uint8_t* texture;  // aligned to 64 KiB
+    int32_t u, v;            // 16:16
+    int32_t du, dv;          // 16:16 per pixel
+};
+void fatmap_loop(const void* args);    // 8-bit fractions
+void fatmap16_loop(const void* args);  // 16-bit fractions
+
+// fatmap-lut: texel n is source[table[n]]: the triangle's table of offsets from its first pixel.
+struct FatmapLutArgs {
+    uint8_t* dst;
+    int32_t count;
+    const uint8_t* source;   // the scanline's first texel
+    const int32_t* table;    // the offsets, one per pixel
+};
+void fatmap_lut_loop(const void* args);
+
+LoopCheck check_fatmap(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+LoopCheck check_fatmap_lut(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+
+}  // namespace raster
+
+extern "C" {
+void fatmap_loop_asm(const void* args);
+void fatmap16_loop_asm(const void* args);
+void fatmap_lut_loop_asm(const void* args);
+}
 
 namespace raster::fatmap {
 

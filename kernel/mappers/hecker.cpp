@@ -12,6 +12,9 @@
 // host's SSE2 must agree bit for bit), clipping (his demo drew unclipped), polygons drawn as fans.
 #include "kernel/mappers/hecker.h"
 
+#include "kernel/core/asm_offsets.h"
+#include "kernel/core/selftest.h"
+
 #include "kernel/mappers/classic.h"
 
 namespace raster::hecker {
@@ -162,9 +165,8 @@ void affine_piece(const DrawContext& c, uint8_t* row, int64_t x0, int64_t n, int
     a.dv_frac = uint32_t(dv) << 16;
     a.step_no_carry = (du >> 16) + (dv >> 16) * pitch;
     a.step_carry = a.step_no_carry + pitch;
-    c.loop(&a);
-    ++c.stats->spans;
-    c.stats->pixels += uint32_t(a.count);
+    c.loop(&a);  // inside the scan line's emit(): the whole routine is the inner loop
+    tally(c.stats, 1, uint32_t(a.count));
 }
 
 // SUBAFXFL's DrawScanLine: subdivide every 8 pixels; the last piece aims at the last pixel.
@@ -229,9 +231,8 @@ void draw_triangle(const DrawContext& c, const Vertex28* v) {
         Edge* right = middle_is_left ? &top_to_bottom : &short_edge;
         for (int64_t h = short_edge.height; h-- > 0;) {
             if (left->y >= clip.y0 && left->y < clip.y1) {
-                inner_begins(c);  // the span routine (its divides and pieces) is the inner loop
-                draw_scan_line(c, g, *left, *right);
-                inner_ends(c);
+                // the span routine (its divides and pieces) is the inner loop
+                emit(c.stats, 0, 0, [&] { draw_scan_line(c, g, *left, *right); });
             }
             short_edge.step();
             top_to_bottom.step();
@@ -288,5 +289,38 @@ void hecker_loop(const void* raw) {
         texel += (v_carry ? a.step_carry : a.step_no_carry) + u_carry;  // adc esi, [table + 4*ebp]
     }
 }
+
+// The loop's random cases (core/selftest.h).
+LoopCheck check_hecker(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<HeckerArgs>(m, other, seed, cases, buf, [&](Random& r, HeckerArgs& a) {
+        int32_t pitch = r.range(3, 600);  // any width: the step table holds the pitch
+        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.texel = buf.texels + CHECK_TEXEL_MID + r.range(-1000, 1000);
+        a.u_frac = r.next() & 0xFFFF0000u;
+        a.v_frac = r.next() & 0xFFFF0000u;
+        a.du_frac = r.below(8) == 0 ? 0 : r.next() & 0xFFFF0000u;
+        a.dv_frac = r.below(8) == 0 ? 0 : r.next() & 0xFFFF0000u;
+        a.step_no_carry = r.range(-3, 3) + r.range(-1, 1) * pitch;
+        a.step_carry = a.step_no_carry + (r.below(2) ? pitch : -pitch);
+        CheckWindow w;
+        a.dst = check_span(buf, a.count, 1, &w);
+        return w;
+    });
+}
+
+#if defined(MODEXLAB_OFFSETS)
+// The block layouts asm/hecker.asm reads (core/asm_offsets.h).
+void hecker_offsets() {
+    ASM_OFFSET(HECKER_DST, HeckerArgs, dst);
+    ASM_OFFSET(HECKER_COUNT, HeckerArgs, count);
+    ASM_OFFSET(HECKER_TEXEL, HeckerArgs, texel);
+    ASM_OFFSET(HECKER_U_FRAC, HeckerArgs, u_frac);
+    ASM_OFFSET(HECKER_V_FRAC, HeckerArgs, v_frac);
+    ASM_OFFSET(HECKER_DU_FRAC, HeckerArgs, du_frac);
+    ASM_OFFSET(HECKER_DV_FRAC, HeckerArgs, dv_frac);
+    ASM_OFFSET(HECKER_STEP_CARRY, HeckerArgs, step_carry);
+    ASM_OFFSET(HECKER_STEP_NO_CARRY, HeckerArgs, step_no_carry);
+}
+#endif
 
 }  // namespace raster

@@ -1,8 +1,34 @@
 // Chris Hecker's subdividing perspective mapper with the sbb/adc step-table loop (Game Developer
-// 1995-96): the polygon driver for the registry.
+// 1995-96): the polygon driver, the loop's argument block, the twin and the NASM loop (asm/hecker.asm).
 #pragma once
 
+#include <stdint.h>
+
 #include "kernel/core/mapper.h"
+
+namespace raster {
+
+// hecker-steptable (Hecker, Game Developer part V, listing 2): one pointer carries both texel
+// coordinates; per pixel the v fraction's carry (sbb: 0 or -1) picks one of two table entries and
+// the u fraction's carry goes in through adc. Any texture width; nothing wraps.
+struct HeckerArgs {
+    uint8_t* dst;            // count pixels left to right
+    int32_t count;
+    const uint8_t* texel;    // the first pixel's texel
+    uint32_t u_frac, v_frac; // fractions in bits 31..16
+    uint32_t du_frac, dv_frac;
+    int32_t step_carry;      // whole du + whole dv times the pitch, plus the pitch: v carried
+    int32_t step_no_carry;   // whole du + whole dv times the pitch
+};
+void hecker_loop(const void* args);
+
+LoopCheck check_hecker(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+
+}  // namespace raster
+
+extern "C" {
+void hecker_loop_asm(const void* args);
+}
 
 namespace raster::hecker {
 

@@ -10,6 +10,9 @@
 // Deviations: doubles where Quake used floats (the kernel's x87 and the host's SSE2 must agree).
 #include "kernel/mappers/quake.h"
 
+#include "kernel/core/asm_offsets.h"
+#include "kernel/core/selftest.h"
+
 #include "kernel/mappers/classic.h"
 
 namespace raster::quake {
@@ -53,9 +56,7 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
         a.count = span.count;
         a.x = span.x;
         a.y = span.y;
-        run_loop(c, &a);
-        ++c.stats->spans;
-        c.stats->pixels += uint32_t(span.count);
+        emit(c, &a, 1, uint32_t(span.count));
     }
     return SetupStatus::Ok;
 }
@@ -134,5 +135,67 @@ void quake_span_loop(const void* raw) {
         t = tnext;
     } while (count > 0);
 }
+
+// The loop's random cases (core/selftest.h).
+LoopCheck check_quake(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<QuakeArgs>(m, other, seed, cases, buf, [&](Random& r, QuakeArgs& a) {
+        int32_t w = random_texture_size(r), h = random_texture_size(r);
+        a.texels = buf.texels;
+        a.pitch = w;
+        a.bbextents = (w << 16) - 1;
+        a.bbextentt = (h << 16) - 1;
+        a.sadjust = r.below(2) ? 0 : r.range(-4, 4) * (w << 16);
+        a.tadjust = r.below(2) ? 0 : r.range(-4, 4) * (h << 16);
+        a.shift = r.below(2) ? 4 : 3;
+        a.reserved = 0;
+        a.count = r.below(8) == 0 ? r.range(1, 20) : r.range(1, 320);
+        a.x = r.range(0, 319);
+        a.y = r.range(0, 239);
+        // planes from a real triangle most of the time (then s/z * z is u in 16.16), else raw values
+        double q[3], pu[3], pv[3];
+        random_planes(r, q, pu, pv);
+        auto per_pixel = [&](const double* p, double* origin, double* stepu, double* stepv) {
+            *stepu = p[1] * 256, *stepv = p[2] * 256;
+            *origin = p[0] + double(r.range(-100000, 100000)) * 1e-3 * (*stepu);
+        };
+        per_pixel(pu, &a.s_origin, &a.s_stepu, &a.s_stepv);
+        per_pixel(pv, &a.t_origin, &a.t_stepu, &a.t_stepv);
+        per_pixel(q, &a.z_origin, &a.z_stepu, &a.z_stepv);
+        double n = double(1 << a.shift);
+        a.s_stepu_n = a.s_stepu * n, a.t_stepu_n = a.t_stepu * n, a.z_stepu_n = a.z_stepu * n;
+        CheckWindow win;
+        a.dst = check_span(buf, a.count, 1, &win);
+        return win;
+    });
+}
+
+#if defined(MODEXLAB_OFFSETS)
+// The block layouts asm/quake.asm reads (core/asm_offsets.h).
+void quake_offsets() {
+    ASM_OFFSET(QUAKE_DST, QuakeArgs, dst);
+    ASM_OFFSET(QUAKE_COUNT, QuakeArgs, count);
+    ASM_OFFSET(QUAKE_X, QuakeArgs, x);
+    ASM_OFFSET(QUAKE_Y, QuakeArgs, y);
+    ASM_OFFSET(QUAKE_TEXELS, QuakeArgs, texels);
+    ASM_OFFSET(QUAKE_PITCH, QuakeArgs, pitch);
+    ASM_OFFSET(QUAKE_SADJUST, QuakeArgs, sadjust);
+    ASM_OFFSET(QUAKE_TADJUST, QuakeArgs, tadjust);
+    ASM_OFFSET(QUAKE_BBEXTENTS, QuakeArgs, bbextents);
+    ASM_OFFSET(QUAKE_BBEXTENTT, QuakeArgs, bbextentt);
+    ASM_OFFSET(QUAKE_SHIFT, QuakeArgs, shift);
+    ASM_OFFSET(QUAKE_S_ORIGIN, QuakeArgs, s_origin);
+    ASM_OFFSET(QUAKE_S_STEPU, QuakeArgs, s_stepu);
+    ASM_OFFSET(QUAKE_S_STEPV, QuakeArgs, s_stepv);
+    ASM_OFFSET(QUAKE_T_ORIGIN, QuakeArgs, t_origin);
+    ASM_OFFSET(QUAKE_T_STEPU, QuakeArgs, t_stepu);
+    ASM_OFFSET(QUAKE_T_STEPV, QuakeArgs, t_stepv);
+    ASM_OFFSET(QUAKE_Z_ORIGIN, QuakeArgs, z_origin);
+    ASM_OFFSET(QUAKE_Z_STEPU, QuakeArgs, z_stepu);
+    ASM_OFFSET(QUAKE_Z_STEPV, QuakeArgs, z_stepv);
+    ASM_OFFSET(QUAKE_S_STEPU_N, QuakeArgs, s_stepu_n);
+    ASM_OFFSET(QUAKE_T_STEPU_N, QuakeArgs, t_stepu_n);
+    ASM_OFFSET(QUAKE_Z_STEPU_N, QuakeArgs, z_stepu_n);
+}
+#endif
 
 }  // namespace raster

@@ -1,7 +1,39 @@
-// Quake's perspective span drawer (WinQuake d_scan.c, d_draw16.s): the polygon drivers for the registry.
+// Quake's perspective span drawer (WinQuake d_scan.c, d_draw16.s): the polygon drivers, the loop's
+// argument block, the twin and the NASM loop (asm/quake.asm).
 #pragma once
 
+#include <stdint.h>
+
 #include "kernel/core/mapper.h"
+
+namespace raster {
+
+// quake-subdiv16 / quake-subdiv8: one span, all its segments (d_scan.c's algorithm; the NASM loop
+// starts the x87 divide for the next segment's end before drawing the current segment).
+struct QuakeArgs {
+    uint8_t* dst;             // the span's first pixel; count pixels to the right
+    int32_t count;            // >= 1
+    int32_t x, y;             // the span's first pixel on screen (Quake's du, dv)
+    const uint8_t* texels;    // the texture (Quake's surface cache), pitch bytes a row
+    int32_t pitch;
+    int32_t sadjust, tadjust;     // 16.16, added after s/z * z
+    int32_t bbextents, bbextentt; // size * 65536 - 1
+    int32_t shift;            // log2 of the segment length: 4 or 3
+    int32_t reserved;
+    double s_origin, s_stepu, s_stepv;  // s/z at pixel (0, 0) and per pixel across and down
+    double t_origin, t_stepu, t_stepv;
+    double z_origin, z_stepu, z_stepv;  // 1/z
+    double s_stepu_n, t_stepu_n, z_stepu_n;  // the steps times the segment length
+};
+void quake_span_loop(const void* args);
+
+LoopCheck check_quake(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+
+}  // namespace raster
+
+extern "C" {
+void quake_span_loop_asm(const void* args);
+}
 
 namespace raster::quake {
 

@@ -8,6 +8,9 @@
 //   xsharp-column:  listing 58.4 as X-Sharp 22 shipped it: columns, packed fractions.
 #include "kernel/mappers/xsharp.h"
 
+#include "kernel/core/asm_offsets.h"
+#include "kernel/core/selftest.h"
+
 #include "kernel/mappers/classic.h"
 
 namespace raster::xsharp {
@@ -245,11 +248,7 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count, R
         if (y >= clip.y1) break;
         SpanSetup s;
         if (y >= clip.y0 && span_setup(left, right, clip, &s)) {
-            inner_begins(c);  // the span routine is the inner loop
-            span(c, s, y);
-            inner_ends(c);
-            ++c.stats->spans;
-            c.stats->pixels += uint32_t(s.count);
+            emit(c.stats, 1, uint32_t(s.count), [&] { span(c, s, y); });  // the span routine is the inner loop
         }
         if (!step_edge(left, p) || !step_edge(right, p)) break;
     }
@@ -288,9 +287,7 @@ void column_span(const DrawContext& c, const Edge& top, const Edge& bottom, int3
     a.base = xs.whole + ys.whole * pitch;
     a.row = ys.carry_advance * pitch;
     a.backwards = step_x < 0;
-    run_loop(c, &a);
-    ++c.stats->spans;
-    c.stats->pixels += uint32_t(a.count);
+    emit(c, &a, 1, uint32_t(a.count));
 }
 
 }  // namespace
@@ -370,5 +367,70 @@ void xsharp_column_loop(const void* raw) {
         dst += XSHARP_SCANWIDTH;
     }
 }
+
+// The loop's random cases (core/selftest.h).
+LoopCheck check_xsharp_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<XSharpColumnArgs>(m, other, seed, cases, buf, [&](Random& r, XSharpColumnArgs& a) {
+        int32_t pitch = random_texture_size(r) + 2;  // a bordered texture's pitch: 3..1026
+        a.count = r.below(8) == 0 ? r.range(1, 3) : r.range(1, 240);
+        a.texel = buf.texels + CHECK_TEXEL_MID + r.range(-1000, 1000);
+        a.fractions = (r.next() & 0xFFFF0000u) | (r.next() & 0x7FFF);
+        a.steps = (r.next() & 0xFFFF0000u) | (r.next() & 0x7FFF);
+        if (r.below(4) == 0) a.steps &= 0xFFFF7FFFu & (r.below(2) ? 0x0000FFFFu : 0xFFFF0000u);  // one axis without a fraction
+        a.base = r.range(-2, 2) + r.range(-1, 1) * pitch;
+        a.row = r.below(2) ? pitch : -pitch;
+        a.backwards = int32_t(r.below(2));
+        CheckWindow w;
+        a.dst = check_span(buf, a.count, XSHARP_SCANWIDTH, &w);
+        return w;
+    });
+}
+
+void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32_t* x, int32_t* y) {
+    int32_t pitch = r.range(3, 600);
+    *y = r.range(0, 239);
+    *x = r.range(0, 319);
+    a->count = r.range(1, 320 - *x);
+    a->mask = 0x11u << (*x & 3);
+    a->texel = texels + CHECK_TEXEL_MID + r.range(-1000, 1000);
+    a->x_frac = r.next() & 0xFFFF;
+    a->y_frac = r.next() & 0xFFFF;
+    a->x_step = r.below(4) == 0 ? 0 : r.next() & 0xFFFF;
+    a->y_step = r.below(4) == 0 ? 0 : r.next() & 0xFFFF;
+    a->x_base = r.range(-3, 3);
+    a->x_carry = r.below(2) ? 1 : -1;
+    a->y_base = r.range(-1, 1) * pitch;
+    a->y_carry = r.below(2) ? pitch : -pitch;
+    a->select_plane = nullptr;
+    a->ctx = nullptr;
+}
+
+#if defined(MODEXLAB_OFFSETS)
+// The block layouts asm/xsharp.asm reads (core/asm_offsets.h).
+void xsharp_offsets() {
+    ASM_OFFSET(XROW_DST, XSharpRowArgs, dst);
+    ASM_OFFSET(XROW_COUNT, XSharpRowArgs, count);
+    ASM_OFFSET(XROW_MASK, XSharpRowArgs, mask);
+    ASM_OFFSET(XROW_TEXEL, XSharpRowArgs, texel);
+    ASM_OFFSET(XROW_X_FRAC, XSharpRowArgs, x_frac);
+    ASM_OFFSET(XROW_Y_FRAC, XSharpRowArgs, y_frac);
+    ASM_OFFSET(XROW_X_STEP, XSharpRowArgs, x_step);
+    ASM_OFFSET(XROW_Y_STEP, XSharpRowArgs, y_step);
+    ASM_OFFSET(XROW_X_BASE, XSharpRowArgs, x_base);
+    ASM_OFFSET(XROW_X_CARRY, XSharpRowArgs, x_carry);
+    ASM_OFFSET(XROW_Y_BASE, XSharpRowArgs, y_base);
+    ASM_OFFSET(XROW_Y_CARRY, XSharpRowArgs, y_carry);
+    ASM_SIZE(XROW_ARGS_SIZE, XSharpRowArgs);
+    ASM_OFFSET(XCOL_DST, XSharpColumnArgs, dst);
+    ASM_OFFSET(XCOL_COUNT, XSharpColumnArgs, count);
+    ASM_OFFSET(XCOL_TEXEL, XSharpColumnArgs, texel);
+    ASM_OFFSET(XCOL_FRACTIONS, XSharpColumnArgs, fractions);
+    ASM_OFFSET(XCOL_STEPS, XSharpColumnArgs, steps);
+    ASM_OFFSET(XCOL_BASE, XSharpColumnArgs, base);
+    ASM_OFFSET(XCOL_ROW, XSharpColumnArgs, row);
+    ASM_OFFSET(XCOL_BACKWARDS, XSharpColumnArgs, backwards);
+    ASM_CONSTANT(XSHARP_SCANWIDTH, XSHARP_SCANWIDTH);
+}
+#endif
 
 }  // namespace raster

@@ -1,6 +1,8 @@
 // From a 3D scene to a frame of screen-space polygons, and drawing them.
 #include "kernel/scene/frame.h"
 
+#include "kernel/core/policy.h"
+
 namespace raster {
 
 namespace {
@@ -235,20 +237,17 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
 
 void build_texture_set(const World& world, TextureSet* out) {
     size_t bordered = 0;
-    const uint8_t* copies[MAX_WORLD_TEXTURES];
-    const uint8_t* aligned[MAX_WORLD_TEXTURES];
+    Texture prepared[MAX_WORLD_TEXTURES];
     for (int32_t i = 0; i < world.texture_count; ++i) {
         const WorldTexture& t = world.textures[i];
-        Texture view{world.texels + t.offset, t.width, t.height, Wrap::Repeat};
-        make_bordered(view, out->bordered + bordered);
-        copies[i] = out->bordered + bordered;
+        prepared[i] = Texture{world.texels + t.offset, t.width, t.height, Wrap::Repeat};
+        prepare_texture(&prepared[i], out->bordered + bordered, out->aligned[i]);
         bordered += size_t(bordered_bytes(t.width, t.height));
-        aligned[i] = t.width == 256 && t.height == 256 ? make_aligned256(view, out->aligned[i]) : nullptr;
     }
     for (int32_t o = 0; o < world.object_count; ++o) {
         out->objects[o] = world.texture_of(o);
-        out->objects[o].bordered = copies[world.objects[o].texture];
-        out->objects[o].aligned256 = aligned[world.objects[o].texture];
+        out->objects[o].bordered = prepared[world.objects[o].texture].bordered;
+        out->objects[o].aligned256 = prepared[world.objects[o].texture].aligned256;
     }
 }
 

@@ -328,7 +328,7 @@ void cmd_load(Context&, const StrView* args, size_t) {
 struct DrawArgs {
     const raster::Mapper* mapper = nullptr;
     int page = 0;
-    scenes::Surface surface = scenes::Surface::Linear;
+    raster::Surface surface = raster::Surface::Linear;
     raster::Variant variant = raster::Variant::Asm;
     raster::Axis axis = raster::Axis::Rows;
 };
@@ -351,7 +351,7 @@ bool parse_draw_args(const char* cmd, const StrView* args, size_t nargs, bool wi
     }
     size_t next = 1;
     if (with_page && !parse_page(cmd, args[next++], &d->page)) return false;
-    if (nargs > next && !scenes::surface_from_name(args[next], &d->surface)) {
+    if (nargs > next && !raster::surface_from_name(args[next], &d->surface)) {
         reply::error(cmd, "unknown surface (linear: rows in RAM then blit; planar: columns in RAM then blit; vga: columns into the page)");
         return false;
     }
@@ -364,10 +364,10 @@ bool parse_draw_args(const char* cmd, const StrView* args, size_t nargs, bool wi
         }
     }
     const raster::Mapper& mp = *d->mapper;
-    d->axis = scenes::surface_axis(mp, d->surface);
-    if (!raster::mapper_walks(mp, d->axis) || !raster::mapper_targets(mp, scenes::probe_target(d->surface), d->axis)) {
+    d->axis = raster::surface_axis(mp, d->surface);
+    if (!raster::draws_through(mp, d->surface)) {
         lib::Fmt m;
-        m.s("mapper ").s(mp.name).s(" cannot draw through surface ").s(scenes::surface_name(d->surface)).s(" (it walks");
+        m.s("mapper ").s(mp.name).s(" cannot draw through surface ").s(raster::surface_name(d->surface)).s(" (it walks");
         if (mp.axes & raster::AXIS_ROWS) m.s(" rows");
         if (mp.axes & raster::AXIS_COLUMNS) m.s(" columns");
         if (mp.needs & raster::NEED_PLANAR_TARGET) m.s(" into Mode X planes: surface planar or vga");
@@ -381,7 +381,7 @@ bool parse_draw_args(const char* cmd, const StrView* args, size_t nargs, bool wi
 void render_fields(lib::JsonLine& r, const DrawArgs& d, const scenes::RenderResult& res) {
     r.str("mapper", d.mapper->name)
         .u32("page", uint32_t(d.page))
-        .str("surface", scenes::surface_name(d.surface))
+        .str("surface", raster::surface_name(d.surface))
         .str("walker", d.axis == raster::Axis::Rows ? "rows" : "columns")
         .str("loop", res.used_asm ? "asm" : "twin")
         .u32("polygons", res.stats.polygons)
@@ -401,10 +401,10 @@ void cmd_render(Context&, const StrView* args, size_t nargs) {
     const raster::Texture& tex = scenes::texture();
     if (!raster::mapper_accepts(*d.mapper, tex)) {
         lib::Fmt m;
-        m.s("mapper ").s(d.mapper->name).s(" cannot take this scene's ").u(uint32_t(tex.width)).s("x").u(uint32_t(tex.height)).s(" texture (needs:");
-        if (d.mapper->needs & raster::NEED_POW2) m.s(" power-of-two sizes");
-        if (d.mapper->needs & raster::NEED_WIDTH_256) m.s(" width 256");
-        if (d.mapper->needs & raster::NEED_ALIGNED256) m.s(" 256x256, repeating");
+        m.s("mapper ").s(d.mapper->name).s(" cannot take this scene's ").u(uint32_t(tex.width)).s("x").u(uint32_t(tex.height)).s(" texture (needs");
+        const char* sep = " ";
+        for (int i = 0; i < raster::NEED_NAME_COUNT; ++i)
+            if (d.mapper->needs & raster::NEED_NAMES[i].need) m.s(sep).s(raster::NEED_NAMES[i].words), sep = ", ";
         m.s(")");
         reply::error("render", m.c_str());
         return;
@@ -522,7 +522,7 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     uint32_t median = median_in_place(g_play_ticks, frames);
     lib::JsonLine r = reply::begin(true);
     r.str("cmd", "play").str("scene", worlds::name()).u32("frames", frames).str("mapper", d.mapper->name);
-    r.str("surface", scenes::surface_name(d.surface)).str("walker", d.axis == raster::Axis::Rows ? "rows" : "columns");
+    r.str("surface", raster::surface_name(d.surface)).str("walker", d.axis == raster::Axis::Rows ? "rows" : "columns");
     r.u64("pixels", pixels).u64("ticks", total).u32("ticks_min", lo).u32("ticks_median", median).u32("ticks_max", hi);
     r.u64("ticks_wall", wall).end();
 }
@@ -578,7 +578,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     }
     lib::JsonLine r = reply::begin(true);
     r.str("cmd", "bench").str("scene", worlds::name()).u32("frames", frames).str("mapper", d.mapper->name);
-    r.str("surface", scenes::surface_name(d.surface)).str("walker", d.axis == raster::Axis::Rows ? "rows" : "columns");
+    r.str("surface", raster::surface_name(d.surface)).str("walker", d.axis == raster::Axis::Rows ? "rows" : "columns");
     r.str("loop", used_asm ? "asm" : "twin").u64("lap_cost", probe.lap_cost);
     r.u64("polygons", polygons).u64("rejected", rejected).u64("spans", spans).u64("pixels", pixels);
     for (uint32_t k = 0; k < B_FIELDS; ++k) {
@@ -603,20 +603,14 @@ void cmd_mappers(Context&, const StrView*, size_t) {
             .i32("max_error", m.guarantee.max_error)
             .i32("max_error_flat", m.guarantee.max_error_flat);
         r.begin_array("needs");
-        if (m.needs & raster::NEED_POW2) r.item_str("pow2");
-        if (m.needs & raster::NEED_WIDTH_256) r.item_str("width256");
-        if (m.needs & raster::NEED_ALIGNED256) r.item_str("256x256-repeat");
-        if (m.needs & raster::NEED_INSIDE) r.item_str("inside-texture");
+        for (int k = 0; k < raster::NEED_NAME_COUNT; ++k)
+            if (m.needs & raster::NEED_NAMES[k].need) r.item_str(raster::NEED_NAMES[k].name);
         r.end_array().begin_array("walkers");
         if (m.axes & raster::AXIS_ROWS) r.item_str("rows");
         if (m.axes & raster::AXIS_COLUMNS) r.item_str("columns");
         r.end_array().begin_array("surfaces");
-        for (int k = 0; k < 3; ++k) {
-            auto surface = scenes::Surface(k);
-            raster::Axis axis = scenes::surface_axis(m, surface);
-            if (raster::mapper_walks(m, axis) && raster::mapper_targets(m, scenes::probe_target(surface), axis))
-                r.item_str(scenes::surface_name(surface));
-        }
+        for (int k = 0; k < raster::SURFACE_COUNT; ++k)
+            if (raster::draws_through(m, raster::Surface(k))) r.item_str(raster::surface_name(raster::Surface(k)));
         r.end_array().boolean("asm", m.asm_loop != nullptr).end_object();
     }
     r.end_array().end();
@@ -638,11 +632,14 @@ void cmd_selftest(Context&, const StrView* args, size_t nargs) {
     bool all_equal = true;
     uint64_t t0 = timer::rdtsc();
     bool vga_checked = vga::mode() == vga::Mode::ModeX;
-    for (int i = 0; i < raster::CHECKED_LOOP_COUNT && n < 16; ++i) {
-        const raster::CheckedLoop& loop = raster::CHECKED_LOOPS[i];
-        if (!loop.asm_loop || (loop.vga && !vga_checked)) continue;
-        results[n] = loop.vga ? vga_selftest::check(loop, 20261121, cases, g_check_texels)
-                              : loop.check(loop, loop.asm_loop, 20261121, cases, buffers);
+    const raster::Mapper* loops[16];
+    int count = raster::checked_loops(loops, 16);
+    for (int i = 0; i < count; ++i) {
+        const raster::Mapper& loop = *loops[i];
+        bool vga = loop.needs & raster::NEED_VGA_FOR_ASM;
+        if (!loop.asm_loop || (vga && !vga_checked)) continue;
+        results[n] = vga ? vga_selftest::check(loop, 20261121, cases, g_check_texels)
+                         : loop.check(loop, loop.asm_loop, 20261121, cases, buffers);
         all_equal = all_equal && results[n].mismatches == 0;
         ++n;
     }

@@ -1,6 +1,8 @@
 // Scene loading and the pictures the metrics compare.
 #include "qemu/accuracy/measure.h"
 
+#include "kernel/core/policy.h"
+
 #include <filesystem>
 #include <map>
 #include <fstream>
@@ -98,15 +100,12 @@ std::unique_ptr<Picture> render_reference(const LoadedScene& s) {
 
 namespace {
 
-// A 320x240 surface of the kind the mapper draws into: linear, or Mode X planes in RAM for the
-// mappers that write planes themselves.
+// A 320x240 surface of the kind the mapper draws into (ram_planar).
 struct HostSurface {
     bool planar;
     std::vector<uint8_t> data;
-    explicit HostSurface(const Mapper& m, uint8_t fill) : planar(m.needs & NEED_PLANAR_TARGET), data(SCREEN_PIXELS, fill) {}
-    Target target() {
-        return planar ? planar_target(data.data()) : linear_target(data.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
-    }
+    HostSurface(const Mapper& m, Axis axis, uint8_t fill) : planar(ram_planar(m, axis)), data(SCREEN_PIXELS, fill) {}
+    Target target() { return ram_target(data.data(), planar); }
     uint8_t& at(int32_t x, int32_t y) {
         return planar ? data[size_t(x & 3) * PLANE_BYTES + size_t(y) * PLANE_ROW_BYTES + size_t(x >> 2)]
                       : data[size_t(y) * SCREEN_WIDTH + size_t(x)];
@@ -119,20 +118,13 @@ struct HostSurface {
     }
 };
 
-// A texture with the copies the classic loops read (bordered, 64 KiB-aligned), when the mapper needs them.
+// A texture with the copies the mappers read (prepare_texture).
 struct HostTexture {
     Texture texture;
     std::vector<uint8_t> bordered, aligned;
-    HostTexture(const Texture& t, const Mapper& m) : texture(t) {
-        if (m.needs & NEED_BORDERED) {
-            bordered.resize(size_t(bordered_bytes(t.width, t.height)));
-            make_bordered(t, bordered.data());
-            texture.bordered = bordered.data();
-        }
-        if ((m.needs & NEED_ALIGNED256) && t.width == 256 && t.height == 256) {
-            aligned.resize(ALIGNED256_BYTES);
-            texture.aligned256 = make_aligned256(t, aligned.data());
-        }
+    explicit HostTexture(const Texture& t)
+        : texture(t), bordered(size_t(bordered_bytes(t.width, t.height))), aligned(ALIGNED256_BYTES) {
+        prepare_texture(&texture, bordered.data(), aligned.data());
     }
 };
 
@@ -159,8 +151,8 @@ struct Box {
 };
 
 std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper& mapper, Axis axis, RenderStats* stats) {
-    HostSurface surface(mapper, BACKGROUND);
-    HostTexture t(tex, mapper);
+    HostSurface surface(mapper, axis, BACKGROUND);
+    HostTexture t(tex);
     Target target = surface.target();
     RenderStats st = render_scene(*s.scene, t.texture, mapper, axis, target);
     if (stats) *stats = st;
@@ -170,7 +162,7 @@ std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper
 }  // namespace
 
 IndexImage render_world_frame(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis, RenderStats* stats) {
-    HostSurface surface(mapper, BACKGROUND);
+    HostSurface surface(mapper, axis, BACKGROUND);
     Target target = surface.target();
     RenderStats st = render_frame(frame, *w.textures, mapper, axis, target);
     if (stats) *stats = st;
@@ -178,11 +170,10 @@ IndexImage render_world_frame(const LoadedWorld& w, const Frame& frame, const Ma
 }
 
 bool mapper_takes(const LoadedScene& s, const Mapper& mapper) {
-    HostTexture t(s.texture, mapper);
+    HostTexture t(s.texture);
     return mapper_accepts(mapper, t.texture);
 }
 
-Axis default_axis(const Mapper& mapper) { return mapper.axes == AXIS_COLUMNS ? Axis::Columns : Axis::Rows; }
 
 IndexImage render_mapper(const LoadedScene& s, const Mapper& mapper, Axis axis, RenderStats* stats) {
     return IndexImage{SCREEN_WIDTH, SCREEN_HEIGHT, draw(s, s.texture, mapper, axis, stats)};
@@ -212,9 +203,9 @@ std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const Mapper& mapp
 
     // coverage counts: each polygon alone on a scratch surface, with a texture of ones of the
     // scene's size (mappers that cannot wrap check coordinates against it)
-    HostSurface scratch(mapper, 0);
+    HostSurface scratch(mapper, axis, 0);
     std::vector<uint8_t> ones(size_t(w) * size_t(h), 1);
-    HostTexture ones_texture(Texture{ones.data(), w, h, s.texture.wrap}, mapper);
+    HostTexture ones_texture(Texture{ones.data(), w, h, s.texture.wrap});
     Target t = scratch.target();
     const Vertex* v = s.scene->vertices;
     RenderStats ignored;
@@ -242,7 +233,7 @@ namespace {
 struct MeasureTextures {
     std::vector<uint8_t> texels[5];
     std::unique_ptr<HostTexture> textures[5];
-    MeasureTextures(const Texture& t, const Mapper& mapper) {
+    explicit MeasureTextures(const Texture& t) {
         const int32_t w = t.width, h = t.height;
         for (int k = 0; k < 5; ++k) {
             texels[k].resize(size_t(w) * size_t(h));
@@ -251,7 +242,7 @@ struct MeasureTextures {
                     int32_t c = k == 0 ? 1 : k < 3 ? u : v;
                     texels[k][size_t(v) * size_t(w) + size_t(u)] = uint8_t(k == 0 ? 1 : k % 2 ? c & 255 : c >> 8);
                 }
-            textures[k] = std::make_unique<HostTexture>(Texture{texels[k].data(), w, h, t.wrap}, mapper);
+            textures[k] = std::make_unique<HostTexture>(Texture{texels[k].data(), w, h, t.wrap});
         }
     }
 };
@@ -263,7 +254,7 @@ AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, co
     std::vector<uint8_t> ref_count(SCREEN_PIXELS, 0), drawn_count(SCREEN_PIXELS, 0);
     Picture ref(SCREEN_WIDTH, SCREEN_HEIGHT);  // one polygon at a time
     std::vector<HostSurface> scratch;
-    for (int k = 0; k < 5; ++k) scratch.emplace_back(mapper, 0);
+    for (int k = 0; k < 5; ++k) scratch.emplace_back(mapper, axis, 0);
     std::map<int32_t, std::unique_ptr<MeasureTextures>> stand_ins;  // by object
     uint64_t error_sum = 0;
     const Vertex* v = frame.vertices;
@@ -272,7 +263,7 @@ AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, co
         const int32_t object = frame.polygon_object[i];
         const Texture& tex = w.textures->objects[object];
         auto& stand_in = stand_ins[object];
-        if (!stand_in) stand_in = std::make_unique<MeasureTextures>(tex, mapper);
+        if (!stand_in) stand_in = std::make_unique<MeasureTextures>(tex);
         reference_polygon(v, n, tex, ref.view);
         bool drawn = true;
         for (int k = 0; k < 5 && drawn; ++k) {

@@ -8,6 +8,7 @@
 
 #include "kernel/scene/frame.h"
 #include "kernel/core/mapper.h"
+#include "kernel/core/policy.h"
 #include "qemu/accuracy/metrics.h"
 #include "qemu/accuracy/reference.h"
 #include "kernel/core/render.h"
@@ -48,7 +49,7 @@ std::unique_ptr<Picture> render_reference(const LoadedScene& s);
 bool mapper_takes(const LoadedScene& s, const raster::Mapper& mapper);
 
 // The walker a mapper uses by default: its only one, or rows.
-raster::Axis default_axis(const raster::Mapper& mapper);
+
 
 // The mapper's picture on a cleared 320x240 surface (linear, or planes for mappers that write
 // planes), as a linear picture (rows or columns); stats if wanted.

@@ -161,7 +161,7 @@ int play_scenes(Args& a, Session& s) {
         if (progress) std::printf("\r%60s\r", "");
         LoadedWorld host = load_world_file("scenes/" + std::string(d.name) + ".scene");
         auto frame = world_frame(host, last["frame"].get<int32_t>());
-        IndexImage want = render_world_frame(host, *frame, mapper, default_axis(mapper));
+        IndexImage want = render_world_frame(host, *frame, mapper, home_axis(mapper));
         std::string stem = std::string("scene-") + d.name;
         RgbImage dump = s.screendump(stem);
         bool same = dump.rgb == screendump_of(want, host.world->palette).rgb && compare(s.readback(last["page"].get<int>()), want).equal();

@@ -116,15 +116,12 @@ void load_in_kernel(Session& k, const BenchScene& s) {
     if (!r.value("ok", false)) throw HarnessError(s.path + ": the kernel refused it: " + r.value("error", std::string("?")));
 }
 
-// The surface a mapper is measured through: straight into the page for those that write Mode X
-// planes themselves, else a linear RAM surface and its blit.
-std::string surface_of(const raster::Mapper& m) { return (m.needs & raster::NEED_PLANAR_TARGET) ? "vga" : "linear"; }
 
 uint64_t sum_of(const json& r, const char* field) { return r[field]["sum"].get<uint64_t>(); }
 
 TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frames) {
     TradeRow row;
-    row.scene = s.name, row.mapper = m.name, row.family = m.family, row.surface = surface_of(m);
+    row.scene = s.name, row.mapper = m.name, row.family = m.family, row.surface = raster::surface_name(raster::home_surface(m));
     json last;
     json r = k.ok("bench " + std::to_string(frames) + " " + m.name + " " + row.surface, [&](const json& e) { last = e; });
     row.walker = r["walker"].get<std::string>(), row.loop = r["loop"].get<std::string>();

@@ -16,6 +16,7 @@
 
 #include "kernel/scene/frame.h"
 #include "kernel/core/mapper.h"
+#include "kernel/core/policy.h"
 #include "kernel/scene/world.h"
 
 namespace {
@@ -101,8 +102,8 @@ int main(int argc, char** argv) {
         for (const std::string& mapper_name : mapper_names) {
             const Mapper* m = find_mapper({mapper_name.data(), mapper_name.size()});
             if (!m) fail("unknown mapper '" + mapper_name + "'");
-            const Axis axis = m->axes == AXIS_COLUMNS ? Axis::Columns : Axis::Rows;
-            const bool planar = (m->needs & NEED_PLANAR_TARGET) || axis == Axis::Columns;
+            const Axis axis = home_axis(*m);
+            const bool planar = ram_planar(*m, axis);
             uint64_t pixels = 0, cycles = 0;
             for (int i = 0; i < frames; ++i) {
                 build_frame(*world, int32_t(int64_t(i) * world->frames / frames), frame.get(), scratch.get());
@@ -110,7 +111,7 @@ int main(int argc, char** argv) {
                 RenderStats stats;
                 for (int r = 0; r < REPEATS; ++r) {
                     std::memset(surface.data(), 0, surface.size());
-                    Target t = planar ? planar_target(surface.data()) : linear_target(surface.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+                    Target t = ram_target(surface.data(), planar);
                     uint64_t t0 = __rdtsc();
                     stats = render_frame(*frame, *textures, *m, axis, t, Variant::Asm);
                     uint64_t t1 = __rdtsc();

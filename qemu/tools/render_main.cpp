@@ -150,7 +150,7 @@ int main(int argc, char** argv) {
             for (int k = 0; k < raster::MAPPER_COUNT; ++k) known += std::string(" ") + raster::MAPPERS[k].name;
             usage_error("unknown mapper '" + mapper_name + "' (mappers:" + known + ", or reference)");
         }
-        if (!axis_given) axis = default_axis(*mapper);
+        if (!axis_given) axis = home_axis(*mapper);
         if (!raster::mapper_walks(*mapper, axis)) usage_error(mapper_name + " does not walk " + (axis == raster::Axis::Rows ? "rows" : "columns"));
     }
     try {

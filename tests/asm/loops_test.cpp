@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "kernel/core/selftest.h"
+#include "kernel/mappers/exact.h"
 
 namespace {
 
@@ -13,12 +14,19 @@ using namespace raster;
 
 constexpr uint32_t CASES = 100000;
 
+// The mappers with a NASM loop, one per loop.
+struct Checked {
+    const Mapper* loops[32] = {};
+    int count = checked_loops(loops, 32);
+};
+const Checked CHECKED;
+
 class Loops : public testing::TestWithParam<int> {};
 
 TEST_P(Loops, NasmMatchesTheTwinBitForBit) {
-    const CheckedLoop& loop = CHECKED_LOOPS[GetParam()];
+    const Mapper& loop = *CHECKED.loops[GetParam()];
     ASSERT_NE(loop.asm_loop, nullptr) << loop.name << " has no NASM loop in this build";
-    if (loop.vga) GTEST_SKIP() << loop.name << " programs the VGA: the kernel's selftest checks it (Mappers.TheKernelSelftest...)";
+    if (loop.needs & NEED_VGA_FOR_ASM) GTEST_SKIP() << loop.name << " programs the VGA: the kernel's selftest checks it (Mappers.TheKernelSelftest...)";
     std::vector<uint8_t> a(CHECK_DST_BYTES), b(CHECK_DST_BYTES), texels(CHECK_TEXEL_BYTES);
     CheckBuffers buffers{a.data(), b.data(), a.size(), texels.data()};
     LoopCheck c = loop.check(loop, loop.asm_loop, 20261121, CASES, buffers);
@@ -38,13 +46,13 @@ void off_by_one(const void* raw) {
 TEST(LoopCheck, CatchesAWrongLoop) {
     std::vector<uint8_t> a(CHECK_DST_BYTES), b(CHECK_DST_BYTES), texels(CHECK_TEXEL_BYTES);
     CheckBuffers buffers{a.data(), b.data(), a.size(), texels.data()};
-    LoopCheck c = check_exact(CHECKED_LOOPS[0], off_by_one, 1, 1000, buffers);
+    LoopCheck c = check_exact(*find_mapper("exact"), off_by_one, 1, 1000, buffers);
     EXPECT_GT(c.mismatches, 900u);
 }
 
-INSTANTIATE_TEST_SUITE_P(All, Loops, testing::Range(0, CHECKED_LOOP_COUNT),
+INSTANTIATE_TEST_SUITE_P(All, Loops, testing::Range(0, CHECKED.count),
                          [](const testing::TestParamInfo<int>& p) {
-                             std::string n = CHECKED_LOOPS[p.param].name;
+                             std::string n = CHECKED.loops[p.param]->name;
                              for (char& ch : n)
                                  if (ch == '-') ch = '_';
                              return n;

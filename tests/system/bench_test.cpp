@@ -51,7 +51,7 @@ TEST(Bench, FiguresAddUpAndEqualTheHostsCounts) {
     LoadedWorld host = load_world_file("scenes/cube.scene");
     for (const char* m : {"exact", "persp-subdiv-16", "hecker-steptable", "xsharp-column"}) {
         const raster::Mapper& mapper = *raster::find_mapper(m);
-        std::string surface = (mapper.needs & raster::NEED_PLANAR_TARGET) ? "vga" : "linear";
+        std::string surface = raster::surface_name(raster::home_surface(mapper));
         Bench b = bench(s, std::string("4 ") + m + " " + surface);
         ASSERT_EQ(b.frames.size(), 4u) << m;
         uint64_t pixels = 0;
@@ -67,7 +67,7 @@ TEST(Bench, FiguresAddUpAndEqualTheHostsCounts) {
                                                       f["ticks_draw"].get<uint64_t>() + f["ticks_blit"].get<uint64_t>());
             auto frame = world_frame(host, n);
             raster::RenderStats stats;
-            render_world_frame(host, *frame, mapper, default_axis(mapper), &stats);
+            render_world_frame(host, *frame, mapper, home_axis(mapper), &stats);
             EXPECT_EQ(f["pixels"], stats.pixels) << m << " frame " << n;
             EXPECT_EQ(f["spans"], stats.spans) << m << " frame " << n;
             EXPECT_EQ(f["polygons"], stats.polygons) << m << " frame " << n;

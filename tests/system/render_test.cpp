@@ -204,8 +204,10 @@ TEST(Mappers, TheKernelSelftestComparesEveryNasmLoopWithItsTwin) {
     s.ok("mode modex");
     json r = s.ok("selftest 3000");
     EXPECT_TRUE(r["vga_loops_checked"].get<bool>());
-    ASSERT_EQ(r["loops"].size(), size_t(raster::CHECKED_LOOP_COUNT)) << "every loop with a NASM twin";
-    for (int i = 0; i < raster::CHECKED_LOOP_COUNT; ++i) EXPECT_EQ(r["loops"][size_t(i)]["loop"], raster::CHECKED_LOOPS[i].name);
+    const raster::Mapper* loops[32];
+    int count = raster::checked_loops(loops, 32);
+    ASSERT_EQ(r["loops"].size(), size_t(count)) << "every loop with a NASM twin";
+    for (int i = 0; i < count; ++i) EXPECT_EQ(r["loops"][size_t(i)]["loop"], loops[i]->name);
     for (const json& loop : r["loops"]) {
         EXPECT_EQ(loop["cases"], 3000) << loop.dump();
         EXPECT_EQ(loop["mismatches"], 0) << loop.dump();

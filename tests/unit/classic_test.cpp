@@ -2,6 +2,7 @@
 // algorithm says what it does (docs/mappers.md).
 #include <gtest/gtest.h>
 
+#include "kernel/core/policy.h"
 #include "kernel/mappers/classic.h"
 #include "tests/unit/raster_helpers.h"
 
@@ -20,16 +21,14 @@ std::vector<int> draw_counts(const Mapper& m, const std::vector<std::vector<Vert
     std::vector<uint8_t> ones(size_t(tex_size) * size_t(tex_size), 1), bordered(size_t(bordered_bytes(tex_size, tex_size)));
     std::vector<uint8_t> aligned(ALIGNED256_BYTES);
     Texture tex{ones.data(), tex_size, tex_size, Wrap::Repeat};
-    make_bordered(tex, bordered.data());
-    tex.bordered = bordered.data();
-    if (tex_size == 256) tex.aligned256 = make_aligned256(tex, aligned.data());
+    prepare_texture(&tex, bordered.data(), aligned.data());
     std::vector<int> counts(SCREEN_PIXELS, 0);
     for (const auto& p : polygons) {
         std::vector<uint8_t> surface(SCREEN_PIXELS, 0), linear(SCREEN_PIXELS);
-        bool planar = m.needs & NEED_PLANAR_TARGET;
-        Target t = planar ? planar_target(surface.data()) : linear_target(surface.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+        Axis axis = home_axis(m);
+        bool planar = ram_planar(m, axis);
+        Target t = ram_target(surface.data(), planar);
         RenderStats stats;
-        Axis axis = m.axes == AXIS_COLUMNS ? Axis::Columns : Axis::Rows;
         draw_polygon(p.data(), int(p.size()), tex, m, axis, t, &stats);
         if (planar) linear_from_planar(surface.data(), linear.data());
         else linear = surface;
@@ -111,7 +110,7 @@ TEST(XSharp, AnAxisAlignedSquareMapsTexelForTexel) {
     auto ref = render_reference(s);
     for (const char* name : {"xsharp-dda", "xsharp-row-out", "xsharp-column"}) {
         const Mapper& m = mapper(name);
-        AccuracyMetrics a = compare_to_reference(ref->view, measure_mapper(s, m, default_axis(m))->view, 64, 64, Wrap::Clamp);
+        AccuracyMetrics a = compare_to_reference(ref->view, measure_mapper(s, m, home_axis(m))->view, 64, 64, Wrap::Clamp);
         EXPECT_EQ(a.gaps + a.overdraw + a.overlaps, 0u) << name;
         EXPECT_EQ(a.max_texel_error, 0u) << name;
         EXPECT_EQ(a.reference_pixels, 64u * 64u);
@@ -127,7 +126,7 @@ TEST(XSharp, CoordinatesBeyondTheTextureAreRefusedNotWrapped) {
     LoadedScene s = make_loaded_scene(std::move(scene), "wrap");
     for (const char* name : {"xsharp-dda", "xsharp-row-out", "xsharp-column"}) {
         RenderStats stats;
-        render_mapper(s, mapper(name), default_axis(mapper(name)), &stats);
+        render_mapper(s, mapper(name), home_axis(mapper(name)), &stats);
         EXPECT_EQ(stats.rejected, 1u) << name;
         EXPECT_EQ(stats.polygons, 1u) << name;
     }

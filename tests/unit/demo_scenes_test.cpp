@@ -31,7 +31,7 @@ TEST(DemoScenes, EveryMapperDrawsTheirFrames) {
             for (int m = 0; m < raster::MAPPER_COUNT; ++m) {
                 const raster::Mapper& mapper = raster::MAPPERS[m];
                 raster::RenderStats stats;
-                IndexImage img = render_world_frame(w, *frame, mapper, default_axis(mapper), &stats);
+                IndexImage img = render_world_frame(w, *frame, mapper, home_axis(mapper), &stats);
                 EXPECT_EQ(stats.polygons + stats.skipped + stats.rejected, uint32_t(frame->polygon_count)) << mapper.name;
                 if (std::string(mapper.family) == "ours" && !(mapper.needs & raster::NEED_ALIGNED256)) {
                     EXPECT_EQ(stats.rejected, 0u) << mapper.name << " takes every texture";

@@ -37,8 +37,8 @@ TEST(Promises, EveryMapperKeepsItsGuaranteeOnTheScreenScenes) {
             const Mapper& mapper = MAPPERS[m];
             if (!mapper_takes(s, mapper)) continue;
             RenderStats stats;
-            render_mapper(s, mapper, default_axis(mapper), &stats);
-            auto drawn = measure_mapper(s, mapper, default_axis(mapper));
+            render_mapper(s, mapper, home_axis(mapper), &stats);
+            auto drawn = measure_mapper(s, mapper, home_axis(mapper));
             AccuracyMetrics a = compare_to_reference(ref->view, drawn->view, s.texture.width, s.texture.height, s.texture.wrap);
             std::printf("%-18s %-16s %7u %6u %6u %4u %8.4f %7.4f%s", name.c_str(), mapper.name, a.drawn_pixels, a.gaps, a.overdraw,
                         a.max_texel_error, a.mean_texel_error, a.compared ? double(a.exact) / a.compared : 1.0,

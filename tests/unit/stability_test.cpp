@@ -4,6 +4,7 @@
 // stays the definition's.
 #include <gtest/gtest.h>
 
+#include "kernel/core/policy.h"
 #include "kernel/mappers/classic.h"
 #include "tests/unit/raster_helpers.h"
 
@@ -49,7 +50,7 @@ struct GuardedSurface {
     int32_t pitch = SCREEN_WIDTH + 2 * G;
     std::vector<uint8_t> bytes;
     Target target;
-    explicit GuardedSurface(const Mapper& m) : planar(m.needs & NEED_PLANAR_TARGET) {
+    GuardedSurface(const Mapper& m, Axis axis) : planar(ram_planar(m, axis)) {
         if (planar) {
             bytes.assign(4 * size_t(PLANE_BYTES) + 2 * 256, GUARD);
             target = planar_target(bytes.data() + 256);
@@ -93,11 +94,9 @@ TEST(Stability, NothingIsWrittenOutsideTheClipAndCoverageHolds) {
                     std::vector<uint8_t> aligned(ALIGNED256_BYTES);
                     generate_texture(TextureKind::Xor, size, size, texels.data());
                     Texture tex{texels.data(), size, size, wrap};
-                    make_bordered(tex, bordered.data());
-                    tex.bordered = bordered.data();
-                    if (size == 256) tex.aligned256 = make_aligned256(tex, aligned.data());
+                    prepare_texture(&tex, bordered.data(), aligned.data());
                     if (!mapper_accepts(mapper, tex)) continue;
-                    GuardedSurface surface(mapper);
+                    GuardedSurface surface(mapper, axis);
                     RenderStats stats;
                     for (const auto& p : extreme_polygons(uint32_t(size), inside_only ? size : 0))
                         draw_polygon(p.data(), int(p.size()), tex, mapper, axis, surface.target, &stats);
@@ -117,9 +116,7 @@ TEST(Stability, PlaneSelectionOnPlanarTargets) {
     std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
     generate_texture(TextureKind::Grid, 256, 256, texels.data());
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};  // 256 x 256: every mapper takes it
-    make_bordered(tex, bordered.data());
-    tex.bordered = bordered.data();
-    tex.aligned256 = make_aligned256(tex, aligned.data());
+    prepare_texture(&tex, bordered.data(), aligned.data());
     for (int m = 0; m < MAPPER_COUNT; ++m) {
         const Mapper& mapper = MAPPERS[m];
         std::vector<uint8_t> planes(4 * size_t(PLANE_BYTES) + 2 * 64, GUARD);
@@ -158,9 +155,7 @@ TEST(Stability, PlaneSelectionOnPlanarTargets) {
 TEST(Stability, OurMappersDrawExactlyTheCoveredPixels) {
     std::vector<uint8_t> texels(256 * 256, 7), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};  // every texel 7: drawn pixels show
-    make_bordered(tex, bordered.data());
-    tex.bordered = bordered.data();
-    tex.aligned256 = make_aligned256(tex, aligned.data());
+    prepare_texture(&tex, bordered.data(), aligned.data());
     for (int m = 0; m < MAPPER_COUNT; ++m) {
         const Mapper& mapper = MAPPERS[m];
         if (std::string(mapper.family) != "ours") continue;
@@ -186,8 +181,8 @@ TEST(Stability, OurMappersDrawExactlyTheCoveredPixels) {
                 ClipRect clip{int32_t(gen.rng() % 40), int32_t(gen.rng() % 40), 280 + int32_t(gen.rng() % 41), 200 + int32_t(gen.rng() % 41)};
                 std::fill(pixels.begin(), pixels.end(), 0);
                 std::fill(planes.begin(), planes.end(), 0);
-                Target t = mapper.needs & NEED_PLANAR_TARGET ? planar_target(planes.data())
-                                                             : linear_target(pixels.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+                bool planar = ram_planar(mapper, axis);
+                Target t = ram_target(planar ? planes.data() : pixels.data(), planar);
                 t.clip = clip;
                 RenderStats stats;
                 ASSERT_EQ(draw_polygon(p.data(), int(p.size()), tex, mapper, axis, t, &stats), SetupStatus::Ok) << mapper.name;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "kernel/core/policy.h"
 #include "kernel/scene/frame.h"
 #include "kernel/core/render.h"
 #include "qemu/accuracy/measure.h"
@@ -89,7 +90,6 @@ TEST(Trade, TheCsvHasAUnitForEveryColumnAndAFieldForEveryColumn) {
 
 LoadedWorld demo(const char* name) { return load_world_file(std::string("scenes/") + name + ".scene"); }
 
-Axis natural_axis(const Mapper& m) { return m.axes == AXIS_COLUMNS ? Axis::Columns : Axis::Rows; }
 
 // A clock that counts its own reads: deterministic phases.
 uint64_t g_clock = 0;
@@ -101,13 +101,13 @@ TEST(Probe, ChangesNoPictureAndItsPhasesAddUp) {
     int probed = 0;
     for (int i = 0; i < MAPPER_COUNT; ++i) {
         const Mapper& m = MAPPERS[i];
-        Axis axis = natural_axis(m);
+        Axis axis = home_axis(m);
         RenderStats plain;
         IndexImage want = render_world_frame(w, *frame, m, axis, &plain);
         // the same drawing through the probe, on the same kind of surface
         std::vector<uint8_t> surface(SCREEN_PIXELS, 0);
-        bool planar = m.needs & NEED_PLANAR_TARGET;
-        Target t = planar ? planar_target(surface.data()) : linear_target(surface.data(), SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
+        bool planar = ram_planar(m, axis);
+        Target t = ram_target(surface.data(), planar);
         Probe probe;
         probe.clock = counting_clock;
         probe.calibrate();
@@ -164,10 +164,10 @@ TEST(Measure3d, MappersThatPromiseExactCoverageCountThePixelsTheReferenceCovers)
             const Mapper& m = MAPPERS[i];
             if (!m.guarantee.exact_coverage) continue;
             RenderStats stats;
-            render_world_frame(w, *frame, m, natural_axis(m), &stats);
+            render_world_frame(w, *frame, m, home_axis(m), &stats);
             if (stats.rejected) continue;  // textures it cannot take
             EXPECT_EQ(stats.pixels, covered) << name << " " << m.name;
-            AccuracyMetrics a = measure_world_frame(w, *frame, m, natural_axis(m));
+            AccuracyMetrics a = measure_world_frame(w, *frame, m, home_axis(m));
             EXPECT_EQ(a.gaps + a.overdraw + a.overlaps, 0u) << name << " " << m.name;
         }
     }
