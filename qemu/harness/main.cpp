@@ -9,10 +9,12 @@
 #include <fstream>
 #include <sstream>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "qemu/tools/demo_scenes.h"
+#include "qemu/lib/args.h"
 #include "qemu/lib/error.h"
 #include "qemu/lib/image.h"
 #include "qemu/accuracy/measure.h"
@@ -50,67 +52,52 @@ struct Args {
     int frames = 90;
 };
 
-[[noreturn]] void usage_error(const std::string& why) {
-    std::fprintf(stderr, "modexlab: %s\n%s", why.c_str(), USAGE);
-    std::exit(2);
-}
-
-Args parse(int argc, char** argv) {
-    if (argc < 2) usage_error("no verb");
+// The settings a command line asks for; none when it asks for the usage. BOOT's options go with
+// either verb, the others with one.
+std::optional<Args> parse(const std::vector<std::string>& words) {
+    if (words.empty()) throw UsageError("no verb");
     Args a;
-    a.verb = argv[1];
-    if (a.verb == "-h" || a.verb == "--help") {
-        std::fputs(USAGE, stdout);
-        std::exit(0);
+    a.verb = words[0];
+    if (a.verb == "-h" || a.verb == "--help") return std::nullopt;
+    if (a.verb != "run" && a.verb != "exec") throw UsageError("unknown verb '" + a.verb + "'");
+    const bool run = a.verb == "run";
+    std::vector<std::string_view> with_value = {"--kernel", "--iso", "--append", "--module"}, flags = {"--usb", "--icount"};
+    if (run) {
+        with_value.insert(with_value.end(), {"--out", "--scene", "--mapper", "--frames"});
+        flags.push_back("--display");
+    } else {
+        flags.push_back("--full");
     }
-    if (a.verb != "run" && a.verb != "exec") usage_error("unknown verb '" + a.verb + "'");
-    a.out = build_dir() + "/run";
-    for (int i = 2; i < argc; ++i) {
-        std::string s = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage_error(s + " needs a value");
-            return argv[++i];
-        };
-        if (s == "--kernel") {
-            a.session.medium = BootMedium::Kernel;
-            a.session.image = value();
-        } else if (s == "--iso") {
-            if (a.session.medium == BootMedium::Kernel) a.session.medium = BootMedium::Cdrom;
-            a.session.image = value();
-        } else if (s == "--usb") {
-            a.session.medium = BootMedium::Usb;
-        } else if (s == "--append") {
-            a.session.append = value();
-        } else if (s == "--icount") {
-            a.session.icount = true;
-        } else if (s == "--display" && a.verb == "run") {
-            a.session.display = true;
-        } else if (s == "--module") {
-            std::string m = value();
-            size_t eq = m.find('=');
-            a.session.modules.push_back(eq == std::string::npos ? m : m.substr(0, eq) + " " + m.substr(eq + 1));
-        } else if (s == "--out" && a.verb == "run") {
-            a.out = value();
-        } else if (s == "--scene" && a.verb == "run") {
-            a.scene = value();
-        } else if (s == "--mapper" && a.verb == "run") {
-            a.mapper = value();
-            if (!raster::find_mapper({a.mapper.data(), a.mapper.size()})) usage_error("unknown mapper '" + a.mapper + "'");
-        } else if (s == "--frames" && a.verb == "run") {
-            a.frames = std::atoi(value().c_str());
-            if (a.frames < 1 || a.frames > 100000) usage_error("--frames takes 1..100000");
-        } else if (s == "--full" && a.verb == "exec") {
-            a.full = true;
-        } else if (s.rfind("--", 0) == 0) {
-            usage_error("unknown option " + s);
-        } else if (a.verb == "exec") {
-            a.commands.push_back(s);
-        } else {
-            usage_error("unexpected argument '" + s + "'");
-        }
-    }
+    const CommandLine args = parse_command_line(std::vector<std::string>(words.begin() + 1, words.end()), with_value, flags);
+    if (args.help()) return std::nullopt;
+
+    // BOOT: a kernel, or an ISO as a CD-ROM or a USB stick (default: the one make builds)
+    if (args.has("--kernel") && args.has("--iso")) throw UsageError("--kernel and --iso are alternatives");
+    if (args.has("--kernel") && args.has("--usb")) throw UsageError("--usb goes with --iso");
+    a.session.image = args.text(args.has("--iso") ? "--iso" : "--kernel");
+    if (args.has("--iso")) a.session.medium = BootMedium::Cdrom;
+    if (args.has("--usb")) a.session.medium = BootMedium::Usb;
     if (a.session.medium == BootMedium::Usb && a.session.image.empty()) a.session.image = build_dir() + "/modexlab.iso";
-    if (a.verb == "exec" && a.commands.empty()) usage_error("exec needs at least one COMMAND");
+    a.session.append = args.text("--append");
+    a.session.icount = args.has("--icount");
+    for (const std::string& m : args.texts("--module")) {
+        size_t eq = m.find('=');
+        a.session.modules.push_back(eq == std::string::npos ? m : m.substr(0, eq) + " " + m.substr(eq + 1));
+    }
+
+    if (run) {
+        if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
+        a.session.display = args.has("--display");
+        a.out = args.text("--out", build_dir() + "/run");
+        a.scene = args.text("--scene");
+        a.mapper = args.text("--mapper", a.mapper);
+        if (!raster::find_mapper({a.mapper.data(), a.mapper.size()})) throw UsageError("unknown mapper '" + a.mapper + "'");
+        a.frames = args.integer("--frames", 1, 100000, a.frames);
+    } else {
+        a.full = args.has("--full");
+        a.commands = args.positionals();
+        if (a.commands.empty()) throw UsageError("exec needs at least one COMMAND");
+    }
     return a;
 }
 
@@ -273,11 +260,14 @@ int exec(Args& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    Args a = parse(argc, argv);
-    try {
-        return a.verb == "run" ? run(a) : exec(a);
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "modexlab %s: FAILED: %s\n", a.verb.c_str(), e.what());
-        return 1;
-    }
+    return run_cli("modexlab", USAGE, [&] {
+        std::optional<Args> a = parse(std::vector<std::string>(argv + 1, argv + argc));
+        if (!a) return show_usage(USAGE);
+        try {
+            return a->verb == "run" ? run(*a) : exec(*a);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "modexlab %s: FAILED: %s\n", a->verb.c_str(), e.what());
+            return 1;
+        }
+    });
 }

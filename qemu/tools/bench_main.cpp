@@ -5,14 +5,15 @@
 
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "qemu/tools/demo_scenes.h"
+#include "qemu/lib/args.h"
 #include "qemu/lib/error.h"
 #include "qemu/lib/image.h"
 #include "qemu/accuracy/measure.h"
@@ -30,11 +31,6 @@ const char* USAGE =
     "  --frames   frames a scene, spread evenly over its animation (default 8)\n"
     "  --out      where the report goes (default build/report): trade.csv, trade.md, trade-SCENE.png\n"
     "  --no-wall  skip the wall-clock frames per second (QEMU without icount)\n";
-
-[[noreturn]] void usage_error(const std::string& why) {
-    std::fprintf(stderr, "modexlab-bench: %s\n%s", why.c_str(), USAGE);
-    std::exit(2);
-}
 
 std::vector<std::string> split_commas(const std::string& s) {
     std::vector<std::string> out;
@@ -58,37 +54,20 @@ struct Args {
     bool wall = true;
 };
 
-Args parse(int argc, char** argv) {
+// The settings a command line asks for; none when it asks for the usage.
+std::optional<Args> parse(const std::vector<std::string>& words) {
+    const CommandLine args = parse_command_line(words, {"--scenes", "--mappers", "--frames", "--out", "--kernel"}, {"--no-wall"});
+    if (args.help()) return std::nullopt;
+    if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
     Args a;
-    a.out = build_dir() + "/report";
-    for (int i = 1; i < argc; ++i) {
-        std::string s = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage_error(s + " needs a value");
-            return argv[++i];
-        };
-        if (s == "-h" || s == "--help") {
-            std::fputs(USAGE, stdout);
-            std::exit(0);
-        } else if (s == "--scenes") {
-            a.scenes = split_commas(value());
-        } else if (s == "--mappers") {
-            a.mappers = split_commas(value());
-            for (const std::string& m : a.mappers)
-                if (!raster::find_mapper({m.data(), m.size()})) usage_error("unknown mapper '" + m + "'");
-        } else if (s == "--frames") {
-            a.frames = std::atoi(value().c_str());
-            if (a.frames < 1 || a.frames > 1000) usage_error("--frames takes 1..1000");
-        } else if (s == "--out") {
-            a.out = value();
-        } else if (s == "--kernel") {
-            a.kernel = value();
-        } else if (s == "--no-wall") {
-            a.wall = false;
-        } else {
-            usage_error("unknown argument '" + s + "'");
-        }
-    }
+    a.scenes = split_commas(args.text("--scenes"));
+    a.mappers = split_commas(args.text("--mappers"));
+    for (const std::string& m : a.mappers)
+        if (!raster::find_mapper({m.data(), m.size()})) throw UsageError("unknown mapper '" + m + "'");
+    a.frames = args.integer("--frames", 1, 1000, a.frames);
+    a.out = args.text("--out", build_dir() + "/report");
+    a.kernel = args.text("--kernel");
+    a.wall = !args.has("--no-wall");
     if (a.scenes.empty())
         for (const DemoScene& d : demo_scenes()) a.scenes.push_back(d.name);
     if (a.mappers.empty())
@@ -279,10 +258,8 @@ int run(const Args& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    try {
-        return run(parse(argc, argv));
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "modexlab-bench: %s\n", e.what());
-        return 1;
-    }
+    return run_cli("modexlab-bench", USAGE, [&] {
+        std::optional<Args> a = parse(std::vector<std::string>(argv + 1, argv + argc));
+        return a ? run(*a) : show_usage(USAGE);
+    });
 }

@@ -3,10 +3,10 @@
 // reference. The output lines are "key value" pairs whose names and meanings are fixed
 // (docs/accuracy.md, "modexlab-render").
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <string>
+#include <vector>
 
+#include "qemu/lib/args.h"
 #include "qemu/lib/error.h"
 #include "qemu/lib/image.h"
 #include "qemu/accuracy/measure.h"
@@ -26,11 +26,6 @@ const char* USAGE =
     "  --compare  print the accuracy metrics against the reference (a 3D frame: polygon by polygon)\n"
     "  --diff     with --compare, screen-space scenes: a picture of the differences (red: palette index differs,\n"
     "             yellow: drawn but not covered by the reference, blue: covered but not drawn)\n";
-
-[[noreturn]] void usage_error(const std::string& why) {
-    std::fprintf(stderr, "modexlab-render: %s\n%s", why.c_str(), USAGE);
-    std::exit(2);
-}
 
 RgbImage difference_picture(const raster::PixelImage& ref, const raster::PixelImage& drawn) {
     RgbImage out{ref.width, ref.height, std::vector<uint8_t>(size_t(ref.width) * size_t(ref.height) * 3)};
@@ -100,97 +95,74 @@ int render_world(const std::string& path, const std::string& text, const raster:
     return 0;
 }
 
+// The mapper a --mapper names, or nullptr for the reference.
+const raster::Mapper* mapper_named(const std::string& name) {
+    if (name == "reference") return nullptr;
+    if (const raster::Mapper* m = raster::find_mapper({name.data(), name.size()})) return m;
+    std::string known;
+    for (int k = 0; k < raster::MAPPER_COUNT; ++k) known += std::string(" ") + raster::MAPPERS[k].name;
+    throw UsageError("unknown mapper '" + name + "' (mappers:" + known + ", or reference)");
+}
+
+int render(const std::vector<std::string>& words) {
+    const CommandLine args = parse_command_line(words, {"--mapper", "--out", "--diff", "--frame", "--axis"}, {"--compare"});
+    if (args.help()) return show_usage(USAGE);
+    const int32_t frame = args.integer("--frame", 0, raster::MAX_FRAMES - 1, 0);
+    raster::Axis axis = args.choice<raster::Axis>("--axis", {{"rows", raster::Axis::Rows}, {"columns", raster::Axis::Columns}},
+                                                  raster::Axis::Rows);
+    if (args.positionals().size() > 1) throw UsageError("more than one scene");
+    if (args.positionals().empty()) throw UsageError("no scene");
+    const std::string scene_path = args.positionals()[0], mapper_name = args.text("--mapper"), out = args.text("--out");
+    const std::string diff = args.text("--diff");
+    const bool compare_to_reference = args.has("--compare");
+    if (mapper_name.empty()) throw UsageError("no --mapper");
+    if (out.empty()) throw UsageError("no --out");
+    if (!diff.empty() && !compare_to_reference) throw UsageError("--diff goes with --compare");
+    const raster::Mapper* mapper = mapper_named(mapper_name);
+    if (mapper) {
+        if (!args.has("--axis")) axis = raster::home_axis(*mapper);
+        if (!raster::mapper_walks(*mapper, axis))
+            throw UsageError(mapper_name + " does not walk " + (axis == raster::Axis::Rows ? "rows" : "columns"));
+    }
+    std::string text = read_whole_file(scene_path);
+    raster::ParseError version_error;
+    if (raster::scene_version(text.data(), text.size(), &version_error) == 2) return render_world(scene_path, text, mapper, axis, frame, out, compare_to_reference, !diff.empty());
+    LoadedScene s = parse_scene_text(text, scene_path);
+    const raster::Palette& pal = raster::palette(raster::PaletteId::Default);
+    std::printf("modexlab-render 1\n");
+    std::printf("scene %s\n", scene_path.c_str());
+    std::printf("texture %s %dx%d %s\n", raster::texture_kind_name(s.scene->texture_kind), s.texture.width, s.texture.height,
+                raster::wrap_name(s.texture.wrap));
+    std::printf("polygons %d\n", s.scene->polygon_count);
+    std::unique_ptr<Picture> ref = render_reference(s);
+    if (!mapper) {
+        save_png(out, colourise(IndexImage{ref->view.width, ref->view.height, ref->index}, pal));
+        std::printf("mapper reference\n");
+        uint32_t covered = 0;
+        for (uint8_t c : ref->coverage) covered += c ? 1 : 0;
+        std::printf("pixels_drawn %u\n", covered);
+        return 0;
+    }
+    if (!mapper_takes(s, *mapper))
+        throw HarnessError(std::string(mapper->name) + " cannot take this scene's texture (" +
+                           raster::texture_kind_name(s.scene->texture_kind) + " " + std::to_string(s.texture.width) + "x" +
+                           std::to_string(s.texture.height) + " " + raster::wrap_name(s.texture.wrap) +
+                           "): see its needs in docs/mappers.md");
+    raster::RenderStats stats;
+    IndexImage picture = render_mapper(s, *mapper, axis, &stats);
+    save_png(out, colourise(picture, pal));
+    std::printf("mapper %s %s\n", mapper->name, axis == raster::Axis::Rows ? "rows" : "columns");
+    std::printf("polygons_drawn %u\npolygons_skipped %u\npolygons_rejected %u\nspans %u\npixels_drawn %u\n", stats.polygons,
+                stats.skipped, stats.rejected, stats.spans, stats.pixels);
+    if (!compare_to_reference) return 0;
+    std::unique_ptr<Picture> drawn = measure_mapper(s, *mapper, axis);
+    print_metrics(raster::compare_to_reference(ref->view, drawn->view, s.texture.width, s.texture.height, s.texture.wrap));
+    if (!diff.empty()) save_png(diff, difference_picture(ref->view, drawn->view));
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string scene_path, mapper_name, out, diff;
-    bool compare_to_reference = false;
-    raster::Axis axis = raster::Axis::Rows;
-    bool axis_given = false;
-    int32_t frame = 0;
-    for (int i = 1; i < argc; ++i) {
-        std::string a = argv[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= argc) usage_error(a + " needs a value");
-            return argv[++i];
-        };
-        if (a == "--mapper") mapper_name = value();
-        else if (a == "--out") out = value();
-        else if (a == "--diff") diff = value();
-        else if (a == "--compare") compare_to_reference = true;
-        else if (a == "--frame") {
-            std::string v = value();
-            char* end = nullptr;
-            long n = std::strtol(v.c_str(), &end, 10);
-            if (v.empty() || *end || n < 0 || n >= raster::MAX_FRAMES) usage_error("--frame takes 0..1048575");
-            frame = int32_t(n);
-        }
-        else if (a == "--axis") {
-            std::string v = value();
-            if (v == "rows") axis = raster::Axis::Rows;
-            else if (v == "columns") axis = raster::Axis::Columns;
-            else usage_error("--axis takes rows or columns");
-            axis_given = true;
-        } else if (a == "-h" || a == "--help") {
-            std::fputs(USAGE, stdout);
-            return 0;
-        } else if (a.rfind("--", 0) == 0) usage_error("unknown option " + a);
-        else if (scene_path.empty()) scene_path = a;
-        else usage_error("more than one scene");
-    }
-    if (scene_path.empty()) usage_error("no scene");
-    if (mapper_name.empty()) usage_error("no --mapper");
-    if (out.empty()) usage_error("no --out");
-    if (!diff.empty() && !compare_to_reference) usage_error("--diff goes with --compare");
-    const raster::Mapper* mapper = nullptr;
-    if (mapper_name != "reference") {
-        mapper = raster::find_mapper({mapper_name.data(), mapper_name.size()});
-        if (!mapper) {
-            std::string known;
-            for (int k = 0; k < raster::MAPPER_COUNT; ++k) known += std::string(" ") + raster::MAPPERS[k].name;
-            usage_error("unknown mapper '" + mapper_name + "' (mappers:" + known + ", or reference)");
-        }
-        if (!axis_given) axis = home_axis(*mapper);
-        if (!raster::mapper_walks(*mapper, axis)) usage_error(mapper_name + " does not walk " + (axis == raster::Axis::Rows ? "rows" : "columns"));
-    }
-    try {
-        std::string text = read_whole_file(scene_path);
-        raster::ParseError version_error;
-        if (raster::scene_version(text.data(), text.size(), &version_error) == 2) return render_world(scene_path, text, mapper, axis, frame, out, compare_to_reference, !diff.empty());
-        LoadedScene s = parse_scene_text(text, scene_path);
-        const raster::Palette& pal = raster::palette(raster::PaletteId::Default);
-        std::printf("modexlab-render 1\n");
-        std::printf("scene %s\n", scene_path.c_str());
-        std::printf("texture %s %dx%d %s\n", raster::texture_kind_name(s.scene->texture_kind), s.texture.width, s.texture.height,
-                    raster::wrap_name(s.texture.wrap));
-        std::printf("polygons %d\n", s.scene->polygon_count);
-        std::unique_ptr<Picture> ref = render_reference(s);
-        if (!mapper) {
-            save_png(out, colourise(IndexImage{ref->view.width, ref->view.height, ref->index}, pal));
-            std::printf("mapper reference\n");
-            uint32_t covered = 0;
-            for (uint8_t c : ref->coverage) covered += c ? 1 : 0;
-            std::printf("pixels_drawn %u\n", covered);
-            return 0;
-        }
-        if (!mapper_takes(s, *mapper))
-            throw HarnessError(std::string(mapper->name) + " cannot take this scene's texture (" +
-                               raster::texture_kind_name(s.scene->texture_kind) + " " + std::to_string(s.texture.width) + "x" +
-                               std::to_string(s.texture.height) + " " + raster::wrap_name(s.texture.wrap) +
-                               "): see its needs in docs/mappers.md");
-        raster::RenderStats stats;
-        IndexImage picture = render_mapper(s, *mapper, axis, &stats);
-        save_png(out, colourise(picture, pal));
-        std::printf("mapper %s %s\n", mapper->name, axis == raster::Axis::Rows ? "rows" : "columns");
-        std::printf("polygons_drawn %u\npolygons_skipped %u\npolygons_rejected %u\nspans %u\npixels_drawn %u\n", stats.polygons,
-                    stats.skipped, stats.rejected, stats.spans, stats.pixels);
-        if (!compare_to_reference) return 0;
-        std::unique_ptr<Picture> drawn = measure_mapper(s, *mapper, axis);
-        print_metrics(raster::compare_to_reference(ref->view, drawn->view, s.texture.width, s.texture.height, s.texture.wrap));
-        if (!diff.empty()) save_png(diff, difference_picture(ref->view, drawn->view));
-        return 0;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "modexlab-render: %s\n", e.what());
-        return 1;
-    }
+    return run_cli("modexlab-render", USAGE, [&] { return render(std::vector<std::string>(argv + 1, argv + argc)); });
 }

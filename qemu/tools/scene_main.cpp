@@ -1,12 +1,12 @@
 // modexlab-scene: checks scene files, makes the demo scenes, converts Wavefront OBJ meshes.
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "kernel/scene/world.h"
 #include "qemu/tools/demo_scenes.h"
+#include "qemu/lib/args.h"
 #include "qemu/lib/error.h"
 #include "qemu/accuracy/measure.h"
 
@@ -19,11 +19,6 @@ const char* USAGE =
     "       modexlab-scene make NAME|all [DIR]   print a demo scene, or write DIR/NAME.scene (all: every one)\n"
     "       modexlab-scene list                  the demo scenes and what each exercises\n"
     "       modexlab-scene obj FILE.obj NAME     a mesh block (v, vt, f) from a Wavefront OBJ file\n";
-
-[[noreturn]] void usage_error(const std::string& why) {
-    std::fprintf(stderr, "modexlab-scene: %s\n%s", why.c_str(), USAGE);
-    std::exit(2);
-}
 
 int check(const std::vector<std::string>& paths) {
     int failed = 0;
@@ -69,37 +64,39 @@ int make(const std::string& name, const std::string& dir) {
         if (!out) throw HarnessError("cannot write " + path);
         std::printf("%s (%zu bytes)\n", path.c_str(), text.size());
     }
-    if (!found) usage_error("no demo scene '" + name + "' (see 'modexlab-scene list')");
+    if (!found) throw UsageError("no demo scene '" + name + "' (see 'modexlab-scene list')");
+    return 0;
+}
+
+// A command word, then positionals only: none of the commands has options.
+int scene_tool(const std::vector<std::string>& words) {
+    if (words.empty()) throw UsageError("no command");
+    const std::string& verb = words[0];
+    if (verb == "-h" || verb == "--help") return show_usage(USAGE);
+    if (verb != "check" && verb != "make" && verb != "list" && verb != "obj") throw UsageError("unknown command '" + verb + "'");
+    const CommandLine args = parse_command_line(std::vector<std::string>(words.begin() + 1, words.end()), {}, {});
+    if (args.help()) return show_usage(USAGE);
+    const std::vector<std::string>& p = args.positionals();
+    if (verb == "check") {
+        if (p.empty()) throw UsageError("check needs files");
+        return check(p);
+    }
+    if (verb == "make") {
+        if (p.empty() || p.size() > 2) throw UsageError("make NAME|all [DIR]");
+        return make(p[0], p.size() == 2 ? p[1] : "");
+    }
+    if (verb == "list") {
+        if (!p.empty()) throw UsageError("list takes no arguments");
+        for (const DemoScene& d : demo_scenes()) std::printf("%-10s %s\n", d.name, d.exercises);
+        return 0;
+    }
+    if (p.size() != 2) throw UsageError("obj FILE.obj NAME");
+    std::fputs(obj_to_mesh(read_whole_file(p[0]), p[1], p[0]).c_str(), stdout);
     return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::vector<std::string> args(argv + 1, argv + argc);
-    if (args.empty()) usage_error("no command");
-    try {
-        const std::string& verb = args[0];
-        if (verb == "check") {
-            if (args.size() < 2) usage_error("check needs files");
-            return check(std::vector<std::string>(args.begin() + 1, args.end()));
-        }
-        if (verb == "make") {
-            if (args.size() < 2 || args.size() > 3) usage_error("make NAME|all [DIR]");
-            return make(args[1], args.size() == 3 ? args[2] : "");
-        }
-        if (verb == "list") {
-            for (const DemoScene& d : demo_scenes()) std::printf("%-10s %s\n", d.name, d.exercises);
-            return 0;
-        }
-        if (verb == "obj") {
-            if (args.size() != 3) usage_error("obj FILE.obj NAME");
-            std::fputs(obj_to_mesh(read_whole_file(args[1]), args[2], args[1]).c_str(), stdout);
-            return 0;
-        }
-        usage_error("unknown command '" + verb + "'");
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "modexlab-scene: %s\n", e.what());
-        return 1;
-    }
+    return run_cli("modexlab-scene", USAGE, [&] { return scene_tool(std::vector<std::string>(argv + 1, argv + argc)); });
 }

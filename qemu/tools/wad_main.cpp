@@ -1,11 +1,11 @@
 // modexlab-wad: lists a Doom WAD's flats and wall textures, or extracts some as 8-bit BMPs in the WAD's palette.
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "qemu/lib/args.h"
 #include "qemu/lib/error.h"
 #include "qemu/tools/wad.h"
 
@@ -21,11 +21,6 @@ const char* USAGE =
     "          the WAD's palette). A name that is both a flat and a texture needs a prefix:\n"
     "          flat:NAME or texture:NAME (the prefixes are always accepted).\n"
     "  Texture pixels no patch covers are palette index 0.\n";
-
-[[noreturn]] void usage_error(const std::string& why) {
-    std::fprintf(stderr, "modexlab-wad: %s\n%s", why.c_str(), USAGE);
-    std::exit(2);
-}
 
 struct Request {
     std::string argument;  // as given, for messages
@@ -45,7 +40,7 @@ Request parse_request(const std::string& argument) {
         r.name = argument.substr(8);
         r.want_flat = false;
     }
-    if (r.name.empty()) usage_error("'" + argument + "' names nothing");
+    if (r.name.empty()) throw UsageError("'" + argument + "' names nothing");
     r.name = wad_upper(r.name);
     return r;
 }
@@ -115,33 +110,24 @@ int extract(const Wad& wad, const std::string& out_dir, const std::vector<Reques
     return 0;
 }
 
+int wad_tool(const std::vector<std::string>& words) {
+    const CommandLine args = parse_command_line(words, {}, {"--list"});
+    if (args.help()) return show_usage(USAGE);
+    const bool list_mode = args.has("--list");
+    const std::vector<std::string>& positional = args.positionals();
+    for (const std::string& p : positional)
+        if (p.empty()) throw UsageError("an empty argument");
+    if (positional.empty()) throw UsageError("no WAD");
+    if (list_mode && positional.size() != 1) throw UsageError("--list takes only the WAD");
+    if (!list_mode && positional.size() < 3) throw UsageError(positional.size() == 1 ? "no OUTDIR and no NAME" : "no NAME to extract");
+    std::vector<Request> requests;
+    for (size_t k = 2; k < positional.size(); ++k) requests.push_back(parse_request(positional[k]));
+    const Wad wad = Wad::load(positional[0]);
+    return list_mode ? list(wad) : extract(wad, positional[1], requests);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool list_mode = false;
-    std::vector<std::string> positional;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "-h" || a == "--help") {
-            std::fputs(USAGE, stdout);
-            return 0;
-        }
-        if (a == "--list") list_mode = true;
-        else if (a.rfind("--", 0) == 0) usage_error("unknown option " + a);
-        else if (a.empty()) usage_error("an empty argument");
-        else positional.push_back(a);
-    }
-    if (positional.empty()) usage_error("no WAD");
-    if (list_mode && positional.size() != 1) usage_error("--list takes only the WAD");
-    if (!list_mode && positional.size() < 3) usage_error(positional.size() == 1 ? "no OUTDIR and no NAME" : "no NAME to extract");
-    std::vector<Request> requests;
-    for (size_t k = 2; k < positional.size(); ++k) requests.push_back(parse_request(positional[k]));
-    try {
-        const Wad wad = Wad::load(positional[0]);
-        return list_mode ? list(wad) : extract(wad, positional[1], requests);
-    } catch (const std::exception& e) {
-        // HarnessError says what and where; anything else (out of memory) is still reported, not a crash.
-        std::fprintf(stderr, "modexlab-wad: %s\n", e.what());
-        return 1;
-    }
+    return run_cli("modexlab-wad", USAGE, [&] { return wad_tool(std::vector<std::string>(argv + 1, argv + argc)); });
 }
