@@ -26,7 +26,7 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
             while (walker.next(&span)) {
                 int32_t stride;
                 uint8_t* dst = span_start(target, axis, span, &stride);
-                emit(stats, 1, uint32_t(span.count), [&] { mapper.span(context, span, dst, stride); });
+                emit(probe, stats, 1, uint32_t(span.count), [&] { mapper.span(context, span, dst, stride); });
             }
         }
     }

@@ -3,6 +3,11 @@
 
 namespace raster {
 
+namespace {
+
+// A texture coordinate in 16.16 at a span's start. With repeat, it is first reduced modulo the
+// texture size (same texels, and far from the 16.16 limit of +-32768 texels); with clamp it
+// saturates, which clamps to the same edge texel.
 Fixed16_16 start_coordinate(double t, int32_t size, Wrap wrap) {
     if (wrap == Wrap::Repeat) {
         double period = double(size);
@@ -10,6 +15,8 @@ Fixed16_16 start_coordinate(double t, int32_t size, Wrap wrap) {
     }
     return Fixed16_16::from_double(t);
 }
+
+}  // namespace
 
 // affine: u and v linear in screen space, stepped in 16.16 from their value at the span's first
 // pixel centre; texel = floor.

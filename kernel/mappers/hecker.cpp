@@ -232,7 +232,7 @@ void draw_triangle(const DrawContext& c, const Vertex28* v) {
         for (int64_t h = short_edge.height; h-- > 0;) {
             if (left->y >= clip.y0 && left->y < clip.y1) {
                 // the span routine (its divides and pieces) is the inner loop
-                emit(c.stats, 0, 0, [&] { draw_scan_line(c, g, *left, *right); });
+                emit(c.stats->probe, c.stats, 0, 0, [&] { draw_scan_line(c, g, *left, *right); });
             }
             short_edge.step();
             top_to_bottom.step();

@@ -248,7 +248,7 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count, R
         if (y >= clip.y1) break;
         SpanSetup s;
         if (y >= clip.y0 && span_setup(left, right, clip, &s)) {
-            emit(c.stats, 1, uint32_t(s.count), [&] { span(c, s, y); });  // the span routine is the inner loop
+            emit(c.stats->probe, c.stats, 1, uint32_t(s.count), [&] { span(c, s, y); });  // the span routine is the inner loop
         }
         if (!step_edge(left, p) || !step_edge(right, p)) break;
     }
