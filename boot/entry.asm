@@ -9,7 +9,7 @@ MB_FLAGS        equ MB_FLAG_ALIGN | MB_FLAG_MEMINFO
 
 KERNEL_CS       equ 0x08
 KERNEL_DS       equ 0x10
-STACK_BYTES     equ 64 * 1024
+STACK_BYTES     equ 256 * 1024      ; fatmap-lut keeps its 64 KiB table on the stack
 
 section .multiboot progbits alloc noexec nowrite align=4
     dd MB_MAGIC

@@ -120,10 +120,10 @@ void random_planes(Random& r, double* q, double* pu, double* pv);
 // else steps up to 4 texels a pixel.
 template <typename Args>
 void random_uv(Random& r, Args& a) {
-    a.u = int32_t(r.next());
-    a.v = int32_t(r.next());
-    a.du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
-    a.dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+    a.u_16_16 = int32_t(r.next());
+    a.v_16_16 = int32_t(r.next());
+    a.du_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+    a.dv_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
 }
 
 }  // namespace raster

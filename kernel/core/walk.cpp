@@ -1,4 +1,7 @@
-// Edge walking. On line L (row y, or column x) each edge's function is linear in the minor
+// Edge walking: the bounds of each line from the edge functions, stepped exactly in integers.
+#include "kernel/core/walk.h"
+
+// Why it works. On line L (row y, or column x) each edge's function is linear in the minor
 // coordinate m: E = A*m + B(L), with B(L+1) = B(L) + C. Inside is E >= t, so an edge with A > 0
 // bounds m from below by ceil((t - B)/A), one with A < 0 from above by floor((B - t)/-A), and one
 // with A = 0 keeps or drops whole lines: it narrows the range of lines once, at the start.
@@ -8,8 +11,6 @@
 // edge's line passes outside the polygon there, or through the same boundary point only when L's
 // centre is within that edge's extent too). So each bound is stepped only on its own lines, at
 // most two of a kind at once, and a triangle costs two bounds a line.
-#include "kernel/core/walk.h"
-
 namespace raster {
 
 namespace {

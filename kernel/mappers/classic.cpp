@@ -55,8 +55,8 @@ SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_of
         const Vertex& v = in[i];
         out[i].x = (v.x.raw + int32_t(SUBPIXEL_HALF)) >> SUBPIXEL_BITS;
         out[i].y = (v.y.raw + int32_t(SUBPIXEL_HALF)) >> SUBPIXEL_BITS;
-        out[i].u = Fixed16_16::from_double(v.u + shift_u + texel_offset).raw;
-        out[i].v = Fixed16_16::from_double(v.v + shift_v + texel_offset).raw;
+        out[i].u_16_16 = Fixed16_16::from_double(v.u + shift_u + texel_offset).raw;
+        out[i].v_16_16 = Fixed16_16::from_double(v.v + shift_v + texel_offset).raw;
         out[i].w = v.w;
     }
     int64_t area2 = 0;

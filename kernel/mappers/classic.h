@@ -20,7 +20,7 @@ int32_t fixed_mul(int32_t a, int32_t b);
 // fractional bits), texture coordinates in 16.16.
 struct Vertex16 {
     int32_t x, y;
-    int32_t u, v;  // 16.16, in the mapper's texel space (see texel_offset below)
+    int32_t u_16_16, v_16_16;  // in the mapper's texel space (see texel_offset below)
     double w;
 };
 

@@ -1,11 +1,5 @@
-// Our fastest affine mappers, for 256 x 256 repeating textures (docs/mappers.md):
-//   fast-affine:  rows into a linear surface, by runs of rows that the NASM loop walks itself;
-//   fast-columns: columns into Mode X planes (the map mask set once per column).
-// Each is its own polygon driver: the setup computes only the affine planes, and each span starts
-// from the polygon's 16.16 planes at its first pixel centre (subpixel-correct, exact coverage, no
-// per-span floating point). The pixel core is fatmap2's 8:16 loop (16-bit fractions, the wholes in
-// bl and bh of a pointer to the 64 KiB-aligned texture) unrolled eight times, entered part-way for
-// the remainder, with no per-pixel loop counter.
+// fast-affine and fast-columns: our fastest affine mappers for 256 x 256 repeating textures, each its
+// own polygon driver (docs/mappers.md); the twins and the loops' checks.
 #include "kernel/mappers/fast.h"
 
 #include "kernel/core/asm_offsets.h"
@@ -43,10 +37,10 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
     a.clip_lo = walker.minor_lo();
     a.clip_hi = walker.minor_hi();
     a.texture = c.tex.aligned256;
-    a.u_row = p.udy;
-    a.v_row = p.vdy;
-    a.du = int32_t(p.udx);
-    a.dv = int32_t(p.vdx);
+    a.u_row_16_16 = p.udy;
+    a.v_row_16_16 = p.vdy;
+    a.du_16_16 = int32_t(p.udx);
+    a.dv_16_16 = int32_t(p.vdx);
     a.tally = drawn;
     for (;;) {
         int32_t line;
@@ -65,8 +59,8 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
             line = span.y;
         }
         a.row = c.target.base + line * c.target.pitch;
-        a.u = p.u(0, line);
-        a.v = p.v(0, line);
+        a.u_16_16 = p.u(0, line);
+        a.v_16_16 = p.v(0, line);
         emit(c, &a, 0, 0);  // the run loop counts what it draws
     }
     tally(c.stats, drawn[0], drawn[1]);
@@ -83,16 +77,16 @@ SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count
     setup_done(c);
     FastColumnArgs a;
     a.texture = c.tex.aligned256;
-    a.du = int32_t(p.udy);
-    a.dv = int32_t(p.vdy);
+    a.du_16_16 = int32_t(p.udy);
+    a.dv_16_16 = int32_t(p.vdy);
     uint32_t spans = 0, pixels = 0;
     Span span;
     while (walker.next(&span)) {
         int32_t stride;
         a.dst = span_start(c.target, Axis::Columns, span, &stride);
         a.count = span.count;
-        a.u = int32_t(p.u(span.x, span.y));
-        a.v = int32_t(p.v(span.x, span.y));
+        a.u_16_16 = int32_t(p.u(span.x, span.y));
+        a.v_16_16 = int32_t(p.v(span.x, span.y));
         emit(c, &a, 0, 0);  // counted once for the polygon
         ++spans;
         pixels += uint32_t(span.count);
@@ -114,37 +108,37 @@ uint8_t texel256(const uint8_t* texture, uint32_t u, uint32_t v) { return textur
 void fast_run_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
     uint8_t* row = a.row;
-    uint32_t u = a.u, v = a.v;
+    uint32_t u = a.u_16_16, v = a.v_16_16;
     for (int32_t n = 0; n < a.lines; ++n) {
         int32_t lo = a.lower->q > a.clip_lo ? a.lower->q : a.clip_lo;
         int32_t hi = a.upper->q < a.clip_hi ? a.upper->q : a.clip_hi;
         a.lower->step();
         a.upper->step();
         if (lo <= hi) {
-            uint32_t su = u + uint32_t(lo) * uint32_t(a.du), sv = v + uint32_t(lo) * uint32_t(a.dv);
+            uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);
             for (int32_t x = lo; x <= hi; ++x) {
                 row[x] = texel256(a.texture, su, sv);
-                su += uint32_t(a.du);
-                sv += uint32_t(a.dv);
+                su += uint32_t(a.du_16_16);
+                sv += uint32_t(a.dv_16_16);
             }
             a.tally[0] += 1;
             a.tally[1] += uint32_t(hi - lo + 1);
         }
         row += a.pitch;
-        u += a.u_row;
-        v += a.v_row;
+        u += a.u_row_16_16;
+        v += a.v_row_16_16;
     }
 }
 
 void fast_column_loop(const void* raw) {
     const auto& a = *static_cast<const FastColumnArgs*>(raw);
-    uint32_t u = uint32_t(a.u), v = uint32_t(a.v);
+    uint32_t u = uint32_t(a.u_16_16), v = uint32_t(a.v_16_16);
     uint8_t* dst = a.dst;
     for (int32_t n = 0; n < a.count; ++n) {
         *dst = texel256(a.texture, u, v);
         dst += MODEX_ROW_BYTES;
-        u += uint32_t(a.du);
-        v += uint32_t(a.dv);
+        u += uint32_t(a.du_16_16);
+        v += uint32_t(a.dv_16_16);
     }
 }
 
@@ -219,12 +213,12 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         c.upper = random_bound(r, a.pitch);
         if (r.below(2)) c.upper.q = c.lower.q + r.range(0, a.pitch), c.upper.dq = c.lower.dq + r.range(-2, 2);  // a real-looking span
         a.texture = check_aligned_texture(buf);
-        a.u = r.next();
-        a.v = r.next();
-        a.u_row = r.next();
-        a.v_row = r.next();
-        a.du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
-        a.dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        a.u_16_16 = r.next();
+        a.v_16_16 = r.next();
+        a.u_row_16_16 = r.next();
+        a.v_row_16_16 = r.next();
+        a.du_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        a.dv_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
         c.tally[0] = c.tally[1] = 0;
         a.lower = &c.lower;
         a.upper = &c.upper;
@@ -249,10 +243,10 @@ void fast_offsets() {
     ASM_OFFSET(FCOL_DST, FastColumnArgs, dst);
     ASM_OFFSET(FCOL_COUNT, FastColumnArgs, count);
     ASM_OFFSET(FCOL_TEXTURE, FastColumnArgs, texture);
-    ASM_OFFSET(FCOL_U, FastColumnArgs, u);
-    ASM_OFFSET(FCOL_V, FastColumnArgs, v);
-    ASM_OFFSET(FCOL_DU, FastColumnArgs, du);
-    ASM_OFFSET(FCOL_DV, FastColumnArgs, dv);
+    ASM_OFFSET(FCOL_U, FastColumnArgs, u_16_16);
+    ASM_OFFSET(FCOL_V, FastColumnArgs, v_16_16);
+    ASM_OFFSET(FCOL_DU, FastColumnArgs, du_16_16);
+    ASM_OFFSET(FCOL_DV, FastColumnArgs, dv_16_16);
     ASM_CONSTANT(MODEX_ROW_BYTES, MODEX_ROW_BYTES);
     ASM_OFFSET(RUN_ROW, FastRunArgs, row);
     ASM_OFFSET(RUN_PITCH, FastRunArgs, pitch);
@@ -262,12 +256,12 @@ void fast_offsets() {
     ASM_OFFSET(RUN_LOWER, FastRunArgs, lower);
     ASM_OFFSET(RUN_UPPER, FastRunArgs, upper);
     ASM_OFFSET(RUN_TEXTURE, FastRunArgs, texture);
-    ASM_OFFSET(RUN_U, FastRunArgs, u);
-    ASM_OFFSET(RUN_V, FastRunArgs, v);
-    ASM_OFFSET(RUN_U_ROW, FastRunArgs, u_row);
-    ASM_OFFSET(RUN_V_ROW, FastRunArgs, v_row);
-    ASM_OFFSET(RUN_DU, FastRunArgs, du);
-    ASM_OFFSET(RUN_DV, FastRunArgs, dv);
+    ASM_OFFSET(RUN_U, FastRunArgs, u_16_16);
+    ASM_OFFSET(RUN_V, FastRunArgs, v_16_16);
+    ASM_OFFSET(RUN_U_ROW, FastRunArgs, u_row_16_16);
+    ASM_OFFSET(RUN_V_ROW, FastRunArgs, v_row_16_16);
+    ASM_OFFSET(RUN_DU, FastRunArgs, du_16_16);
+    ASM_OFFSET(RUN_DV, FastRunArgs, dv_16_16);
     ASM_OFFSET(RUN_TALLY, FastRunArgs, tally);
     ASM_OFFSET(BOUND_Q, EdgeBound, q);
     ASM_OFFSET(BOUND_DQ, EdgeBound, dq);

@@ -20,9 +20,9 @@ struct FastRunArgs {
     EdgeBound* lower;        // stepped in place, once a row
     EdgeBound* upper;
     const uint8_t* texture;  // 256 x 256, aligned to 64 KiB
-    uint32_t u, v;           // 16.16 at pixel 0 of the first row
-    uint32_t u_row, v_row;   // their change from row to row
-    int32_t du, dv;          // 16.16 per pixel
+    uint32_t u_16_16, v_16_16;        // at pixel 0 of the first row
+    uint32_t u_row_16_16, v_row_16_16;  // their change from row to row
+    int32_t du_16_16, dv_16_16;       // per pixel
     uint32_t* tally;         // tally[0] += the spans drawn, tally[1] += their pixels
 };
 void fast_run_loop(const void* args);
@@ -33,8 +33,8 @@ struct FastColumnArgs {
     uint8_t* dst;
     int32_t count;
     const uint8_t* texture;  // aligned to 64 KiB
-    int32_t u, v;            // 16.16
-    int32_t du, dv;          // 16.16 per pixel down the column
+    int32_t u_16_16, v_16_16;
+    int32_t du_16_16, dv_16_16;  // per pixel down the column
 };
 void fast_column_loop(const void* args);
 

@@ -1,17 +1,5 @@
-// Mats Byggmastar's fatmap.txt ("Fast affine texture mapping", 1996), reproduced with its rules and
-// limits (docs/mappers.md): whole-pixel vertices, u and v in 26:6, the constant deltas du/dx and
-// dv/dx from the longest scanline (shl10idiv, with the "ugly compensation" for short ones), u and v
-// interpolated down the left side only, x truncated, no prestep; 256 x 256 textures on a 64 KiB
-// boundary. Three inner loops:
-//   fatmap-256:    his 5-tick loop: u in ecx as 24:8 with bl = ch, v as bytes (dh fraction, bh
-//                  whole) stepped with adc: 8-bit fractions, wrapping in both directions;
-//   fatmap-256-16: fatmap2's 8:16 loop: 16-bit fractions in the high halves of eax and edx, the
-//                  wholes in bl and bh stepped with adc: the same driver, sixteen fraction bits;
-//   fatmap-lut:    the table-lookup loop: one table of offsets per triangle for its longest
-//                  scanline, every scanline starting at entry 0 (the start fractions of u and v
-//                  dropped: the distortion fatmap.txt warns about).
-// Deviations: clipping as his section 17 describes (pixels skipped at the start advance u and v
-// by the skipped count times the deltas), polygons drawn as fans.
+// fatmap-256, fatmap-256-16 and fatmap-lut: Mats Byggmastar's fatmap.txt triangle function and his
+// three inner loops, with their rules and flaws (docs/mappers.md); the twins and the loops' checks.
 #include "kernel/mappers/fatmap.h"
 
 #include "kernel/core/asm_offsets.h"
@@ -25,12 +13,13 @@ namespace {
 
 struct FVertex {
     int32_t x, y;  // whole pixels
-    int32_t u, v;  // 26:6
+    int32_t u_26_6, v_26_6;
 };
 
-// The lookup table of the triangle being drawn (fatmap-lut), for scanlines up to 2 * 8192 pixels.
+// fatmap-lut's table of offsets, for scanlines up to 2 * 8192 pixels; the NASM loop reads one
+// entry past the last pixel's.
 constexpr int32_t MAX_LUT = 2 * classic::MAX_COORD + 2;
-int32_t g_lut[MAX_LUT + 1];  // the NASM loop reads one entry past the last pixel's
+using LutTable = int32_t[MAX_LUT + 1];
 
 // shl10idiv: (a << 10) / b with a 64-bit dividend, truncating like idiv; saturates where idiv
 // would have raised a divide error.
@@ -55,20 +44,17 @@ int set_section(Section& s, bool left) {
     s.dx = ((v2->x - v1->x) << 16) / height;
     s.x = v1->x << 16;
     if (left) {
-        s.du = ((v2->u - v1->u) << 10) / height;
-        s.u = v1->u << 10;
-        s.dv = ((v2->v - v1->v) << 10) / height;
-        s.v = v1->v << 10;
+        s.du = ((v2->u_26_6 - v1->u_26_6) << 10) / height;
+        s.u = v1->u_26_6 << 10;
+        s.dv = ((v2->v_26_6 - v1->v_26_6) << 10) / height;
+        s.v = v1->v_26_6 << 10;
     }
     s.height = height;
     return height;
 }
 
-struct Variant {
-    bool lut;
-};
-
-void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
+// lut: fatmap-lut's table, filled for each triangle; null for the other loops.
+void draw_triangle(const DrawContext& c, const FVertex* vtx, int32_t* lut) {
     const FVertex* v1 = &vtx[0];
     const FVertex* v2 = &vtx[1];
     const FVertex* v3 = &vtx[2];
@@ -100,8 +86,8 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
         }
         if (longest < 0x1000) longest = 0x1000;
     }
-    int32_t dudx = shl10idiv(int64_t(temp) * (v3->u - v1->u) + (int64_t(v1->u - v2->u) << 16), longest);
-    int32_t dvdx = shl10idiv(int64_t(temp) * (v3->v - v1->v) + (int64_t(v1->v - v2->v) << 16), longest);
+    int32_t dudx = shl10idiv(int64_t(temp) * (v3->u_26_6 - v1->u_26_6) + (int64_t(v1->u_26_6 - v2->u_26_6) << 16), longest);
+    int32_t dvdx = shl10idiv(int64_t(temp) * (v3->v_26_6 - v1->v_26_6) + (int64_t(v1->v_26_6 - v2->v_26_6) << 16), longest);
     int32_t table_length = 0;
     if (lut) {
         // one offset per pixel of the longest scanline, from u = v = 0 (24:8)
@@ -109,7 +95,7 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
         table_length = ((longest < 0 ? -longest : longest) >> 16) + 2;
         if (table_length > MAX_LUT) table_length = MAX_LUT;
         for (int32_t k = 0; k < table_length; ++k) {
-            g_lut[k] = (u >> 8) + int32_t(uint32_t(v) & 0xFFFFFF00u);
+            lut[k] = (u >> 8) + int32_t(uint32_t(v) & 0xFFFFFF00u);
             u += du;
             v += dv;
         }
@@ -133,7 +119,7 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
                     // his C: bitmap + (left_u >> 16) + (left_v >> 16) * 256 (the table holds the rest)
                     a.source = c.tex.aligned256 + (left.u >> 16) + (left.v >> 16) * 256;
                     int32_t first = skipped < table_length ? skipped : table_length - 1;
-                    a.table = g_lut + first;
+                    a.table = lut + first;
                     a.count = a.count < table_length - first ? a.count : table_length - first;
                     emit(c, &a, 1, uint32_t(a.count));
                 } else {
@@ -141,10 +127,10 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
                     a.dst = dst;
                     a.count = hi - lo;
                     a.texture = c.tex.aligned256;
-                    a.u = int32_t(uint32_t(left.u) + uint32_t(skipped) * uint32_t(dudx));
-                    a.v = int32_t(uint32_t(left.v) + uint32_t(skipped) * uint32_t(dvdx));
-                    a.du = dudx;
-                    a.dv = dvdx;
+                    a.u_16_16 = int32_t(uint32_t(left.u) + uint32_t(skipped) * uint32_t(dudx));
+                    a.v_16_16 = int32_t(uint32_t(left.v) + uint32_t(skipped) * uint32_t(dvdx));
+                    a.du_16_16 = dudx;
+                    a.dv_16_16 = dvdx;
                     emit(c, &a, 1, uint32_t(a.count));
                 }
             }
@@ -167,7 +153,7 @@ void draw_triangle(const DrawContext& c, const FVertex* vtx, bool lut) {
     }
 }
 
-SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count, bool lut, double limit) {
+SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count, int32_t* lut, double limit) {
     double shift_u, shift_v;
     // the loops wrap at 256 (fatmap-lut does not); the 16:16 arithmetic holds +-32768 texels
     Texture range = c.tex;
@@ -181,8 +167,8 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count, bool l
     for (int i = 0; i < count; ++i) {
         v[i].x = (vertices[i].x.raw + int32_t(SUBPIXEL_HALF)) >> SUBPIXEL_BITS;
         v[i].y = (vertices[i].y.raw + int32_t(SUBPIXEL_HALF)) >> SUBPIXEL_BITS;
-        v[i].u = int32_t(floor_i64((vertices[i].u + shift_u) * 64 + 0.5));
-        v[i].v = int32_t(floor_i64((vertices[i].v + shift_v) * 64 + 0.5));
+        v[i].u_26_6 = int32_t(floor_i64((vertices[i].u + shift_u) * 64 + 0.5));
+        v[i].v_26_6 = int32_t(floor_i64((vertices[i].v + shift_v) * 64 + 0.5));
     }
     for (int k = 1; k + 1 < count; ++k) {
         FVertex tri[3] = {v[0], v[k], v[k + 1]};
@@ -197,10 +183,13 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count, bool l
 constexpr double WRAPPING_LIMIT = 16384;
 
 SetupStatus draw_256(const DrawContext& c, const Vertex* vertices, int count) {
-    return draw(c, vertices, count, false, WRAPPING_LIMIT);
+    return draw(c, vertices, count, nullptr, WRAPPING_LIMIT);
 }
 
-SetupStatus draw_lut(const DrawContext& c, const Vertex* vertices, int count) { return draw(c, vertices, count, true, 256); }
+SetupStatus draw_lut(const DrawContext& c, const Vertex* vertices, int count) {
+    LutTable table;  // 64 KiB on the stack, not a global: the core keeps no state (boot/entry.asm sizes the stack for it)
+    return draw(c, vertices, count, table, 256);
+}
 
 }  // namespace raster::fatmap
 
@@ -209,9 +198,9 @@ namespace raster {
 void fatmap_loop(const void* raw) {
     const auto& a = *static_cast<const FatmapArgs*>(raw);
     // his 5-tick loop: u as 24:8 in ecx (bl = ch), v as the bytes dh (fraction) and bh (whole)
-    uint32_t u = uint32_t(a.u) >> 8, du = uint32_t(a.du) >> 8;
-    uint32_t v_frac = (uint32_t(a.v) >> 8) & 0xFF, v_whole = (uint32_t(a.v) >> 16) & 0xFF;
-    uint32_t dv_frac = (uint32_t(a.dv) >> 8) & 0xFF, dv_whole = (uint32_t(a.dv) >> 16) & 0xFF;
+    uint32_t u = uint32_t(a.u_16_16) >> 8, du = uint32_t(a.du_16_16) >> 8;
+    uint32_t v_frac = (uint32_t(a.v_16_16) >> 8) & 0xFF, v_whole = (uint32_t(a.v_16_16) >> 16) & 0xFF;
+    uint32_t dv_frac = (uint32_t(a.dv_16_16) >> 8) & 0xFF, dv_whole = (uint32_t(a.dv_16_16) >> 16) & 0xFF;
     uint8_t* dst = a.dst;
     for (int32_t n = 0; n < a.count; ++n) {
         uint32_t u_whole = (u >> 8) & 0xFF;
@@ -226,10 +215,10 @@ void fatmap_loop(const void* raw) {
 void fatmap16_loop(const void* raw) {
     const auto& a = *static_cast<const FatmapArgs*>(raw);
     // fatmap2's 8:16 loop: fractions in the high halves, wholes in bl (u) and bh (v)
-    uint32_t u_frac = uint32_t(a.u) << 16, v_frac = uint32_t(a.v) << 16;
-    uint32_t u_whole = (uint32_t(a.u) >> 16) & 0xFF, v_whole = (uint32_t(a.v) >> 16) & 0xFF;
-    uint32_t du_frac = uint32_t(a.du) << 16, dv_frac = uint32_t(a.dv) << 16;
-    uint32_t du_whole = (uint32_t(a.du) >> 16) & 0xFF, dv_whole = (uint32_t(a.dv) >> 16) & 0xFF;
+    uint32_t u_frac = uint32_t(a.u_16_16) << 16, v_frac = uint32_t(a.v_16_16) << 16;
+    uint32_t u_whole = (uint32_t(a.u_16_16) >> 16) & 0xFF, v_whole = (uint32_t(a.v_16_16) >> 16) & 0xFF;
+    uint32_t du_frac = uint32_t(a.du_16_16) << 16, dv_frac = uint32_t(a.dv_16_16) << 16;
+    uint32_t du_whole = (uint32_t(a.du_16_16) >> 16) & 0xFF, dv_whole = (uint32_t(a.dv_16_16) >> 16) & 0xFF;
     uint8_t* dst = a.dst;
     for (int32_t n = 0; n < a.count; ++n) {
         dst[n] = a.texture[(v_whole << 8) | u_whole];
@@ -283,10 +272,10 @@ void fatmap_offsets() {
     ASM_OFFSET(FATMAP_DST, FatmapArgs, dst);
     ASM_OFFSET(FATMAP_COUNT, FatmapArgs, count);
     ASM_OFFSET(FATMAP_TEXTURE, FatmapArgs, texture);
-    ASM_OFFSET(FATMAP_U, FatmapArgs, u);
-    ASM_OFFSET(FATMAP_V, FatmapArgs, v);
-    ASM_OFFSET(FATMAP_DU, FatmapArgs, du);
-    ASM_OFFSET(FATMAP_DV, FatmapArgs, dv);
+    ASM_OFFSET(FATMAP_U, FatmapArgs, u_16_16);
+    ASM_OFFSET(FATMAP_V, FatmapArgs, v_16_16);
+    ASM_OFFSET(FATMAP_DU, FatmapArgs, du_16_16);
+    ASM_OFFSET(FATMAP_DV, FatmapArgs, dv_16_16);
     ASM_OFFSET(LUT_DST, FatmapLutArgs, dst);
     ASM_OFFSET(LUT_COUNT, FatmapLutArgs, count);
     ASM_OFFSET(LUT_SOURCE, FatmapLutArgs, source);

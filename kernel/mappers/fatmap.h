@@ -15,8 +15,8 @@ struct FatmapArgs {
     uint8_t* dst;            // count pixels left to right
     int32_t count;
     const uint8_t* texture;  // aligned to 64 KiB
-    int32_t u, v;            // 16:16
-    int32_t du, dv;          // 16:16 per pixel
+    int32_t u_16_16, v_16_16;
+    int32_t du_16_16, dv_16_16;  // per pixel
 };
 void fatmap_loop(const void* args);    // 8-bit fractions
 void fatmap16_loop(const void* args);  // 16-bit fractions

@@ -1,13 +1,5 @@
-// quake-subdiv16 and quake-subdiv8: Quake's perspective span drawer (WinQuake d_scan.c: D_DrawSpans8,
-// and the 16-pixel form of its outer loop in Turbulent8), reproduced with its rules (docs/mappers.md):
-// s/z, t/z and 1/z affine in screen space, evaluated at each span's first pixel; s and t in 16.16
-// exact (z = 65536 / zi, truncated) at the start and every 16 (8) pixels, stepped affinely in
-// between (steps by an arithmetic shift); the last segment aimed at the span's last pixel with an
-// integer division ("biasing steps low so we don't run off the texture"); s clamped to
-// [0, bbextents] at the start and to [16 (8), bbextents] at segment ends, bbextents = size - 1/65536.
-// The spans come from our walker (Quake's edge list has its own); the texture is our texture with
-// the polygon's coordinates shifted by whole periods (Quake's sadjust), which must then fit in it.
-// Deviations: doubles where Quake used floats (the kernel's x87 and the host's SSE2 must agree).
+// quake-subdiv16 and quake-subdiv8: Quake's perspective span drawer (d_scan.c) on our walker's spans,
+// with its rules (docs/mappers.md); the twin and the loop's checks.
 #include "kernel/mappers/quake.h"
 
 #include "kernel/core/asm_offsets.h"
@@ -35,8 +27,8 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
     QuakeArgs a;
     a.texels = c.tex.texels;
     a.pitch = c.tex.width;
-    a.sadjust = int32_t(shift_u * 65536.0);
-    a.tadjust = int32_t(shift_v * 65536.0);
+    a.sadjust_16_16 = int32_t(shift_u * 65536.0);
+    a.tadjust_16_16 = int32_t(shift_v * 65536.0);
     a.bbextents = (c.tex.width << 16) - 1;
     a.bbextentt = (c.tex.height << 16) - 1;
     a.shift = SHIFT;
@@ -96,8 +88,8 @@ void quake_span_loop(const void* raw) {
     double tdivz = (a.t_origin + dv * a.t_stepv) + du * a.t_stepu;
     double zi = (a.z_origin + dv * a.z_stepv) + du * a.z_stepu;
     double z = 65536.0 / zi;
-    int32_t s = clamp(add_wrapping(chop(sdivz * z), a.sadjust), 0, a.bbextents);
-    int32_t t = clamp(add_wrapping(chop(tdivz * z), a.tadjust), 0, a.bbextentt);
+    int32_t s = clamp(add_wrapping(chop(sdivz * z), a.sadjust_16_16), 0, a.bbextents);
+    int32_t t = clamp(add_wrapping(chop(tdivz * z), a.tadjust_16_16), 0, a.bbextentt);
     int32_t sstep = 0, tstep = 0;
     do {
         int32_t spancount = count < n ? count : n;
@@ -108,8 +100,8 @@ void quake_span_loop(const void* raw) {
             tdivz += a.t_stepu_n;
             zi += a.z_stepu_n;
             z = 65536.0 / zi;
-            snext = clamp(add_wrapping(chop(sdivz * z), a.sadjust), n, a.bbextents);
-            tnext = clamp(add_wrapping(chop(tdivz * z), a.tadjust), n, a.bbextentt);
+            snext = clamp(add_wrapping(chop(sdivz * z), a.sadjust_16_16), n, a.bbextents);
+            tnext = clamp(add_wrapping(chop(tdivz * z), a.tadjust_16_16), n, a.bbextentt);
             sstep = (snext - s) >> a.shift;
             tstep = (tnext - t) >> a.shift;
         } else {
@@ -119,8 +111,8 @@ void quake_span_loop(const void* raw) {
             tdivz += a.t_stepu * spancountminus1;
             zi += a.z_stepu * spancountminus1;
             z = 65536.0 / zi;
-            snext = clamp(add_wrapping(chop(sdivz * z), a.sadjust), n, a.bbextents);
-            tnext = clamp(add_wrapping(chop(tdivz * z), a.tadjust), n, a.bbextentt);
+            snext = clamp(add_wrapping(chop(sdivz * z), a.sadjust_16_16), n, a.bbextents);
+            tnext = clamp(add_wrapping(chop(tdivz * z), a.tadjust_16_16), n, a.bbextentt);
             if (spancount > 1) {
                 sstep = (snext - s) / (spancount - 1);
                 tstep = (tnext - t) / (spancount - 1);
@@ -144,8 +136,8 @@ LoopCheck check_quake(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cas
         a.pitch = w;
         a.bbextents = (w << 16) - 1;
         a.bbextentt = (h << 16) - 1;
-        a.sadjust = r.below(2) ? 0 : r.range(-4, 4) * (w << 16);
-        a.tadjust = r.below(2) ? 0 : r.range(-4, 4) * (h << 16);
+        a.sadjust_16_16 = r.below(2) ? 0 : r.range(-4, 4) * (w << 16);
+        a.tadjust_16_16 = r.below(2) ? 0 : r.range(-4, 4) * (h << 16);
         a.shift = r.below(2) ? 4 : 3;
         a.reserved = 0;
         a.count = r.below(8) == 0 ? r.range(1, 20) : r.range(1, 320);
@@ -178,8 +170,8 @@ void quake_offsets() {
     ASM_OFFSET(QUAKE_Y, QuakeArgs, y);
     ASM_OFFSET(QUAKE_TEXELS, QuakeArgs, texels);
     ASM_OFFSET(QUAKE_PITCH, QuakeArgs, pitch);
-    ASM_OFFSET(QUAKE_SADJUST, QuakeArgs, sadjust);
-    ASM_OFFSET(QUAKE_TADJUST, QuakeArgs, tadjust);
+    ASM_OFFSET(QUAKE_SADJUST, QuakeArgs, sadjust_16_16);
+    ASM_OFFSET(QUAKE_TADJUST, QuakeArgs, tadjust_16_16);
     ASM_OFFSET(QUAKE_BBEXTENTS, QuakeArgs, bbextents);
     ASM_OFFSET(QUAKE_BBEXTENTT, QuakeArgs, bbextentt);
     ASM_OFFSET(QUAKE_SHIFT, QuakeArgs, shift);

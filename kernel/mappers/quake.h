@@ -16,7 +16,7 @@ struct QuakeArgs {
     int32_t x, y;             // the span's first pixel on screen (Quake's du, dv)
     const uint8_t* texels;    // the texture (Quake's surface cache), pitch bytes a row
     int32_t pitch;
-    int32_t sadjust, tadjust;     // 16.16, added after s/z * z
+    int32_t sadjust_16_16, tadjust_16_16;  // added after s/z * z
     int32_t bbextents, bbextentt; // size * 65536 - 1
     int32_t shift;            // log2 of the segment length: 4 or 3
     int32_t reserved;

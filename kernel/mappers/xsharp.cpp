@@ -1,11 +1,5 @@
-// X-Sharp's texture mappers (Abrash, Graphics Programming Black Book ch. 56-58), reproduced from
-// the published algorithms with their flaws (docs/mappers.md): whole-pixel vertices, integer
-// Bresenham destination edges, 16.16 source edges divided by the edge length with a truncating
-// FixedDiv, spans and columns divided by their pixel count, a half-step prestep, rounding to the
-// nearest texel, per-span clipping with a rounding FixedMul.
-//   xsharp-dda:     listing 57.1 (C): rows, one pixel at a time through the target.
-//   xsharp-row-out: listing 57.2 (asm, inner loop 58.1): rows into Mode X, an OUT per pixel.
-//   xsharp-column:  listing 58.4 as X-Sharp 22 shipped it: columns, packed fractions.
+// xsharp-dda, xsharp-row-out and xsharp-column: X-Sharp's texture mappers (Black Book listings 57.1,
+// 57.2/58.1, 58.4) with their flaws (docs/mappers.md); the twins and the loops' checks.
 #include "kernel/mappers/xsharp.h"
 
 #include "kernel/core/asm_offsets.h"
@@ -74,10 +68,10 @@ bool set_up_edge(Edge& e, int start, const Polygon& p) {
         if (e.remaining != 0) {
             int32_t length = e.remaining << 16;
             e.current_end = next;
-            e.source_x = p.v[start].u;
-            e.source_y = p.v[start].v;
-            e.step_x = fixed_div(p.v[next].u - e.source_x, length);
-            e.step_y = fixed_div(p.v[next].v - e.source_y, length);
+            e.source_x = p.v[start].u_16_16;
+            e.source_y = p.v[start].v_16_16;
+            e.step_x = fixed_div(p.v[next].u_16_16 - e.source_x, length);
+            e.step_y = fixed_div(p.v[next].v_16_16 - e.source_y, length);
             int32_t width = across(p.v[next], p.columns) - across(p.v[start], p.columns);
             if (!p.columns) {
                 // rows: DestX = ceil of the true edge x, both directions

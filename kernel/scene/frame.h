@@ -1,9 +1,5 @@
-// A frame of a 3D scene: the camera and the objects at the frame's time, back faces culled, faces
-// clipped against the near and far planes and a guard band in homogeneous clip space, projected,
-// snapped, and ordered far to near (painter's algorithm: no depth buffer, the mappers stay span
-// loops). Then drawn, each polygon with its object's texture, through the same draw_polygon as
-// screen-space scenes. Portable: kernel and host build the same frame to the last bit
-// (docs/scene-format.md, "From 3D to the screen").
+// A frame of a 3D scene: objects and camera at the frame's time, culled, clipped in homogeneous
+// space, projected and ordered far to near, then drawn (docs/scene-format.md, "From 3D to the screen").
 #pragma once
 
 #include <stdint.h>

@@ -34,7 +34,6 @@ public:
     LineChannel& operator=(const LineChannel&) = delete;
     ~LineChannel();
 
-    bool is_open() const { return fd_ >= 0; }
 
     // The next line, or nullopt when the deadline passed. Throws HarnessError on end of stream
     // (with whatever partial line was pending) or on a read error.

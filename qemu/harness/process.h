@@ -56,7 +56,6 @@ public:
     bool running() const { return pid_ > 0 && !exit_; }
 
     std::string log_tail(size_t lines = 10) const;  // QEMU's stderr/stdout
-    const std::string& log_path() const { return log_path_; }
 
 private:
     pid_t pid_ = -1;

@@ -1,10 +1,5 @@
-// modexlab-cycles: real host cycles. Built as a 32-bit static program (i686, the NASM loops linked
-// in), it draws frames of real scenes with each mapper into RAM surfaces, as the kernel does, and
-// times each frame's drawing with rdtsc: the least of REPEATS runs (interrupts, cache misses and
-// the other core only ever add). Prints one line a scene and mapper:
-//   SCENE MAPPER PIXELS CYCLES
-// CYCLES summed over the frames. modexlab-bench divides them into ratios against a baseline mapper
-// timed in the same run. Loops that need a VGA page (xsharp-row-out's NASM loop) run their C++ twin.
+// modexlab-cycles: real host cycles of each mapper drawing frames of real scenes, as a 32-bit static
+// program with the NASM loops, timed by rdtsc (docs/bench.md, "Real cycles on the host").
 #include <x86intrin.h>
 
 #include <cstdio>
