@@ -48,6 +48,14 @@ inline uint8_t* span_start(Target& t, Axis axis, const Span& s, int32_t* stride)
     return t.base + plane * t.plane_bytes + s.y * t.row_bytes + (s.x >> 2);
 }
 
+// The address of pixel (x, y); a planar target gets the plane selected (the VGA: an OUT).
+inline uint8_t* pixel_at(Target& t, int32_t x, int32_t y) {
+    if (!t.planar) return t.base + y * t.pitch + x;
+    int plane = x & 3;
+    if (t.select_plane) t.select_plane(t.ctx, plane);
+    return t.base + plane * t.plane_bytes + y * t.row_bytes + (x >> 2);
+}
+
 // Converts a linear 320x240 picture to the four-plane layout (the RAM side of a blit).
 void planar_from_linear(const uint8_t* linear, uint8_t* planes);
 // And back: the four planes of a page to a linear picture.

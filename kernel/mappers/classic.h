@@ -15,6 +15,36 @@ namespace raster::classic {
 // raised a divide error (a quotient beyond 16.16); b must not be 0.
 int32_t fixed_div(int32_t a, int32_t b);
 int32_t fixed_mul(int32_t a, int32_t b);
+// 16.16 to the nearest integer (ties up), as X-Sharp's C rounded texel coordinates.
+inline int32_t round_fixed(int32_t v) { return int32_t(uint32_t(v) + 0x8000) >> 16; }
+
+// X-Sharp's asm loops (57.2, 58.4) step 16-bit fractions that count up: a 16.16 step split into
+// its whole part toward zero, the fraction (negated for negative steps), and the extra advance a
+// fraction carry adds (+1 or -1).
+struct SplitStep {
+    int32_t whole;
+    uint32_t fraction;
+    int32_t carry_advance;
+};
+inline SplitStep split(int32_t step) {
+    SplitStep s;
+    s.whole = step >> 16;
+    uint32_t frac = uint32_t(step) & 0xFFFF;
+    if (step < 0) {
+        s.carry_advance = -1;
+        if (frac != 0) s.whole += 1;  // toward zero
+        s.fraction = (0x10000 - frac) & 0xFFFF;
+    } else {
+        s.carry_advance = 1;
+        s.fraction = frac;
+    }
+    return s;
+}
+// A coordinate's fraction in the counting-up form: NOTed when its step is negative.
+inline uint32_t counting_fraction(int32_t coordinate, int32_t step) {
+    uint32_t f = uint32_t(coordinate) & 0xFFFF;
+    return step < 0 ? (~f & 0xFFFF) : f;
+}
 
 // A vertex as the classics take it: screen coordinates in whole pixels (their vertices had no
 // fractional bits), texture coordinates in 16.16.

@@ -11,8 +11,12 @@ namespace raster::xsharp {
 
 namespace {
 
+using classic::counting_fraction;
 using classic::fixed_div;
 using classic::fixed_mul;
+using classic::round_fixed;
+using classic::split;
+using classic::SplitStep;
 using classic::Vertex16;
 
 // X-Sharp's texel coordinates put texel centres at integers.
@@ -121,43 +125,6 @@ bool step_edge(Edge& e, const Polygon& p) {
     return true;
 }
 
-// Split of a 16.16 step into the loops' form: the whole part toward zero, the 16-bit fraction
-// counting up (negated for negative steps), and the extra advance a fraction carry adds.
-struct SplitStep {
-    int32_t whole;
-    uint32_t fraction;
-    int32_t carry_advance;  // +1 or -1
-};
-
-SplitStep split(int32_t step) {
-    SplitStep s;
-    s.whole = step >> 16;
-    uint32_t frac = uint32_t(step) & 0xFFFF;
-    if (step < 0) {
-        s.carry_advance = -1;
-        if (frac != 0) s.whole += 1;  // toward zero
-        s.fraction = (0x10000 - frac) & 0xFFFF;
-    } else {
-        s.carry_advance = 1;
-        s.fraction = frac;
-    }
-    return s;
-}
-
-// A coordinate's fraction in the counting-up form: NOTed when its step is negative.
-uint32_t counting_fraction(int32_t coordinate, int32_t step) {
-    uint32_t f = uint32_t(coordinate) & 0xFFFF;
-    return step < 0 ? (~f & 0xFFFF) : f;
-}
-
-// The pixel address of (x, y) in the target; planar targets get the plane selected (VGA: an OUT).
-uint8_t* pixel_address(Target& t, int32_t x, int32_t y) {
-    if (!t.planar) return t.base + y * t.pitch + x;
-    int plane = x & 3;
-    if (t.select_plane) t.select_plane(t.ctx, plane);
-    return t.base + plane * t.plane_bytes + y * t.row_bytes + (x >> 2);
-}
-
 // The span between two row edges, common to 57.1 and 57.2: steps from the unclipped width, the
 // half-step, then the clip. Returns false when nothing is left to draw.
 struct SpanSetup {
@@ -185,8 +152,6 @@ bool span_setup(const Edge& left, const Edge& right, const ClipRect& clip, SpanS
     return true;
 }
 
-int32_t round_fixed(int32_t v) { return int32_t(uint32_t(v) + 0x8000) >> 16; }
-
 using RowSpanFn = void (*)(const DrawContext& c, const SpanSetup& s, int32_t y);
 
 // 57.1: ScanOutLine in C; WritePixelX per pixel.
@@ -195,7 +160,7 @@ void dda_span(const DrawContext& c, const SpanSetup& s, int32_t y) {
     const int32_t pitch = bordered_pitch(c.tex);
     int32_t sx = s.source_x, sy = s.source_y;
     for (int32_t x = s.x; x < s.x + s.count; ++x) {
-        *pixel_address(c.target, x, y) = origin[round_fixed(sy) * pitch + round_fixed(sx)];
+        *pixel_at(c.target, x, y) = origin[round_fixed(sy) * pitch + round_fixed(sx)];
         sx = int32_t(uint32_t(sx) + uint32_t(s.step_x));
         sy = int32_t(uint32_t(sy) + uint32_t(s.step_y));
     }

@@ -51,4 +51,14 @@ bool palette_from_name(lib::StrView name, PaletteId* out) {
     return i >= 0;
 }
 
+uint8_t nearest_entry(const Palette& palette, Rgb6 c) {
+    int32_t best = 0, best_distance = 1 << 30;
+    for (int32_t i = 0; i < 256; ++i) {
+        int32_t dr = int32_t(palette.entry[i].r) - c.r, dg = int32_t(palette.entry[i].g) - c.g, db = int32_t(palette.entry[i].b) - c.b;
+        int32_t d = dr * dr + dg * dg + db * db;
+        if (d < best_distance) best = i, best_distance = d;
+    }
+    return uint8_t(best);
+}
+
 }  // namespace raster

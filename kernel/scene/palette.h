@@ -26,4 +26,7 @@ const Palette& palette(PaletteId id);
 const char* palette_name(PaletteId id);
 bool palette_from_name(lib::StrView name, PaletteId* out);
 
+// The entry nearest to c (squared distance in the DAC's 6-bit units; ties to the lower index).
+uint8_t nearest_entry(const Palette& palette, Rgb6 c);
+
 }  // namespace raster

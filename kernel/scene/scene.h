@@ -34,4 +34,8 @@ struct ParseError {
 // Parses `length` bytes of scene text. On failure returns false with the first error.
 bool parse_scene(const char* text, size_t length, Scene* out, ParseError* error);
 
+// The version a scene text declares on its first line (1: screen space, 2: 3D); 0 with an error
+// when the text is not a scene.
+int scene_version(const char* text, size_t length, ParseError* error);
+
 }  // namespace raster

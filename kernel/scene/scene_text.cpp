@@ -92,3 +92,13 @@ int read_header(Lines& lines, char* buf, ParseError* error) {
 }
 
 }  // namespace raster::scene_text
+
+namespace raster {
+
+int scene_version(const char* text, size_t length, ParseError* error) {
+    scene_text::Lines lines(text, length);
+    char buf[scene_text::MAX_LINE + 1];
+    return scene_text::read_header(lines, buf, error);
+}
+
+}  // namespace raster

@@ -345,24 +345,7 @@ bool top_line(Parser& p, const StrView* w, size_t n) {
     return p.fail(Fmt().s("unknown keyword '").s(w[0]).s("'"));
 }
 
-// The nearest palette entry (squared distance in the DAC's 6-bit units; ties to the lower index).
-uint8_t nearest(const Palette& palette, Rgb6 c) {
-    int32_t best = 0, best_distance = 1 << 30;
-    for (int32_t i = 0; i < 256; ++i) {
-        int32_t dr = int32_t(palette.entry[i].r) - c.r, dg = int32_t(palette.entry[i].g) - c.g, db = int32_t(palette.entry[i].b) - c.b;
-        int32_t d = dr * dr + dg * dg + db * db;
-        if (d < best_distance) best = i, best_distance = d;
-    }
-    return uint8_t(best);
-}
-
 }  // namespace
-
-int scene_version(const char* text, size_t length, ParseError* error) {
-    scene_text::Lines lines(text, length);
-    char buf[scene_text::MAX_LINE + 1];
-    return scene_text::read_header(lines, buf, error);
-}
 
 bool parse_world(const char* text, size_t length, const FileResolver& files, World* world, ParseError* error) {
     world->texture_count = world->mesh_count = world->object_count = 0;
@@ -405,7 +388,7 @@ bool parse_world(const char* text, size_t length, const FileResolver& files, Wor
     world->palette = world->palette_texture >= 0 ? p.sources[world->palette_texture] : palette(PaletteId::Default);
     for (int32_t i = 0; i < world->texture_count; ++i) {
         uint8_t map[256];
-        for (int32_t k = 0; k < 256; ++k) map[k] = nearest(world->palette, p.sources[i].entry[k]);
+        for (int32_t k = 0; k < 256; ++k) map[k] = nearest_entry(world->palette, p.sources[i].entry[k]);
         const WorldTexture& t = world->textures[i];
         uint8_t* texel = world->texels + t.offset;
         for (uint32_t k = 0; k < uint32_t(t.width) * uint32_t(t.height); ++k) texel[k] = map[texel[k]];

@@ -139,10 +139,6 @@ struct FileResolver {
     bool (*find)(const void* context, lib::StrView name, const uint8_t** data, size_t* size) = nullptr;
 };
 
-// The version a scene text declares on its first line (1: screen space, 2: 3D); 0 with an error
-// when the text is not a scene.
-int scene_version(const char* text, size_t length, ParseError* error);
-
 // Parses a version 2 scene into `world` (which it overwrites; on failure it holds nothing usable),
 // reading the texture files it names through `files`, remapping every texture to the scene's
 // palette. False with the first error (its line; 0 when it is about the whole file).
