@@ -159,7 +159,7 @@ $(KBUILD)/gen/%.inc: kernel/mappers/%.cpp | deps
 	@mkdir -p $(@D)
 	$(call say,GEN,$@)
 	$(Q)$(KCXX) $(KCXXFLAGS_NODEP) -DMODEXLAB_OFFSETS -MMD -MP -MF $@.d -MT $@ -S -o - $< \
-		| sed -n 's/.*@@@ \([A-Z0-9_]*\) \([0-9]*\).*/%define \1 \2/p' > $@
+		| sed -n 's/.*@@@ \([A-Za-z0-9_]*\) \([0-9]*\).*/%define \1 \2/p' > $@
 	@test -s $@ || { echo "$@: no offsets generated (kernel/mappers/$*.cpp lists them under MODEXLAB_OFFSETS)"; rm -f $@; exit 1; }
 
 $(LOOP_ASM:asm/%.asm=$(KBUILD)/asm/%.asm.o): $(KBUILD)/asm/%.asm.o: $(KBUILD)/gen/%.inc

@@ -16,10 +16,10 @@ section .text
 
 ; plane value (a0 + gy*y) + gx*x -> st0, for the plane at [ebx + %1]; x, y from the args block
 %macro PLANE 1
-    fld qword [ebx + EXACT_Y]
+    fld qword [ebx + EXACT_y]
     fmul qword [ebx + %1 + 16]      ; gy * y
     fadd qword [ebx + %1]           ; a0 + gy*y
-    fld qword [ebx + EXACT_X]
+    fld qword [ebx + EXACT_x]
     fmul qword [ebx + %1 + 8]       ; gx * x
     faddp st1, st0                  ; (a0 + gy*y) + gx*x
 %endmacro
@@ -58,7 +58,7 @@ section .text
 
 ; wrap or clamp eax into [0, %1) where %1 is a register or memory size; clobbers edx
 %macro WRAP 2
-    cmp dword [ebx + EXACT_CLAMP], 0
+    cmp dword [ebx + EXACT_clamp], 0
     jne %2_clamp
     cdq
     idiv dword %1                   ; edx = remainder, with the dividend's sign
@@ -89,35 +89,35 @@ exact_loop_asm:
     rep movsd
     lea ebx, [esp + 16]
     ; ebx: args copy; edi: destination; ebp: pixels left
-    mov edi, [ebx + EXACT_DST]
-    mov ebp, [ebx + EXACT_COUNT]
+    mov edi, [ebx + EXACT_dst]
+    mov ebp, [ebx + EXACT_count]
     test ebp, ebp
     jle .done
 .pixel:
-    PLANE EXACT_Q                   ; st0 = q
-    PLANE EXACT_PU                  ; st0 = pu, st1 = q
+    PLANE EXACT_q                   ; st0 = q
+    PLANE EXACT_pu                  ; st0 = pu, st1 = q
     fdiv st0, st1                   ; u = pu / q
     FLOOR_I32 .u
     mov esi, eax                    ; esi = tu
-    PLANE EXACT_PV                  ; st0 = pv, st1 = q
+    PLANE EXACT_pv                  ; st0 = pv, st1 = q
     fdivrp st1, st0                 ; v = pv / q (pops q)
     FLOOR_I32 .v
-    WRAP [ebx + EXACT_HEIGHT], .wv  ; eax = row
-    imul eax, [ebx + EXACT_WIDTH]
+    WRAP [ebx + EXACT_height], .wv  ; eax = row
+    imul eax, [ebx + EXACT_width]
     mov ecx, eax                    ; ecx = row * width
     mov eax, esi
-    WRAP [ebx + EXACT_WIDTH], .wu   ; eax = column
+    WRAP [ebx + EXACT_width], .wu   ; eax = column
     add eax, ecx
-    mov edx, [ebx + EXACT_TEXELS]
+    mov edx, [ebx + EXACT_texels]
     mov al, [edx + eax]
     mov [edi], al
-    add edi, [ebx + EXACT_STRIDE]
-    fld qword [ebx + EXACT_X]       ; x += step_x; y += step_y
-    fadd qword [ebx + EXACT_STEP_X]
-    fstp qword [ebx + EXACT_X]
-    fld qword [ebx + EXACT_Y]
-    fadd qword [ebx + EXACT_STEP_Y]
-    fstp qword [ebx + EXACT_Y]
+    add edi, [ebx + EXACT_stride]
+    fld qword [ebx + EXACT_x]       ; x += step_x; y += step_y
+    fadd qword [ebx + EXACT_step_x]
+    fstp qword [ebx + EXACT_x]
+    fld qword [ebx + EXACT_y]
+    fadd qword [ebx + EXACT_step_y]
+    fstp qword [ebx + EXACT_y]
     dec ebp
     jnz .pixel
 .done:

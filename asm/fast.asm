@@ -46,10 +46,10 @@ global fast_column_loop_asm
 fast_column_loop_asm:
     LOOP_ENTER 4
     mov eax, LOOP_ARG(4)
-    mov ecx, [eax + FCOL_COUNT]
+    mov ecx, [eax + FCOL_count]
     test ecx, ecx
     jle .done
-    mov edi, [eax + FCOL_DST]
+    mov edi, [eax + FCOL_dst]
     mov edx, ecx
     neg edx
     and edx, 7                          ; the first block starts at pixel j = (-count) mod 8
@@ -59,18 +59,18 @@ fast_column_loop_asm:
     mov [esp], edx
     add ecx, 7
     shr ecx, 3                          ; blocks, the first one partial
-    mov ebx, [eax + FCOL_TEXTURE]
-    mov bl, [eax + FCOL_U + 2]
-    mov bh, [eax + FCOL_V + 2]
-    mov edx, [eax + FCOL_V]
+    mov ebx, [eax + FCOL_texture]
+    mov bl, [eax + FCOL_u_16_16 + 2]
+    mov bh, [eax + FCOL_v_16_16 + 2]
+    mov edx, [eax + FCOL_v_16_16]
     shl edx, 16
-    mov dl, [eax + FCOL_DU + 2]
-    mov dh, [eax + FCOL_DV + 2]
-    mov esi, [eax + FCOL_DU]
+    mov dl, [eax + FCOL_du_16_16 + 2]
+    mov dh, [eax + FCOL_dv_16_16 + 2]
+    mov esi, [eax + FCOL_du_16_16]
     shl esi, 16
-    mov ebp, [eax + FCOL_DV]
+    mov ebp, [eax + FCOL_dv_16_16]
     shl ebp, 16
-    mov eax, [eax + FCOL_U]
+    mov eax, [eax + FCOL_u_16_16]
     shl eax, 16
     jmp [esp]
     BLOCKS MODEX_ROW_BYTES
@@ -92,69 +92,69 @@ L_FRAME   equ 32
 
 ; steps bound [%1] one line: q += dq, r += dr, and one more on q when r reaches d. Clobbers ebx.
 %macro STEP_BOUND 1
-    mov ebx, [%1 + BOUND_DQ]
-    add [%1 + BOUND_Q], ebx
-    mov ebx, [%1 + BOUND_R]
-    add ebx, [%1 + BOUND_DR]
-    cmp ebx, [%1 + BOUND_D]
+    mov ebx, [%1 + BOUND_dq]
+    add [%1 + BOUND_q], ebx
+    mov ebx, [%1 + BOUND_r]
+    add ebx, [%1 + BOUND_dr]
+    cmp ebx, [%1 + BOUND_d]
     jb %%stepped
-    sub ebx, [%1 + BOUND_D]
-    inc dword [%1 + BOUND_Q]
+    sub ebx, [%1 + BOUND_d]
+    inc dword [%1 + BOUND_q]
 %%stepped:
-    mov [%1 + BOUND_R], ebx
+    mov [%1 + BOUND_r], ebx
 %endmacro
 
 global fast_run_loop_asm
 fast_run_loop_asm:
     LOOP_ENTER L_FRAME
     mov ecx, LOOP_ARG(L_FRAME)
-    mov eax, [ecx + RUN_LINES]
+    mov eax, [ecx + RUN_lines]
     test eax, eax
     jle .done
     mov [esp + L_ARGS], ecx
     mov [esp + L_LINES], eax
-    mov eax, [ecx + RUN_ROW]
+    mov eax, [ecx + RUN_row]
     mov [esp + L_ROW], eax
-    mov eax, [ecx + RUN_U]
+    mov eax, [ecx + RUN_u_16_16]
     mov [esp + L_U], eax
-    mov eax, [ecx + RUN_V]
+    mov eax, [ecx + RUN_v_16_16]
     mov [esp + L_V], eax
-    mov eax, [ecx + RUN_TEXTURE]
+    mov eax, [ecx + RUN_texture]
     mov [esp + L_TEXTURE], eax
-    mov al, [ecx + RUN_DU + 2]
-    mov ah, [ecx + RUN_DV + 2]
+    mov al, [ecx + RUN_du_16_16 + 2]
+    mov ah, [ecx + RUN_dv_16_16 + 2]
     mov [esp + L_STEPS], ax
-    mov esi, [ecx + RUN_DU]
+    mov esi, [ecx + RUN_du_16_16]
     shl esi, 16                         ; du fraction
-    mov ebp, [ecx + RUN_DV]
+    mov ebp, [ecx + RUN_dv_16_16]
     shl ebp, 16                         ; dv fraction
 .row:
     mov ecx, [esp + L_ARGS]
-    mov edx, [ecx + RUN_LOWER]
-    mov eax, [edx + BOUND_Q]            ; the first pixel, before the clip
+    mov edx, [ecx + RUN_lower]
+    mov eax, [edx + BOUND_q]            ; the first pixel, before the clip
     STEP_BOUND edx
-    cmp eax, [ecx + RUN_CLIP_LO]
+    cmp eax, [ecx + RUN_clip_lo]
     jge .lo_inside
-    mov eax, [ecx + RUN_CLIP_LO]
+    mov eax, [ecx + RUN_clip_lo]
 .lo_inside:
-    mov edx, [ecx + RUN_UPPER]
-    mov edi, [edx + BOUND_Q]            ; the last pixel
+    mov edx, [ecx + RUN_upper]
+    mov edi, [edx + BOUND_q]            ; the last pixel
     STEP_BOUND edx
-    cmp edi, [ecx + RUN_CLIP_HI]
+    cmp edi, [ecx + RUN_clip_hi]
     jle .hi_inside
-    mov edi, [ecx + RUN_CLIP_HI]
+    mov edi, [ecx + RUN_clip_hi]
 .hi_inside:
     sub edi, eax
     jl .next_row                        ; nothing on this row
     inc edi                             ; the span's pixels
-    mov edx, [ecx + RUN_TALLY]
+    mov edx, [ecx + RUN_tally]
     inc dword [edx]
     add [edx + 4], edi
     mov ebx, eax
-    imul ebx, [ecx + RUN_DU]
+    imul ebx, [ecx + RUN_du_16_16]
     add ebx, [esp + L_U]                ; u at the first pixel
     mov edx, eax
-    imul edx, [ecx + RUN_DV]
+    imul edx, [ecx + RUN_dv_16_16]
     add edx, [esp + L_V]                ; v at the first pixel
     add eax, [esp + L_ROW]              ; its address
     mov ecx, edi
@@ -177,11 +177,11 @@ fast_run_loop_asm:
     BLOCKS 1
 .next_row:
     mov ecx, [esp + L_ARGS]
-    mov eax, [ecx + RUN_U_ROW]
+    mov eax, [ecx + RUN_u_row_16_16]
     add [esp + L_U], eax
-    mov eax, [ecx + RUN_V_ROW]
+    mov eax, [ecx + RUN_v_row_16_16]
     add [esp + L_V], eax
-    mov eax, [ecx + RUN_PITCH]
+    mov eax, [ecx + RUN_pitch]
     add [esp + L_ROW], eax
     dec dword [esp + L_LINES]
     jnz .row

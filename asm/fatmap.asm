@@ -16,19 +16,19 @@ global fatmap_loop_asm
 fatmap_loop_asm:
     LOOP_ENTER 0
     mov eax, LOOP_ARG(0)
-    mov ebp, [eax + FATMAP_COUNT]
+    mov ebp, [eax + FATMAP_count]
     test ebp, ebp
     jle .done
-    mov edi, [eax + FATMAP_DST]
-    mov ebx, [eax + FATMAP_TEXTURE]
-    mov ecx, [eax + FATMAP_U]
+    mov edi, [eax + FATMAP_dst]
+    mov ebx, [eax + FATMAP_texture]
+    mov ecx, [eax + FATMAP_u_16_16]
     shr ecx, 8                          ; u as 24:8
-    mov esi, [eax + FATMAP_DU]
+    mov esi, [eax + FATMAP_du_16_16]
     shr esi, 8                          ; (logical, as his shr: only the low 16 bits matter)
-    mov edx, [eax + FATMAP_V]           ; dh = byte 1 of v: its fraction's top 8 bits
-    mov bh, [eax + FATMAP_V + 2]        ; v's whole part, mod 256
-    mov dl, [eax + FATMAP_DV + 1]       ; dv's fraction byte
-    mov ah, [eax + FATMAP_DV + 2]       ; dv's whole byte
+    mov edx, [eax + FATMAP_v_16_16]           ; dh = byte 1 of v: its fraction's top 8 bits
+    mov bh, [eax + FATMAP_v_16_16 + 2]        ; v's whole part, mod 256
+    mov dl, [eax + FATMAP_dv_16_16 + 1]       ; dv's fraction byte
+    mov ah, [eax + FATMAP_dv_16_16 + 2]       ; dv's whole byte
     mov bl, ch
 .pixel:
     add ecx, esi                        ; update u
@@ -50,24 +50,24 @@ global fatmap16_loop_asm
 fatmap16_loop_asm:
     LOOP_ENTER 0
     mov eax, LOOP_ARG(0)
-    mov ecx, [eax + FATMAP_COUNT]
+    mov ecx, [eax + FATMAP_count]
     test ecx, ecx
     jle .done
-    mov edi, [eax + FATMAP_DST]
+    mov edi, [eax + FATMAP_dst]
     add edi, ecx                        ; the end: stores go to [edi + ecx], ecx negative
     neg ecx
-    mov ebx, [eax + FATMAP_TEXTURE]
-    mov bl, [eax + FATMAP_U + 2]        ; u whole
-    mov bh, [eax + FATMAP_V + 2]        ; v whole
-    mov edx, [eax + FATMAP_V]
+    mov ebx, [eax + FATMAP_texture]
+    mov bl, [eax + FATMAP_u_16_16 + 2]        ; u whole
+    mov bh, [eax + FATMAP_v_16_16 + 2]        ; v whole
+    mov edx, [eax + FATMAP_v_16_16]
     shl edx, 16                         ; v fraction in the high half
-    mov dl, [eax + FATMAP_DU + 2]       ; du whole
-    mov dh, [eax + FATMAP_DV + 2]       ; dv whole
-    mov esi, [eax + FATMAP_DU]
+    mov dl, [eax + FATMAP_du_16_16 + 2]       ; du whole
+    mov dh, [eax + FATMAP_dv_16_16 + 2]       ; dv whole
+    mov esi, [eax + FATMAP_du_16_16]
     shl esi, 16                         ; du fraction
-    mov ebp, [eax + FATMAP_DV]
+    mov ebp, [eax + FATMAP_dv_16_16]
     shl ebp, 16                         ; dv fraction
-    mov eax, [eax + FATMAP_U]
+    mov eax, [eax + FATMAP_u_16_16]
     shl eax, 16                         ; u fraction (al takes the texel)
 .pixel:
     mov al, [ebx]
@@ -87,12 +87,12 @@ global fatmap_lut_loop_asm
 fatmap_lut_loop_asm:
     LOOP_ENTER 0
     mov eax, LOOP_ARG(0)
-    mov ebp, [eax + LUT_COUNT]
+    mov ebp, [eax + LUT_count]
     test ebp, ebp
     jle .done
-    mov edi, [eax + LUT_DST]
-    mov esi, [eax + LUT_SOURCE]
-    mov edx, [eax + LUT_TABLE]
+    mov edi, [eax + LUT_dst]
+    mov esi, [eax + LUT_source]
+    mov edx, [eax + LUT_table]
     mov ebx, [edx]                      ; offset of the first pixel
 .pixel:
     mov al, [esi + ebx]

@@ -17,19 +17,19 @@ hecker_loop_asm:
     LOOP_ENTER 0
     mov eax, LOOP_ARG(0)
     sub esp, 16
-    mov ecx, [eax + HECKER_STEP_CARRY]
+    mov ecx, [eax + HECKER_step_carry]
     mov [esp], ecx
-    mov ecx, [eax + HECKER_STEP_NO_CARRY]
+    mov ecx, [eax + HECKER_step_no_carry]
     mov [esp + 4], ecx
-    mov ecx, [eax + HECKER_DV_FRAC]
+    mov ecx, [eax + HECKER_dv_frac]
     mov [esp + 8], ecx
-    mov ecx, [eax + HECKER_COUNT]
+    mov ecx, [eax + HECKER_count]
     mov [esp + 12], ecx
-    mov edi, [eax + HECKER_DST]
-    mov esi, [eax + HECKER_TEXEL]
-    mov edx, [eax + HECKER_V_FRAC]
-    mov ebx, [eax + HECKER_DU_FRAC]
-    mov ecx, [eax + HECKER_U_FRAC]
+    mov edi, [eax + HECKER_dst]
+    mov esi, [eax + HECKER_texel]
+    mov edx, [eax + HECKER_v_frac]
+    mov ebx, [eax + HECKER_du_frac]
+    mov ecx, [eax + HECKER_u_frac]
     cmp dword [esp + 12], 0
     jle .done
 .pixel:

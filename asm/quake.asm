@@ -76,11 +76,11 @@ section .text
     sub [esp + L_COUNT], ecx
     jz %1_last
     mov dword [esp + L_LAST], 0
-    fld qword [eax + QUAKE_S_STEPU_N]
+    fld qword [eax + QUAKE_s_stepu_n]
     faddp st3, st0                      ; sdivz += sdivz16stepu
-    fld qword [eax + QUAKE_T_STEPU_N]
+    fld qword [eax + QUAKE_t_stepu_n]
     faddp st2, st0                      ; tdivz += tdivz16stepu
-    fld qword [eax + QUAKE_Z_STEPU_N]
+    fld qword [eax + QUAKE_z_stepu_n]
     faddp st1, st0                      ; zi += zi16stepu
     jmp %1_divide
 %1_last:
@@ -89,12 +89,12 @@ section .text
     mov [esp + L_TMP], ecx
     fild dword [esp + L_TMP]            ; spancountminus1
     fld st0
-    fmul qword [eax + QUAKE_S_STEPU]
+    fmul qword [eax + QUAKE_s_stepu]
     faddp st4, st0                      ; sdivz += d_sdivzstepu * spancountminus1
     fld st0
-    fmul qword [eax + QUAKE_T_STEPU]
+    fmul qword [eax + QUAKE_t_stepu]
     faddp st3, st0
-    fmul qword [eax + QUAKE_Z_STEPU]
+    fmul qword [eax + QUAKE_z_stepu]
     faddp st1, st0                      ; zi += d_zistepu * spancountminus1
 %1_divide:
     fld qword [c65536]
@@ -108,19 +108,19 @@ section .text
     fmul st0, st4                       ; sdivz * z
     CHOP
     mov ecx, [esp + L_ARGS]
-    add eax, [ecx + QUAKE_SADJUST]
-    CLAMP %1_s, [esp + L_N], [ecx + QUAKE_BBEXTENTS]
+    add eax, [ecx + QUAKE_sadjust_16_16]
+    CLAMP %1_s, [esp + L_N], [ecx + QUAKE_bbextents]
     mov [esp + L_SNEXT], eax
     fmul st0, st2                       ; tdivz * z
     CHOP
     mov ecx, [esp + L_ARGS]
-    add eax, [ecx + QUAKE_TADJUST]
-    CLAMP %1_t, [esp + L_N], [ecx + QUAKE_BBEXTENTT]
+    add eax, [ecx + QUAKE_tadjust_16_16]
+    CLAMP %1_t, [esp + L_N], [ecx + QUAKE_bbextentt]
     mov [esp + L_TNEXT], eax
     cmp dword [esp + L_LAST], 0
     jne %1_last_steps
     mov ecx, [esp + L_ARGS]
-    mov ecx, [ecx + QUAKE_SHIFT]
+    mov ecx, [ecx + QUAKE_shift]
     mov eax, [esp + L_SNEXT]
     sub eax, [esp + L_S]
     sar eax, cl                         ; (snext - s) >> 4
@@ -156,34 +156,34 @@ quake_span_loop_asm:
     mov cx, [esp + L_CW]
     or cx, 0x0C00                       ; rounding control: chop
     mov [esp + L_CWCHOP], cx
-    mov ecx, [eax + QUAKE_SHIFT]
+    mov ecx, [eax + QUAKE_shift]
     mov edx, 1
     shl edx, cl
     mov [esp + L_N], edx
-    mov ecx, [eax + QUAKE_COUNT]
+    mov ecx, [eax + QUAKE_count]
     mov [esp + L_COUNT], ecx
     mov dword [esp + L_SSTEP], 0
     mov dword [esp + L_TSTEP], 0
-    mov edi, [eax + QUAKE_DST]
+    mov edi, [eax + QUAKE_dst]
 
     ; s/z, t/z, 1/z at the first pixel: (origin + dv * stepv) + du * stepu
-    fild dword [eax + QUAKE_Y]
-    fmul qword [eax + QUAKE_S_STEPV]
-    fadd qword [eax + QUAKE_S_ORIGIN]
-    fild dword [eax + QUAKE_X]
-    fmul qword [eax + QUAKE_S_STEPU]
+    fild dword [eax + QUAKE_y]
+    fmul qword [eax + QUAKE_s_stepv]
+    fadd qword [eax + QUAKE_s_origin]
+    fild dword [eax + QUAKE_x]
+    fmul qword [eax + QUAKE_s_stepu]
     faddp st1, st0
-    fild dword [eax + QUAKE_Y]
-    fmul qword [eax + QUAKE_T_STEPV]
-    fadd qword [eax + QUAKE_T_ORIGIN]
-    fild dword [eax + QUAKE_X]
-    fmul qword [eax + QUAKE_T_STEPU]
+    fild dword [eax + QUAKE_y]
+    fmul qword [eax + QUAKE_t_stepv]
+    fadd qword [eax + QUAKE_t_origin]
+    fild dword [eax + QUAKE_x]
+    fmul qword [eax + QUAKE_t_stepu]
     faddp st1, st0
-    fild dword [eax + QUAKE_Y]
-    fmul qword [eax + QUAKE_Z_STEPV]
-    fadd qword [eax + QUAKE_Z_ORIGIN]
-    fild dword [eax + QUAKE_X]
-    fmul qword [eax + QUAKE_Z_STEPU]
+    fild dword [eax + QUAKE_y]
+    fmul qword [eax + QUAKE_z_stepv]
+    fadd qword [eax + QUAKE_z_origin]
+    fild dword [eax + QUAKE_x]
+    fmul qword [eax + QUAKE_z_stepu]
     faddp st1, st0                      ; st0 = zi, st1 = tdivz, st2 = sdivz
     fld qword [c65536]
     fdiv st0, st1                       ; the span's first divide: nothing to overlap it with
@@ -191,14 +191,14 @@ quake_span_loop_asm:
     fmul st0, st4
     CHOP
     mov ecx, [esp + L_ARGS]
-    add eax, [ecx + QUAKE_SADJUST]
-    CLAMP .s0, 0, [ecx + QUAKE_BBEXTENTS]
+    add eax, [ecx + QUAKE_sadjust_16_16]
+    CLAMP .s0, 0, [ecx + QUAKE_bbextents]
     mov [esp + L_S], eax
     fmul st0, st2
     CHOP
     mov ecx, [esp + L_ARGS]
-    add eax, [ecx + QUAKE_TADJUST]
-    CLAMP .t0, 0, [ecx + QUAKE_BBEXTENTT]
+    add eax, [ecx + QUAKE_tadjust_16_16]
+    CLAMP .t0, 0, [ecx + QUAKE_bbextentt]
     mov [esp + L_T], eax
 
     ; the first segment's end: computed now, since its pixels need it
@@ -212,19 +212,19 @@ quake_span_loop_asm:
     mov ecx, [esp + L_ARGS]
     mov eax, [esp + L_T]
     sar eax, 16
-    imul eax, [ecx + QUAKE_PITCH]
+    imul eax, [ecx + QUAKE_pitch]
     mov esi, [esp + L_S]
     sar esi, 16
     add esi, eax
-    add esi, [ecx + QUAKE_TEXELS]       ; esi = texels + (s >> 16) + (t >> 16) * pitch
+    add esi, [ecx + QUAKE_texels]       ; esi = texels + (s >> 16) + (t >> 16) * pitch
     mov eax, [esp + L_TSTEP]
     sar eax, 16
-    imul eax, [ecx + QUAKE_PITCH]
+    imul eax, [ecx + QUAKE_pitch]
     mov edx, [esp + L_SSTEP]
     sar edx, 16
     add eax, edx
     mov [esp + L_TABLE + 4], eax        ; whole s step + whole t step * pitch
-    add eax, [ecx + QUAKE_PITCH]
+    add eax, [ecx + QUAKE_pitch]
     mov [esp + L_TABLE], eax            ; and one row more when t's fraction carries
     mov eax, [esp + L_TSTEP]
     shl eax, 16

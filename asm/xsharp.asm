@@ -30,27 +30,27 @@ xsharp_row_loop_asm:
     mov al, MAP_MASK
     out dx, al                          ; the Sequencer index stays at the Map Mask
     inc dx                              ; SC_DATA
-    mov edi, [ebx + XROW_DST]
-    mov esi, [ebx + XROW_TEXEL]
-    mov ebp, [ebx + XROW_COUNT]
-    mov eax, [ebx + XROW_MASK]
+    mov edi, [ebx + XROW_dst]
+    mov esi, [ebx + XROW_texel]
+    mov ebp, [ebx + XROW_count]
+    mov eax, [ebx + XROW_mask]
     test ebp, ebp
     jle .done
 .pixel:
     out dx, al                          ; this pixel's plane
     mov ah, [esi]
     mov [edi], ah
-    add esi, [ebx + XROW_X_BASE]        ; whole X step
-    mov cx, [ebx + XROW_X_STEP]
-    add [ebx + XROW_X_FRAC], cx         ; X fraction (16 bits)
+    add esi, [ebx + XROW_x_base]        ; whole X step
+    mov cx, [ebx + XROW_x_step]
+    add [ebx + XROW_x_frac], cx         ; X fraction (16 bits)
     jnc .no_x_carry
-    add esi, [ebx + XROW_X_CARRY]
+    add esi, [ebx + XROW_x_carry]
 .no_x_carry:
-    add esi, [ebx + XROW_Y_BASE]        ; whole Y step times the pitch
-    mov cx, [ebx + XROW_Y_STEP]
-    add [ebx + XROW_Y_FRAC], cx
+    add esi, [ebx + XROW_y_base]        ; whole Y step times the pitch
+    mov cx, [ebx + XROW_y_step]
+    add [ebx + XROW_y_frac], cx
     jnc .no_y_carry
-    add esi, [ebx + XROW_Y_CARRY]
+    add esi, [ebx + XROW_y_carry]
 .no_y_carry:
     rol al, 1                           ; next plane; the carry out of 88h -> 11h is the next byte
     adc edi, 0
@@ -81,26 +81,26 @@ global xsharp_column_loop_asm
 xsharp_column_loop_asm:
     LOOP_ENTER 4
     mov ebx, LOOP_ARG(4)
-    mov eax, [ebx + XCOL_COUNT]
+    mov eax, [ebx + XCOL_count]
     test eax, eax
     jle .done
     inc eax
     shr eax, 1                          ; pixel pairs, rounded up
     mov [esp], eax
-    mov edi, [ebx + XCOL_DST]
-    mov esi, [ebx + XCOL_TEXEL]
-    mov edx, [ebx + XCOL_FRACTIONS]
-    mov ebp, [ebx + XCOL_STEPS]
-    mov eax, [ebx + XCOL_BASE]
-    mov ecx, [ebx + XCOL_ROW]
-    test byte [ebx + XCOL_COUNT], 1     ; odd: enter at the second pixel of a pair, a row early
+    mov edi, [ebx + XCOL_dst]
+    mov esi, [ebx + XCOL_texel]
+    mov edx, [ebx + XCOL_fractions]
+    mov ebp, [ebx + XCOL_steps]
+    mov eax, [ebx + XCOL_base]
+    mov ecx, [ebx + XCOL_row]
+    test byte [ebx + XCOL_count], 1     ; odd: enter at the second pixel of a pair, a row early
     jnz .odd
-    cmp dword [ebx + XCOL_BACKWARDS], 0
+    cmp dword [ebx + XCOL_backwards], 0
     jne .backwards
     jmp .forward
 .odd:
     sub edi, XSHARP_SCANWIDTH
-    cmp dword [ebx + XCOL_BACKWARDS], 0
+    cmp dword [ebx + XCOL_backwards], 0
     jne .backwards_odd
     jmp .forward_odd
 

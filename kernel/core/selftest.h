@@ -105,6 +105,19 @@ LoopCheck check_cases(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cas
     return result;
 }
 
+// A span's pixel count: one case in eight short (short_lo..short_hi), the rest 1..longest.
+inline int32_t random_count(Random& r, int32_t short_lo, int32_t short_hi, int32_t longest) {
+    return r.below(8) == 0 ? r.range(short_lo, short_hi) : r.range(1, longest);
+}
+// Points a's destination at a span of a.count pixels `stride` bytes apart in buffer a (check_span)
+// and returns its window.
+template <typename Args>
+CheckWindow place_span(const CheckBuffers& buf, Args& a, int32_t stride) {
+    CheckWindow w;
+    a.dst = check_span(buf, a.count, stride, &w);
+    return w;
+}
+
 // A texture size the loops accept: 1..1024, often a power of two, sometimes an extreme.
 int32_t random_texture_size(Random& r);
 // A span of count pixels `stride` bytes apart (count >= 0, stride > 0) starting past the guard in

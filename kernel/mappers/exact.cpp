@@ -59,7 +59,7 @@ LoopCheck check_exact(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cas
         a.height = h;
         a.clamp = int32_t(r.below(2));
         a.reserved = 0;
-        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.count = random_count(r, 0, 3, 320);
         a.stride = r.below(2) ? 1 : r.range(-330, 330);
         if (a.stride == 0) a.stride = 80;
         // the destination's first pixel, so that all count pixels stay between the guards
@@ -80,20 +80,7 @@ LoopCheck check_exact(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cas
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts asm/exact.asm reads (core/asm_offsets.h).
 void exact_offsets() {
-    ASM_OFFSET(EXACT_DST, ExactArgs, dst);
-    ASM_OFFSET(EXACT_STRIDE, ExactArgs, stride);
-    ASM_OFFSET(EXACT_COUNT, ExactArgs, count);
-    ASM_OFFSET(EXACT_TEXELS, ExactArgs, texels);
-    ASM_OFFSET(EXACT_WIDTH, ExactArgs, width);
-    ASM_OFFSET(EXACT_HEIGHT, ExactArgs, height);
-    ASM_OFFSET(EXACT_CLAMP, ExactArgs, clamp);
-    ASM_OFFSET(EXACT_X, ExactArgs, x);
-    ASM_OFFSET(EXACT_Y, ExactArgs, y);
-    ASM_OFFSET(EXACT_STEP_X, ExactArgs, step_x);
-    ASM_OFFSET(EXACT_STEP_Y, ExactArgs, step_y);
-    ASM_OFFSET(EXACT_Q, ExactArgs, q);
-    ASM_OFFSET(EXACT_PU, ExactArgs, pu);
-    ASM_OFFSET(EXACT_PV, ExactArgs, pv);
+    ASM_FIELDS(EXACT, ExactArgs, dst, stride, count, texels, width, height, clamp, x, y, step_x, step_y, q, pu, pv)
     ASM_SIZE(EXACT_ARGS_SIZE, ExactArgs);
 }
 #endif

@@ -145,12 +145,10 @@ void fast_column_loop(const void* raw) {
 // The loop's random cases (core/selftest.h).
 LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<FastColumnArgs>(m, other, seed, cases, buf, [&](Random& r, FastColumnArgs& a) {
-        a.count = r.below(8) == 0 ? r.range(0, 9) : r.range(1, 240);
+        a.count = random_count(r, 0, 9, 240);
         a.texture = check_aligned_texture(buf);
         random_uv(r, a);
-        CheckWindow w;
-        a.dst = check_span(buf, a.count, MODEX_ROW_BYTES, &w);
-        return w;
+        return place_span(buf, a, MODEX_ROW_BYTES);
     });
 }
 
@@ -240,34 +238,10 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts asm/fast.asm reads (core/asm_offsets.h).
 void fast_offsets() {
-    ASM_OFFSET(FCOL_DST, FastColumnArgs, dst);
-    ASM_OFFSET(FCOL_COUNT, FastColumnArgs, count);
-    ASM_OFFSET(FCOL_TEXTURE, FastColumnArgs, texture);
-    ASM_OFFSET(FCOL_U, FastColumnArgs, u_16_16);
-    ASM_OFFSET(FCOL_V, FastColumnArgs, v_16_16);
-    ASM_OFFSET(FCOL_DU, FastColumnArgs, du_16_16);
-    ASM_OFFSET(FCOL_DV, FastColumnArgs, dv_16_16);
+    ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
+    ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, texture, u_16_16, v_16_16, u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally)
+    ASM_FIELDS(BOUND, EdgeBound, q, dq, r, dr, d)
     ASM_CONSTANT(MODEX_ROW_BYTES, MODEX_ROW_BYTES);
-    ASM_OFFSET(RUN_ROW, FastRunArgs, row);
-    ASM_OFFSET(RUN_PITCH, FastRunArgs, pitch);
-    ASM_OFFSET(RUN_LINES, FastRunArgs, lines);
-    ASM_OFFSET(RUN_CLIP_LO, FastRunArgs, clip_lo);
-    ASM_OFFSET(RUN_CLIP_HI, FastRunArgs, clip_hi);
-    ASM_OFFSET(RUN_LOWER, FastRunArgs, lower);
-    ASM_OFFSET(RUN_UPPER, FastRunArgs, upper);
-    ASM_OFFSET(RUN_TEXTURE, FastRunArgs, texture);
-    ASM_OFFSET(RUN_U, FastRunArgs, u_16_16);
-    ASM_OFFSET(RUN_V, FastRunArgs, v_16_16);
-    ASM_OFFSET(RUN_U_ROW, FastRunArgs, u_row_16_16);
-    ASM_OFFSET(RUN_V_ROW, FastRunArgs, v_row_16_16);
-    ASM_OFFSET(RUN_DU, FastRunArgs, du_16_16);
-    ASM_OFFSET(RUN_DV, FastRunArgs, dv_16_16);
-    ASM_OFFSET(RUN_TALLY, FastRunArgs, tally);
-    ASM_OFFSET(BOUND_Q, EdgeBound, q);
-    ASM_OFFSET(BOUND_DQ, EdgeBound, dq);
-    ASM_OFFSET(BOUND_R, EdgeBound, r);
-    ASM_OFFSET(BOUND_DR, EdgeBound, dr);
-    ASM_OFFSET(BOUND_D, EdgeBound, d);
 }
 #endif
 

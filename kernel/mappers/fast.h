@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "kernel/core/mapper.h"
+#include "kernel/mappers/fatmap.h"
 
 namespace raster {
 
@@ -27,15 +28,10 @@ struct FastRunArgs {
 };
 void fast_run_loop(const void* args);
 
-// fast-columns: the same arithmetic down a Mode X column, 80 bytes between pixels.
+// fast-columns: the same arithmetic down a Mode X column, 80 bytes between pixels; it takes
+// fatmap's block (the 8:16 loops' inputs, a 64 KiB-aligned texture).
 constexpr int32_t MODEX_ROW_BYTES = 80;
-struct FastColumnArgs {
-    uint8_t* dst;
-    int32_t count;
-    const uint8_t* texture;  // aligned to 64 KiB
-    int32_t u_16_16, v_16_16;
-    int32_t du_16_16, dv_16_16;  // per pixel down the column
-};
+using FastColumnArgs = FatmapArgs;
 void fast_column_loop(const void* args);
 
 LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);

@@ -239,19 +239,17 @@ void fatmap_lut_loop(const void* raw) {
 // The loop's random cases (core/selftest.h).
 LoopCheck check_fatmap(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<FatmapArgs>(m, other, seed, cases, buf, [&](Random& r, FatmapArgs& a) {
-        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.count = random_count(r, 0, 3, 320);
         a.texture = check_aligned_texture(buf);
         random_uv(r, a);
-        CheckWindow w;
-        a.dst = check_span(buf, a.count, 1, &w);
-        return w;
+        return place_span(buf, a, 1);
     });
 }
 
 LoopCheck check_fatmap_lut(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     static int32_t table[321];  // count entries and the one the NASM loop reads past the last
     return check_cases<FatmapLutArgs>(m, other, seed, cases, buf, [&](Random& r, FatmapLutArgs& a) {
-        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.count = random_count(r, 0, 3, 320);
         a.source = buf.texels + CHECK_TEXEL_MID + r.range(-1000, 1000);
         int32_t du = r.range(-512, 512), dv = r.range(-512, 512), u = 0, v = 0;
         for (int32_t k = 0; k <= a.count; ++k) {  // as fatmap builds it (24:8 steps, pitch 256)
@@ -260,26 +258,15 @@ LoopCheck check_fatmap_lut(const Mapper& m, LoopFn other, uint32_t seed, uint32_
             v += dv;
         }
         a.table = table;
-        CheckWindow w;
-        a.dst = check_span(buf, a.count, 1, &w);
-        return w;
+        return place_span(buf, a, 1);
     });
 }
 
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts asm/fatmap.asm reads (core/asm_offsets.h).
 void fatmap_offsets() {
-    ASM_OFFSET(FATMAP_DST, FatmapArgs, dst);
-    ASM_OFFSET(FATMAP_COUNT, FatmapArgs, count);
-    ASM_OFFSET(FATMAP_TEXTURE, FatmapArgs, texture);
-    ASM_OFFSET(FATMAP_U, FatmapArgs, u_16_16);
-    ASM_OFFSET(FATMAP_V, FatmapArgs, v_16_16);
-    ASM_OFFSET(FATMAP_DU, FatmapArgs, du_16_16);
-    ASM_OFFSET(FATMAP_DV, FatmapArgs, dv_16_16);
-    ASM_OFFSET(LUT_DST, FatmapLutArgs, dst);
-    ASM_OFFSET(LUT_COUNT, FatmapLutArgs, count);
-    ASM_OFFSET(LUT_SOURCE, FatmapLutArgs, source);
-    ASM_OFFSET(LUT_TABLE, FatmapLutArgs, table);
+    ASM_FIELDS(FATMAP, FatmapArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
+    ASM_FIELDS(LUT, FatmapLutArgs, dst, count, source, table)
 }
 #endif
 

@@ -284,7 +284,7 @@ void hecker_loop(const void* raw) {
 LoopCheck check_hecker(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<HeckerArgs>(m, other, seed, cases, buf, [&](Random& r, HeckerArgs& a) {
         int32_t pitch = r.range(3, 600);  // any width: the step table holds the pitch
-        a.count = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 320);
+        a.count = random_count(r, 0, 3, 320);
         a.texel = buf.texels + CHECK_TEXEL_MID + r.range(-1000, 1000);
         a.u_frac = r.next() & 0xFFFF0000u;
         a.v_frac = r.next() & 0xFFFF0000u;
@@ -292,24 +292,14 @@ LoopCheck check_hecker(const Mapper& m, LoopFn other, uint32_t seed, uint32_t ca
         a.dv_frac = r.below(8) == 0 ? 0 : r.next() & 0xFFFF0000u;
         a.step_no_carry = r.range(-3, 3) + r.range(-1, 1) * pitch;
         a.step_carry = a.step_no_carry + (r.below(2) ? pitch : -pitch);
-        CheckWindow w;
-        a.dst = check_span(buf, a.count, 1, &w);
-        return w;
+        return place_span(buf, a, 1);
     });
 }
 
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts asm/hecker.asm reads (core/asm_offsets.h).
 void hecker_offsets() {
-    ASM_OFFSET(HECKER_DST, HeckerArgs, dst);
-    ASM_OFFSET(HECKER_COUNT, HeckerArgs, count);
-    ASM_OFFSET(HECKER_TEXEL, HeckerArgs, texel);
-    ASM_OFFSET(HECKER_U_FRAC, HeckerArgs, u_frac);
-    ASM_OFFSET(HECKER_V_FRAC, HeckerArgs, v_frac);
-    ASM_OFFSET(HECKER_DU_FRAC, HeckerArgs, du_frac);
-    ASM_OFFSET(HECKER_DV_FRAC, HeckerArgs, dv_frac);
-    ASM_OFFSET(HECKER_STEP_CARRY, HeckerArgs, step_carry);
-    ASM_OFFSET(HECKER_STEP_NO_CARRY, HeckerArgs, step_no_carry);
+    ASM_FIELDS(HECKER, HeckerArgs, dst, count, texel, u_frac, v_frac, du_frac, dv_frac, step_carry, step_no_carry)
 }
 #endif
 

@@ -140,7 +140,7 @@ LoopCheck check_quake(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cas
         a.tadjust_16_16 = r.below(2) ? 0 : r.range(-4, 4) * (h << 16);
         a.shift = r.below(2) ? 4 : 3;
         a.reserved = 0;
-        a.count = r.below(8) == 0 ? r.range(1, 20) : r.range(1, 320);
+        a.count = random_count(r, 1, 20, 320);
         a.x = r.range(0, 319);
         a.y = r.range(0, 239);
         // planes from a real triangle most of the time (then s/z * z is u in 16.16), else raw values
@@ -155,38 +155,14 @@ LoopCheck check_quake(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cas
         per_pixel(q, &a.z_origin, &a.z_stepu, &a.z_stepv);
         double n = double(1 << a.shift);
         a.s_stepu_n = a.s_stepu * n, a.t_stepu_n = a.t_stepu * n, a.z_stepu_n = a.z_stepu * n;
-        CheckWindow win;
-        a.dst = check_span(buf, a.count, 1, &win);
-        return win;
+        return place_span(buf, a, 1);
     });
 }
 
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts asm/quake.asm reads (core/asm_offsets.h).
 void quake_offsets() {
-    ASM_OFFSET(QUAKE_DST, QuakeArgs, dst);
-    ASM_OFFSET(QUAKE_COUNT, QuakeArgs, count);
-    ASM_OFFSET(QUAKE_X, QuakeArgs, x);
-    ASM_OFFSET(QUAKE_Y, QuakeArgs, y);
-    ASM_OFFSET(QUAKE_TEXELS, QuakeArgs, texels);
-    ASM_OFFSET(QUAKE_PITCH, QuakeArgs, pitch);
-    ASM_OFFSET(QUAKE_SADJUST, QuakeArgs, sadjust_16_16);
-    ASM_OFFSET(QUAKE_TADJUST, QuakeArgs, tadjust_16_16);
-    ASM_OFFSET(QUAKE_BBEXTENTS, QuakeArgs, bbextents);
-    ASM_OFFSET(QUAKE_BBEXTENTT, QuakeArgs, bbextentt);
-    ASM_OFFSET(QUAKE_SHIFT, QuakeArgs, shift);
-    ASM_OFFSET(QUAKE_S_ORIGIN, QuakeArgs, s_origin);
-    ASM_OFFSET(QUAKE_S_STEPU, QuakeArgs, s_stepu);
-    ASM_OFFSET(QUAKE_S_STEPV, QuakeArgs, s_stepv);
-    ASM_OFFSET(QUAKE_T_ORIGIN, QuakeArgs, t_origin);
-    ASM_OFFSET(QUAKE_T_STEPU, QuakeArgs, t_stepu);
-    ASM_OFFSET(QUAKE_T_STEPV, QuakeArgs, t_stepv);
-    ASM_OFFSET(QUAKE_Z_ORIGIN, QuakeArgs, z_origin);
-    ASM_OFFSET(QUAKE_Z_STEPU, QuakeArgs, z_stepu);
-    ASM_OFFSET(QUAKE_Z_STEPV, QuakeArgs, z_stepv);
-    ASM_OFFSET(QUAKE_S_STEPU_N, QuakeArgs, s_stepu_n);
-    ASM_OFFSET(QUAKE_T_STEPU_N, QuakeArgs, t_stepu_n);
-    ASM_OFFSET(QUAKE_Z_STEPU_N, QuakeArgs, z_stepu_n);
+    ASM_FIELDS(QUAKE, QuakeArgs, dst, count, x, y, texels, pitch, sadjust_16_16, tadjust_16_16, bbextents, bbextentt, shift, s_origin, s_stepu, s_stepv, t_origin, t_stepu, t_stepv, z_origin, z_stepu, z_stepv, s_stepu_n, t_stepu_n, z_stepu_n)
 }
 #endif
 

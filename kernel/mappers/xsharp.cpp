@@ -331,7 +331,7 @@ void xsharp_column_loop(const void* raw) {
 LoopCheck check_xsharp_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<XSharpColumnArgs>(m, other, seed, cases, buf, [&](Random& r, XSharpColumnArgs& a) {
         int32_t pitch = random_texture_size(r) + 2;  // a bordered texture's pitch: 3..1026
-        a.count = r.below(8) == 0 ? r.range(1, 3) : r.range(1, 240);
+        a.count = random_count(r, 1, 3, 240);
         a.texel = buf.texels + CHECK_TEXEL_MID + r.range(-1000, 1000);
         a.fractions = (r.next() & 0xFFFF0000u) | (r.next() & 0x7FFF);
         a.steps = (r.next() & 0xFFFF0000u) | (r.next() & 0x7FFF);
@@ -339,9 +339,7 @@ LoopCheck check_xsharp_column(const Mapper& m, LoopFn other, uint32_t seed, uint
         a.base = r.range(-2, 2) + r.range(-1, 1) * pitch;
         a.row = r.below(2) ? pitch : -pitch;
         a.backwards = int32_t(r.below(2));
-        CheckWindow w;
-        a.dst = check_span(buf, a.count, XSHARP_SCANWIDTH, &w);
-        return w;
+        return place_span(buf, a, XSHARP_SCANWIDTH);
     });
 }
 
@@ -367,27 +365,9 @@ void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts asm/xsharp.asm reads (core/asm_offsets.h).
 void xsharp_offsets() {
-    ASM_OFFSET(XROW_DST, XSharpRowArgs, dst);
-    ASM_OFFSET(XROW_COUNT, XSharpRowArgs, count);
-    ASM_OFFSET(XROW_MASK, XSharpRowArgs, mask);
-    ASM_OFFSET(XROW_TEXEL, XSharpRowArgs, texel);
-    ASM_OFFSET(XROW_X_FRAC, XSharpRowArgs, x_frac);
-    ASM_OFFSET(XROW_Y_FRAC, XSharpRowArgs, y_frac);
-    ASM_OFFSET(XROW_X_STEP, XSharpRowArgs, x_step);
-    ASM_OFFSET(XROW_Y_STEP, XSharpRowArgs, y_step);
-    ASM_OFFSET(XROW_X_BASE, XSharpRowArgs, x_base);
-    ASM_OFFSET(XROW_X_CARRY, XSharpRowArgs, x_carry);
-    ASM_OFFSET(XROW_Y_BASE, XSharpRowArgs, y_base);
-    ASM_OFFSET(XROW_Y_CARRY, XSharpRowArgs, y_carry);
+    ASM_FIELDS(XROW, XSharpRowArgs, dst, count, mask, texel, x_frac, y_frac, x_step, y_step, x_base, x_carry, y_base, y_carry)
+    ASM_FIELDS(XCOL, XSharpColumnArgs, dst, count, texel, fractions, steps, base, row, backwards)
     ASM_SIZE(XROW_ARGS_SIZE, XSharpRowArgs);
-    ASM_OFFSET(XCOL_DST, XSharpColumnArgs, dst);
-    ASM_OFFSET(XCOL_COUNT, XSharpColumnArgs, count);
-    ASM_OFFSET(XCOL_TEXEL, XSharpColumnArgs, texel);
-    ASM_OFFSET(XCOL_FRACTIONS, XSharpColumnArgs, fractions);
-    ASM_OFFSET(XCOL_STEPS, XSharpColumnArgs, steps);
-    ASM_OFFSET(XCOL_BASE, XSharpColumnArgs, base);
-    ASM_OFFSET(XCOL_ROW, XSharpColumnArgs, row);
-    ASM_OFFSET(XCOL_BACKWARDS, XSharpColumnArgs, backwards);
     ASM_CONSTANT(XSHARP_SCANWIDTH, XSHARP_SCANWIDTH);
 }
 #endif
