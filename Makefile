@@ -1,5 +1,6 @@
 # modexlab: the kernel (freestanding i686 C++ and NASM), its ISO, the host harness and the tests.
 #   make all    kernel ELF + ISO            make run    boot in QEMU, play the demo scenes, save screenshots
+#                                           (builds only the kernel and the harness)
 #   make test   every test, one summary      make clean  remove build/
 #   make bench  the speed/accuracy report (build/report)
 #   make deps   install missing tools (run, bench and test do it themselves)
@@ -262,15 +263,16 @@ $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 # `make run SCENE=corridor DISPLAY=1`: a window. DISPLAY=1 on make's command line hides X's own
 # DISPLAY from the recipe; $(shell) still sees the environment make started with.
 X_DISPLAY := $(shell printenv DISPLAY)
+# `make run` builds what it runs: the kernel and the harness (not the ISO, the tools or the tests).
 run: deps
-	@$(MAKE) -s -j$(NPROC) all host
+	@$(MAKE) -s -j$(NPROC) $(KERNEL) $(HARNESS)
 	DISPLAY=$(X_DISPLAY) $(HARNESS) run --kernel $(KERNEL) --out $(BUILD)/run $(if $(SCENE),--scene $(SCENE)) \
 		$(if $(MAPPER),--mapper $(MAPPER)) $(if $(filter 1,$(DISPLAY)),--display)
 
 # `make bench`: every mapper on every demo scene; the report in build/report (docs/bench.md).
 # SCENES=a,b MAPPERS=x,y FRAMES=N narrow it.
 bench report: deps
-	@$(MAKE) -s -j$(NPROC) all host
+	@$(MAKE) -s -j$(NPROC) $(KERNEL) $(BENCH) $(CYCLES)
 	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
 		$(if $(FRAMES),--frames $(FRAMES))
 
