@@ -247,7 +247,7 @@ LoopCheck check_fatmap(const Mapper& m, LoopFn other, uint32_t seed, uint32_t ca
 }
 
 LoopCheck check_fatmap_lut(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    static int32_t table[321];  // count entries and the one the NASM loop reads past the last
+    int32_t table[321];  // count entries and the one the NASM loop reads past the last
     return check_cases<FatmapLutArgs>(m, other, seed, cases, buf, [&](Random& r, FatmapLutArgs& a) {
         a.count = random_count(r, 0, 3, 320);
         a.source = buf.texels + CHECK_TEXEL_MID + r.range(-1000, 1000);

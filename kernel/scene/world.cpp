@@ -355,13 +355,12 @@ bool parse_world(const char* text, size_t length, const FileResolver& files, Wor
     world->camera = Camera{};
     world->budget = Budget{};
     world->frames = 150;
-    static Parser p;  // (its source palettes are 12 KiB: not on the kernel's stack)
-    p = Parser{};
+    Parser p;  // 12 KiB of source palettes: on the stack (256 KiB in the kernel), so no state outlives the call
     p.world = world, p.files = &files, p.error = error;
     *error = ParseError{};
     if (length > MAX_WORLD_BYTES) return scene_text::fail(error, 0, "file too large (at most 4194304 bytes)");
     scene_text::Lines lines(text, length);
-    static char buf[scene_text::MAX_LINE + 1];
+    char buf[scene_text::MAX_LINE + 1];
     int version = scene_text::read_header(lines, buf, error);
     if (version == 0) return false;
     if (version != 2) return scene_text::fail(error, lines.line, "a version 1 (screen-space) scene, not a 3D one");
