@@ -16,7 +16,9 @@ void format_hex32(uint32_t value, char* out);      // "0x" and 8 lower-case digi
 
 class Fmt {
 public:
-    static constexpr size_t CAPACITY = 240;
+    // Room for the longest list an error names (every mapper, some 260 characters) and the word
+    // it could not find.
+    static constexpr size_t CAPACITY = 320;
 
     Fmt& s(const char* text);
     Fmt& s(StrView text);

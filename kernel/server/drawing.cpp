@@ -1,0 +1,224 @@
+// The drawing commands: the screen-space scene (render), the 3D scene one frame at a time (frame),
+// animated (play) and timed phase by phase (bench), and the mapper registry (mappers).
+#include "drivers/serial.h"
+#include "drivers/timer.h"
+#include "drivers/vga.h"
+#include "kernel/lib/stats.h"
+#include "kernel/scenes.h"
+#include "kernel/server/commands.h"
+#include "kernel/server/reply.h"
+#include "kernel/worlds.h"
+
+namespace server {
+
+namespace {
+
+constexpr uint32_t MAX_PLAY_FRAMES = 100000;
+// Static: a frame's ticks for the median, 400 KB at the most, far beyond the 64 KiB kernel stack.
+uint32_t g_play_ticks[MAX_PLAY_FRAMES];
+
+// bench: each frame drawn twice, once plainly (the totals) and once with the probe (setup and
+// inner loops; walking is the rest of the plain drawing time), then flipped.
+constexpr uint32_t MAX_BENCH_FRAMES = 1000;
+enum BenchField : uint32_t { B_TICKS, B_GEOMETRY, B_CLEAR, B_DRAW, B_SETUP, B_WALK, B_INNER, B_BLIT, B_FLIP, B_FIELDS };
+const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry", "ticks_clear", "ticks_draw", "ticks_setup",
+                                                 "ticks_walk", "ticks_inner",    "ticks_blit",  "ticks_flip"};
+// Static: every field of every frame for the medians, 36 KB, more than half the 64 KiB kernel stack.
+uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
+
+uint32_t clamp32(uint64_t v) { return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : uint32_t(v); }
+
+uint64_t render_ticks(const scenes::RenderResult& r) { return r.ticks_clear + r.ticks_draw + r.ticks_blit; }
+uint64_t frame_ticks(const worlds::FrameResult& f) { return f.ticks_geometry + render_ticks(f.render); }
+
+// Of pages 0 and 1, the one not shown: play and bench draw there, then flip.
+int hidden_page() { return vga::shown_page() == 0 ? 1 : 0; }
+
+uint64_t bench_clock() { return timer::rdtsc(); }
+
+void render_fields(lib::JsonLine& r, const DrawArgs& d, const scenes::RenderResult& res) {
+    r.str("mapper", d.mapper->name)
+        .u32("page", uint32_t(d.page))
+        .str("surface", raster::surface_name(d.surface))
+        .str("walker", walker_name(d.axis))
+        .str("loop", res.used_asm ? "asm" : "twin")
+        .u32("polygons", res.stats.polygons)
+        .u32("skipped", res.stats.skipped)
+        .u32("rejected", res.stats.rejected)
+        .u32("spans", res.stats.spans)
+        .u32("pixels", res.stats.pixels);
+}
+
+void frame_fields(lib::JsonLine& r, const worlds::FrameResult& f) {
+    r.u32("faces", f.frame.faces)
+        .u32("culled", f.frame.culled)
+        .u32("outside", f.frame.outside)
+        .u32("clipped", f.frame.clipped)
+        .u32("overflow", f.frame.overflow)
+        .u64("ticks", frame_ticks(f))
+        .u64("ticks_geometry", f.ticks_geometry)
+        .u64("ticks_clear", f.render.ticks_clear)
+        .u64("ticks_draw", f.render.ticks_draw)
+        .u64("ticks_blit", f.render.ticks_blit);
+}
+
+// The reply of play and bench begins alike: what was animated, and how.
+lib::JsonLine animation_reply(const char* cmd, uint32_t frames, const DrawArgs& d) {
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", cmd).str("scene", worlds::name()).u32("frames", frames).str("mapper", d.mapper->name);
+    r.str("surface", raster::surface_name(d.surface)).str("walker", walker_name(d.axis));
+    return r;
+}
+
+}  // namespace
+
+void cmd_render(Context&, const StrView* args, size_t nargs) {
+    DrawArgs d;
+    if (!parse_draw_args("render", args, nargs, true, &d)) return;
+    if (!scenes::loaded()) {
+        reply::error("render", "no screen-space scene: upload one with 'scene BYTES CRC32' or 'load NAME' first");
+        return;
+    }
+    const raster::Texture& tex = scenes::texture();
+    if (!raster::mapper_accepts(*d.mapper, tex)) {
+        lib::Fmt m;
+        m.s("mapper ").s(d.mapper->name).s(" cannot take this scene's ").u(uint32_t(tex.width)).s("x").u(uint32_t(tex.height)).s(" texture (needs ");
+        describe_needs(m, d.mapper->needs);
+        reply::error("render", m.s(")").c_str());
+        return;
+    }
+    scenes::RenderResult res = scenes::render(*d.mapper, d.surface, d.page, d.variant);
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "render");
+    render_fields(r, d, res);
+    r.u64("ticks", render_ticks(res))
+        .u64("ticks_clear", res.ticks_clear)
+        .u64("ticks_draw", res.ticks_draw)
+        .u64("ticks_blit", res.ticks_blit)
+        .end();
+}
+
+void cmd_frame(Context&, const StrView* args, size_t nargs) {
+    uint32_t n;
+    if (!lib::parse_u32(args[0], &n) || n >= uint32_t(raster::MAX_FRAMES)) {
+        lib::Fmt m;
+        m.s("bad frame number: 0..").u(uint32_t(raster::MAX_FRAMES - 1)).s(" (frame n shows time n/30 s)");
+        reply::error("frame", m.c_str());
+        return;
+    }
+    DrawArgs d;
+    if (!parse_draw_args("frame", args + 1, nargs - 1, true, &d) || !need_world("frame")) return;
+    worlds::FrameResult f = worlds::render(int32_t(n), *d.mapper, d.surface, d.page, d.variant);
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "frame").str("scene", worlds::name()).u32("frame", n);
+    render_fields(r, d, f.render);
+    frame_fields(r, f);
+    r.end();
+}
+
+void cmd_play(Context&, const StrView* args, size_t nargs) {
+    uint32_t frames;
+    DrawArgs d;
+    if (!parse_animation_args("play", args, nargs, MAX_PLAY_FRAMES, "", &frames, &d)) return;
+    uint64_t pixels = 0, total = 0, t_start = timer::rdtsc();
+    for (uint32_t i = 0; i < frames; ++i) {
+        int32_t n = int32_t(i % uint32_t(worlds::world().frames));
+        d.page = hidden_page();
+        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant);
+        uint64_t t0 = timer::rdtsc();
+        bool retrace = vga::flip(d.page);
+        uint64_t flip_ticks = timer::rdtsc() - t0;
+        uint64_t ticks = frame_ticks(f);
+        g_play_ticks[i] = clamp32(ticks);
+        pixels += f.render.stats.pixels;
+        total += ticks;
+        lib::JsonLine(serial::sink())
+            .str("event", "frame")
+            .u32("n", uint32_t(i))
+            .u32("frame", uint32_t(n))
+            .u32("page", uint32_t(d.page))
+            .u32("polygons", f.render.stats.polygons)
+            .u32("pixels", f.render.stats.pixels)
+            .u64("ticks", ticks)
+            .u64("ticks_geometry", f.ticks_geometry)
+            .u64("ticks_draw", f.render.ticks_draw)
+            .u64("ticks_flip", flip_ticks)
+            .boolean("retrace", retrace)
+            .end();
+    }
+    uint64_t wall = timer::rdtsc() - t_start;
+    // `ticks` is the unclamped total; the summary's sum is of the clamped figures.
+    lib::Summary s = lib::summarise_in_place(g_play_ticks, frames);
+    lib::JsonLine r = animation_reply("play", frames, d);
+    r.u64("pixels", pixels).u64("ticks", total).u32("ticks_min", s.min).u32("ticks_median", s.median).u32("ticks_max", s.max);
+    r.u64("ticks_wall", wall).end();
+}
+
+void cmd_bench(Context&, const StrView* args, size_t nargs) {
+    uint32_t frames;
+    DrawArgs d;
+    if (!parse_animation_args("bench", args, nargs, MAX_BENCH_FRAMES, " (spread evenly over the scene's animation)", &frames, &d)) return;
+    raster::Probe probe;
+    probe.clock = bench_clock;
+    probe.calibrate();
+    const uint32_t length = uint32_t(worlds::world().frames);
+    uint64_t polygons = 0, rejected = 0, spans = 0, pixels = 0;
+    bool used_asm = false;
+    for (uint32_t i = 0; i < frames; ++i) {
+        int32_t n = int32_t(uint64_t(i) * length / frames);
+        d.page = hidden_page();
+        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant);
+        raster::Probe timed = probe;
+        worlds::render(n, *d.mapper, d.surface, d.page, d.variant, &timed);
+        uint64_t t0 = timer::rdtsc();
+        bool retrace = vga::flip(d.page);
+        uint64_t flip = timer::rdtsc() - t0;
+        const scenes::RenderResult& r = f.render;
+        uint64_t setup = timed.net(raster::Phase::Setup), inner = timed.net(raster::Phase::Inner);
+        uint64_t walk = r.ticks_draw > setup + inner ? r.ticks_draw - setup - inner : 0;
+        uint64_t figures[B_FIELDS] = {frame_ticks(f), f.ticks_geometry, r.ticks_clear, r.ticks_draw, setup, walk, inner, r.ticks_blit, flip};
+        lib::JsonLine e(serial::sink());
+        e.str("event", "bench").u32("n", i).u32("frame", uint32_t(n)).u32("page", uint32_t(d.page));
+        e.u32("polygons", r.stats.polygons).u32("rejected", r.stats.rejected).u32("spans", r.stats.spans).u32("pixels", r.stats.pixels);
+        for (uint32_t k = 0; k < B_FIELDS; ++k) {
+            g_bench[k][i] = clamp32(figures[k]);
+            e.u64(BENCH_FIELD_NAMES[k], figures[k]);
+        }
+        e.boolean("retrace", retrace).end();
+        polygons += r.stats.polygons, rejected += r.stats.rejected, spans += r.stats.spans, pixels += r.stats.pixels;
+        used_asm = r.used_asm;
+    }
+    lib::JsonLine r = animation_reply("bench", frames, d);
+    r.str("loop", used_asm ? "asm" : "twin").u64("lap_cost", probe.lap_cost);
+    r.u64("polygons", polygons).u64("rejected", rejected).u64("spans", spans).u64("pixels", pixels);
+    for (uint32_t k = 0; k < B_FIELDS; ++k) {
+        lib::Summary s = lib::summarise_in_place(g_bench[k], frames);
+        r.begin_object(BENCH_FIELD_NAMES[k]).u64("sum", s.sum).u32("min", s.min).u32("median", s.median).end_object();
+    }
+    r.end();
+}
+
+void cmd_mappers(Context&, const StrView*, size_t) {
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "mappers").begin_array("mappers");
+    for (int i = 0; i < raster::MAPPER_COUNT; ++i) {
+        const raster::Mapper& m = raster::MAPPERS[i];
+        r.begin_item_object().str("name", m.name).str("family", m.family).str("origin", m.origin).str("promise", m.promise);
+        r.boolean("exact_coverage", m.guarantee.exact_coverage)
+            .i32("max_error", m.guarantee.max_error)
+            .i32("max_error_flat", m.guarantee.max_error_flat);
+        r.begin_array("needs");
+        for (int k = 0; k < raster::NEED_NAME_COUNT; ++k)
+            if (m.needs & raster::NEED_NAMES[k].need) r.item_str(raster::NEED_NAMES[k].name);
+        r.end_array().begin_array("walkers");
+        for (raster::Axis axis : WALKERS)
+            if (raster::mapper_walks(m, axis)) r.item_str(walker_name(axis));
+        r.end_array().begin_array("surfaces");
+        for (int k = 0; k < raster::SURFACE_COUNT; ++k)
+            if (raster::draws_through(m, raster::Surface(k))) r.item_str(raster::surface_name(raster::Surface(k)));
+        r.end_array().boolean("asm", m.asm_loop != nullptr).end_object();
+    }
+    r.end_array().end();
+}
+
+}  // namespace server

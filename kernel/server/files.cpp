@@ -1,0 +1,133 @@
+// The file commands: uploads (scene, file), the file list, and loading a scene file of either
+// version, whose reply describes what was loaded.
+#include "kernel/files.h"
+#include "kernel/scenes.h"
+#include "kernel/server/commands.h"
+#include "kernel/server/reply.h"
+#include "kernel/worlds.h"
+
+namespace server {
+
+namespace {
+
+// The name an upload by `scene` is stored under, so that it is also a file like any other.
+constexpr StrView UPLOADED_SCENE{"upload.scene", sizeof("upload.scene") - 1};
+
+void reply_parse_error(const char* cmd, const char* file, const raster::ParseError& e) {
+    lib::Fmt m;
+    if (file) m.s(file).s(": ");
+    if (e.line) m.s("line ").u(uint32_t(e.line)).s(": ");
+    m.s(e.message);
+    lib::JsonLine r = reply::begin(false);
+    r.str("cmd", cmd).str("error", m.c_str()).u32("line", uint32_t(e.line));
+    if (file) r.str("file", file);
+    r.end();
+}
+
+// The reply fields describing a loaded screen-space scene (version 1).
+void describe_screen_scene(lib::JsonLine& r) {
+    const raster::Scene& sc = scenes::scene();
+    r.u32("version", 1)
+        .u32("polygons", uint32_t(sc.polygon_count))
+        .u32("vertices", uint32_t(sc.vertex_count))
+        .str("texture", raster::texture_kind_name(sc.texture_kind))
+        .u32("texture_width", uint32_t(sc.texture_width))
+        .u32("texture_height", uint32_t(sc.texture_height))
+        .str("wrap", raster::wrap_name(sc.wrap));
+}
+
+// The reply fields describing a loaded 3D scene (version 2).
+void describe_world(lib::JsonLine& r) {
+    const raster::World& w = worlds::world();
+    r.u32("version", 2)
+        .u32("textures", uint32_t(w.texture_count))
+        .u32("meshes", uint32_t(w.mesh_count))
+        .u32("objects", uint32_t(w.object_count))
+        .u32("faces", uint32_t(w.face_count))
+        .u32("positions", uint32_t(w.position_count))
+        .u32("frames", uint32_t(w.frames))
+        .str("palette", w.palette_texture >= 0 ? w.textures[w.palette_texture].name : "default");
+    r.begin_object("budget").boolean("given", w.budget.given).i32("max_error", w.budget.max_error).boolean("exact_coverage", w.budget.exact_coverage).end_object();
+}
+
+// Loads a scene file of either version as the current scene of its kind.
+void load_and_reply(const char* cmd, const files::File& f) {
+    raster::ParseError e;
+    const char* text = reinterpret_cast<const char*>(f.data);
+    int version = raster::scene_version(text, f.size, &e);
+    bool ok = version == 1 ? scenes::load(text, f.size, &e) : version == 2 ? worlds::load(f.name, f.data, f.size, &e) : false;
+    if (!ok) {
+        reply_parse_error(cmd, f.name, e);
+        return;
+    }
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", cmd).str("name", f.name).str("origin", files::origin_name(f.origin)).u32("bytes", uint32_t(f.size));
+    if (version == 1) describe_screen_scene(r);
+    else describe_world(r);
+    r.end();
+}
+
+bool parse_upload(const char* cmd, StrView bytes, StrView crc, uint32_t* length, uint32_t* crc32) {
+    if (!lib::parse_u32(bytes, length) || *length == 0 || *length > files::MAX_UPLOAD || !lib::parse_u32(crc, crc32)) {
+        lib::Fmt m;
+        m.s("bad length or checksum: BYTES 1..").u(uint32_t(files::MAX_UPLOAD)).s(", CRC32 decimal or 0x hex");
+        reply::error(cmd, m.c_str());
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+void cmd_scene(Context&, const StrView* args, size_t) {
+    uint32_t length, crc;
+    if (!parse_upload("scene", args[0], args[1], &length, &crc)) return;
+    lib::Fmt error;
+    if (!files::upload(UPLOADED_SCENE, length, crc, &error)) {
+        // every scene error carries "line", as a parse error does: 0, no line
+        reply::begin(false).str("cmd", "scene").str("error", error.c_str()).u32("line", 0).end();
+        return;
+    }
+    load_and_reply("scene", *files::find(UPLOADED_SCENE));
+}
+
+void cmd_file(Context&, const StrView* args, size_t) {
+    uint32_t length, crc;
+    if (!parse_upload("file", args[1], args[2], &length, &crc)) return;
+    if (args[0].size == 0 || args[0].size >= size_t(raster::MAX_FILE_NAME)) {
+        lib::Fmt m;
+        m.s("bad name: 1 to ").u(uint32_t(raster::MAX_FILE_NAME - 1)).s(" characters");
+        reply::error("file", m.c_str());
+        return;
+    }
+    lib::Fmt error;
+    if (!files::upload(args[0], length, crc, &error)) {
+        reply::error("file", error.c_str());
+        return;
+    }
+    const files::File* f = files::find(args[0]);
+    reply::begin(true).str("cmd", "file").str("name", f->name).u32("bytes", uint32_t(f->size)).u64("upload_space_used", files::upload_space_used()).end();
+}
+
+void cmd_files(Context&, const StrView*, size_t) {
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "files").begin_array("files");
+    for (int i = 0; i < files::count(); ++i) {
+        const files::File& f = files::at(i);
+        r.begin_item_object().str("name", f.name).str("origin", files::origin_name(f.origin)).u32("bytes", uint32_t(f.size)).end_object();
+    }
+    r.end_array().u64("upload_space_used", files::upload_space_used()).u64("upload_space", files::UPLOAD_SPACE).end();
+}
+
+void cmd_load(Context&, const StrView* args, size_t) {
+    const files::File* f = files::find(args[0]);
+    if (!f) {
+        lib::Fmt m;
+        m.s("no file '").s(args[0]).s("' (see 'files')");
+        reply::error("load", m.c_str());
+        return;
+    }
+    load_and_reply("load", *f);
+}
+
+}  // namespace server
