@@ -9,6 +9,7 @@
 #include "kernel/core/surface.h"
 #include "kernel/core/texture.h"
 #include "kernel/core/walk.h"
+#include "kernel/lib/fmt.h"
 #include "kernel/lib/words.h"
 
 namespace raster {
@@ -43,6 +44,11 @@ struct NeedName {
 };
 extern const NeedName NEED_NAMES[];
 extern const int NEED_NAME_COUNT;
+// The needs a scene can fail to meet (its textures, its coordinates); the texture copies are always
+// prepared (policy.h) and the target is the caller's choice.
+constexpr uint32_t SCENE_NEEDS = NEED_INSIDE | NEED_ALIGNED256;
+// The words of the needs in `needs`, comma-separated.
+void describe_needs(lib::Fmt& out, uint32_t needs);
 
 // Which walkers a mapper works with.
 enum AxisSet : uint8_t { AXIS_ROWS = 1, AXIS_COLUMNS = 2, AXIS_BOTH = 3 };

@@ -87,4 +87,10 @@ const NeedName NEED_NAMES[] = {
 };
 const int NEED_NAME_COUNT = sizeof(NEED_NAMES) / sizeof(NEED_NAMES[0]);
 
+void describe_needs(lib::Fmt& m, uint32_t needs) {
+    const char* sep = "";
+    for (int i = 0; i < NEED_NAME_COUNT; ++i)
+        if (needs & NEED_NAMES[i].need) m.s(sep).s(NEED_NAMES[i].words), sep = ", ";
+}
+
 }  // namespace raster

@@ -54,7 +54,7 @@ void cannot_draw_through(const char* cmd, const raster::Mapper& mp, raster::Surf
         if (raster::mapper_walks(mp, axis)) m.s(" ").s(walker_name(axis));
     if (mp.needs & raster::NEED_PLANAR_TARGET) {
         m.s(" and needs ");
-        describe_needs(m, raster::NEED_PLANAR_TARGET);
+        raster::describe_needs(m, raster::NEED_PLANAR_TARGET);
     }
     reply::error(cmd, m.s(")").c_str());
 }
@@ -136,10 +136,5 @@ bool need_world(const char* cmd) {
     return false;
 }
 
-void describe_needs(lib::Fmt& m, uint32_t needs) {
-    const char* sep = "";
-    for (int i = 0; i < raster::NEED_NAME_COUNT; ++i)
-        if (needs & raster::NEED_NAMES[i].need) m.s(sep).s(raster::NEED_NAMES[i].words), sep = ", ";
-}
 
 }  // namespace server

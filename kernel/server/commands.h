@@ -86,8 +86,6 @@ bool parse_animation_args(const char* cmd, const StrView* args, size_t nargs, ui
 // Whether a 3D scene is loaded (else the error).
 bool need_world(const char* cmd);
 
-// Appends the words of each need in `needs` (raster::NEED_NAMES), ", " between them.
-void describe_needs(lib::Fmt& m, uint32_t needs);
 
 constexpr raster::Axis WALKERS[] = {raster::Axis::Rows, raster::Axis::Columns};
 inline const char* walker_name(raster::Axis axis) { return axis == raster::Axis::Rows ? "rows" : "columns"; }

@@ -83,7 +83,7 @@ void cmd_render(Context&, const StrView* args, size_t nargs) {
     if (!raster::mapper_accepts(*d.mapper, tex)) {
         lib::Fmt m;
         m.s("mapper ").s(d.mapper->name).s(" cannot take this scene's ").u(uint32_t(tex.width)).s("x").u(uint32_t(tex.height)).s(" texture (needs ");
-        describe_needs(m, d.mapper->needs);
+        raster::describe_needs(m, d.mapper->needs & raster::SCENE_NEEDS);
         reply::error("render", m.s(")").c_str());
         return;
     }

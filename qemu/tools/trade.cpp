@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "kernel/core/mapper.h"
 #include "qemu/lib/error.h"
 
 namespace harness {
@@ -164,12 +165,13 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
                 << " | " << (r->kernel_equals_host ? "equal" : "DIFFERS") << " | " << front << " |\n";
         }
         std::string refused;
-        for (const TradeRow& r : rows)
-            if (r.scene == scene && r.pixels == 0) refused += (refused.empty() ? "" : ", ") + r.mapper;
-        if (!refused.empty())
-            out << "\nCannot draw this scene (every polygon refused: the texture is not 256 x 256 repeating, or its coordinates "
-                   "leave the texture): "
-                << refused << ".\n";
+        for (const TradeRow& r : rows) {
+            if (r.scene != scene || r.pixels != 0) continue;
+            lib::Fmt needs;
+            if (const raster::Mapper* m = raster::find_mapper(r.mapper.c_str())) raster::describe_needs(needs, m->needs & raster::SCENE_NEEDS);
+            refused += (refused.empty() ? "" : "; ") + r.mapper + (*needs.c_str() ? std::string(" (needs ") + needs.c_str() + ")" : "");
+        }
+        if (!refused.empty()) out << "\nCannot draw this scene (every polygon refused): " << refused << ".\n";
     }
 
     // the classics' published cycles beside our instruction counts, on the scene each drew most of
