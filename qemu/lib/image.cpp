@@ -1,4 +1,5 @@
-// PNG through libpng's simplified API, a strict P6 parser, and screendump-to-index decoding.
+// PNG through libpng's simplified API, a strict P6 parser, an 8-bit BMP writer, and screendump-to-index
+// decoding.
 #include "qemu/lib/image.h"
 
 #include <png.h>
@@ -6,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -14,6 +17,23 @@
 #include "qemu/lib/error.h"
 
 namespace harness {
+
+namespace {
+
+constexpr size_t BMP_FILE_HEADER_BYTES = 14;
+constexpr size_t BMP_INFO_HEADER_BYTES = 40;
+constexpr size_t BMP_COLOUR_TABLE_BYTES = 256 * 4;
+
+void put_u16(std::string& b, size_t at, uint32_t v) {
+    b[at] = char(v & 0xFF);
+    b[at + 1] = char((v >> 8) & 0xFF);
+}
+void put_u32(std::string& b, size_t at, uint32_t v) {
+    put_u16(b, at, v & 0xFFFF);
+    put_u16(b, at + 2, v >> 16);
+}
+
+}  // namespace
 
 RgbImage decode_png(std::string_view bytes) {
     png_image img{};
@@ -97,6 +117,49 @@ void save_png(const std::string& path, const RgbImage& image) {
     img.format = PNG_FORMAT_RGB;
     if (!png_image_write_to_file(&img, path.c_str(), 0, image.rgb.data(), 0, nullptr))
         throw HarnessError("cannot write " + path + ": " + img.message);
+}
+
+void write_bmp8(const std::string& path, int width, int height, const uint8_t* indices, const uint8_t* palette_rgb768) {
+    const std::string size = std::to_string(width) + "x" + std::to_string(height);
+    if (width <= 0 || height <= 0) throw HarnessError(path + ": cannot write a " + size + " BMP");
+    if (!indices || !palette_rgb768) throw HarnessError(path + ": no pixels or no palette to write");
+    const uint64_t stride = (uint64_t(width) + 3) & ~uint64_t(3);
+    const uint64_t pixel_bytes = stride * uint64_t(height);
+    const uint64_t data_offset = BMP_FILE_HEADER_BYTES + BMP_INFO_HEADER_BYTES + BMP_COLOUR_TABLE_BYTES;
+    const uint64_t file_bytes = data_offset + pixel_bytes;
+    if (file_bytes > 0x7FFFFFFF) throw HarnessError(path + ": a " + size + " BMP would be too large");
+
+    std::string out(size_t(file_bytes), '\0');
+    out[0] = 'B';
+    out[1] = 'M';
+    put_u32(out, 2, uint32_t(file_bytes));
+    put_u32(out, 10, uint32_t(data_offset));
+    const size_t info = BMP_FILE_HEADER_BYTES;
+    put_u32(out, info + 0, BMP_INFO_HEADER_BYTES);
+    put_u32(out, info + 4, uint32_t(width));
+    put_u32(out, info + 8, uint32_t(height));  // positive: rows stored bottom-up
+    put_u16(out, info + 12, 1);                // planes
+    put_u16(out, info + 14, 8);                // bits a pixel
+    put_u32(out, info + 16, 0);                // BI_RGB, uncompressed
+    put_u32(out, info + 20, uint32_t(pixel_bytes));
+    put_u32(out, info + 32, 256);              // colours used
+    const size_t table = info + BMP_INFO_HEADER_BYTES;
+    for (size_t i = 0; i < 256; ++i) {
+        out[table + 4 * i + 0] = char(palette_rgb768[3 * i + 2]);
+        out[table + 4 * i + 1] = char(palette_rgb768[3 * i + 1]);
+        out[table + 4 * i + 2] = char(palette_rgb768[3 * i + 0]);
+    }
+    for (int y = 0; y < height; ++y) {
+        const uint8_t* src = indices + size_t(y) * size_t(width);
+        const size_t dst = size_t(data_offset) + size_t(height - 1 - y) * size_t(stride);
+        std::memcpy(&out[dst], src, size_t(width));
+    }
+
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    if (!file) throw HarnessError(path + ": cannot write (" + std::strerror(errno) + ")");
+    file.write(out.data(), std::streamsize(out.size()));
+    file.close();
+    if (!file) throw HarnessError(path + ": writing failed (" + std::strerror(errno) + ")");
 }
 
 RgbImage colourise(const IndexImage& image, const raster::Palette& palette) {

@@ -1,4 +1,5 @@
-// Images on the host: PNG/PPM in and out, QEMU screendumps mapped back to palette indices, comparisons.
+// Images on the host: PNG/PPM in and out, 8-bit BMP out, QEMU screendumps mapped back to palette indices,
+// comparisons.
 #pragma once
 
 #include <cstdint>
@@ -36,6 +37,11 @@ RgbImage decode_png(std::string_view bytes);
 RgbImage decode_ppm(std::string_view bytes);  // binary P6, maxval 255, comments allowed
 RgbImage load_image(const std::string& path); // PNG or PPM by its signature
 void save_png(const std::string& path, const RgbImage& image);
+
+// Writes an uncompressed 8-bit BMP: 14-byte file header, 40-byte BITMAPINFOHEADER, 256 colours
+// (B, G, R, 0), rows bottom-up, each padded to a multiple of 4 bytes. `indices` is row-major, top row
+// first; `palette_rgb768` is 256 RGB triplets, 8 bits a component.
+void write_bmp8(const std::string& path, int width, int height, const uint8_t* indices, const uint8_t* palette_rgb768);
 
 // The 8-bit value QEMU shows for a 6-bit DAC value: (v << 2) | ((v & 1) * 3).
 inline uint8_t qemu_widen(uint8_t v6) { return uint8_t((v6 << 2) | ((v6 & 1) * 3)); }

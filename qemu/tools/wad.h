@@ -127,9 +127,8 @@ private:
 // Upper-cases ASCII letters (lump names are ASCII).
 std::string wad_upper(std::string_view name);
 
-// Writes an uncompressed 8-bit BMP: 14-byte file header, 40-byte BITMAPINFOHEADER, 256 colours
-// (B, G, R, 0), rows bottom-up, each padded to a multiple of 4 bytes.
-void write_bmp8(const std::string& path, int width, int height, const uint8_t* indices, const uint8_t* palette_rgb768);
+// Writes the image as an 8-bit BMP, through the generic write_bmp8 in qemu/lib/image.h; throws if its
+// pixel count does not match its size.
 void write_bmp8(const std::string& path, const WadImage& image);
 
 }  // namespace harness
