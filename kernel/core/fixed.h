@@ -4,7 +4,6 @@
 // FixedN<F> holds a 32-bit two's-complement raw value r meaning r / 2^F.
 //   Fixed16_16: range [-32768, 32768 - 2^-16], step 2^-16      (texture coordinates)
 //   Fixed24_8:  range [-8388608, 8388608 - 2^-8], step 2^-8    (snapped screen coordinates)
-//   Fixed28_4:  range [-134217728, 134217728 - 2^-4], step 2^-4
 // Overflow behaviour, by operation:
 //   from_double, from_int, mul: round to nearest (ties up, toward +inf), then saturate to the range;
 //                               NaN becomes 0.
@@ -90,6 +89,5 @@ private:
 
 using Fixed16_16 = FixedN<16>;
 using Fixed24_8 = FixedN<8>;
-using Fixed28_4 = FixedN<4>;
 
 }  // namespace raster

@@ -15,7 +15,7 @@ constexpr int AFFINE_LENGTH = 8;
 constexpr int32_t HALF = 0x8000;
 
 struct Vertex28 {
-    Fixed28_4 x, y;     // pixel centres at integers
+    int32_t x_28_4, y_28_4;  // pixel centres at integers (plain ints: a Fixed28_4 would zero every vertex first)
     double one_over_z;  // 1/w
     double u_over_z, v_over_z;
 };
@@ -52,13 +52,13 @@ bool make_gradients(const Vertex28* v, Gradients* g) {
         g->v_over_z[i] = v[i].v_over_z;
     }
     // Fixed28_4Mul: (a * b) / 16, C division
-    int64_t x1y0 = (int64_t(v[1].x.raw - v[2].x.raw) * (v[0].y.raw - v[2].y.raw)) / 16;
-    int64_t x0y1 = (int64_t(v[0].x.raw - v[2].x.raw) * (v[1].y.raw - v[2].y.raw)) / 16;
+    int64_t x1y0 = (int64_t(v[1].x_28_4 - v[2].x_28_4) * (v[0].y_28_4 - v[2].y_28_4)) / 16;
+    int64_t x0y1 = (int64_t(v[0].x_28_4 - v[2].x_28_4) * (v[1].y_28_4 - v[2].y_28_4)) / 16;
     if (x1y0 - x0y1 == 0) return false;
     double one_over_dx = 1.0 / (double(x1y0 - x0y1) / 16.0);
     double one_over_dy = -one_over_dx;
-    double y0y2 = double(v[0].y.raw - v[2].y.raw) / 16.0, y1y2 = double(v[1].y.raw - v[2].y.raw) / 16.0;
-    double x0x2 = double(v[0].x.raw - v[2].x.raw) / 16.0, x1x2 = double(v[1].x.raw - v[2].x.raw) / 16.0;
+    double y0y2 = double(v[0].y_28_4 - v[2].y_28_4) / 16.0, y1y2 = double(v[1].y_28_4 - v[2].y_28_4) / 16.0;
+    double x0x2 = double(v[0].x_28_4 - v[2].x_28_4) / 16.0, x1x2 = double(v[1].x_28_4 - v[2].x_28_4) / 16.0;
     auto ddx = [&](const double* c) { return one_over_dx * (((c[1] - c[2]) * y0y2) - ((c[0] - c[2]) * y1y2)); };
     auto ddy = [&](const double* c) { return one_over_dy * (((c[1] - c[2]) * x0x2) - ((c[0] - c[2]) * x1x2)); };
     g->d_one_over_z_dx = ddx(g->one_over_z);
@@ -90,21 +90,21 @@ struct Edge {
     double v_over_z, v_over_z_step, v_over_z_extra;
 
     Edge(const Gradients& g, const Vertex28* v, int top, int bottom) {
-        y = ceil28_4(v[top].y.raw);
-        int64_t y_end = ceil28_4(v[bottom].y.raw);
+        y = ceil28_4(v[top].y_28_4);
+        int64_t y_end = ceil28_4(v[bottom].y_28_4);
         height = y_end - y;
         x = 0, x_step = 0, numerator = 0, denominator = 1, error_term = 0;
         one_over_z = u_over_z = v_over_z = 0;
         one_over_z_step = u_over_z_step = v_over_z_step = 0;
         one_over_z_extra = u_over_z_extra = v_over_z_extra = 0;
         if (!height) return;
-        int64_t dn = int64_t(v[bottom].y.raw) - v[top].y.raw, dm = int64_t(v[bottom].x.raw) - v[top].x.raw;
-        int64_t initial = dm * 16 * y - dm * v[top].y.raw + dn * v[top].x.raw - 1 + dn * 16;
+        int64_t dn = int64_t(v[bottom].y_28_4) - v[top].y_28_4, dm = int64_t(v[bottom].x_28_4) - v[top].x_28_4;
+        int64_t initial = dm * 16 * y - dm * v[top].y_28_4 + dn * v[top].x_28_4 - 1 + dn * 16;
         floor_div_mod(initial, dn * 16, &x, &error_term);
         floor_div_mod(dm * 16, dn * 16, &x_step, &numerator);
         denominator = dn * 16;
-        double y_prestep = double(y * 16 - v[top].y.raw) / 16.0;
-        double x_prestep = double(x * 16 - v[top].x.raw) / 16.0;
+        double y_prestep = double(y * 16 - v[top].y_28_4) / 16.0;
+        double x_prestep = double(x * 16 - v[top].x_28_4) / 16.0;
         one_over_z = g.one_over_z[top] + y_prestep * g.d_one_over_z_dy + x_prestep * g.d_one_over_z_dx;
         one_over_z_step = double(x_step) * g.d_one_over_z_dx + g.d_one_over_z_dy;
         one_over_z_extra = g.d_one_over_z_dx;
@@ -207,10 +207,10 @@ void draw_triangle(const DrawContext& c, const Vertex28* v) {
     if (!make_gradients(v, &g)) return;
     // top, middle, bottom by y; the middle vertex is on the left when it lies left of top-bottom
     int top = 0, middle = 1, bottom = 2;
-    if (v[middle].y.raw < v[top].y.raw) { int t = top; top = middle; middle = t; }
-    if (v[bottom].y.raw < v[middle].y.raw) { int t = middle; middle = bottom; bottom = t; }
-    if (v[middle].y.raw < v[top].y.raw) { int t = top; top = middle; middle = t; }
-    int64_t side = int64_t(v[bottom].x.raw - v[top].x.raw) * (v[middle].y.raw - v[top].y.raw) - int64_t(v[bottom].y.raw - v[top].y.raw) * (v[middle].x.raw - v[top].x.raw);
+    if (v[middle].y_28_4 < v[top].y_28_4) { int t = top; top = middle; middle = t; }
+    if (v[bottom].y_28_4 < v[middle].y_28_4) { int t = middle; middle = bottom; bottom = t; }
+    if (v[middle].y_28_4 < v[top].y_28_4) { int t = top; top = middle; middle = t; }
+    int64_t side = int64_t(v[bottom].x_28_4 - v[top].x_28_4) * (v[middle].y_28_4 - v[top].y_28_4) - int64_t(v[bottom].y_28_4 - v[top].y_28_4) * (v[middle].x_28_4 - v[top].x_28_4);
     bool middle_is_left = side > 0;
     Edge top_to_bottom(g, v, top, bottom), top_to_middle(g, v, top, middle), middle_to_bottom(g, v, middle, bottom);
     setup_done(c);
@@ -246,8 +246,8 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
     for (int i = 0; i < count; ++i) {
         const Vertex& in = vertices[i];
         // 28.4 with pixel centres at integers: (x - 1/2) * 16, truncated as FloatToFixed28_4 did
-        v[i].x = Fixed28_4::from_raw((in.x.raw - int32_t(SUBPIXEL_HALF)) / 16);
-        v[i].y = Fixed28_4::from_raw((in.y.raw - int32_t(SUBPIXEL_HALF)) / 16);
+        v[i].x_28_4 = (in.x.raw - int32_t(SUBPIXEL_HALF)) / 16;
+        v[i].y_28_4 = (in.y.raw - int32_t(SUBPIXEL_HALF)) / 16;
         v[i].one_over_z = 1.0 / in.w;
         v[i].u_over_z = (in.u + shift_u - 0.5) / in.w;  // texel centres at integers
         v[i].v_over_z = (in.v + shift_v - 0.5) / in.w;

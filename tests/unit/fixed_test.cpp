@@ -127,7 +127,8 @@ TEST(Fixed24_8, SnapsScreenCoordinates) {
     EXPECT_EQ(Fixed24_8::from_double(16384.0).to_double(), 16384.0);
 }
 
-TEST(Fixed28_4, Range) {
+TEST(FixedN, FourFractionBitsRange) {  // the range formula at another width (28.4, Hecker's, which keeps plain ints)
+    using Fixed28_4 = FixedN<4>;
     EXPECT_EQ(Fixed28_4::from_int(134217727).raw, 134217727 * 16);
     EXPECT_EQ(Fixed28_4::from_int(134217728).raw, INT32_MAX);
     EXPECT_EQ(Fixed28_4::from_int(-134217728).raw, INT32_MIN);
