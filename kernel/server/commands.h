@@ -86,7 +86,7 @@ bool parse_animation_args(const char* cmd, const StrView* args, size_t nargs, ui
 // Whether a 3D scene is loaded (else the error).
 bool need_world(const char* cmd);
 
-
+// The walkers by name, as replies and errors give them.
 constexpr raster::Axis WALKERS[] = {raster::Axis::Rows, raster::Axis::Columns};
 inline const char* walker_name(raster::Axis axis) { return axis == raster::Axis::Rows ? "rows" : "columns"; }
 
