@@ -1,14 +1,5 @@
 // Fixed-point numbers with the format in the type's name, and exact double-to-integer helpers.
 // Portable, freestanding: kernel and host compute the same bits.
-//
-// FixedN<F> holds a 32-bit two's-complement raw value r meaning r / 2^F.
-//   Fixed16_16: range [-32768, 32768 - 2^-16], step 2^-16      (texture coordinates)
-//   Fixed24_8:  range [-8388608, 8388608 - 2^-8], step 2^-8    (snapped screen coordinates)
-// Overflow behaviour, by operation:
-//   from_double, from_int, mul: round to nearest (ties up, toward +inf), then saturate to the range;
-//                               NaN becomes 0.
-//   add, sub:                   wrap modulo 2^32, as the asm inner loops do (no UB: done in uint32).
-//   floor_int:                  arithmetic shift, exact floor.
 #pragma once
 
 #include <stdint.h>
@@ -45,6 +36,14 @@ inline int64_t floor_div(int64_t n, int64_t d) {
     return n - q * d < 0 ? q - 1 : q;
 }
 
+// FixedN<F> holds a 32-bit two's-complement raw value r meaning r / 2^F.
+//   Fixed16_16: range [-32768, 32768 - 2^-16], step 2^-16      (texture coordinates)
+//   Fixed24_8:  range [-8388608, 8388608 - 2^-8], step 2^-8    (snapped screen coordinates)
+// Overflow behaviour, by operation:
+//   from_double, from_int, mul: round to nearest (ties up, toward +inf), then saturate to the range;
+//                               NaN becomes 0.
+//   add, sub:                   wrap modulo 2^32, as the asm inner loops do (no UB: done in uint32).
+//   floor_int:                  arithmetic shift, exact floor.
 template <int FRAC>
 struct FixedN {
     static_assert(FRAC > 0 && FRAC < 31);
