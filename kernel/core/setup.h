@@ -122,4 +122,19 @@ inline void perspective_texel(const PolygonSetup& s, double x, double y, int32_t
     perspective_texel(s.q, s.pu, s.pv, x, y, tu, tv);
 }
 
+// A pixel's footprint in texels (docs/accuracy.md, "Footprint error"): the larger of the exact
+// mapping's texel steps per pixel across and down, each step measured as a texel error is (the
+// larger of its u and v parts), at the pixel centre (X, Y as above). By the quotient rule,
+// d(p/q)/dx = (p_x q - p q_x) / q^2 per subpixel, times 256 per pixel. Not clamped: the footprint
+// error divides by max(1, footprint).
+inline double texel_footprint(const PolygonSetup& s, double x, double y) {
+    double q = s.q.at(x, y), u = s.pu.at(x, y), v = s.pv.at(x, y);
+    double per_pixel = double(SUBPIXEL_ONE) / (q * q);
+    auto mag = [](double t) { return t < 0 ? -t : t; };
+    double dudx = mag((s.pu.gx * q - u * s.q.gx) * per_pixel), dvdx = mag((s.pv.gx * q - v * s.q.gx) * per_pixel);
+    double dudy = mag((s.pu.gy * q - u * s.q.gy) * per_pixel), dvdy = mag((s.pv.gy * q - v * s.q.gy) * per_pixel);
+    double across = dudx > dvdx ? dudx : dvdx, down = dudy > dvdy ? dudy : dvdy;
+    return across > down ? across : down;
+}
+
 }  // namespace raster

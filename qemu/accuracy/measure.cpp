@@ -87,8 +87,8 @@ std::unique_ptr<Frame> world_frame(const LoadedWorld& w, int32_t n) {
 }
 
 Picture::Picture(int32_t width, int32_t height)
-    : index(size_t(width) * size_t(height)), coverage(index.size()), tu(index.size()), tv(index.size()) {
-    view = PixelImage{width, height, index.data(), coverage.data(), tu.data(), tv.data()};
+    : index(size_t(width) * size_t(height)), coverage(index.size()), tu(index.size()), tv(index.size()), footprint(index.size()) {
+    view = PixelImage{width, height, index.data(), coverage.data(), tu.data(), tv.data(), footprint.data()};
     clear_pixel_image(view, BACKGROUND);
 }
 
@@ -256,7 +256,6 @@ AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, co
     std::vector<HostSurface> scratch;
     for (int k = 0; k < 5; ++k) scratch.emplace_back(mapper, axis, 0);
     std::map<int32_t, std::unique_ptr<MeasureTextures>> stand_ins;  // by object
-    uint64_t error_sum = 0;
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
         const int n = frame.polygon_size[i];
@@ -278,15 +277,16 @@ AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, co
             if (dc && drawn_count[p] < 255) ++drawn_count[p];
             if (rc && dc) {
                 int32_t tu = scratch[1].at(x, y) | (scratch[2].at(x, y) << 8), tv = scratch[3].at(x, y) | (scratch[4].at(x, y) << 8);
-                uint32_t du = texel_distance(ref.tu[p], tu, tex.width, tex.wrap), dv = texel_distance(ref.tv[p], tv, tex.height, tex.wrap);
-                add_texel_error(m, du > dv ? du : dv, &error_sum);
+                bool folded;
+                uint32_t e = texel_error(ref.tu[p], ref.tv[p], tu, tv, tex.width, tex.height, tex.wrap, &folded);
+                add_texel_error(m, e, double(ref.footprint[p]), folded);
             }
             ref.coverage[p] = 0;
             for (HostSurface& s : scratch) s.at(x, y) = 0;
         });
         v += n;
     }
-    m.mean_texel_error = m.compared ? double(error_sum) / double(m.compared) : 0.0;
+    finish_metrics(m);
     for (size_t p = 0; p < size_t(SCREEN_PIXELS); ++p) add_coverage(m, ref_count[p], drawn_count[p]);
 
     // the palette indices: the whole pictures

@@ -34,6 +34,7 @@ LoadedScene load_scene_file(const std::string& path);
 struct Picture {
     std::vector<uint8_t> index, coverage;
     std::vector<int32_t> tu, tv;
+    std::vector<float> footprint;
     raster::PixelImage view;
     Picture(int32_t width, int32_t height);
     Picture(const Picture&) = delete;
@@ -47,9 +48,6 @@ std::unique_ptr<Picture> render_reference(const LoadedScene& s);
 // Whether the mapper takes the scene's texture, given the copies the host builds for it (bordered,
 // 64 KiB-aligned): what the kernel's `render` accepts.
 bool mapper_takes(const LoadedScene& s, const raster::Mapper& mapper);
-
-// The walker a mapper uses by default: its only one, or rows.
-
 
 // The mapper's picture on a cleared 320x240 surface (linear, or planes for mappers that write
 // planes), as a linear picture (rows or columns); stats if wanted.

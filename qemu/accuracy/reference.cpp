@@ -10,6 +10,7 @@ void clear_pixel_image(PixelImage& img, uint8_t background) {
         img.coverage[i] = 0;
         img.tu[i] = -1;
         img.tv[i] = -1;
+        if (img.footprint) img.footprint[i] = 0;
     }
 }
 
@@ -28,7 +29,8 @@ SetupStatus reference_polygon(const Vertex* vertices, int count, const Texture& 
         for (int64_t x = x0; x <= x1; ++x) {
             if (!covers(s, int32_t(x), int32_t(y))) continue;
             int32_t tu, tv;
-            perspective_texel(s, centre_x(s, int32_t(x)), centre_y(s, int32_t(y)), &tu, &tv);
+            double cx = centre_x(s, int32_t(x)), cy = centre_y(s, int32_t(y));
+            perspective_texel(s, cx, cy, &tu, &tv);
             tu = wrap_coord(tu, tex.width, tex.wrap);
             tv = wrap_coord(tv, tex.height, tex.wrap);
             size_t i = size_t(y) * size_t(img.width) + size_t(x);
@@ -36,6 +38,7 @@ SetupStatus reference_polygon(const Vertex* vertices, int count, const Texture& 
             if (img.coverage[i] < 255) ++img.coverage[i];
             img.tu[i] = tu;
             img.tv[i] = tv;
+            if (img.footprint) img.footprint[i] = float(texel_footprint(s, cx, cy));
         }
     }
     return status;

@@ -19,6 +19,7 @@ struct PixelImage {
     uint8_t* coverage = nullptr;  // how many polygons drew the pixel, saturating at 255
     int32_t* tu = nullptr;        // texel column and row read for the pixel (after wrap or clamp)
     int32_t* tv = nullptr;
+    float* footprint = nullptr;   // the reference's only: texel_footprint at the pixel (null: not wanted)
 };
 
 void clear_pixel_image(PixelImage& img, uint8_t background);

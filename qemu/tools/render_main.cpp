@@ -62,6 +62,8 @@ void print_metrics(const raster::AccuracyMetrics& m) {
     std::printf("max_texel_error %u\nmean_texel_error %.6f\nshare_exact %.6f\nshare_within_one %.6f\n", m.max_texel_error,
                 m.mean_texel_error, share(m.exact, m.compared), share(m.within_one, m.compared));
     std::printf("pixels_index_differs %u\nshare_index_differs %.6f\n", m.index_differs, share(m.index_differs, m.union_pixels));
+    std::printf("p999_texel_error %u\nmax_footprint_error %.6f\nmean_footprint_error %.6f\np999_footprint_error %.6f\nfolded_pixels %u\n",
+                m.p999_texel_error, m.max_footprint_error, m.mean_footprint_error, m.p999_footprint_error, m.folded);
 }
 
 // A frame of a 3D scene: the picture and the frame's and the drawing's figures; with compare, the

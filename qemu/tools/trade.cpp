@@ -93,7 +93,7 @@ void mark_pareto(std::vector<TradeRow>& rows) {
             rows[i].pareto = false;
             if (!rows[i].draws_everything()) continue;
             index.push_back(i);
-            points.emplace_back(rows[i].draw_per_pixel(), rows[i].accuracy.mean_texel_error);
+            points.emplace_back(rows[i].draw_per_pixel(), rows[i].accuracy.mean_footprint_error);
         }
         for (size_t k : pareto_front(points)) rows[index[k]].pareto = true;
     }
@@ -105,7 +105,9 @@ std::vector<std::string> csv_header() {
             "ticks_clear[instructions]", "ticks_draw[instructions]", "ticks_setup[instructions]", "ticks_walk[instructions]",
             "ticks_inner[instructions]", "ticks_blit[instructions]", "inner_per_pixel[instructions/pixel]",
             "draw_per_pixel[instructions/pixel]", "frame_per_pixel[instructions/pixel]", "setup_per_polygon[instructions/polygon]", "walk_per_span[instructions/span]",
-            "host_cycles_ratio[ratio]", "max_texel_error[texels]", "mean_texel_error[texels]", "share_exact[share]",
+            "host_cycles_ratio[ratio]", "max_texel_error[texels]", "mean_texel_error[texels]", "p999_texel_error[texels]",
+            "max_footprint_error[footprints]", "mean_footprint_error[footprints]", "p999_footprint_error[footprints]",
+            "folded[pixels]", "share_exact[share]",
             "share_within_one[share]", "reference_pixels[pixels]", "gaps[pixels]", "overdraw[pixels]", "overlaps[pixels]",
             "index_differs[pixels]", "kernel_equals_host[bool]", "pareto[bool]"};
 }
@@ -123,7 +125,9 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
             << r.blit << "," << fixed(r.inner_per_pixel(), 3) << "," << fixed(r.draw_per_pixel(), 3) << "," << fixed(r.frame_per_pixel(), 3) << ","
             << fixed(r.setup_per_polygon(), 1) << "," << fixed(r.walk_per_span(), 1) << ","
             << (r.host_ratio > 0 ? fixed(r.host_ratio, 3) : "") << "," << a.max_texel_error << ","
-            << fixed(a.mean_texel_error, 4) << "," << fixed(r.share_exact(), 4) << ","
+            << fixed(a.mean_texel_error, 4) << "," << a.p999_texel_error << "," << fixed(a.max_footprint_error, 4) << ","
+            << fixed(a.mean_footprint_error, 4) << "," << fixed(a.p999_footprint_error, 4) << "," << a.folded << ","
+            << fixed(r.share_exact(), 4) << ","
             << fixed(a.compared ? double(a.within_one) / a.compared : 0.0, 4) << "," << a.reference_pixels << "," << a.gaps
             << "," << a.overdraw << "," << a.overlaps << "," << a.index_differs << "," << (r.kernel_equals_host ? "true" : "false")
             << "," << (r.pareto ? "true" : "false") << "\n";
@@ -153,15 +157,16 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
         std::string plot = "trade-" + scene + ".png";
         if (std::find(info.plots.begin(), info.plots.end(), plot) != info.plots.end()) out << "![" << scene << "](" << plot << ")\n\n";
         out << "| mapper | surface | inner instr/px | draw instr/px | frame instr/px | setup instr/polygon | walk instr/span | host cycles (ratio) "
-               "| max err | mean err | exact | gaps | overdraw | kernel = host | Pareto |\n";
+               "| texel err max / mean / p99.9 | footprint err max / mean / p99.9 | exact | gaps | overdraw | kernel = host | Pareto |\n";
         out << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|---|\n";
         for (const TradeRow* r : drawing_rows_by_speed(rows, scene)) {
             const raster::AccuracyMetrics& a = r->accuracy;
             std::string front = r->pareto ? "**yes**" : r->rejected ? "partial: " + std::to_string(r->rejected) + " polygons refused" : "";
             out << "| " << r->mapper << " | " << r->surface << " | " << fixed(r->inner_per_pixel(), 1) << " | "
                 << fixed(r->draw_per_pixel(), 1) << " | " << fixed(r->frame_per_pixel(), 1) << " | " << fixed(r->setup_per_polygon(), 0) << " | " << fixed(r->walk_per_span(), 1)
-                << " | " << (r->host_ratio > 0 ? fixed(r->host_ratio, 2) : "-") << " | " << a.max_texel_error << " | "
-                << fixed(a.mean_texel_error, 3) << " | " << fixed(100 * r->share_exact(), 1) << "% | " << a.gaps << " | " << a.overdraw
+                << " | " << (r->host_ratio > 0 ? fixed(r->host_ratio, 2) : "-") << " | " << a.max_texel_error << " / "
+                << fixed(a.mean_texel_error, 3) << " / " << a.p999_texel_error << " | " << fixed(a.max_footprint_error, 2) << " / "
+                << fixed(a.mean_footprint_error, 3) << " / " << fixed(a.p999_footprint_error, 2) << " | " << fixed(100 * r->share_exact(), 1) << "% | " << a.gaps << " | " << a.overdraw
                 << " | " << (r->kernel_equals_host ? "equal" : "DIFFERS") << " | " << front << " |\n";
         }
         std::string refused;
@@ -208,14 +213,14 @@ std::string write_plot(const std::string& dir, const std::string& scene, const s
         << "set terminal pngcairo size 1000,640 font ',10'\nset output '" << png << "'\n"
         << "set title '" << scene << ": speed against accuracy (QEMU icount; Pareto front joined; hollow: refuses some polygons)'\n"
         << "set xlabel 'guest instructions per pixel drawn: setup, walking, inner loop (lower is faster)'\n"
-        << "set ylabel 'mean texel error against the exact reference (texels; log scale, 0 shown as 0.001)'\n"
+        << "set ylabel 'mean footprint error against the exact reference (texel error / max(1, texels per pixel); log scale, 0 shown as 0.001)'\n"
         << "set logscale y\nset grid\nset key top right\nset offsets graph 0.02, graph 0.12, graph 0.05, graph 0.05\n";
     // points in speed order; labels alternate above and below so that neighbours do not overprint
     auto block = [&](const char* name, auto keep) {
         out << "$" << name << " << EOD\n";
         int k = 0;
         for (const TradeRow* r : points)
-            if (keep(r, k++)) out << fixed(r->draw_per_pixel(), 3) << " " << fixed(std::max(0.001, r->accuracy.mean_texel_error), 4) << " " << r->mapper << "\n";
+            if (keep(r, k++)) out << fixed(r->draw_per_pixel(), 3) << " " << fixed(std::max(0.001, r->accuracy.mean_footprint_error), 4) << " " << r->mapper << "\n";
         out << "EOD\n";
     };
     block("all", [](const TradeRow* r, int) { return r->draws_everything(); });
@@ -224,7 +229,7 @@ std::string write_plot(const std::string& dir, const std::string& scene, const s
     block("partial", [](const TradeRow* r, int) { return !r->draws_everything(); });
     out << "$front << EOD\n";
     for (const TradeRow* r : points)
-        if (r->pareto) out << fixed(r->draw_per_pixel(), 3) << " " << fixed(std::max(0.001, r->accuracy.mean_texel_error), 4) << "\n";
+        if (r->pareto) out << fixed(r->draw_per_pixel(), 3) << " " << fixed(std::max(0.001, r->accuracy.mean_footprint_error), 4) << "\n";
     out << "EOD\n";
     bool any_partial = std::any_of(points.begin(), points.end(), [](const TradeRow* r) { return !r->draws_everything(); });
     out << "plot $front using 1:2 with lines lw 2 lc rgb '#c03030' title 'Pareto front', \\\n"

@@ -106,6 +106,57 @@ TEST(Reference, AgreesWithAnIndependentBruteForceEvaluation) {
     EXPECT_LT(near_ties, pixels / 100000 + 1) << "ties are rare";
 }
 
+// The reference's footprint (texel_footprint) against central differences of the brute-force
+// mapping in long double: the larger of the texel steps across and down, each the larger of its
+// u and v parts.
+void brute_uv_at(const Brute& t, long double cx, long double cy, long double* u, long double* v) {
+    long double l[3];
+    for (int i = 0; i < 3; ++i) {
+        int a = (i + 1) % 3, b = (i + 2) % 3;
+        l[i] = (long double)(t.x[b] - t.x[a]) * (cy - t.y[a]) - (long double)(t.y[b] - t.y[a]) * (cx - t.x[a]);
+    }
+    long double num_u = 0, num_v = 0, den = 0;
+    for (int i = 0; i < 3; ++i) num_u += l[i] * t.u[i] / t.w[i], num_v += l[i] * t.v[i] / t.w[i], den += l[i] / t.w[i];
+    *u = num_u / den;
+    *v = num_v / den;
+}
+
+TEST(Reference, FootprintAgreesWithFiniteDifferences) {
+    TriangleGen gen(4321);
+    std::vector<uint8_t> texels(64 * 64, 1);
+    Texture texture{texels.data(), 64, 64, Wrap::Repeat};
+    Picture pic(SCREEN_WIDTH, SCREEN_HEIGHT);
+    long checked = 0;
+    long double worst = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        std::vector<Vertex> p = gen.triangle();
+        Brute b;
+        for (int i = 0; i < 3; ++i) b.x[i] = p[size_t(i)].x.raw, b.y[i] = p[size_t(i)].y.raw, b.u[i] = p[size_t(i)].u,
+                                        b.v[i] = p[size_t(i)].v, b.w[i] = p[size_t(i)].w;
+        clear_pixel_image(pic.view, 0);
+        if (reference_polygon(p.data(), 3, texture, pic.view) != SetupStatus::Ok) continue;
+        for (size_t i = 0; i < pic.coverage.size(); i += 13) {
+            if (!pic.coverage[i]) continue;
+            long double cx = (long double)(i % SCREEN_WIDTH) * 256 + 128, cy = (long double)(i / SCREEN_WIDTH) * 256 + 128;
+            const long double h = 0.0625L;  // subpixels: 1/4096 pixel either side
+            long double u0, v0, u1, v1, steps[2];
+            for (int axis = 0; axis < 2; ++axis) {
+                brute_uv_at(b, cx - (axis == 0 ? h : 0), cy - (axis == 1 ? h : 0), &u0, &v0);
+                brute_uv_at(b, cx + (axis == 0 ? h : 0), cy + (axis == 1 ? h : 0), &u1, &v1);
+                long double scale = 256 / (2 * h);  // per pixel
+                steps[axis] = std::max(std::fabs(u1 - u0), std::fabs(v1 - v0)) * scale;
+            }
+            long double want = std::max(steps[0], steps[1]), got = pic.footprint[i];
+            long double error = std::fabs(got - want) / std::max(want, 1e-6L);
+            worst = std::max(worst, error);
+            ASSERT_LT(error, 1e-5L) << "trial " << trial << " pixel " << i << ": footprint " << double(got) << ", by differences " << double(want);
+            ++checked;
+        }
+    }
+    std::printf("footprint vs finite differences: %ld pixels, worst relative difference %.2g\n", checked, double(worst));
+    EXPECT_GT(checked, 10000);
+}
+
 // ---- the exact mapper equals the reference ---------------------------------------------------
 
 void expect_equal_pictures(const Picture& a, const Picture& b, const std::string& what) {

@@ -33,7 +33,7 @@ TradeRow row(const std::string& scene, const std::string& mapper, uint64_t draw,
     r.scene = scene, r.mapper = mapper;
     r.pixels = 100, r.polygons = 4, r.spans = 10, r.rejected = rejected;
     r.draw = draw, r.ticks = draw + 500, r.inner = draw / 2, r.setup = draw / 4, r.walk = draw - draw / 2 - draw / 4;
-    r.accuracy.compared = 100, r.accuracy.mean_texel_error = mean_error;
+    r.accuracy.compared = 100, r.accuracy.mean_texel_error = mean_error, r.accuracy.mean_footprint_error = mean_error;
     return r;
 }
 
