@@ -213,7 +213,7 @@ std::string write_plot(const std::string& dir, const std::string& scene, const s
         << "set terminal pngcairo size 1000,640 font ',10'\nset output '" << png << "'\n"
         << "set title '" << scene << ": speed against accuracy (QEMU icount; Pareto front joined; hollow: refuses some polygons)'\n"
         << "set xlabel 'guest instructions per pixel drawn: setup, walking, inner loop (lower is faster)'\n"
-        << "set ylabel 'mean footprint error against the exact reference (texel error / max(1, texels per pixel); log scale, 0 shown as 0.001)'\n"
+        << "set ylabel 'mean footprint error against the reference (log scale; 0 shown as 0.001)'\n"
         << "set logscale y\nset grid\nset key top right\nset offsets graph 0.02, graph 0.12, graph 0.05, graph 0.05\n";
     // points in speed order; labels alternate above and below so that neighbours do not overprint
     auto block = [&](const char* name, auto keep) {
