@@ -3,6 +3,7 @@
 #                                           (builds only the kernel and the harness)
 #   make test   every test, one summary      make clean  remove build/
 #   make bench  the speed/accuracy report (build/report)
+#   make bounds the error bounds against measured errors on 100000 random polygons a mapper
 #   make deps   install missing tools (run, bench and test do it themselves)
 
 MAKEFLAGS += -rR --no-print-directory
@@ -125,7 +126,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures run bench report test deps clean
+.PHONY: all iso kernel host fixtures run bench report bounds test deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
@@ -269,12 +270,23 @@ run: deps
 	DISPLAY=$(X_DISPLAY) $(HARNESS) run --kernel $(KERNEL) --out $(BUILD)/run $(if $(SCENE),--scene $(SCENE)) \
 		$(if $(MAPPER),--mapper $(MAPPER)) $(if $(filter 1,$(DISPLAY)),--display)
 
-# `make bench`: every mapper on every demo scene; the report in build/report (docs/bench.md).
+# `make bench`: every mapper on every demo scene; the report in build/report (docs/bench.md), and the
+# cost model auto chooses by, kernel/mappers/costs.cpp, when the run is full.
 # SCENES=a,b MAPPERS=x,y FRAMES=N narrow it.
 bench report: deps
 	@$(MAKE) -s -j$(NPROC) $(KERNEL) $(BENCH) $(CYCLES)
 	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
 		$(if $(FRAMES),--frames $(FRAMES))
+	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "cost model not copied (a narrowed run): $(BUILD)/report/costs.cpp",\
+		cmp -s $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model unchanged" || \
+		{ cp $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model updated: kernel/mappers/costs.cpp (commit it)"; })
+
+# `make bounds`: every mapper's error bound against its measured error on 100000 random polygons
+# (make test runs 600 of them) and on every demo scene (docs/accuracy.md, "Error bounds").
+BOUND_POLYGONS ?= 100000
+bounds: deps
+	@$(MAKE) -s -j$(NPROC) $(TESTS)
+	MODEXLAB_BOUND_POLYGONS=$(BOUND_POLYGONS) $(TESTS) --gtest_filter='Bounds.*'
 
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures

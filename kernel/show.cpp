@@ -48,7 +48,7 @@ void run(uint32_t interval_ms, bool show_patterns, lib::StrView scene, lib::StrV
     if (vga::mode() != vga::Mode::ModeX) vga::set_mode_x();
     if (show_patterns) return patterns(interval_ms);
     const raster::Mapper* mapper = mapper_name.empty() ? nullptr : raster::find_mapper(mapper_name);
-    if (!mapper) mapper = raster::find_mapper(lib::StrView{"persp-subdiv-16", 15});
+    if (!mapper) mapper = raster::find_mapper("auto");
     bool any = false;
     for (int i = 0; i < files::count(); ++i) any = any || is_world(files::at(i));
     if (!any) return patterns(interval_ms);

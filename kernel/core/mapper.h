@@ -67,6 +67,9 @@ struct SpanContext {
 // Draws span s starting at dst, `stride` bytes between pixels, with the context's loop.
 using SpanFn = void (*)(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
 
+// At most this many registry rows (registry.cpp checks): arrays indexed by row.
+constexpr int MAPPER_LIMIT = 32;
+
 struct RenderStats {
     uint32_t polygons = 0;   // set up and walked
     uint32_t skipped = 0;    // degenerate (zero area): nothing to draw
@@ -74,6 +77,9 @@ struct RenderStats {
     uint32_t spans = 0;
     uint32_t pixels = 0;
     Probe* probe = nullptr;  // the bench's lap timer, when it times the phases
+    // by registry row: the polygons each mapper drew and their pixels (auto draws with several)
+    uint32_t mapper_polygons[MAPPER_LIMIT] = {};
+    uint32_t mapper_pixels[MAPPER_LIMIT] = {};
 };
 
 // A mapper with its own setup and edge walking (the classics, our fast loops) draws whole polygons.
@@ -130,6 +136,10 @@ constexpr Guarantee NO_GUARANTEE{false, -1, -1};           // the classics: what
 struct Mapper;
 struct LoopCheck;
 struct CheckBuffers;
+struct ErrorBound;
+struct BoundContext;
+// What the mapper promises for a polygon before drawing it (core/bound.h).
+using BoundFn = ErrorBound (*)(const BoundContext& c, const Vertex* vertices, int count);
 // The differential check of a mapper's NASM loop against its twin (core/selftest.h).
 using CheckFn = LoopCheck (*)(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
@@ -147,6 +157,8 @@ struct Mapper {
     DrawFn draw = nullptr;    // its own polygon driver, or nullptr for the generic walker
     CheckFn check = nullptr;  // random cases for its loop: NASM against twin (nullptr: no NASM loop,
                               // or one the kernel checks on the VGA itself, NEED_VGA_FOR_ASM)
+    BoundFn bound = nullptr;  // its error bound on a polygon (unbounded: none derived)
+    bool chooses = false;     // auto: draws each polygon with a mapper it chooses (core/choice.h)
 };
 
 extern const Mapper MAPPERS[];

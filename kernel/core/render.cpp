@@ -3,10 +3,18 @@
 
 namespace raster {
 
-SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
-                         Target& target, RenderStats* stats, Variant variant) {
+SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& named, Axis axis,
+                         Target& target, RenderStats* stats, Variant variant, const Budget& budget) {
     Probe* probe = stats->probe;
     probe_lap(probe, Phase::Walk);  // what came before the polygon: the caller's loop
+    const Mapper* chosen = &named;
+    if (named.chooses) {  // the choice counts as setup; where none draws it, exact's setup says why
+        chosen = choose_mapper(budget, vertices, count, tex, axis, target).mapper;
+        if (!chosen) chosen = find_mapper("exact");
+        probe_lap(probe, Phase::Setup);
+    }
+    const Mapper& mapper = *chosen;
+    const uint32_t pixels_before = stats->pixels;
     if (!mapper_walks(mapper, axis) || !mapper_accepts(mapper, tex) || !mapper_targets(mapper, target, axis)) {
         ++stats->rejected;
         return SetupStatus::Unsupported;
@@ -31,8 +39,12 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
         }
     }
     probe_lap(probe, Phase::Walk);
-    if (status == SetupStatus::Ok) ++stats->polygons;
-    else if (status == SetupStatus::Degenerate) ++stats->skipped;
+    if (status == SetupStatus::Ok) {
+        ++stats->polygons;
+        const int row = int(&mapper - MAPPERS);
+        ++stats->mapper_polygons[row];
+        stats->mapper_pixels[row] += stats->pixels - pixels_before;
+    } else if (status == SetupStatus::Degenerate) ++stats->skipped;
     else ++stats->rejected;
     return status;
 }

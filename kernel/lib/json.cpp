@@ -72,6 +72,23 @@ JsonLine& JsonLine::i32(const char* k, int32_t value) {
     return *this;
 }
 
+JsonLine& JsonLine::fixed(const char* k, double value, int places) {
+    key(k);
+    uint64_t scale = 1;
+    for (int i = 0; i < places; ++i) scale *= 10;
+    bool negative = value < 0;
+    double scaled = (negative ? -value : value) * double(scale) + 0.5;
+    uint64_t units = uint64_t(scaled);
+    while (places > 0 && units % 10 == 0) units /= 10, scale /= 10, --places;  // no trailing zeros
+    if (negative && units) out_.put('-');
+    decimal(units / scale);
+    if (places > 0) {
+        out_.put('.');
+        for (uint64_t digit = scale / 10; digit; digit /= 10) out_.put(char('0' + (units / digit) % 10));
+    }
+    return *this;
+}
+
 JsonLine& JsonLine::boolean(const char* k, bool value) {
     key(k);
     if (value) out_.write("true", 4);

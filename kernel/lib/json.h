@@ -22,6 +22,9 @@ public:
     JsonLine& u32(const char* key, uint32_t value);
     JsonLine& u64(const char* key, uint64_t value);
     JsonLine& i32(const char* key, int32_t value);
+    // value rounded to `places` decimals (0..6, half away from zero; |value| < 2^53 / 10^places),
+    // written without trailing zeros: 0.5, 2, -1.25
+    JsonLine& fixed(const char* key, double value, int places);
     JsonLine& boolean(const char* key, bool value);
     JsonLine& hex32(const char* key, uint32_t value);  // as a string "0x0010002a"
 

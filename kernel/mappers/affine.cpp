@@ -1,6 +1,8 @@
 // affine: the textbook mapper, our baseline (docs/mappers.md).
 #include "kernel/mappers/affine.h"
 
+#include "kernel/core/bound.h"
+
 namespace raster {
 
 namespace {
@@ -34,6 +36,36 @@ void affine_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
         u = u + du;
         v = v + dv;
     }
+}
+
+// The bound (docs/accuracy.md, "Error bounds"): on each span the mapper steps the affine planes
+// from the first pixel centre, so its u and v follow the planes' lines to within 16.16 rounding
+// (half a unit at the start and in the step: (1 + k) / 2^17 after k pixels); the lines' deviation
+// from the exact mapping is measured piece by piece (BOUND_PIECE pixels, over each piece's own
+// smallest footprint).
+ErrorBound affine_bound(const BoundContext& c, const Vertex* vertices, int count) {
+    ErrorBound b;
+    b.exact_coverage = true;
+    bool fits = true;
+    double worst = 0;
+    b.draws = for_each_span(vertices, count, c.axis, c.clip, PLANES_ALL, [&](const Span& span, const PolygonSetup& s) {
+        if (c.settled(worst)) return;
+        SpanLine l = span_line(s, c.axis, span);
+        double x = centre_x(s, span.x), y = centre_y(s, span.y), last = double(span.count - 1);
+        const Plane* plane[2] = {&s.u, &s.v};
+        const int32_t size[2] = {c.tex.width, c.tex.height};
+        double a[2], step[2];
+        for (int t = 0; t < 2; ++t) {
+            a[t] = plane[t]->at(x, y);
+            step[t] = (c.axis == Axis::Rows ? plane[t]->gx : plane[t]->gy) * double(SUBPIXEL_ONE);
+            fits = fits && fits_16_16(a[t], step[t], last, size[t], c.tex.wrap);
+        }
+        auto piece = [&](double k0, double k1) { return lines_bound(l, a, step, k0, k1, (1 + k1) * HALF_ULP_16_16); };
+        double bound = span_bound(c, last, BOUND_PIECE, [&] { return piece(0, last); }, piece);
+        worst = bound > worst ? bound : worst;
+    });
+    b.footprint = fits ? worst : NO_BOUND;
+    return b;
 }
 
 }  // namespace raster

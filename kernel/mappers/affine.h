@@ -9,5 +9,6 @@
 namespace raster {
 
 void affine_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
+ErrorBound affine_bound(const BoundContext& c, const Vertex* vertices, int count);
 
 }  // namespace raster

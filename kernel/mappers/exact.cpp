@@ -2,6 +2,7 @@
 #include "kernel/mappers/exact.h"
 
 #include "kernel/core/asm_offsets.h"
+#include "kernel/core/bound.h"
 #include "kernel/core/selftest.h"
 
 namespace raster {
@@ -48,6 +49,16 @@ void exact_loop(const void* raw) {
         x += a.step_x;  // exact: integers below 2^53, and adding 0 changes nothing
         y += a.step_y;
     }
+}
+
+// The bound: the reference's definition, bit for bit (a test on thousands of triangles).
+ErrorBound exact_bound(const BoundContext&, const Vertex* vertices, int count) {
+    ErrorBound b;
+    PolygonSetup s;
+    b.draws = setup_polygon(vertices, count, &s, PLANES_NONE) == SetupStatus::Ok;
+    b.exact_coverage = true;
+    b.footprint = 0;
+    return b;
 }
 
 // The loop's random cases (core/selftest.h).

@@ -26,6 +26,7 @@ struct ExactArgs {
 void exact_loop(const void* args);
 
 void exact_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
+ErrorBound exact_bound(const BoundContext& c, const Vertex* vertices, int count);
 LoopCheck check_exact(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
 }  // namespace raster

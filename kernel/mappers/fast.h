@@ -48,5 +48,6 @@ namespace raster::fast {
 
 SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count);     // fast-affine
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count);  // fast-columns
+ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count);         // both
 
 }  // namespace raster::fast

@@ -1,6 +1,8 @@
 // The mapper registry: one row per mapper, in the order the tables list them. Adding a mapper with
 // a NASM loop: kernel/mappers/NAME.h and NAME.cpp (driver, argument block, twin, checks, offsets),
 // asm/NAME.asm, and its row here (docs/architecture.md, "Where to add").
+#include "kernel/core/bound.h"
+#include "kernel/core/choice.h"
 #include "kernel/core/mapper.h"
 #include "kernel/mappers/affine.h"
 #include "kernel/mappers/exact.h"
@@ -15,62 +17,68 @@ namespace raster {
 
 // Each row: name, family, origin; the promise in words; the promise checkable, what it needs, the
 // walkers it takes; its span function (generic walker) or nullptr; its twin loop and NASM loop
-// (TWIN_AND_ASM); its own polygon driver; the random cases that check its NASM loop.
+// (TWIN_AND_ASM); its own polygon driver; the random cases that check its NASM loop; its error
+// bound on a polygon (core/bound.h; unbounded where none is derived yet).
 const Mapper MAPPERS[] = {
     {"affine", "ours", "textbook affine interpolation",
      "exact coverage; u, v affine in screen space (16.16 steps): error grows with depth variation",
-     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, affine_span, nullptr, nullptr},
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, affine_span, nullptr, nullptr, nullptr, nullptr, affine_bound},
     {"exact", "ours", "the reference's definition, per pixel",
      "equal to the reference: per-pixel perspective divide in double precision",
-     EQUALS_REFERENCE, NEED_NOTHING, AXIS_BOTH, exact_span, TWIN_AND_ASM(exact_loop), nullptr, check_exact},
+     EQUALS_REFERENCE, NEED_NOTHING, AXIS_BOTH, exact_span, TWIN_AND_ASM(exact_loop), nullptr, check_exact, exact_bound},
     {"persp-subdiv-4", "ours", "exact every 4 pixels, affine between",
      "perspective-correct at every 4th pixel and the last; 16.16 steps rounded to nearest; exact coverage; any texture",
-     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<4>, nullptr, nullptr},
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<4>, nullptr, nullptr, nullptr, nullptr, subdiv_bound<4>},
     {"persp-subdiv-8", "ours", "exact every 8 pixels, affine between", "as persp-subdiv-4, every 8th pixel",
-     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<8>, nullptr, nullptr},
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<8>, nullptr, nullptr, nullptr, nullptr, subdiv_bound<8>},
     {"persp-subdiv-16", "ours", "exact every 16 pixels, affine between", "as persp-subdiv-4, every 16th pixel",
-     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<16>, nullptr, nullptr},
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<16>, nullptr, nullptr, nullptr, nullptr, subdiv_bound<16>},
     {"persp-subdiv-32", "ours", "exact every 32 pixels, affine between", "as persp-subdiv-4, every 32nd pixel",
-     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<32>, nullptr, nullptr},
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<32>, nullptr, nullptr, nullptr, nullptr, subdiv_bound<32>},
     {"fast-affine", "ours", "fatmap2's 8:16 core, unrolled with a computed entry, walking runs of rows in NASM",
      "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; 256 x 256 repeating textures",
-     EXACT_COVERAGE_FLAT_ONE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run},
+     EXACT_COVERAGE_FLAT_ONE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound},
     {"fast-columns", "ours", "the same core down Mode X columns, the map mask set once a column",
      "as fast-affine, by columns into Mode X planes",
      EXACT_COVERAGE_FLAT_ONE, NEED_ALIGNED256 | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_loop),
-     fast::draw_columns, check_fast_column},
+     fast::draw_columns, check_fast_column, fast::bound},
     {"xsharp-dda", "classic", "Abrash, Black Book listing 57.1 (X-Sharp 21, C)",
      "affine; whole-pixel vertices, X-Sharp's fill convention; half-step prestep, rounds to the nearest texel; cannot wrap",
-     NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, nullptr, nullptr, xsharp::draw_dda},
+     NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, nullptr, nullptr, xsharp::draw_dda, nullptr, unbounded},
     {"xsharp-row-out", "classic", "Abrash, Black Book listing 57.2, inner loop 58.1 (X-Sharp 21, asm)",
      "the same pixels as xsharp-dda, written to Mode X planes with an OUT to the Map Mask per pixel",
      NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE | NEED_PLANAR_TARGET | NEED_VGA_FOR_ASM, AXIS_ROWS, nullptr, TWIN_AND_ASM(xsharp_row_loop),
-     xsharp::draw_row_out},
+     xsharp::draw_row_out, nullptr, unbounded},
     {"xsharp-column", "classic", "Abrash, Black Book listing 58.4, as X-Sharp 22 shipped it",
      "affine; columns with X-Sharp's fill convention; the Y fraction keeps 15 bits (a texel row off at about 2 pixels in 10000)",
      NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(xsharp_column_loop),
-     xsharp::draw_column, check_xsharp_column},
+     xsharp::draw_column, check_xsharp_column, unbounded},
     {"hecker-steptable", "classic", "Hecker, Game Developer 1995-96, parts III-V (SUBAFXFL setup, part V listing 2 loop)",
      "perspective-correct every 8 pixels, affine between; 28.4 vertices, top-left fill; rounding modifiers from du/dx; cannot wrap",
-     NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(hecker_loop), hecker::draw, check_hecker},
+     NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(hecker_loop), hecker::draw, check_hecker, unbounded},
     {"fatmap-256", "classic", "Byggmastar, fatmap.txt (1996): the constant-delta setup and the 5-tick loop",
      "affine; whole-pixel vertices, x truncated, no prestep; 8-bit fractions (\"shaky\"); 256 x 256 only, wraps",
-     NO_GUARANTEE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap_loop), fatmap::draw_256, check_fatmap},
+     NO_GUARANTEE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap_loop), fatmap::draw_256, check_fatmap, unbounded},
     {"fatmap-256-16", "classic", "Byggmastar, fatmap.txt setup with fatmap2.txt's 8:16 loop (Simmons)",
      "as fatmap-256 with 16-bit fractions in the loop",
-     NO_GUARANTEE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap16_loop), fatmap::draw_256, check_fatmap},
+     NO_GUARANTEE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap16_loop), fatmap::draw_256, check_fatmap, unbounded},
     {"fatmap-lut", "classic", "Byggmastar, fatmap.txt section 13: the table-lookup loop",
      "affine; every scanline starts at the table's first entry: its start fractions dropped, up to a texel off on each axis and drifting; 256 x 256 only, cannot wrap",
      NO_GUARANTEE, NEED_ALIGNED256 | NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap_lut_loop),
-     fatmap::draw_lut, check_fatmap_lut},
+     fatmap::draw_lut, check_fatmap_lut, unbounded},
     {"quake-subdiv16", "classic", "id Software, WinQuake d_scan.c / d_draw16.s (1996-99)",
      "perspective-correct every 16 pixels and at each span's last pixel, affine between (steps floored); s, t clamped into the texture; exact coverage (our walker)",
-     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw16, check_quake},
+     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw16, check_quake, unbounded},
     {"quake-subdiv8", "classic", "id Software, WinQuake d_scan.c D_DrawSpans8 / d_draw.s",
      "as quake-subdiv16 with 8-pixel segments",
-     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw8, check_quake},
+     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw8, check_quake, unbounded},
+    {"auto", "ours", "the scene's budget: the cheapest mapper proven to meet it, polygon by polygon",
+     "each polygon by the cheapest of our bounded mappers (the cost model: make bench) whose error bound meets the scene's budget "
+     "(without a budget line: footprint error 1, exact coverage); exact coverage",
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, nullptr, nullptr, nullptr, nullptr, nullptr, auto_bound, true},
 };
 const int MAPPER_COUNT = sizeof(MAPPERS) / sizeof(MAPPERS[0]);
+static_assert(sizeof(MAPPERS) / sizeof(MAPPERS[0]) <= MAPPER_LIMIT, "more registry rows than MAPPER_LIMIT");
 
 const Mapper* find_mapper(lib::StrView name) {
     for (int i = 0; i < MAPPER_COUNT; ++i)

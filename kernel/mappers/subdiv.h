@@ -10,5 +10,7 @@ namespace raster {
 
 template <int N>
 void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
+template <int N>
+ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count);
 
 }  // namespace raster

@@ -139,6 +139,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
     f.number = frame_number;
     f.polygon_count = f.vertex_count = 0;
     f.stats = FrameStats{};
+    f.budget = world.budget;
     const double time = frame_time(frame_number);
     const View view = View::of(world.camera, time);
     const double near = world.camera.near, far = world.camera.far;
@@ -257,7 +258,8 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
     stats.probe = probe;
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
-        draw_polygon(v, frame.polygon_size[i], textures.objects[frame.polygon_object[i]], mapper, axis, target, &stats, variant);
+        draw_polygon(v, frame.polygon_size[i], textures.objects[frame.polygon_object[i]], mapper, axis, target, &stats, variant,
+                     frame.budget);
         v += frame.polygon_size[i];
     }
     return stats;

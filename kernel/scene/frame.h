@@ -30,6 +30,7 @@ struct Frame {
     int32_t number = 0;
     int32_t polygon_count = 0, vertex_count = 0;
     FrameStats stats;
+    Budget budget;  // the world's: what auto draws to
     uint8_t polygon_size[MAX_FRAME_POLYGONS];
     uint8_t polygon_object[MAX_FRAME_POLYGONS];  // whose texture (and wrap) it takes
     Vertex vertices[MAX_FRAME_VERTICES];

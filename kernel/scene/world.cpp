@@ -332,8 +332,9 @@ bool top_line(Parser& p, const StrView* w, size_t n) {
         if (b.given) return p.fail(Fmt().s("a second budget line"));
         b.given = true;
         b.exact_coverage = w[4].equals("exact");
-        if (w[2].equals("any")) b.max_error = -1;
-        else if (!parse_int(w[2], 0, 1 << 24, &b.max_error)) return p.fail(Fmt().s("bad max-error '").s(w[2]).s("' (a texel count, or any)"));
+        if (w[2].equals("any")) b.max_error = ANY_ERROR;
+        else if (!parse_decimal(w[2], &b.max_error) || !(b.max_error >= 0 && b.max_error <= 1e6))
+            return p.fail(Fmt().s("bad max-error '").s(w[2]).s("' (a footprint error 0..1000000, or any)"));
         return true;
     }
     if (w[0].equals("frames")) {

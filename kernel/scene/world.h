@@ -11,6 +11,7 @@
 #include "kernel/scene/math3d.h"
 #include "kernel/scene/palette.h"
 #include "kernel/scene/scene.h"
+#include "kernel/core/choice.h"
 #include "kernel/core/texture.h"
 
 namespace raster {
@@ -97,13 +98,6 @@ struct Camera {
     PathKey keys[MAX_PATH_KEYS];
 };
 
-// What the scene requires of a mapper (kept for the selection policy).
-struct Budget {
-    bool given = false;
-    int32_t max_error = -1;       // texel error; -1: any
-    bool exact_coverage = false;  // no gaps, no overdraw
-};
-
 struct World {
     int32_t texture_count = 0;
     WorldTexture textures[MAX_WORLD_TEXTURES];
@@ -123,7 +117,7 @@ struct World {
     int32_t object_count = 0;
     Object objects[MAX_WORLD_OBJECTS];
     Camera camera;
-    Budget budget;
+    Budget budget;  // its budget line, or the default
     int32_t frames = 150;  // the animation's length: the demo plays frames 0..frames-1 and loops
 
     // texture i as the mappers see it for object `o` (its wrap), without the derived copies

@@ -26,6 +26,21 @@ const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry",
 // Static: every field of every frame for the medians, 36 KB, more than half the 64 KiB kernel stack.
 uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
 
+// The polygons and pixels each mapper drew (auto draws with several), summed over frames.
+struct MapperTally {
+    uint64_t polygons[raster::MAPPER_LIMIT] = {}, pixels[raster::MAPPER_LIMIT] = {};
+    void add(const raster::RenderStats& s) {
+        for (int i = 0; i < raster::MAPPER_COUNT; ++i) polygons[i] += s.mapper_polygons[i], pixels[i] += s.mapper_pixels[i];
+    }
+    // "drawn_by": [{"mapper": NAME, "polygons": N, "pixels": N}, ...], the mappers that drew any
+    void write(lib::JsonLine& r) const {
+        r.begin_array("drawn_by");
+        for (int i = 0; i < raster::MAPPER_COUNT; ++i)
+            if (polygons[i]) r.begin_item_object().str("mapper", raster::MAPPERS[i].name).u64("polygons", polygons[i]).u64("pixels", pixels[i]).end_object();
+        r.end_array();
+    }
+};
+
 uint32_t clamp32(uint64_t v) { return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : uint32_t(v); }
 
 uint64_t render_ticks(const scenes::RenderResult& r) { return r.ticks_clear + r.ticks_draw + r.ticks_blit; }
@@ -47,6 +62,9 @@ void render_fields(lib::JsonLine& r, const DrawArgs& d, const scenes::RenderResu
         .u32("rejected", res.stats.rejected)
         .u32("spans", res.stats.spans)
         .u32("pixels", res.stats.pixels);
+    MapperTally t;
+    t.add(res.stats);
+    t.write(r);
 }
 
 void frame_fields(lib::JsonLine& r, const worlds::FrameResult& f) {
@@ -121,6 +139,7 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     DrawArgs d;
     if (!parse_animation_args("play", args, nargs, MAX_PLAY_FRAMES, "", &frames, &d)) return;
     uint64_t pixels = 0, total = 0, t_start = timer::rdtsc();
+    MapperTally tally;
     for (uint32_t i = 0; i < frames; ++i) {
         int32_t n = int32_t(i % uint32_t(worlds::world().frames));
         d.page = hidden_page();
@@ -131,6 +150,7 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
         uint64_t ticks = frame_ticks(f);
         g_play_ticks[i] = clamp32(ticks);
         pixels += f.render.stats.pixels;
+        tally.add(f.render.stats);
         total += ticks;
         lib::JsonLine(serial::sink())
             .str("event", "frame")
@@ -151,7 +171,9 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     lib::Summary s = lib::summarise_in_place(g_play_ticks, frames);
     lib::JsonLine r = animation_reply("play", frames, d);
     r.u64("pixels", pixels).u64("ticks", total).u32("ticks_min", s.min).u32("ticks_median", s.median).u32("ticks_max", s.max);
-    r.u64("ticks_wall", wall).end();
+    r.u64("ticks_wall", wall);
+    tally.write(r);
+    r.end();
 }
 
 void cmd_bench(Context&, const StrView* args, size_t nargs) {
@@ -163,6 +185,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     probe.calibrate();
     const uint32_t length = uint32_t(worlds::world().frames);
     uint64_t polygons = 0, rejected = 0, spans = 0, pixels = 0;
+    MapperTally tally;
     bool used_asm = false;
     for (uint32_t i = 0; i < frames; ++i) {
         int32_t n = int32_t(uint64_t(i) * length / frames);
@@ -186,6 +209,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
         }
         e.boolean("retrace", retrace).end();
         polygons += r.stats.polygons, rejected += r.stats.rejected, spans += r.stats.spans, pixels += r.stats.pixels;
+        tally.add(r.stats);
         used_asm = r.used_asm;
     }
     lib::JsonLine r = animation_reply("bench", frames, d);
@@ -195,6 +219,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
         lib::Summary s = lib::summarise_in_place(g_bench[k], frames);
         r.begin_object(BENCH_FIELD_NAMES[k]).u64("sum", s.sum).u32("min", s.min).u32("median", s.median).end_object();
     }
+    tally.write(r);
     r.end();
 }
 

@@ -249,41 +249,64 @@ struct MeasureTextures {
 
 }  // namespace
 
+struct PolygonMeter::Parts {
+    Picture ref{SCREEN_WIDTH, SCREEN_HEIGHT};  // one polygon at a time
+    std::vector<HostSurface> scratch;
+    std::map<const uint8_t*, std::unique_ptr<MeasureTextures>> stand_ins;  // by texels
+};
+
+PolygonMeter::PolygonMeter(const Mapper& mapper, Axis axis, const Budget& budget)
+    : mapper_(mapper), axis_(axis), budget_(budget), parts_(std::make_unique<Parts>()) {
+    for (int k = 0; k < 5; ++k) parts_->scratch.emplace_back(mapper, axis, 0);
+}
+
+PolygonMeter::~PolygonMeter() = default;
+
+AccuracyMetrics PolygonMeter::measure(const Vertex* v, int n, const Texture& tex, bool* drawn_out,
+                                      const std::function<void(int32_t x, int32_t y, bool rc, bool dc)>& pixel) {
+    Parts& p = *parts_;
+    auto& stand_in = p.stand_ins[tex.texels];
+    if (!stand_in) stand_in = std::make_unique<MeasureTextures>(tex);
+    reference_polygon(v, n, tex, p.ref.view);
+    bool drawn = true;
+    for (int k = 0; k < 5 && drawn; ++k) {
+        Target t = p.scratch[size_t(k)].target();
+        RenderStats ignored;
+        drawn = draw_polygon(v, n, stand_in->textures[k]->texture, mapper_, axis_, t, &ignored, Variant::Twin, budget_) == SetupStatus::Ok;
+    }
+    AccuracyMetrics m;
+    Box::around(v, n).each([&](int32_t x, int32_t y) {
+        size_t i = size_t(y) * SCREEN_WIDTH + size_t(x);
+        bool rc = p.ref.coverage[i] != 0, dc = drawn && p.scratch[0].at(x, y) != 0;
+        if (pixel) pixel(x, y, rc, dc);
+        if (rc && dc) {
+            int32_t tu = p.scratch[1].at(x, y) | (p.scratch[2].at(x, y) << 8), tv = p.scratch[3].at(x, y) | (p.scratch[4].at(x, y) << 8);
+            bool folded;
+            uint32_t e = texel_error(p.ref.tu[i], p.ref.tv[i], tu, tv, tex.width, tex.height, tex.wrap, &folded);
+            add_texel_error(m, e, double(p.ref.footprint[i]), folded);
+        }
+        p.ref.coverage[i] = 0;
+        for (HostSurface& s : p.scratch) s.at(x, y) = 0;
+    });
+    finish_metrics(m);
+    if (drawn_out) *drawn_out = drawn;
+    return m;
+}
+
 AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis) {
     AccuracyMetrics m;
     std::vector<uint8_t> ref_count(SCREEN_PIXELS, 0), drawn_count(SCREEN_PIXELS, 0);
-    Picture ref(SCREEN_WIDTH, SCREEN_HEIGHT);  // one polygon at a time
-    std::vector<HostSurface> scratch;
-    for (int k = 0; k < 5; ++k) scratch.emplace_back(mapper, axis, 0);
-    std::map<int32_t, std::unique_ptr<MeasureTextures>> stand_ins;  // by object
+    PolygonMeter meter(mapper, axis, frame.budget);
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
         const int n = frame.polygon_size[i];
-        const int32_t object = frame.polygon_object[i];
-        const Texture& tex = w.textures->objects[object];
-        auto& stand_in = stand_ins[object];
-        if (!stand_in) stand_in = std::make_unique<MeasureTextures>(tex);
-        reference_polygon(v, n, tex, ref.view);
-        bool drawn = true;
-        for (int k = 0; k < 5 && drawn; ++k) {
-            Target t = scratch[size_t(k)].target();
-            RenderStats ignored;
-            drawn = draw_polygon(v, n, stand_in->textures[k]->texture, mapper, axis, t, &ignored) == SetupStatus::Ok;
-        }
-        Box::around(v, n).each([&](int32_t x, int32_t y) {
-            size_t p = size_t(y) * SCREEN_WIDTH + size_t(x);
-            bool rc = ref.coverage[p] != 0, dc = drawn && scratch[0].at(x, y) != 0;
-            if (rc && ref_count[p] < 255) ++ref_count[p];
-            if (dc && drawn_count[p] < 255) ++drawn_count[p];
-            if (rc && dc) {
-                int32_t tu = scratch[1].at(x, y) | (scratch[2].at(x, y) << 8), tv = scratch[3].at(x, y) | (scratch[4].at(x, y) << 8);
-                bool folded;
-                uint32_t e = texel_error(ref.tu[p], ref.tv[p], tu, tv, tex.width, tex.height, tex.wrap, &folded);
-                add_texel_error(m, e, double(ref.footprint[p]), folded);
-            }
-            ref.coverage[p] = 0;
-            for (HostSurface& s : scratch) s.at(x, y) = 0;
-        });
+        AccuracyMetrics one = meter.measure(v, n, w.textures->objects[frame.polygon_object[i]], nullptr,
+                                            [&](int32_t x, int32_t y, bool rc, bool dc) {
+                                                size_t p = size_t(y) * SCREEN_WIDTH + size_t(x);
+                                                if (rc && ref_count[p] < 255) ++ref_count[p];
+                                                if (dc && drawn_count[p] < 255) ++drawn_count[p];
+                                            });
+        merge(m, one);
         v += n;
     }
     finish_metrics(m);

@@ -2,6 +2,7 @@
 // mapper's picture, and what a mapper drew measured pixel by pixel for the accuracy metrics.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -80,9 +81,29 @@ std::unique_ptr<raster::Frame> world_frame(const LoadedWorld& w, int32_t n);
 IndexImage render_world_frame(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper, raster::Axis axis,
                               raster::RenderStats* stats = nullptr);
 
+// A mapper's polygons measured one at a time against the reference: the texel and footprint
+// errors on the pixels both cover (only the mapper's drawing path is used: five renders, with a
+// texture of ones and four that hold their own coordinates). `pixel` sees, for every pixel of
+// the polygon's box, whether the reference and the mapper cover it. auto chooses for `budget`.
+class PolygonMeter {
+public:
+    PolygonMeter(const raster::Mapper& mapper, raster::Axis axis, const raster::Budget& budget = raster::DEFAULT_BUDGET);
+    ~PolygonMeter();
+    raster::AccuracyMetrics measure(const raster::Vertex* v, int n, const raster::Texture& tex, bool* drawn = nullptr,
+                                    const std::function<void(int32_t x, int32_t y, bool rc, bool dc)>& pixel = {});
+
+private:
+    struct Parts;
+    const raster::Mapper& mapper_;
+    raster::Axis axis_;
+    raster::Budget budget_;
+    std::unique_ptr<Parts> parts_;
+};
+
 // What the mapper draws of a frame against the reference (docs/accuracy.md, 3D frames): each
 // polygon alone, its texel errors on the pixels both cover for it, with its own texture's size and
-// wrap; coverage counts summed over the polygons; palette indices on the whole pictures.
+// wrap; coverage counts summed over the polygons; palette indices on the whole pictures. auto
+// chooses for the frame's budget.
 raster::AccuracyMetrics measure_world_frame(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper,
                                             raster::Axis axis);
 

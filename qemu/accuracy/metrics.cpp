@@ -63,7 +63,7 @@ void finish_metrics(AccuracyMetrics& m) {
     m.p999_footprint_error = percentile_999(m.footprint_errors);
 }
 
-void accumulate(AccuracyMetrics& total, const AccuracyMetrics& m) {
+void merge(AccuracyMetrics& total, const AccuracyMetrics& m) {
     total.reference_pixels += m.reference_pixels;
     total.drawn_pixels += m.drawn_pixels;
     total.overdraw += m.overdraw;
@@ -79,6 +79,10 @@ void accumulate(AccuracyMetrics& total, const AccuracyMetrics& m) {
     total.union_pixels += m.union_pixels;
     total.texel_errors.insert(total.texel_errors.end(), m.texel_errors.begin(), m.texel_errors.end());
     total.footprint_errors.insert(total.footprint_errors.end(), m.footprint_errors.begin(), m.footprint_errors.end());
+}
+
+void accumulate(AccuracyMetrics& total, const AccuracyMetrics& m) {
+    merge(total, m);
     finish_metrics(total);
 }
 

@@ -53,7 +53,9 @@ uint32_t texel_error(int32_t ru, int32_t rv, int32_t tu, int32_t tv, int32_t tex
 void add_texel_error(AccuracyMetrics& m, uint32_t e, double footprint, bool folded);
 void add_coverage(AccuracyMetrics& m, uint32_t rc, uint32_t dc);
 void finish_metrics(AccuracyMetrics& m);
-// Adds m into total (counts summed, the samples joined) and finishes it.
+// Adds m into total: counts summed, the largest errors kept, the samples joined (finish_metrics
+// then sets the means and percentiles); accumulate does both.
+void merge(AccuracyMetrics& total, const AccuracyMetrics& m);
 void accumulate(AccuracyMetrics& total, const AccuracyMetrics& m);
 
 // One picture against the reference's (whose footprints it reads; 1 where the reference has none).

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "qemu/tools/cost_model.h"
 #include "qemu/tools/demo_scenes.h"
 #include "qemu/lib/args.h"
 #include "qemu/lib/error.h"
@@ -26,11 +27,13 @@ using namespace harness;
 
 const char* USAGE =
     "usage: modexlab-bench [--scenes NAME,...] [--mappers NAME,...] [--frames N] [--out DIR] [--kernel ELF] [--no-wall]\n"
+    "       modexlab-bench --costs-from CSV [--out DIR]\n"
     "  --scenes   demo scenes (default: all; modexlab-scene list) or scene files (uploaded; procedural textures only)\n"
     "  --mappers  mappers (default: all of the registry)\n"
     "  --frames   frames a scene, spread evenly over its animation (default 8)\n"
-    "  --out      where the report goes (default build/report): trade.csv, trade.md, trade-SCENE.png\n"
-    "  --no-wall  skip the wall-clock frames per second (QEMU without icount)\n";
+    "  --out      where the report goes (default build/report): trade.csv, trade.md, trade-SCENE.png, costs.cpp\n"
+    "  --no-wall  skip the wall-clock frames per second (QEMU without icount)\n"
+    "  --costs-from  measure nothing: fit the cost model (costs.cpp) to an earlier run's trade.csv\n";
 
 std::vector<std::string> split_commas(const std::string& s) {
     std::vector<std::string> out;
@@ -50,13 +53,13 @@ struct BenchScene {
 struct Args {
     std::vector<std::string> scenes, mappers;
     int frames = 8;
-    std::string out, kernel;
+    std::string out, kernel, costs_from;
     bool wall = true;
 };
 
 // The settings a command line asks for; none when it asks for the usage.
 std::optional<Args> parse(const std::vector<std::string>& words) {
-    const CommandLine args = parse_command_line(words, {"--scenes", "--mappers", "--frames", "--out", "--kernel"}, {"--no-wall"});
+    const CommandLine args = parse_command_line(words, {"--scenes", "--mappers", "--frames", "--out", "--kernel", "--costs-from"}, {"--no-wall"});
     if (args.help()) return std::nullopt;
     if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
     Args a;
@@ -68,6 +71,7 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     a.out = args.text("--out", build_dir() + "/report");
     a.kernel = args.text("--kernel");
     a.wall = !args.has("--no-wall");
+    a.costs_from = args.text("--costs-from");
     if (a.scenes.empty())
         for (const DemoScene& d : demo_scenes()) a.scenes.push_back(d.name);
     if (a.mappers.empty())
@@ -110,6 +114,13 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
     row.ticks = sum_of(r, "ticks"), row.geometry = sum_of(r, "ticks_geometry"), row.clear = sum_of(r, "ticks_clear");
     row.draw = sum_of(r, "ticks_draw"), row.setup = sum_of(r, "ticks_setup"), row.walk = sum_of(r, "ticks_walk");
     row.inner = sum_of(r, "ticks_inner"), row.blit = sum_of(r, "ticks_blit");
+    for (const json& d : r["drawn_by"])
+        row.drawn_by.emplace_back(d["mapper"].get<std::string>(), d["polygons"].get<uint64_t>(), d["pixels"].get<uint64_t>());
+    const raster::Budget& b = s.host.world->budget;
+    char most[32];
+    std::snprintf(most, sizeof most, "footprint error %g", b.max_error);
+    row.budget = (b.max_error < 0 ? std::string("any footprint error") : std::string(most)) +
+                 (b.exact_coverage ? ", exact coverage" : ", any coverage") + (b.given ? "" : ": the default");
 
     // accuracy on the host twin, the same frames; the last one also against the kernel's screen
     const raster::Axis axis = row.walker == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
@@ -198,7 +209,23 @@ std::string host_cycles(const std::vector<BenchScene>& scenes, const std::vector
     return baseline;
 }
 
+// The cost model fitted to a trade.csv, as DIR/costs.cpp (make bench copies it into kernel/mappers).
+void write_costs(const std::string& csv, const std::string& dir) {
+    std::filesystem::create_directories(dir);
+    std::string path = dir + "/costs.cpp";
+    FILE* f = std::fopen(path.c_str(), "w");
+    if (!f) throw HarnessError(path + ": cannot write");
+    std::string text = cost_model_source(fit_costs(read_csv(csv)), std::filesystem::path(csv).filename().string() + " of a make bench run");
+    bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    if (std::fclose(f) != 0 || !ok) throw HarnessError(path + ": cannot write");
+    std::printf("cost model: %s\n", path.c_str());
+}
+
 int run(const Args& a) {
+    if (!a.costs_from.empty()) {
+        write_costs(a.costs_from, a.out);
+        return 0;
+    }
     const bool tty = isatty(2);
     std::vector<BenchScene> scenes;
     for (const std::string& spec : a.scenes) scenes.push_back(open_scene(spec));
@@ -248,6 +275,7 @@ int run(const Args& a) {
     }
     write_csv(a.out + "/trade.csv", rows);
     write_markdown(a.out + "/trade.md", rows, info);
+    write_costs(a.out + "/trade.csv", a.out);
     int differs = 0;
     for (const TradeRow& r : rows) differs += !r.kernel_equals_host;
     std::printf("report: %s/trade.csv, %s/trade.md, %zu plots (%s/trade-SCENE.png)\n", a.out.c_str(), a.out.c_str(), info.plots.size(), a.out.c_str());

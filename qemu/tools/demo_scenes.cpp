@@ -196,7 +196,7 @@ std::string rotozoom() {
            "texture cells numbered 256 256\n" +
            m.text() + "object quad\n  mesh quad\n  texture cells\n  spin 0 0 1 36\nend\n" +
            "camera\n  fov 60\n  near 0.01\n  far 100\n" + keys + "end\n" +
-           "budget max-error 0 coverage exact\n"
+           "budget max-error 0.5 coverage exact\n"
            "frames 300\n";
 }
 

@@ -109,7 +109,7 @@ std::vector<std::string> csv_header() {
             "max_footprint_error[footprints]", "mean_footprint_error[footprints]", "p999_footprint_error[footprints]",
             "folded[pixels]", "share_exact[share]",
             "share_within_one[share]", "reference_pixels[pixels]", "gaps[pixels]", "overdraw[pixels]", "overlaps[pixels]",
-            "index_differs[pixels]", "kernel_equals_host[bool]", "pareto[bool]"};
+            "index_differs[pixels]", "kernel_equals_host[bool]", "pareto[bool]", "drawn_by[mapper:polygons:pixels;...]"};
 }
 
 void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
@@ -130,7 +130,10 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
             << fixed(r.share_exact(), 4) << ","
             << fixed(a.compared ? double(a.within_one) / a.compared : 0.0, 4) << "," << a.reference_pixels << "," << a.gaps
             << "," << a.overdraw << "," << a.overlaps << "," << a.index_differs << "," << (r.kernel_equals_host ? "true" : "false")
-            << "," << (r.pareto ? "true" : "false") << "\n";
+            << "," << (r.pareto ? "true" : "false") << ",";
+        for (size_t i = 0; i < r.drawn_by.size(); ++i)
+            out << (i ? ";" : "") << std::get<0>(r.drawn_by[i]) << ":" << std::get<1>(r.drawn_by[i]) << ":" << std::get<2>(r.drawn_by[i]);
+        out << "\n";
     }
 }
 
@@ -177,6 +180,14 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
             refused += (refused.empty() ? "" : "; ") + r.mapper + (*needs.c_str() ? std::string(" (needs ") + needs.c_str() + ")" : "");
         }
         if (!refused.empty()) out << "\nCannot draw this scene (every polygon refused): " << refused << ".\n";
+        for (const TradeRow& r : rows) {
+            if (r.scene != scene || r.drawn_by.size() < 2 || !r.pixels) continue;
+            out << "\n" << r.mapper << ", for the scene's budget (" << r.budget << "), drew with:";
+            for (size_t i = 0; i < r.drawn_by.size(); ++i)
+                out << (i ? ";" : "") << " " << std::get<0>(r.drawn_by[i]) << " " << std::get<1>(r.drawn_by[i]) << " polygons, "
+                    << fixed(100.0 * double(std::get<2>(r.drawn_by[i])) / double(r.pixels), 1) << "% of the pixels";
+            out << ".\n";
+        }
     }
 
     // the classics' published cycles beside our instruction counts, on the scene each drew most of

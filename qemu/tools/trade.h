@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "qemu/accuracy/metrics.h"
@@ -20,6 +21,10 @@ struct TradeRow {
     bool kernel_equals_host = false;   // at the last frame, by screendump
     double host_ratio = 0;             // host rdtsc cycles per pixel against the baseline mapper; 0: not measured
     bool pareto = false;
+    // the kernel's polygons and pixels per mapper that drew them (auto draws with several), and the
+    // scene's budget auto chose for, in words
+    std::vector<std::tuple<std::string, uint64_t, uint64_t>> drawn_by;
+    std::string budget;
 
     bool draws_everything() const { return rejected == 0 && pixels > 0; }
     double per_pixel(uint64_t t) const { return pixels ? double(t) / double(pixels) : 0.0; }

@@ -55,4 +55,22 @@ TEST(JsonLine, RawStringsStreamUnescaped) {
     EXPECT_EQ(p["after"], 1);
 }
 
+// Fixed-point decimals: rounded, without trailing zeros, read back as the numbers they say.
+TEST(JsonLine, WritesFixedDecimals) {
+    Capture c;
+    lib::JsonLine j(c.sink());
+    j.fixed("half", 0.5, 6).fixed("two", 2.0, 3).fixed("neg", -1.25, 2).fixed("round", 2.6849, 2).fixed("tiny", 0.0004, 3);
+    j.fixed("minus_one", -1.0, 6).fixed("zero", -0.0001, 2).end();
+    EXPECT_NE(c.text.find("\"half\":0.5,"), std::string::npos) << c.text;
+    EXPECT_NE(c.text.find("\"two\":2,"), std::string::npos) << c.text;
+    auto p = nlohmann::json::parse(c.text);
+    EXPECT_DOUBLE_EQ(p["half"].get<double>(), 0.5);
+    EXPECT_DOUBLE_EQ(p["two"].get<double>(), 2.0);
+    EXPECT_DOUBLE_EQ(p["neg"].get<double>(), -1.25);
+    EXPECT_DOUBLE_EQ(p["round"].get<double>(), 2.68);
+    EXPECT_DOUBLE_EQ(p["tiny"].get<double>(), 0.0);
+    EXPECT_DOUBLE_EQ(p["minus_one"].get<double>(), -1.0);
+    EXPECT_EQ(p["zero"].dump(), "0") << "no negative zero";
+}
+
 }  // namespace

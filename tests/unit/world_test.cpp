@@ -143,6 +143,25 @@ TEST(World, ThePaletteCanComeFromAnImage) {
     EXPECT_EQ(w.texels[64 + 8], 0);
 }
 
+// The budget: decimal footprints or any; without the line, the default auto draws to.
+TEST(World, ReadsTheBudget) {
+    const std::string head = "modexlab-scene 2\ntexture t checker 8 8\n" + QUAD_MESH + "object a\nmesh quad\ntexture t\nend\n" + CAMERA;
+    Parsed quarter = parse(head + "budget max-error 0.25 coverage any\n");
+    ASSERT_TRUE(quarter.ok) << quarter.error.message;
+    EXPECT_TRUE(quarter.world->budget.given);
+    EXPECT_EQ(quarter.world->budget.max_error, 0.25);
+    EXPECT_FALSE(quarter.world->budget.exact_coverage);
+    Parsed any = parse(head + "budget max-error any coverage exact\n");
+    ASSERT_TRUE(any.ok) << any.error.message;
+    EXPECT_LT(any.world->budget.max_error, 0);
+    EXPECT_TRUE(any.world->budget.exact_coverage);
+    Parsed none = parse(head);
+    ASSERT_TRUE(none.ok) << none.error.message;
+    EXPECT_FALSE(none.world->budget.given);
+    EXPECT_EQ(none.world->budget.max_error, DEFAULT_BUDGET.max_error);
+    EXPECT_EQ(none.world->budget.exact_coverage, DEFAULT_BUDGET.exact_coverage);
+}
+
 TEST(World, EveryErrorNamesItsLine) {
     Files files;
     files.files["ok.bmp"] = texfiles::encode_bmp(texfiles::random_picture(4, 4, 3), texfiles::BmpKind::Plain);
@@ -203,6 +222,8 @@ TEST(World, EveryErrorNamesItsLine) {
         {TM + CAMERA + "camera\n", {18, "a second camera"}},
         {T + "budget max-error 1\n", {3, "usage: budget"}},
         {T + "budget max-error x coverage exact\n", {3, "bad max-error 'x'"}},
+        {T + "budget max-error -1 coverage exact\n", {3, "bad max-error '-1' (a footprint error 0..1000000, or any)"}},
+        {T + "budget max-error 1000001 coverage exact\n", {3, "bad max-error '1000001'"}},
         {T + "budget max-error any coverage any\nbudget max-error 1 coverage any\n", {4, "a second budget line"}},
         {T + "frames 0\n", {3, "usage: frames N"}},
         {T + "frames 10\nframes 10\n", {4, "a second frames line"}},

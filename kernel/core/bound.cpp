@@ -1,0 +1,128 @@
+// Spans as lines of the exact mapping, and the extremes the bounds need along them.
+#include "kernel/core/bound.h"
+
+namespace raster {
+
+namespace {
+
+constexpr double EPSILON = 2.220446049250313e-16;  // 2^-52
+
+
+// A plane's value at the span's first pixel centre and its change per pixel along the span, with
+// the magnitude of the terms it is summed from (at either end: the larger).
+void along(const Plane& p, double x, double y, Axis axis, int32_t count, double* at, double* per_pixel, double* scale) {
+    *at = p.at(x, y);
+    *per_pixel = (axis == Axis::Rows ? p.gx : p.gy) * double(SUBPIXEL_ONE);
+    double last = double(count - 1) * double(SUBPIXEL_ONE);
+    double x1 = axis == Axis::Rows ? x + last : x, y1 = axis == Axis::Rows ? y : y + last;
+    *scale = larger(magnitude(p.a0) + magnitude(p.gy * y) + magnitude(p.gx * x), magnitude(p.a0) + magnitude(p.gy * y1) + magnitude(p.gx * x1));
+}
+
+}  // namespace
+
+SpanLine span_line(const PolygonSetup& s, Axis axis, const Span& span) {
+    SpanLine l;
+    double x = centre_x(s, span.x), y = centre_y(s, span.y);
+    l.count = span.count;
+    along(s.q, x, y, axis, span.count, &l.q0, &l.qm, &l.scale_q);
+    along(s.pu, x, y, axis, span.count, &l.p0[0], &l.pm[0], &l.scale_p[0]);
+    along(s.pv, x, y, axis, span.count, &l.p0[1], &l.pm[1], &l.scale_p[1]);
+    return l;
+}
+
+double line_deviation(const SpanLine& l, int t, double a, double b, double k0, double k1) {
+    auto deviation = [&](double k) { return magnitude(a + b * k - span_exact(l, t, k)); };
+    double worst = larger(deviation(k0), deviation(k1));
+    // (line * Q - P) is A k^2 + B k + C; the deviation's derivative vanishes where
+    // A qm k^2 + 2 A q0 k + (B q0 - C qm) = 0
+    double A = b * l.qm, B = a * l.qm + b * l.q0 - l.pm[t], C = a * l.q0 - l.p0[t];
+    double alpha = A * l.qm, beta = 2 * A * l.q0, gamma = B * l.q0 - C * l.qm;
+    double roots[2];
+    int n = 0;
+    if (alpha == 0) {
+        if (beta != 0) roots[n++] = -gamma / beta;
+    } else {
+        double disc = beta * beta - 4 * alpha * gamma;
+        if (disc >= 0) {
+            double r = __builtin_sqrt(disc);
+            roots[n++] = (-beta + r) / (2 * alpha);
+            roots[n++] = (-beta - r) / (2 * alpha);
+        }
+    }
+    for (int i = 0; i < n; ++i)
+        if (roots[i] > k0 && roots[i] < k1) worst = larger(worst, deviation(roots[i]));
+    return worst;
+}
+
+double exact_rounding(const SpanLine& l, int t) {
+    double last = double(l.count - 1);
+    double q_min = l.q0 + l.qm * last < l.q0 ? l.q0 + l.qm * last : l.q0;
+    double t_max = larger(magnitude(span_exact(l, t, 0)), magnitude(span_exact(l, t, last)));
+    // P and Q each within 3 ulps of their terms' sum, the quotient within one more: doubled for
+    // the slack of evaluating this bound itself in double
+    return 2 * (4 * EPSILON * (l.scale_p[t] + t_max * l.scale_q) / q_min + 2 * EPSILON * t_max);
+}
+
+double min_footprint_along(const SpanLine& l, double k0, double k1) {
+    double q_max = larger(l.q0 + l.qm * k0, l.q0 + l.qm * k1);
+    double best = 0;
+    for (int t = 0; t < 2; ++t) {
+        double k = magnitude(l.pm[t] * l.q0 - l.p0[t] * l.qm);
+        k -= 4 * EPSILON * (magnitude(l.pm[t] * l.q0) + magnitude(l.p0[t] * l.qm));  // its own rounding, from below
+        best = larger(best, k);
+    }
+    return best / (q_max * q_max);
+}
+
+double lines_bound(const SpanLine& l, const double* a, const double* b, double k0, double k1, double rounding) {
+    double d[2];
+    for (int t = 0; t < 2; ++t) d[t] = line_deviation(l, t, a[t], b[t], k0, k1) + rounding + 2 * exact_rounding(l, t);
+    return footprint_error(d[0], d[1], min_footprint_along(l, k0, k1));
+}
+
+double max_step_along(const SpanLine& l, int t, double k0, double k1) {
+    double q_lo = l.q0 + l.qm * k0 < l.q0 + l.qm * k1 ? l.q0 + l.qm * k0 : l.q0 + l.qm * k1;
+    double k = magnitude(l.pm[t] * l.q0 - l.p0[t] * l.qm) + 4 * EPSILON * (magnitude(l.pm[t] * l.q0) + magnitude(l.p0[t] * l.qm));
+    return k / (q_lo * q_lo) * (1 + 1e-9);  // the margin: this bound's own rounding
+}
+
+double chords_bound(const SpanLine& l, double h, double k0, double k1, double rounding) {
+    double q_lo = l.q0 + l.qm * k0 < l.q0 + l.qm * k1 ? l.q0 + l.qm * k0 : l.q0 + l.qm * k1;
+    double d[2];
+    for (int t = 0; t < 2; ++t) {
+        // h^2 / 8 * 2 |K| |Q'| / Q_lo^3, with |K| / Q_lo^2 from max_step_along
+        double curvature = max_step_along(l, t, k0, k1) * 2 * magnitude(l.qm) / q_lo;
+        d[t] = h * h / 8 * curvature * (1 + 1e-9) + rounding + 2 * exact_rounding(l, t);
+    }
+    return footprint_error(d[0], d[1], min_footprint_along(l, k0, k1));
+}
+
+bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap) {
+    constexpr double LIMIT = 32767;
+    double travel = magnitude(step) * steps;
+    if (!(magnitude(step) < LIMIT) || !(travel < 1e9)) return false;
+    if (wrap == Wrap::Repeat) return (65536 % size == 0) || double(size) + travel < LIMIT;
+    return magnitude(start) + travel < LIMIT;
+}
+
+ErrorBound unbounded(const BoundContext& c, const Vertex* vertices, int count) {
+    ErrorBound b;
+    PolygonSetup s;
+    b.draws = mapper_accepts(c.mapper, c.tex) && setup_polygon(vertices, count, &s, PLANES_NONE) == SetupStatus::Ok;
+    b.exact_coverage = c.mapper.guarantee.exact_coverage;
+    b.footprint = NO_BOUND;
+    return b;
+}
+
+double footprint_error(double du, double dv, double footprint) {
+    auto texels = [](double d) {  // ceil(d) for d >= 0, without libm
+        if (d <= 0) return 0.0;
+        if (d >= 1e15) return d;  // beyond any budget; and int64_t would not hold it
+        double whole = double(int64_t(d));
+        return whole < d ? whole + 1 : whole;
+    };
+    double e = larger(texels(du), texels(dv));
+    return e / larger(1.0, footprint);
+}
+
+}  // namespace raster

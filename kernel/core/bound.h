@@ -1,0 +1,127 @@
+// Error bounds before drawing (docs/accuracy.md, "Error bounds"): how far, in footprints, a mapper's
+// texel can be from the reference's on a polygon, from what setup knows. The pieces the mappers'
+// own bound functions are built from: spans, the deviation of a line from the exact mapping along
+// them, the footprint along them, and the step from a coordinate error to a footprint error.
+#pragma once
+
+#include <stdint.h>
+
+#include "kernel/core/mapper.h"
+
+namespace raster {
+
+// The pieces a span's bound is taken over: a deviation and the footprint it is divided by belong
+// to the same few pixels, not the whole span.
+constexpr double BOUND_PIECE = 16;
+
+inline double magnitude(double t) { return t < 0 ? -t : t; }
+inline double larger(double a, double b) { return a > b ? a : b; }
+
+// No bound can be given (a classic's arithmetic, an overflow): larger than any budget.
+constexpr double NO_BOUND = 1e30;
+
+// What a mapper promises for one polygon before drawing it.
+struct ErrorBound {
+    bool draws = false;           // whether the mapper draws the polygon (false: it refuses it, or it
+                                  // is degenerate); for `unbounded` mappers: whether it may
+    bool exact_coverage = false;  // it draws exactly the pixels the reference covers
+    double footprint = 0;         // max footprint error on every pixel it draws (NO_BOUND: none)
+};
+
+struct BoundContext {
+    const Mapper& mapper;
+    const Texture& tex;  // with the copies prepare_texture builds
+    Axis axis;           // the walker the mapper uses
+    ClipRect clip;
+    // What the caller asks (auto: its budget). Below 0: the tightest bound, every span piece by
+    // piece. At or above 0: only whether the bound is within it, cheaply: a span whose coarse
+    // bound (the whole span as one piece) is within it is not taken piece by piece, and once the
+    // bound is above it the evaluation stops (the footprint returned is then only known to be
+    // above the budget, not the polygon's bound).
+    double budget = -1;
+    bool settled(double worst) const { return budget >= 0 && worst > budget; }
+};
+
+// Along one span: the line's pixels k = 0..count-1 at minor coordinate m = m0 + k (pixel centres),
+// with the exact mapping t(m) = P(m) / Q(m) for t = u and v, P and Q linear in m.
+struct SpanLine {
+    double q0, qm;          // Q at the span's first pixel centre, and per pixel along it
+    double p0[2], pm[2];    // P for u and v, likewise
+    double scale_p[2];      // magnitudes of the terms P was evaluated from (rounding: exact_rounding)
+    double scale_q;
+    int32_t count;
+};
+SpanLine span_line(const PolygonSetup& s, Axis axis, const Span& span);
+
+// The exact mapping at pixel k of the span, u (t = 0) or v (t = 1).
+inline double span_exact(const SpanLine& l, int t, double k) { return (l.p0[t] + l.pm[t] * k) / (l.q0 + l.qm * k); }
+
+// The largest |a + b k - t(k)| over k in [k0, k1] (continuous): the line against the exact mapping,
+// at the ends and where the derivative of (line * Q - P) / Q vanishes.
+double line_deviation(const SpanLine& l, int t, double a, double b, double k0, double k1);
+
+// An upper bound on |t_reference - t_exact| at any pixel of the span: the double rounding of the
+// reference's own evaluation (and of a mapper's exact points, computed the same way).
+double exact_rounding(const SpanLine& l, int t);
+
+// The smallest footprint over k in [k0, k1], from below: the step along the span alone, which is
+// |P' Q - P Q'| / Q^2 (the numerator constant along the span), smallest where Q is largest.
+double min_footprint_along(const SpanLine& l, double k0, double k1);
+
+// The bound over pixels [k0, k1] of a span on which the mapper's u and v follow the lines
+// a[t] + b[t] k to within `rounding` texels: each line's deviation from the exact mapping, the
+// reference's own rounding, the rounding, as a footprint error over the smallest footprint there.
+double lines_bound(const SpanLine& l, const double* a, const double* b, double k0, double k1, double rounding);
+
+// The same where u and v follow chords between exact points at most h pixels apart (each within
+// `rounding`): a chord's deviation is at most h^2 / 8 of the largest |t''| between its ends, and
+// t'' = -2 K Q' / Q^3 along the span (K = P' Q - P Q', constant), largest where Q is smallest.
+double chords_bound(const SpanLine& l, double h, double k0, double k1, double rounding);
+// The largest |t'| over pixels [k0, k1], from above: |K| / Q^2 where Q is smallest.
+double max_step_along(const SpanLine& l, int t, double k0, double k1);
+
+// The bound over a span of `last` + 1 pixels from the bounds of its pieces: piece(k0, k1) bounds
+// pixels k0..k1, pieces of `length` pixels from the first. With a budget (BoundContext::budget),
+// first the whole span as one piece (`coarse`), and piece by piece only where that is above it.
+template <typename Coarse, typename Piece>
+double span_bound(const BoundContext& c, double last, double length, Coarse&& coarse, Piece&& piece) {
+    if (c.budget >= 0) {
+        double whole = coarse();
+        if (whole <= c.budget) return whole;
+    }
+    double worst = 0;
+    for (double k0 = 0; k0 <= last && !c.settled(worst); k0 += length) {
+        double k1 = k0 + length - 1 < last ? k0 + length - 1 : last;
+        double b = piece(k0, k1);
+        worst = b > worst ? b : worst;
+    }
+    return worst;
+}
+
+// A coordinate off by at most `du` and `dv` texels reads a texel at most ceil(du), ceil(dv) away;
+// over max(1, footprint) that is the footprint error.
+double footprint_error(double du, double dv, double footprint);
+
+// 16.16 rounding to nearest: half a unit in the last place.
+constexpr double HALF_ULP_16_16 = 1.0 / 131072.0;
+// Whether a 16.16 coordinate that starts at `start` (with repeat: reduced into [0, size) first, as
+// our mappers do) and moves by `step` a pixel for `steps` pixels stays what it means: the step in
+// range, and the values in range or wrapping harmlessly (a repeating size that divides 65536).
+bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap);
+
+// For mappers whose error is not (yet) bounded: whether they draw the polygon, and no bound.
+ErrorBound unbounded(const BoundContext& c, const Vertex* vertices, int count);
+
+// Calls f(span, setup) for every span the walker yields for the polygon inside the clip; false
+// when setup does not take the polygon (refused, or degenerate: nothing to draw).
+template <typename F>
+bool for_each_span(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, SetupPlanes planes, F&& f) {
+    PolygonSetup s;
+    if (setup_polygon(vertices, count, &s, planes) != SetupStatus::Ok) return false;
+    EdgeWalker walker(s, axis, clip);
+    Span span;
+    while (walker.next(&span)) f(span, s);
+    return true;
+}
+
+}  // namespace raster

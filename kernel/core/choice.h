@@ -1,0 +1,62 @@
+// The budgeted choice of mapper (docs/accuracy.md, "The choice"): a scene's budget, the cost model
+// the bench measures, and `auto`, which draws each polygon with the cheapest mapper whose bound
+// meets the budget.
+#pragma once
+
+#include <stdint.h>
+
+#include "kernel/core/bound.h"
+
+namespace raster {
+
+// What a scene requires of a mapper: the largest footprint error, and whether the pixels drawn
+// must be exactly the reference's.
+constexpr double ANY_ERROR = -1;
+struct Budget {
+    bool given = false;          // from the scene's budget line (else the default)
+    double max_error = 1;        // footprints (docs/accuracy.md); ANY_ERROR: any
+    bool exact_coverage = true;  // no gaps, no overdraw
+};
+// Scenes without a budget line: within one footprint, exact coverage.
+constexpr Budget DEFAULT_BUDGET{};
+
+inline bool budget_allows(const Budget& b, const ErrorBound& e) {
+    return e.draws && (e.exact_coverage || !b.exact_coverage) && (b.max_error < 0 || e.footprint <= b.max_error);
+}
+
+// The cost model (kernel/mappers/costs.cpp, written by `make bench` from its own figures):
+// instructions under QEMU icount to set up a polygon, per span (walking and the loop's call), per
+// pixel. One row per registry row, in its order.
+struct MapperCost {
+    const char* mapper;
+    float polygon, span, pixel;
+};
+extern const MapperCost MAPPER_COSTS[];
+extern const int MAPPER_COST_COUNT;
+
+// A polygon's size as the cost model counts it, estimated from its vertices inside the clip.
+struct PolygonSize {
+    double spans, pixels;
+};
+PolygonSize estimate_size(const Vertex* vertices, int count, Axis axis, const ClipRect& clip);
+// Not measured (-1): dearer than any measured mapper.
+inline double estimate_cost(const MapperCost& c, const PolygonSize& s) {
+    return c.polygon < 0 ? 1e30 : c.polygon + c.span * s.spans + c.pixel * s.pixels;
+}
+
+// Whether auto may choose the mapper: not auto itself, and a derived bound (the classics' are not
+// yet: `unbounded` cannot say which polygons they refuse).
+bool choosable(const Mapper& m);
+
+struct Choice {
+    const Mapper* mapper = nullptr;  // nullptr: no mapper draws the polygon (degenerate, or refused)
+    ErrorBound bound;
+};
+// The cheapest choosable mapper, by the cost model, that walks `axis` into targets like `target`,
+// takes the texture and whose bound meets the budget on the polygon.
+Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, Axis axis, const Target& target);
+
+// auto's own bound: its choice's under the default budget.
+ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count);
+
+}  // namespace raster

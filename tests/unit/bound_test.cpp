@@ -1,0 +1,174 @@
+// Error bounds against measured errors: on random polygons (perspective from none to extreme,
+// slivers, tiny and huge ones, texture sizes from 1 to 1024, repeat and clamp) and on every
+// polygon of every demo scene at the bench's frames, no mapper's measured footprint error exceeds
+// its bound, a mapper that promises exact coverage draws exactly the reference's pixels, and one
+// that says it draws a polygon draws it. MODEXLAB_BOUND_POLYGONS sets the random polygons per
+// mapper (make bounds: 100000; make test: fewer).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+
+#include "kernel/core/bound.h"
+#include "kernel/core/policy.h"
+#include "qemu/tools/demo_scenes.h"
+#include "tests/unit/raster_helpers.h"
+
+namespace {
+
+using namespace rastertest;
+
+constexpr double SLACK = 1e-6;  // the measure divides by the footprint as stored (a float)
+
+int polygons_per_mapper() {
+    const char* env = std::getenv("MODEXLAB_BOUND_POLYGONS");
+    return env ? std::max(1, std::atoi(env)) : 600;
+}
+
+// A random polygon of one of the classes the bounds must hold on.
+std::vector<Vertex> random_polygon(TriangleGen& gen, int cls) {
+    switch (cls) {
+    case 0: gen.depth_ratio = 1.0001, gen.uv_range = 300; return gen.triangle();  // next to no perspective
+    case 1: gen.depth_ratio = 20, gen.uv_range = 300; return gen.triangle();
+    case 2: gen.depth_ratio = 1e4, gen.uv_range = 3000; return gen.triangle();   // strong perspective
+    case 3: {  // a sliver: two vertices a fraction of a pixel apart
+        gen.depth_ratio = 50, gen.uv_range = 500;
+        std::vector<Vertex> t = gen.triangle();
+        t[1].x = Fixed24_8::from_raw(t[0].x.raw + int32_t(gen.rng() % 64));
+        t[1].y = Fixed24_8::from_raw(t[0].y.raw + int32_t(gen.rng() % 64));
+        return t;
+    }
+    case 4: {  // tiny: below a few pixels
+        gen.depth_ratio = 10, gen.uv_range = 100;
+        Vertex c = gen.random_vertex();
+        std::vector<Vertex> t;
+        for (int i = 0; i < 3; ++i) {
+            Vertex v = gen.random_vertex();
+            v.x = Fixed24_8::from_raw(c.x.raw + int32_t(gen.uniform(-400, 400)));
+            v.y = Fixed24_8::from_raw(c.y.raw + int32_t(gen.uniform(-400, 400)));
+            t.push_back(v);
+        }
+        return t;
+    }
+    default: {  // huge: vertices far outside the screen, a floor or wall receding
+        gen.depth_ratio = 200, gen.uv_range = 20000;
+        std::vector<Vertex> t;
+        for (int i = 0; i < 3; ++i) {
+            Vertex v = gen.random_vertex();
+            v.x = Fixed24_8::from_raw(int32_t(gen.uniform(-3000, 3300) * 256));
+            v.y = Fixed24_8::from_raw(int32_t(gen.uniform(-3000, 3300) * 256));
+            t.push_back(v);
+        }
+        return t;
+    }
+    }
+}
+
+// measured / bound over the polygons with a finite bound above 0: the median over all of them, over
+// those with an error at all, and the worst.
+struct Tightness {
+    std::vector<double> ratios, erring;
+    double worst = 0;
+    void add(double measured, double bound) {
+        if (bound <= 0 || bound >= NO_BOUND) return;
+        ratios.push_back(measured / bound);
+        if (measured > 0) erring.push_back(measured / bound);
+        worst = std::max(worst, measured / bound);
+    }
+    static double median(std::vector<double>& v) {
+        if (v.empty()) return 0;
+        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    }
+    std::string text() {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "median %.3f, with an error %.3f, worst %.3f", median(ratios), median(erring), worst);
+        return buf;
+    }
+};
+
+// Measures one polygon and checks it against the mapper's bound; returns whether the bound was finite.
+bool check_polygon(PolygonMeter& meter, const Mapper& m, Axis axis, const std::vector<Vertex>& p, const Texture& tex,
+                   Tightness* tight, const std::string& what) {
+    BoundContext c{m, tex, axis, ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT}};
+    ErrorBound b = m.bound(c, p.data(), int(p.size()));
+    bool drawn = false;
+    uint32_t coverage_differs = 0;
+    AccuracyMetrics e = meter.measure(p.data(), int(p.size()), tex, &drawn, [&](int32_t, int32_t, bool rc, bool dc) { coverage_differs += rc != dc; });
+    if (m.bound != unbounded) {
+        EXPECT_EQ(b.draws, drawn) << what;
+    } else if (!b.draws) {
+        EXPECT_FALSE(drawn) << what << ": said it would not draw";
+    }
+    if (!drawn) return false;
+    if (b.exact_coverage) {
+        EXPECT_EQ(coverage_differs, 0u) << what << ": promised exact coverage";
+    }
+    EXPECT_LE(e.max_footprint_error, b.footprint * (1 + SLACK) + SLACK)
+        << what << ": measured " << e.max_footprint_error << " (texel error " << e.max_texel_error << ") over the bound " << b.footprint;
+    tight->add(e.max_footprint_error, b.footprint);
+    return b.footprint < NO_BOUND;
+}
+
+TEST(Bounds, NoMapperExceedsItsBoundOnRandomPolygons) {
+    const int per_mapper = polygons_per_mapper();
+    const int32_t sizes[] = {1, 3, 37, 64, 256, 1024};
+    std::vector<std::vector<uint8_t>> texels;
+    for (int32_t size : sizes) {
+        texels.emplace_back(size_t(size) * size_t(size));
+        generate_texture(TextureKind::Xor, size, size, texels.back().data());
+    }
+    std::printf("bounds on %d random polygons per mapper (median and worst of measured / bound):\n", per_mapper);
+    for (int i = 0; i < MAPPER_COUNT; ++i) {
+        const Mapper& m = MAPPERS[i];
+        Axis axis = home_axis(m);
+        PolygonMeter meter(m, axis);
+        TriangleGen gen(20261123u + uint32_t(i));
+        Tightness tight;
+        int bounded = 0;
+        for (int n = 0; n < per_mapper; ++n) {
+            size_t t = size_t(n) % std::size(sizes);
+            if ((m.needs & NEED_ALIGNED256) && sizes[t] != 256) t = 4;
+            Wrap wrap = (m.needs & NEED_ALIGNED256) || n % 3 ? Wrap::Repeat : Wrap::Clamp;
+            std::vector<uint8_t> bordered(size_t(bordered_bytes(sizes[t], sizes[t]))), aligned(ALIGNED256_BYTES);
+            Texture tex{texels[t].data(), sizes[t], sizes[t], wrap};
+            prepare_texture(&tex, bordered.data(), aligned.data());
+            std::vector<Vertex> p = random_polygon(gen, n % 6);
+            bounded += check_polygon(meter, m, axis, p, tex, &tight, std::string(m.name) + " polygon " + std::to_string(n));
+            if (HasFailure()) return;
+        }
+        std::printf("  %-16s %6d bounded  %s\n", m.name, bounded, tight.text().c_str());
+        if (m.bound != unbounded) {
+            EXPECT_GT(bounded, per_mapper / 3) << m.name << ": most polygons get a finite bound";
+        }
+    }
+}
+
+TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
+    for (const DemoScene& d : demo_scenes()) {
+        LoadedWorld w = load_world_file(std::string("scenes/") + d.name + ".scene");
+        for (int i = 0; i < MAPPER_COUNT; ++i) {
+            const Mapper& m = MAPPERS[i];
+            if (m.bound == unbounded) continue;
+            Axis axis = home_axis(m);
+            PolygonMeter meter(m, axis);
+            Tightness tight;
+            for (int f = 0; f < 8; ++f) {  // the bench's frames: 8 spread over the animation
+                auto frame = world_frame(w, int32_t(int64_t(f) * w.world->frames / 8));
+                const Vertex* v = frame->vertices;
+                for (int32_t k = 0; k < frame->polygon_count; ++k) {
+                    int n = frame->polygon_size[k];
+                    std::vector<Vertex> p(v, v + n);
+                    check_polygon(meter, m, axis, p, w.textures->objects[frame->polygon_object[k]], &tight,
+                                  std::string(d.name) + " frame " + std::to_string(f) + " polygon " + std::to_string(k) + " " + m.name);
+                    v += n;
+                    if (HasFailure()) return;
+                }
+            }
+            std::printf("  %-9s %-16s %s\n", d.name, m.name, tight.text().c_str());
+        }
+    }
+}
+
+}  // namespace

@@ -1,0 +1,128 @@
+// auto: the cost model has a row for every mapper; auto picks the cheapest mapper whose bound meets
+// the budget, never a dearer one when the budget loosens; and on every demo scene at the bench's
+// frames, at budgets from 0 to any, through rows and columns, its measured footprint error stays
+// inside the budget and its coverage is exact.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "kernel/core/choice.h"
+#include "kernel/core/policy.h"
+#include "qemu/tools/demo_scenes.h"
+#include "tests/unit/raster_helpers.h"
+
+namespace {
+
+using namespace rastertest;
+
+const Mapper& auto_mapper() { return *find_mapper("auto"); }
+
+const Budget BUDGETS[] = {{true, 0, true}, {true, 0.5, true}, {true, 1, true}, {true, 2, true}, {true, 4, true}, {true, ANY_ERROR, false}};
+
+TEST(CostModel, HasOneRowPerRegistryRowInItsOrder) {
+    ASSERT_EQ(MAPPER_COST_COUNT, MAPPER_COUNT) << "kernel/mappers/costs.cpp is out of date: run make bench";
+    for (int i = 0; i < MAPPER_COUNT; ++i) {
+        EXPECT_STREQ(MAPPER_COSTS[i].mapper, MAPPERS[i].name) << "kernel/mappers/costs.cpp is out of date: run make bench";
+        if (choosable(MAPPERS[i])) {
+            EXPECT_GT(MAPPER_COSTS[i].pixel, 0) << MAPPERS[i].name << " is not measured";
+        }
+    }
+}
+
+TEST(CostModel, EstimatesThePolygonsSize) {
+    // a 100 x 50 right triangle, and the same half outside the clip
+    std::vector<Vertex> t = {vertex(10, 10, 1, 0, 0), vertex(110, 10, 1, 0, 0), vertex(10, 60, 1, 0, 0)};
+    PolygonSize rows = estimate_size(t.data(), 3, Axis::Rows, ClipRect{0, 0, 320, 240});
+    PolygonSize columns = estimate_size(t.data(), 3, Axis::Columns, ClipRect{0, 0, 320, 240});
+    EXPECT_DOUBLE_EQ(rows.pixels, 2500);
+    EXPECT_DOUBLE_EQ(rows.spans, 50);
+    EXPECT_DOUBLE_EQ(columns.spans, 100);
+    PolygonSize clipped = estimate_size(t.data(), 3, Axis::Rows, ClipRect{0, 0, 60, 240});
+    EXPECT_DOUBLE_EQ(clipped.pixels, 1250);
+    EXPECT_DOUBLE_EQ(estimate_size(t.data(), 3, Axis::Rows, ClipRect{200, 0, 320, 240}).pixels, 0);
+}
+
+// The choice against every candidate, worked out here from the bounds and the cost model.
+TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
+    TriangleGen gen(1123u);
+    std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    generate_texture(TextureKind::Xor, 256, 256, texels.data());
+    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
+    prepare_texture(&tex, bordered.data(), aligned.data());
+    int chose[MAPPER_LIMIT] = {};
+    for (int n = 0; n < 400; ++n) {
+        gen.depth_ratio = n % 4 == 0 ? 1.0001 : n % 4 == 1 ? 3 : 50;
+        std::vector<Vertex> p = gen.triangle();
+        for (Axis axis : {Axis::Rows, Axis::Columns}) {
+            Target target = surface_kind(axis == Axis::Rows ? Surface::Linear : Surface::Planar);
+            target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+            PolygonSize size = estimate_size(p.data(), 3, axis, target.clip);
+            double last_cost = 1e300;
+            for (const Budget& b : BUDGETS) {
+                Choice c = choose_mapper(b, p.data(), 3, tex, axis, target);
+                if (!c.mapper) {  // only where exact cannot draw it either
+                    EXPECT_FALSE(find_mapper("exact")->bound(BoundContext{*find_mapper("exact"), tex, axis, target.clip}, p.data(), 3).draws);
+                    break;
+                }
+                const int row = int(c.mapper - MAPPERS);
+                ++chose[row];
+                EXPECT_TRUE(budget_allows(b, c.bound)) << c.mapper->name;
+                double cost = estimate_cost(MAPPER_COSTS[row], size);
+                for (int i = 0; i < MAPPER_COUNT; ++i) {
+                    const Mapper& m = MAPPERS[i];
+                    if (!choosable(m) || !mapper_walks(m, axis) || !mapper_targets(m, target, axis) || !mapper_accepts(m, tex)) continue;
+                    if (estimate_cost(MAPPER_COSTS[i], size) >= cost) continue;
+                    EXPECT_FALSE(budget_allows(b, m.bound(BoundContext{m, tex, axis, target.clip}, p.data(), 3)))
+                        << m.name << " is cheaper than " << c.mapper->name << " and meets the budget " << b.max_error;
+                }
+                EXPECT_LE(cost, last_cost) << "a looser budget chose a dearer mapper";
+                last_cost = cost;
+            }
+        }
+        if (HasFailure()) return;
+    }
+    int kinds = 0;
+    for (int i = 0; i < MAPPER_COUNT; ++i) kinds += chose[i] > 0;
+    EXPECT_GE(kinds, 3) << "the random polygons exercise more than one or two choices";
+}
+
+TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
+    const Mapper& a = auto_mapper();
+    for (const DemoScene& d : demo_scenes()) {
+        LoadedWorld w = load_world_file(std::string("scenes/") + d.name + ".scene");
+        for (const Budget& b : BUDGETS) {
+            for (Axis axis : {Axis::Rows, Axis::Columns}) {
+                uint32_t by_mapper[MAPPER_LIMIT] = {};
+                for (int f = 0; f < 8; ++f) {  // the bench's frames
+                    auto frame = world_frame(w, int32_t(int64_t(f) * w.world->frames / 8));
+                    frame->budget = b;
+                    AccuracyMetrics m = measure_world_frame(w, *frame, a, axis);
+                    std::string what = std::string(d.name) + " frame " + std::to_string(f) + " budget " + std::to_string(b.max_error) +
+                                       (axis == Axis::Rows ? " rows" : " columns");
+                    if (b.max_error >= 0) {
+                        EXPECT_LE(m.max_footprint_error, b.max_error + 1e-6) << what;
+                    }
+                    EXPECT_EQ(m.gaps, 0u) << what;
+                    EXPECT_EQ(m.overdraw, 0u) << what;
+                    RenderStats stats;
+                    render_world_frame(w, *frame, a, axis, &stats);
+                    uint32_t polygons = 0, pixels = 0;
+                    for (int i = 0; i < MAPPER_COUNT; ++i) polygons += stats.mapper_polygons[i], pixels += stats.mapper_pixels[i], by_mapper[i] += stats.mapper_polygons[i];
+                    EXPECT_EQ(polygons, stats.polygons) << what;
+                    EXPECT_EQ(pixels, stats.pixels) << what;
+                    EXPECT_EQ(stats.mapper_polygons[&a - MAPPERS], 0u) << what << ": auto draws with other mappers";
+                    if (b.max_error == 0) {
+                        EXPECT_EQ(m.max_texel_error, 0u) << what;
+                    }
+                    if (HasFailure()) return;
+                }
+                std::string line;
+                for (int i = 0; i < MAPPER_COUNT; ++i)
+                    if (by_mapper[i]) line += std::string(" ") + MAPPERS[i].name + " " + std::to_string(by_mapper[i]);
+                std::printf("  %-9s budget %-5g %-7s:%s\n", d.name, b.max_error, axis == Axis::Rows ? "rows" : "columns", line.c_str());
+            }
+        }
+    }
+}
+
+}  // namespace
