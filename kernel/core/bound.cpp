@@ -105,6 +105,29 @@ bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap
     return magnitude(start) + travel < LIMIT;
 }
 
+void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out, const PreparedPolygon* same) {
+    out->count = 0, out->pixels = 0, out->first = 0;
+    if (same) out->status = same->status, out->setup = same->setup;
+    else out->status = setup_polygon(vertices, count, &out->setup, PLANES_ALL);
+    if (out->status != SetupStatus::Ok) return;
+    EdgeWalker walker(out->setup, axis, clip);
+    Span span;
+    while (walker.next(&span)) {
+        if (out->count == PreparedPolygon::MAX_SPANS) {
+            out->count = -1;
+            return;
+        }
+        out->spans[out->count++] = span;
+        out->pixels += span.count;
+    }
+}
+
+bool setup_takes(const BoundContext& c, const Vertex* vertices, int count) {
+    if (c.prepared && c.prepared->count >= 0) return c.prepared->status == SetupStatus::Ok;
+    PolygonSetup s;
+    return setup_polygon(vertices, count, &s, PLANES_NONE) == SetupStatus::Ok;
+}
+
 ErrorBound unbounded(const BoundContext& c, const Vertex* vertices, int count) {
     ErrorBound b;
     PolygonSetup s;

@@ -28,6 +28,23 @@ struct ErrorBound {
     double footprint = 0;         // max footprint error on every pixel it draws (NO_BOUND: none)
 };
 
+// A polygon set up (every plane) and walked once, for asking several mappers' bounds in turn
+// (auto): the bounds take its spans rather than setting up and walking again, from `first` on (the
+// span that settled the last bound above its budget: the likeliest to settle the next one).
+struct PreparedPolygon {
+    static constexpr int32_t MAX_SPANS = 512;  // a screen's rows or columns, and more
+    SetupStatus status = SetupStatus::Degenerate;
+    PolygonSetup setup;
+    int32_t count = -1;  // spans; -1: more than MAX_SPANS, the bounds walk the polygon themselves
+    int32_t pixels = 0;
+    int32_t first = 0;
+    Span spans[MAX_SPANS];
+};
+// Sets the polygon up (or takes the setup of `same`, the polygon prepared for the other walker)
+// and walks it.
+void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out,
+                     const PreparedPolygon* same = nullptr);
+
 struct BoundContext {
     const Mapper& mapper;
     const Texture& tex;  // with the copies prepare_texture builds
@@ -39,6 +56,7 @@ struct BoundContext {
     // bound is above it the evaluation stops (the footprint returned is then only known to be
     // above the budget, not the polygon's bound).
     double budget = -1;
+    PreparedPolygon* prepared = nullptr;  // the polygon set up and walked already, or nullptr
     bool settled(double worst) const { return budget >= 0 && worst > budget; }
 };
 
@@ -80,21 +98,23 @@ double chords_bound(const SpanLine& l, double h, double k0, double k1, double ro
 // The largest |t'| over pixels [k0, k1], from above: |K| / Q^2 where Q is smallest.
 double max_step_along(const SpanLine& l, int t, double k0, double k1);
 
-// The bound over a span of `last` + 1 pixels from the bounds of its pieces: piece(k0, k1) bounds
-// pixels k0..k1, pieces of `length` pixels from the first. With a budget (BoundContext::budget),
-// first the whole span as one piece (`coarse`), and piece by piece only where that is above it.
+// The bound over pixels k0..k1 of a span (k0 a multiple of `length`) from the bounds of its
+// pieces: piece(a, b) bounds pixels a..b, pieces of `length` pixels from k0. With a budget
+// (BoundContext::budget), first the whole range as one piece (`coarse(k0, k1)`, valid over any
+// range of whole pieces), and where that is above the budget its halves, down to the pieces.
 template <typename Coarse, typename Piece>
-double span_bound(const BoundContext& c, double last, double length, Coarse&& coarse, Piece&& piece) {
-    if (c.budget >= 0) {
-        double whole = coarse();
+double span_bound(const BoundContext& c, double k0, double k1, double length, Coarse&& coarse, Piece&& piece) {
+    double pieces = double(int64_t((k1 - k0) / length)) + 1;
+    if (c.budget >= 0 && pieces > 1) {
+        double whole = coarse(k0, k1);
         if (whole <= c.budget) return whole;
+        double mid = k0 + double(int64_t(pieces / 2)) * length;
+        double left = span_bound(c, k0, mid - 1, length, coarse, piece);
+        if (c.settled(left)) return left;
+        return larger(left, span_bound(c, mid, k1, length, coarse, piece));
     }
     double worst = 0;
-    for (double k0 = 0; k0 <= last && !c.settled(worst); k0 += length) {
-        double k1 = k0 + length - 1 < last ? k0 + length - 1 : last;
-        double b = piece(k0, k1);
-        worst = b > worst ? b : worst;
-    }
+    for (double a = k0; a <= k1 && !c.settled(worst); a += length) worst = larger(worst, piece(a, a + length - 1 < k1 ? a + length - 1 : k1));
     return worst;
 }
 
@@ -112,16 +132,30 @@ bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap
 // For mappers whose error is not (yet) bounded: whether they draw the polygon, and no bound.
 ErrorBound unbounded(const BoundContext& c, const Vertex* vertices, int count);
 
-// Calls f(span, setup) for every span the walker yields for the polygon inside the clip; false
-// when setup does not take the polygon (refused, or degenerate: nothing to draw).
+// Calls f(span, setup) for every span of the polygon inside the clip (the prepared ones, or the
+// walker's), f returning the bound so far; stops once that is above the context's budget
+// (settled). False when setup does not take the polygon (refused, or degenerate: nothing to draw).
 template <typename F>
-bool for_each_span(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, SetupPlanes planes, F&& f) {
+bool for_each_span(const BoundContext& c, const Vertex* vertices, int count, SetupPlanes planes, F&& f) {
+    if (PreparedPolygon* p = c.prepared; p && p->count >= 0) {
+        if (p->status != SetupStatus::Ok) return false;
+        for (int32_t i = 0, k = p->first; i < p->count; ++i, k = k + 1 < p->count ? k + 1 : 0)
+            if (c.settled(f(p->spans[k], p->setup))) {
+                p->first = k;
+                break;
+            }
+        return true;
+    }
     PolygonSetup s;
     if (setup_polygon(vertices, count, &s, planes) != SetupStatus::Ok) return false;
-    EdgeWalker walker(s, axis, clip);
+    EdgeWalker walker(s, c.axis, c.clip);
     Span span;
-    while (walker.next(&span)) f(span, s);
+    while (walker.next(&span))
+        if (c.settled(f(span, s))) break;
     return true;
 }
+
+// Whether setup takes the polygon (the prepared one's status, or a coverage-only setup).
+bool setup_takes(const BoundContext& c, const Vertex* vertices, int count);
 
 }  // namespace raster

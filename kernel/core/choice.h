@@ -34,13 +34,11 @@ struct MapperCost {
 extern const MapperCost MAPPER_COSTS[];
 extern const int MAPPER_COST_COUNT;
 
-// A polygon's size as the cost model counts it, estimated from its vertices inside the clip.
+// A polygon's size as the cost model counts it: its spans and pixels inside the clip.
 struct PolygonSize {
     double spans, pixels;
 };
-PolygonSize estimate_size(const Vertex* vertices, int count, Axis axis, const ClipRect& clip);
-// Not measured (-1): dearer than any measured mapper.
-inline double estimate_cost(const MapperCost& c, const PolygonSize& s) {
+inline double estimate_cost(const MapperCost& c, const PolygonSize& s) {  // not measured (-1): dearer than any measured mapper
     return c.polygon < 0 ? 1e30 : c.polygon + c.span * s.spans + c.pixel * s.pixels;
 }
 
@@ -50,11 +48,16 @@ bool choosable(const Mapper& m);
 
 struct Choice {
     const Mapper* mapper = nullptr;  // nullptr: no mapper draws the polygon (degenerate, or refused)
+    Axis axis = Axis::Rows;          // the walker it draws with
     ErrorBound bound;
 };
-// The cheapest choosable mapper, by the cost model, that walks `axis` into targets like `target`,
-// takes the texture and whose bound meets the budget on the polygon.
-Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, Axis axis, const Target& target);
+// The cheapest choosable mapper and walker, by the cost model, that draws into targets like
+// `target`, takes the texture and whose bound meets the budget on the polygon: rows or columns,
+// whichever the target and the mapper take (floors by rows, walls by columns). The polygon is set
+// up once and walked once a walker, into prepared[Axis] (its spans, for the chosen mapper to draw
+// when it takes spans).
+Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
+                     PreparedPolygon prepared[2]);
 
 // auto's own bound: its choice's under the default budget.
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count);

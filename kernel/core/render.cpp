@@ -3,17 +3,13 @@
 
 namespace raster {
 
-SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& named, Axis axis,
-                         Target& target, RenderStats* stats, Variant variant, const Budget& budget) {
+namespace {
+
+// Draws the polygon with the mapper: its own driver, or setup, the walker (or the spans of the
+// polygon as auto prepared it) and its span function on each span. Counts the polygon.
+SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
+                      RenderStats* stats, Variant variant, const PreparedPolygon* prepared) {
     Probe* probe = stats->probe;
-    probe_lap(probe, Phase::Walk);  // what came before the polygon: the caller's loop
-    const Mapper* chosen = &named;
-    if (named.chooses) {  // the choice counts as setup; where none draws it, exact's setup says why
-        chosen = choose_mapper(budget, vertices, count, tex, axis, target).mapper;
-        if (!chosen) chosen = find_mapper("exact");
-        probe_lap(probe, Phase::Setup);
-    }
-    const Mapper& mapper = *chosen;
     const uint32_t pixels_before = stats->pixels;
     if (!mapper_walks(mapper, axis) || !mapper_accepts(mapper, tex) || !mapper_targets(mapper, target, axis)) {
         ++stats->rejected;
@@ -24,17 +20,26 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
     if (mapper.draw) {
         status = mapper.draw(DrawContext{tex, axis, target, stats, loop}, vertices, count);
     } else {
-        PolygonSetup setup;
-        status = setup_polygon(vertices, count, &setup);
-        if (status == SetupStatus::Ok) {
-            EdgeWalker walker(setup, axis, target.clip);
+        auto draw_spans = [&](const PolygonSetup& setup, auto&& next) {
             const SpanContext context{setup, tex, axis, loop};
             probe_lap(probe, Phase::Setup);
             Span span;
-            while (walker.next(&span)) {
+            while (next(&span)) {
                 int32_t stride;
                 uint8_t* dst = span_start(target, axis, span, &stride);
                 emit(probe, stats, 1, uint32_t(span.count), [&] { mapper.span(context, span, dst, stride); });
+            }
+        };
+        if (prepared && prepared->count >= 0) {  // set up with every plane and walked already
+            status = prepared->status;
+            int32_t i = 0;
+            if (status == SetupStatus::Ok) draw_spans(prepared->setup, [&](Span* s) { return i < prepared->count && (*s = prepared->spans[i++], true); });
+        } else {
+            PolygonSetup setup;
+            status = setup_polygon(vertices, count, &setup);
+            if (status == SetupStatus::Ok) {
+                EdgeWalker walker(setup, axis, target.clip);
+                draw_spans(setup, [&](Span* s) { return walker.next(s); });
             }
         }
     }
@@ -47,6 +52,21 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
     } else if (status == SetupStatus::Degenerate) ++stats->skipped;
     else ++stats->rejected;
     return status;
+}
+
+}  // namespace
+
+SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
+                         Target& target, RenderStats* stats, Variant variant, const Budget& budget) {
+    probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
+    if (!mapper.chooses) return draw_with(vertices, count, tex, mapper, axis, target, stats, variant, nullptr);
+    // auto: the mapper and the walker chosen (the choice counts as setup); where no mapper draws
+    // the polygon, exact's setup says why
+    PreparedPolygon prepared[2];
+    Choice c = choose_mapper(budget, vertices, count, tex, target, prepared);
+    probe_lap(stats->probe, Phase::Setup);
+    if (!c.mapper) return draw_with(vertices, count, tex, *find_mapper("exact"), axis, target, stats, variant, nullptr);
+    return draw_with(vertices, count, tex, *c.mapper, c.axis, target, stats, variant, &prepared[int(c.axis)]);
 }
 
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,

@@ -48,8 +48,7 @@ ErrorBound affine_bound(const BoundContext& c, const Vertex* vertices, int count
     b.exact_coverage = true;
     bool fits = true;
     double worst = 0;
-    b.draws = for_each_span(vertices, count, c.axis, c.clip, PLANES_ALL, [&](const Span& span, const PolygonSetup& s) {
-        if (c.settled(worst)) return;
+    b.draws = for_each_span(c, vertices, count, PLANES_ALL, [&](const Span& span, const PolygonSetup& s) {
         SpanLine l = span_line(s, c.axis, span);
         double x = centre_x(s, span.x), y = centre_y(s, span.y), last = double(span.count - 1);
         const Plane* plane[2] = {&s.u, &s.v};
@@ -61,8 +60,9 @@ ErrorBound affine_bound(const BoundContext& c, const Vertex* vertices, int count
             fits = fits && fits_16_16(a[t], step[t], last, size[t], c.tex.wrap);
         }
         auto piece = [&](double k0, double k1) { return lines_bound(l, a, step, k0, k1, (1 + k1) * HALF_ULP_16_16); };
-        double bound = span_bound(c, last, BOUND_PIECE, [&] { return piece(0, last); }, piece);
+        double bound = span_bound(c, 0, last, BOUND_PIECE, piece, piece);
         worst = bound > worst ? bound : worst;
+        return fits ? worst : NO_BOUND;
     });
     b.footprint = fits ? worst : NO_BOUND;
     return b;

@@ -5,23 +5,24 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2483.9f, 551.68f, 39.414f}, // 6 scenes
-    {"exact", 2487.9f, 369.91f, 79.407f}, // 6 scenes
-    {"persp-subdiv-4", 2483.9f, 399.54f, 111.545f}, // 6 scenes
-    {"persp-subdiv-8", 2483.9f, 452.59f, 73.007f}, // 6 scenes
-    {"persp-subdiv-16", 2483.9f, 479.65f, 54.613f}, // 6 scenes
-    {"persp-subdiv-32", 2483.9f, 492.89f, 45.647f}, // 6 scenes
-    {"fast-affine", 2411.7f, 259.56f, 4.274f}, // 4 scenes
-    {"fast-columns", 2406.2f, 307.04f, 5.214f}, // 4 scenes
-    {"xsharp-dda", 1650.2f, 532.22f, 34.277f}, // 5 scenes
-    {"xsharp-row-out", 1655.2f, 665.93f, 15.734f}, // 5 scenes
-    {"xsharp-column", 1655.0f, 613.82f, 9.117f}, // 5 scenes
-    {"hecker-steptable", 2832.3f, 0.00f, 422.455f}, // 5 scenes
-    {"fatmap-256", 1686.0f, 299.45f, 10.078f}, // 4 scenes
-    {"fatmap-256-16", 1686.0f, 304.45f, 9.078f}, // 4 scenes
-    {"fatmap-lut", 1727.7f, 306.48f, 3.460f}, // 3 scenes
-    {"quake-subdiv16", 2540.9f, 358.24f, 12.641f}, // 5 scenes
-    {"quake-subdiv8", 2540.9f, 349.10f, 18.854f}, // 5 scenes
+    {"affine", 2526.9f, 565.28f, 39.167f}, // 6 scenes
+    {"exact", 2531.9f, 383.51f, 79.161f}, // 6 scenes
+    {"persp-subdiv-4", 2526.9f, 413.14f, 111.298f}, // 6 scenes
+    {"persp-subdiv-8", 2526.9f, 466.19f, 72.760f}, // 6 scenes
+    {"persp-subdiv-16", 2526.9f, 493.26f, 54.366f}, // 6 scenes
+    {"persp-subdiv-32", 2526.9f, 506.49f, 45.400f}, // 6 scenes
+    {"constant-depth", 2526.9f, 516.80f, 38.598f}, // 6 scenes
+    {"fast-affine", 2450.7f, 273.62f, 4.149f}, // 4 scenes
+    {"fast-columns", 2445.2f, 320.75f, 5.083f}, // 4 scenes
+    {"xsharp-dda", 1688.2f, 549.98f, 33.933f}, // 5 scenes
+    {"xsharp-row-out", 1694.2f, 683.75f, 15.389f}, // 5 scenes
+    {"xsharp-column", 1694.0f, 628.58f, 8.889f}, // 5 scenes
+    {"hecker-steptable", 2871.2f, 0.00f, 423.062f}, // 5 scenes
+    {"fatmap-256", 1721.9f, 317.91f, 9.731f}, // 4 scenes
+    {"fatmap-256-16", 1721.9f, 322.91f, 8.731f}, // 4 scenes
+    {"fatmap-lut", 1763.6f, 324.96f, 3.097f}, // 3 scenes
+    {"quake-subdiv16", 2579.9f, 372.48f, 12.374f}, // 5 scenes
+    {"quake-subdiv8", 2579.9f, 363.34f, 18.587f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

@@ -52,10 +52,9 @@ void exact_loop(const void* raw) {
 }
 
 // The bound: the reference's definition, bit for bit (a test on thousands of triangles).
-ErrorBound exact_bound(const BoundContext&, const Vertex* vertices, int count) {
+ErrorBound exact_bound(const BoundContext& c, const Vertex* vertices, int count) {
     ErrorBound b;
-    PolygonSetup s;
-    b.draws = setup_polygon(vertices, count, &s, PLANES_NONE) == SetupStatus::Ok;
+    b.draws = setup_takes(c, vertices, count);
     b.exact_coverage = true;
     b.footprint = 0;
     return b;

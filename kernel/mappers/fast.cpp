@@ -107,8 +107,7 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
     double worst = 0;
     bool fits = true;
     b.draws = mapper_accepts(c.mapper, c.tex) &&
-              for_each_span(vertices, count, c.axis, c.clip, PLANES_ALL, [&](const Span& span, const PolygonSetup& s) {
-                  if (c.settled(worst)) return;
+              for_each_span(c, vertices, count, PLANES_ALL, [&](const Span& span, const PolygonSetup& s) {
                   SpanLine l = span_line(s, c.axis, span);
                   double x = centre_x(s, span.x), y = centre_y(s, span.y), last = double(span.count - 1);
                   const Plane* plane[2] = {&s.u, &s.v};
@@ -128,8 +127,9 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
                       double far = reach(k0) > reach(k1) ? reach(k0) : reach(k1);
                       return lines_bound(l, a, step, k0, k1, (1 + far) * HALF_ULP_16_16);
                   };
-                  double bound = span_bound(c, last, BOUND_PIECE, [&] { return piece(0, last); }, piece);
+                  double bound = span_bound(c, 0, last, BOUND_PIECE, piece, piece);
                   worst = bound > worst ? bound : worst;
+                  return fits ? worst : NO_BOUND;
               });
     b.footprint = fits ? worst : NO_BOUND;
     return b;

@@ -35,6 +35,10 @@ const Mapper MAPPERS[] = {
      EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<16>, nullptr, nullptr, nullptr, nullptr, subdiv_bound<16>},
     {"persp-subdiv-32", "ours", "exact every 32 pixels, affine between", "as persp-subdiv-4, every 32nd pixel",
      EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<32>, nullptr, nullptr, nullptr, nullptr, subdiv_bound<32>},
+    {"constant-depth", "ours", "Doom's floors and walls: exact at both ends of each row or column, affine between",
+     "exact u, v at each span's first and last pixel centre, 16.16 steps between: exact up to rounding along lines of constant "
+     "depth (floors and ceilings by rows, upright walls by columns), its bound says how far off elsewhere; exact coverage; any texture",
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<SPAN_LONG>, nullptr, nullptr, nullptr, nullptr, subdiv_bound<SPAN_LONG>},
     {"fast-affine", "ours", "fatmap2's 8:16 core, unrolled with a computed entry, walking runs of rows in NASM",
      "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; 256 x 256 repeating textures",
      EXACT_COVERAGE_FLAT_ONE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound},

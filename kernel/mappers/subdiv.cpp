@@ -51,10 +51,11 @@ void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
     }
 }
 
-// The bound (docs/accuracy.md, "Error bounds"): each piece runs from the exact value at its first
-// pixel along the chord to the exact value at the next exact point, to within 16.16 rounding
-// (half a unit at the start and in the step); the chord's deviation from the exact mapping is
-// measured over the piece's own pixels.
+// The bound (docs/accuracy.md, "Error bounds"): each segment runs from the exact value at its
+// first pixel along the chord to the exact value at the next exact point, to within 16.16 rounding
+// (half a unit at the start and in each step); the chord's deviation from the exact mapping is
+// measured piece by piece (a segment, or BOUND_PIECE pixels of a longer one), each over its own
+// smallest footprint.
 template <int N>
 ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count) {
     ErrorBound b;
@@ -62,34 +63,39 @@ ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count
     bool fits = true;
     double worst = 0;
     const int32_t size[2] = {c.tex.width, c.tex.height};
-    b.draws = for_each_span(vertices, count, c.axis, c.clip, PLANES_PERSPECTIVE, [&](const Span& span, const PolygonSetup& s) {
-        if (c.settled(worst)) return;
+    const double length = N < BOUND_PIECE ? N : BOUND_PIECE;
+    b.draws = for_each_span(c, vertices, count, PLANES_PERSPECTIVE, [&](const Span& span, const PolygonSetup& s) {
         SpanLine l = span_line(s, c.axis, span);
         const double last = double(span.count - 1);
-        // coarse: every chord at most N pixels, its steps at most the largest |t'|, its start
-        // (clamp) at most the larger end (t is monotonic along a span); where that may not fit
-        // 16.16, no coarse bound: the segments are checked one by one
-        auto coarse = [&] {
+        auto segment = [&](double k) { return double(int64_t(k / N)) * N; };  // the first pixel of k's segment
+        auto next_exact = [&](double k) { return segment(k) + N < last ? segment(k) + N : last; };
+        // coarse, over pixels k0..k1 (the chords reach the exact point after k1): every chord at
+        // most N pixels and the span long, its steps at most the largest |t'|, its start (clamp)
+        // at most the larger end (t is monotonic along a span); where that may not fit 16.16, no
+        // coarse bound: the pieces are checked one by one
+        auto coarse = [&](double k0, double k1) {
+            const double reach = next_exact(k1), h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
             for (int t = 0; t < 2; ++t) {
-                double start = c.tex.wrap == Wrap::Repeat ? 0.0 : larger(magnitude(span_exact(l, t, 0)), magnitude(span_exact(l, t, last)));
-                if (!fits_16_16(start, max_step_along(l, t, 0, last), double(N - 1), size[t], c.tex.wrap)) return NO_BOUND;
+                double start = c.tex.wrap == Wrap::Repeat ? 0.0 : larger(magnitude(span_exact(l, t, k0)), magnitude(span_exact(l, t, reach)));
+                if (!fits_16_16(start, max_step_along(l, t, k0, reach), steps, size[t], c.tex.wrap)) return NO_BOUND;
             }
-            return chords_bound(l, N, 0, last, double(N) * HALF_ULP_16_16);
+            return chords_bound(l, h, k0, reach, (1 + steps) * HALF_ULP_16_16);
         };
-        auto piece = [&](double k0, double k1) {  // a segment: the chord from k0 to the next exact point
-            double end = k0 + N < double(span.count) ? k0 + N : last;
+        auto piece = [&](double k0, double k1) {  // pixels k0..k1 of one segment, on its chord
+            const double from = segment(k0), end = next_exact(k0);
             double a[2], step[2];
             for (int t = 0; t < 2; ++t) {
-                double t0 = span_exact(l, t, k0), t1 = span_exact(l, t, end);
-                step[t] = end > k0 ? (t1 - t0) / (end - k0) : 0.0;
-                a[t] = t0 - step[t] * k0;
+                double t0 = span_exact(l, t, from), t1 = span_exact(l, t, end);
+                step[t] = end > from ? (t1 - t0) / (end - from) : 0.0;
+                a[t] = t0 - step[t] * from;
                 double start = c.tex.wrap == Wrap::Repeat ? 0.0 : t0;  // repeat: reduced into [0, size) first
-                fits = fits && fits_16_16(start, step[t], k1 - k0, size[t], c.tex.wrap);
+                fits = fits && fits_16_16(start, step[t], k1 - from, size[t], c.tex.wrap);
             }
-            return lines_bound(l, a, step, k0, k1, (k1 - k0 + 1) * HALF_ULP_16_16);
+            return lines_bound(l, a, step, k0, k1, (1 + k1 - from) * HALF_ULP_16_16);
         };
-        double bound = span_bound(c, last, N, coarse, piece);
+        double bound = span_bound(c, 0, last, length, coarse, piece);
         worst = bound > worst ? bound : worst;
+        return fits ? worst : NO_BOUND;
     });
     b.footprint = fits ? worst : NO_BOUND;
     return b;
@@ -99,9 +105,11 @@ template void subdiv_span<4>(const SpanContext&, const Span&, uint8_t*, int32_t)
 template void subdiv_span<8>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template void subdiv_span<16>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template void subdiv_span<32>(const SpanContext&, const Span&, uint8_t*, int32_t);
+template void subdiv_span<SPAN_LONG>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template ErrorBound subdiv_bound<4>(const BoundContext&, const Vertex*, int);
 template ErrorBound subdiv_bound<8>(const BoundContext&, const Vertex*, int);
 template ErrorBound subdiv_bound<16>(const BoundContext&, const Vertex*, int);
 template ErrorBound subdiv_bound<32>(const BoundContext&, const Vertex*, int);
+template ErrorBound subdiv_bound<SPAN_LONG>(const BoundContext&, const Vertex*, int);
 
 }  // namespace raster

@@ -29,51 +29,69 @@ TEST(CostModel, HasOneRowPerRegistryRowInItsOrder) {
     }
 }
 
-TEST(CostModel, EstimatesThePolygonsSize) {
-    // a 100 x 50 right triangle, and the same half outside the clip
-    std::vector<Vertex> t = {vertex(10, 10, 1, 0, 0), vertex(110, 10, 1, 0, 0), vertex(10, 60, 1, 0, 0)};
-    PolygonSize rows = estimate_size(t.data(), 3, Axis::Rows, ClipRect{0, 0, 320, 240});
-    PolygonSize columns = estimate_size(t.data(), 3, Axis::Columns, ClipRect{0, 0, 320, 240});
-    EXPECT_DOUBLE_EQ(rows.pixels, 2500);
-    EXPECT_DOUBLE_EQ(rows.spans, 50);
-    EXPECT_DOUBLE_EQ(columns.spans, 100);
-    PolygonSize clipped = estimate_size(t.data(), 3, Axis::Rows, ClipRect{0, 0, 60, 240});
-    EXPECT_DOUBLE_EQ(clipped.pixels, 1250);
-    EXPECT_DOUBLE_EQ(estimate_size(t.data(), 3, Axis::Rows, ClipRect{200, 0, 320, 240}).pixels, 0);
+// The spans and pixels auto counts (and draws from, for the mappers that take spans) are the
+// walker's: the pixels the exact mapper draws.
+TEST(Auto, PreparesThePolygonAsTheWalkerDrawsIt) {
+    TriangleGen gen(77u);
+    const Mapper& exact = *find_mapper("exact");
+    std::vector<uint8_t> texels(64 * 64, 1), pixels(SCREEN_PIXELS * 4);
+    Texture tex{texels.data(), 64, 64, Wrap::Repeat};
+    for (int n = 0; n < 300; ++n) {
+        std::vector<Vertex> p = gen.triangle();
+        for (Axis axis : {Axis::Rows, Axis::Columns}) {
+            Target t = ram_target(pixels.data(), axis == Axis::Columns);
+            PreparedPolygon prepared;
+            prepare_polygon(p.data(), 3, axis, t.clip, &prepared);
+            RenderStats stats;
+            SetupStatus status = draw_polygon(p.data(), 3, tex, exact, axis, t, &stats);
+            EXPECT_EQ(prepared.status, status);
+            if (status != SetupStatus::Ok) continue;
+            EXPECT_EQ(uint32_t(prepared.count), stats.spans);
+            EXPECT_EQ(uint32_t(prepared.pixels), stats.pixels);
+        }
+    }
 }
 
-// The choice against every candidate, worked out here from the bounds and the cost model.
+// The choice against every candidate (mapper and walker), worked out here from the bounds (asked
+// without a budget: the tight ones) and the cost model.
 TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     TriangleGen gen(1123u);
     std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
     generate_texture(TextureKind::Xor, 256, 256, texels.data());
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};
     prepare_texture(&tex, bordered.data(), aligned.data());
-    int chose[MAPPER_LIMIT] = {};
+    int chose[MAPPER_LIMIT][2] = {};
     for (int n = 0; n < 400; ++n) {
         gen.depth_ratio = n % 4 == 0 ? 1.0001 : n % 4 == 1 ? 3 : 50;
         std::vector<Vertex> p = gen.triangle();
-        for (Axis axis : {Axis::Rows, Axis::Columns}) {
-            Target target = surface_kind(axis == Axis::Rows ? Surface::Linear : Surface::Planar);
+        for (Surface surface : {Surface::Linear, Surface::Planar}) {
+            Target target = surface_kind(surface);
             target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
-            PolygonSize size = estimate_size(p.data(), 3, axis, target.clip);
             double last_cost = 1e300;
             for (const Budget& b : BUDGETS) {
-                Choice c = choose_mapper(b, p.data(), 3, tex, axis, target);
+                PreparedPolygon prepared[2];
+                Choice c = choose_mapper(b, p.data(), 3, tex, target, prepared);
                 if (!c.mapper) {  // only where exact cannot draw it either
-                    EXPECT_FALSE(find_mapper("exact")->bound(BoundContext{*find_mapper("exact"), tex, axis, target.clip}, p.data(), 3).draws);
+                    EXPECT_FALSE(find_mapper("exact")->bound(BoundContext{*find_mapper("exact"), tex, Axis::Rows, target.clip}, p.data(), 3).draws);
                     break;
                 }
                 const int row = int(c.mapper - MAPPERS);
-                ++chose[row];
+                ++chose[row][int(c.axis)];
                 EXPECT_TRUE(budget_allows(b, c.bound)) << c.mapper->name;
-                double cost = estimate_cost(MAPPER_COSTS[row], size);
+                EXPECT_TRUE(mapper_targets(*c.mapper, target, c.axis) && mapper_walks(*c.mapper, c.axis)) << c.mapper->name;
+                auto size = [&](Axis axis) {
+                    const PreparedPolygon& q = prepared[int(axis)];
+                    return PolygonSize{double(q.count), double(q.pixels)};
+                };
+                double cost = estimate_cost(MAPPER_COSTS[row], size(c.axis));
                 for (int i = 0; i < MAPPER_COUNT; ++i) {
                     const Mapper& m = MAPPERS[i];
-                    if (!choosable(m) || !mapper_walks(m, axis) || !mapper_targets(m, target, axis) || !mapper_accepts(m, tex)) continue;
-                    if (estimate_cost(MAPPER_COSTS[i], size) >= cost) continue;
-                    EXPECT_FALSE(budget_allows(b, m.bound(BoundContext{m, tex, axis, target.clip}, p.data(), 3)))
-                        << m.name << " is cheaper than " << c.mapper->name << " and meets the budget " << b.max_error;
+                    for (Axis axis : {Axis::Rows, Axis::Columns}) {
+                        if (!choosable(m) || !mapper_walks(m, axis) || !mapper_targets(m, target, axis) || !mapper_accepts(m, tex)) continue;
+                        if (estimate_cost(MAPPER_COSTS[i], size(axis)) >= cost) continue;
+                        EXPECT_FALSE(budget_allows(b, m.bound(BoundContext{m, tex, axis, target.clip}, p.data(), 3)))
+                            << m.name << " is cheaper than " << c.mapper->name << " and meets the budget " << b.max_error;
+                    }
                 }
                 EXPECT_LE(cost, last_cost) << "a looser budget chose a dearer mapper";
                 last_cost = cost;
@@ -81,9 +99,10 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
         }
         if (HasFailure()) return;
     }
-    int kinds = 0;
-    for (int i = 0; i < MAPPER_COUNT; ++i) kinds += chose[i] > 0;
+    int kinds = 0, columns = 0;
+    for (int i = 0; i < MAPPER_COUNT; ++i) kinds += chose[i][0] + chose[i][1] > 0, columns += chose[i][1];
     EXPECT_GE(kinds, 3) << "the random polygons exercise more than one or two choices";
+    EXPECT_GT(columns, 0) << "and both walkers";
 }
 
 TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
