@@ -14,12 +14,15 @@ raster::TextureSet g_textures;
 raster::Frame g_frame;
 raster::FrameScratch g_scratch;
 bool g_loaded = false;
+bool g_overridden = false;
+raster::Budget g_override;
 char g_name[raster::MAX_FILE_NAME];
 
 }  // namespace
 
 bool load(const char* name, const uint8_t* text, size_t length, raster::ParseError* error) {
     g_loaded = false;
+    g_overridden = false;
     if (!raster::parse_world(reinterpret_cast<const char*>(text), length, files::resolver(), &g_world, error)) return false;
     raster::build_texture_set(g_world, &g_textures);
     size_t i = 0;
@@ -31,6 +34,14 @@ bool load(const char* name, const uint8_t* text, size_t length, raster::ParseErr
 }
 
 bool loaded() { return g_loaded; }
+
+void set_budget(const raster::Budget* override) {
+    g_overridden = override != nullptr;
+    if (override) g_override = *override;
+}
+raster::Budget budget() { return g_overridden ? g_override : g_world.budget; }
+bool budget_overridden() { return g_overridden; }
+
 const raster::World& world() { return g_world; }
 const char* name() { return g_name; }
 
@@ -39,6 +50,7 @@ FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surf
     FrameResult r{};
     uint64_t t0 = timer::rdtsc();
     raster::build_frame(g_world, n, &g_frame, &g_scratch);
+    if (g_overridden) g_frame.budget = g_override;
     r.ticks_geometry = timer::rdtsc() - t0;
     r.frame = g_frame.stats;
     struct Drawing {

@@ -24,6 +24,12 @@ struct FrameResult {
     uint64_t ticks_geometry;
 };
 
+// The budget auto draws the frames to: the scene's, or the one the `budget` command set, until it
+// is cleared (nullptr) or another 3D scene is loaded.
+void set_budget(const raster::Budget* override);
+raster::Budget budget();
+bool budget_overridden();
+
 // Builds frame `n` and draws it with `mapper` into `page` through `surface`; with a probe, times
 // the drawing's phases (the probe's clock must be set).
 FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,

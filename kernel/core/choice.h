@@ -34,10 +34,12 @@ struct MapperCost {
 extern const MapperCost MAPPER_COSTS[];
 extern const int MAPPER_COST_COUNT;
 
-// A polygon's size as the cost model counts it: its spans and pixels inside the clip.
+// A polygon's size as the cost model counts it: its lines along the walker (rows or columns, from
+// the bounding box inside the clip) and its pixels (as walked: the same along either walker).
 struct PolygonSize {
     double spans, pixels;
 };
+PolygonSize polygon_size(const PreparedPolygon& walked, Axis axis, const ClipRect& clip);
 inline double estimate_cost(const MapperCost& c, const PolygonSize& s) {  // not measured (-1): dearer than any measured mapper
     return c.polygon < 0 ? 1e30 : c.polygon + c.span * s.spans + c.pixel * s.pixels;
 }

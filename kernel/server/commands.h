@@ -5,9 +5,11 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "kernel/core/choice.h"
 #include "kernel/core/mapper.h"
 #include "kernel/core/policy.h"
 #include "kernel/lib/fmt.h"
+#include "kernel/lib/json.h"
 #include "kernel/lib/words.h"
 #include "kernel/server/server.h"
 
@@ -50,6 +52,9 @@ void cmd_frame(Context& ctx, const StrView* args, size_t nargs);
 void cmd_play(Context& ctx, const StrView* args, size_t nargs);
 void cmd_bench(Context& ctx, const StrView* args, size_t nargs);
 void cmd_mappers(Context& ctx, const StrView* args, size_t nargs);
+void cmd_budget(Context& ctx, const StrView* args, size_t nargs);
+// A budget as a JSON object {given, max_error (footprints, or "any"), exact_coverage} (drawing.cpp).
+void write_budget(lib::JsonLine& r, const char* key, const raster::Budget& b);
 // diagnostics.cpp: faults on purpose, the NASM loops' self-test, leaving QEMU
 void cmd_fault(Context& ctx, const StrView* args, size_t nargs);
 void cmd_selftest(Context& ctx, const StrView* args, size_t nargs);

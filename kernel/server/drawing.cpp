@@ -4,6 +4,7 @@
 #include "drivers/timer.h"
 #include "drivers/vga.h"
 #include "kernel/lib/stats.h"
+#include "kernel/scene/scene_text.h"
 #include "kernel/scenes.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
@@ -220,6 +221,39 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
         r.begin_object(BENCH_FIELD_NAMES[k]).u64("sum", s.sum).u32("min", s.min).u32("median", s.median).end_object();
     }
     tally.write(r);
+    r.end();
+}
+
+void write_budget(lib::JsonLine& r, const char* key, const raster::Budget& b) {
+    r.begin_object(key).boolean("given", b.given);
+    if (b.max_error < 0) r.str("max_error", "any");
+    else r.fixed("max_error", b.max_error, 3);
+    r.boolean("exact_coverage", b.exact_coverage).end_object();
+}
+
+// budget: shows what auto draws the 3D scene to; `budget scene` goes back to the scene's own,
+// `budget MAX-ERROR|any [exact|any]` sets one (coverage exact unless `any`) until then or the next load.
+void cmd_budget(Context&, const StrView* args, size_t nargs) {
+    if (nargs == 1 && args[0].equals("scene")) {
+        worlds::set_budget(nullptr);
+    } else if (nargs >= 1) {
+        raster::Budget b;
+        b.given = true;
+        bool ok = args[0].equals("any") ? (b.max_error = raster::ANY_ERROR, true)
+                                        : raster::scene_text::parse_decimal(args[0], &b.max_error) && b.max_error >= 0 && b.max_error <= 1e6;
+        if (nargs == 2) {
+            ok = ok && (args[1].equals("exact") || args[1].equals("any"));
+            b.exact_coverage = args[1].equals("exact");
+        }
+        if (!ok) {
+            usage_error("budget");
+            return;
+        }
+        worlds::set_budget(&b);
+    }
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "budget").str("source", worlds::budget_overridden() ? "command" : worlds::loaded() ? "scene" : "default");
+    write_budget(r, "budget", worlds::budget());
     r.end();
 }
 

@@ -47,10 +47,7 @@ void describe_world(lib::JsonLine& r) {
         .u32("positions", uint32_t(w.position_count))
         .u32("frames", uint32_t(w.frames))
         .str("palette", w.palette_texture >= 0 ? w.textures[w.palette_texture].name : "default");
-    r.begin_object("budget").boolean("given", w.budget.given);
-    if (w.budget.max_error < 0) r.str("max_error", "any");
-    else r.fixed("max_error", w.budget.max_error, 3);
-    r.boolean("exact_coverage", w.budget.exact_coverage).end_object();
+    write_budget(r, "budget", w.budget);
 }
 
 // Loads a scene file of either version as the current scene of its kind.

@@ -26,6 +26,7 @@ constexpr Command COMMANDS[] = {
     {"play", "play FRAMES MAPPER [linear|planar|vga] [asm|twin] (the 3D scene, page-flipped)", 2, 4, cmd_play},
     {"bench", "bench FRAMES MAPPER [linear|planar|vga] [asm|twin] (the 3D scene: timings per frame)", 2, 4, cmd_bench},
     {"mappers", "mappers", 0, 0, cmd_mappers},
+    {"budget", "budget [scene|MAX-ERROR|any [exact|any]] (what auto draws the 3D scene to)", 0, 2, cmd_budget},
     {"selftest", "selftest [CASES]", 0, 1, cmd_selftest},
     {"vbe", "vbe on", 1, 1, cmd_vbe},
     {"exit", "exit CODE", 1, 1, cmd_exit},

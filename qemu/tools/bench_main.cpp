@@ -102,11 +102,28 @@ void load_in_kernel(Session& k, const BenchScene& s) {
 
 uint64_t sum_of(const json& r, const char* field) { return r[field]["sum"].get<uint64_t>(); }
 
-TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frames) {
+// auto's rows at budgets of their own besides the scene's: footprint errors, exact coverage.
+const double BENCH_BUDGETS[] = {0, 0.5, 1, 2, 4};
+
+// A budget as the kernel's `budget` command and the report write it: 0.5, 2.
+std::string budget_text(double max_error) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%g", max_error);
+    return t;
+}
+
+// One row: the mapper on the scene's frames, in the kernel and on the host; auto at `budget`
+// when one is given (the row is named auto@BUDGET), else at the scene's.
+TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frames, const raster::Budget* budget = nullptr) {
     TradeRow row;
     row.scene = s.name, row.mapper = m.name, row.family = m.family, row.surface = raster::surface_name(raster::home_surface(m));
+    if (budget) {
+        row.mapper += "@" + budget_text(budget->max_error);
+        k.ok("budget " + budget_text(budget->max_error) + " exact");
+    }
     json last;
     json r = k.ok("bench " + std::to_string(frames) + " " + m.name + " " + row.surface, [&](const json& e) { last = e; });
+    if (budget) k.ok("budget scene");
     row.walker = r["walker"].get<std::string>(), row.loop = r["loop"].get<std::string>();
     row.frames = r["frames"].get<uint32_t>();
     row.polygons = r["polygons"].get<uint64_t>(), row.rejected = r["rejected"].get<uint64_t>();
@@ -116,7 +133,8 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
     row.inner = sum_of(r, "ticks_inner"), row.blit = sum_of(r, "ticks_blit");
     for (const json& d : r["drawn_by"])
         row.drawn_by.emplace_back(d["mapper"].get<std::string>(), d["polygons"].get<uint64_t>(), d["pixels"].get<uint64_t>());
-    const raster::Budget& b = s.host.world->budget;
+    const raster::Budget& b = budget ? *budget : s.host.world->budget;
+    row.budget_error = b.max_error, row.budget_exact = b.exact_coverage;
     char most[32];
     std::snprintf(most, sizeof most, "footprint error %g", b.max_error);
     row.budget = (b.max_error < 0 ? std::string("any footprint error") : std::string(most)) +
@@ -128,6 +146,7 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
     for (int i = 0; i < frames; ++i) {
         int32_t n = int32_t(int64_t(i) * length / frames);
         auto frame = world_frame(s.host, n);
+        if (budget) frame->budget = *budget;
         raster::accumulate(row.accuracy, measure_world_frame(s.host, *frame, m, axis));
         if (i == frames - 1) {
             if (last["frame"].get<int32_t>() != n) throw HarnessError("the kernel benched frame " + last["frame"].dump() + ", expected " + std::to_string(n));
@@ -252,6 +271,17 @@ int run(const Args& a) {
                                          row.accuracy.mean_texel_error, row.kernel_equals_host ? "" : ", kernel DIFFERS from host");
             else std::fprintf(stderr, "refuses every polygon\n");
             rows.push_back(row);
+        }
+        for (const raster::Mapper* m : mappers) {
+            if (!m->chooses) continue;
+            for (double e : BENCH_BUDGETS) {
+                raster::Budget b{true, e, true};
+                std::fprintf(stderr, "[%s] %s auto at budget %s ", s.name.c_str(), s.name.c_str(), budget_text(e).c_str());
+                TradeRow row = bench_one(k, s, *m, a.frames, &b);
+                std::fprintf(stderr, "%.1f instructions/pixel, max footprint error %.3f%s\n", row.frame_per_pixel(),
+                             row.accuracy.max_footprint_error, row.kernel_equals_host ? "" : ", kernel DIFFERS from host");
+                rows.push_back(row);
+            }
         }
     }
     k.ok("exit 0");

@@ -25,6 +25,8 @@ struct TradeRow {
     // scene's budget auto chose for, in words
     std::vector<std::tuple<std::string, uint64_t, uint64_t>> drawn_by;
     std::string budget;
+    double budget_error = -1;   // the budget's footprint error (below 0: any), and whether it asks
+    bool budget_exact = false;  // for exact coverage
 
     bool draws_everything() const { return rejected == 0 && pixels > 0; }
     double per_pixel(uint64_t t) const { return pixels ? double(t) / double(pixels) : 0.0; }
@@ -56,6 +58,10 @@ struct ReportInfo {
     std::vector<std::string> plots;  // plot files written (for the links)
     std::string wall_clock;          // the Markdown of the wall-clock table, if measured
 };
+
+// Whether the row meets auto's budget on the whole scene: everything drawn, the measured max
+// footprint error within it, and exact coverage if it asks for it.
+bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage);
 
 // build/report/trade.md: per scene, a table sorted by speed; the mappers that cannot draw it; the
 // classics' published figures beside ours.

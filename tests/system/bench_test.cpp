@@ -117,7 +117,8 @@ TEST(Bench, ATinyRunReportsEveryMapper) {
     int status = std::system(cmd.c_str());
     ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "see " << out << ".log";
     auto lines = read_csv(out + "/trade.csv");
-    ASSERT_EQ(lines.size(), size_t(raster::MAPPER_COUNT) + 1);
+    // every mapper, and auto again at its five budgets (0, 0.5, 1, 2, 4 footprints, exact coverage)
+    ASSERT_EQ(lines.size(), size_t(raster::MAPPER_COUNT) + 5 + 1);
     ASSERT_EQ(lines[0], csv_header());
     std::map<std::string, size_t> col;
     for (size_t i = 0; i < lines[0].size(); ++i) col[lines[0][i]] = i;
@@ -126,9 +127,18 @@ TEST(Bench, ATinyRunReportsEveryMapper) {
     for (size_t r = 1; r < lines.size(); ++r) {
         const auto& f = lines[r];
         ASSERT_EQ(f.size(), lines[0].size());
-        mappers.insert(f[col["mapper"]]);
+        const std::string& name = f[col["mapper"]];
         EXPECT_EQ(f[col["scene"]], "cube");
-        EXPECT_EQ(f[col["kernel_equals_host[bool]"]], "true") << f[col["mapper"]];
+        EXPECT_EQ(f[col["kernel_equals_host[bool]"]], "true") << name;
+        if (size_t at = name.find('@'); at != std::string::npos) {  // auto at a budget: within it, exactly covered
+            EXPECT_EQ(name.substr(0, at), "auto");
+            EXPECT_LE(std::stod(f[col["max_footprint_error[footprints]"]]), std::stod(name.substr(at + 1)) + 1e-9) << name;
+            EXPECT_EQ(f[col["gaps[pixels]"]], "0") << name;
+            EXPECT_EQ(f[col["overdraw[pixels]"]], "0") << name;
+            EXPECT_GT(std::stoull(f[col["pixels[count]"]]), 0u) << name;
+            continue;
+        }
+        mappers.insert(name);
         on_front += f[col["pareto[bool]"]] == "true";
         if (std::stoull(f[col["pixels[count]"]]) == 0) continue;
         for (const char* positive : {"ticks_frame[instructions]", "ticks_inner[instructions]", "inner_per_pixel[instructions/pixel]",

@@ -56,7 +56,8 @@ TEST(Scenes3d, EveryBuiltInSceneEqualsTheHostAtFixedFrames) {
     Session s(options_for_this_test());
     s.ok("mode modex");
     const std::vector<std::pair<std::string, std::string>> mappers = {
-        {"exact", "linear"}, {"persp-subdiv-16", "planar"}, {"fast-affine", "linear"}, {"fast-columns", "vga"}, {"quake-subdiv16", "linear"}};
+        {"exact", "linear"}, {"persp-subdiv-16", "planar"}, {"fast-affine", "linear"}, {"fast-columns", "vga"}, {"quake-subdiv16", "linear"},
+        {"auto", "linear"}};
     int checked = 0;
     for (const DemoScene& d : demo_scenes()) {
         SCOPED_TRACE(d.name);
@@ -193,6 +194,49 @@ TEST(Scenes3d, PlayReportsEveryFrameAndFlipsPages) {
     // icount: the same frame costs the same instructions every time
     json again = s.ok("play 12 fast-affine", [&](const json& e) { EXPECT_EQ(e["ticks"], events[e["n"].get<size_t>()]["ticks"]); });
     EXPECT_EQ(again["ticks"], r["ticks"]);
+}
+
+// The budget command: what auto draws to, until `budget scene` or the next load; auto at budget 0
+// draws the reference's texels (only exact has bound 0 on a polygon it draws pixels of), and every
+// picture equals the host's at the same budget; bad budgets are refused with the usage.
+TEST(Scenes3d, TheBudgetCommandSetsWhatAutoDrawsTo) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    s.ok("load corridor.scene");
+    LoadedWorld host = load_world_file(scene_path("corridor"));
+    EXPECT_EQ(s.ok("budget")["source"], "scene");
+    for (const char* bad : {"budget -1", "budget x", "budget 1 maybe", "budget 1000001"}) {
+        json r = s.command(bad);
+        EXPECT_EQ(r["ok"], false) << bad;
+        EXPECT_NE(r["error"].get<std::string>().find("usage: budget"), std::string::npos) << bad;
+    }
+    const std::vector<std::pair<std::string, double>> budgets = {{"0", 0}, {"4", 4}, {"any", raster::ANY_ERROR}};
+    for (const auto& [word, max_error] : budgets) {
+        json b = s.ok("budget " + word + " exact");
+        EXPECT_EQ(b["source"], "command");
+        json r = s.ok("frame 40 auto 1 linear");
+        auto f = world_frame(host, 40);
+        f->budget = raster::Budget{true, max_error, true};
+        raster::RenderStats stats;
+        IndexImage want = render_world_frame(host, *f, *raster::find_mapper("auto"), raster::Axis::Rows, &stats);
+        uint64_t pixels = 0;
+        for (const json& d : r["drawn_by"]) {
+            pixels += d["pixels"].get<uint64_t>();
+            if (max_error == 0 && d["mapper"] != "exact") {
+                EXPECT_EQ(d["pixels"], 0) << d.dump();
+            }
+        }
+        EXPECT_EQ(pixels, r["pixels"].get<uint64_t>());
+        EXPECT_EQ(r["pixels"], stats.pixels) << word;
+        s.ok("flip 1");
+        expect_same_frame(s, want, host.world->palette, 1, "budget-" + word);
+    }
+    EXPECT_EQ(s.ok("budget scene")["source"], "scene");
+    s.ok("budget 0.5");
+    s.ok("load corridor.scene");
+    json after = s.ok("budget");
+    EXPECT_EQ(after["source"], "scene") << "a load goes back to the scene's budget";
+    EXPECT_EQ(after["budget"]["max_error"], 1);
 }
 
 TEST(Scenes3d, TheBootShowPlaysAScene) {

@@ -79,10 +79,9 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 ++chose[row][int(c.axis)];
                 EXPECT_TRUE(budget_allows(b, c.bound)) << c.mapper->name;
                 EXPECT_TRUE(mapper_targets(*c.mapper, target, c.axis) && mapper_walks(*c.mapper, c.axis)) << c.mapper->name;
-                auto size = [&](Axis axis) {
-                    const PreparedPolygon& q = prepared[int(axis)];
-                    return PolygonSize{double(q.count), double(q.pixels)};
-                };
+                PreparedPolygon walked;
+                prepare_polygon(p.data(), 3, Axis::Columns, target.clip, &walked);
+                auto size = [&](Axis axis) { return polygon_size(walked, axis, target.clip); };
                 double cost = estimate_cost(MAPPER_COSTS[row], size(c.axis));
                 for (int i = 0; i < MAPPER_COUNT; ++i) {
                     const Mapper& m = MAPPERS[i];
