@@ -218,7 +218,7 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
         if (!refused.empty()) out << "\nCannot draw this scene (every polygon refused): " << refused << ".\n";
         for (const TradeRow& r : rows) {
             if (r.scene != scene || r.drawn_by.size() < 2 || !r.pixels) continue;
-            out << "\n" << r.mapper << ", for the scene's budget (" << r.budget << "), drew with:";
+            out << "\n" << r.mapper << " (" << r.budget << ") drew with:";
             for (size_t i = 0; i < r.drawn_by.size(); ++i)
                 out << (i ? ";" : "") << " " << std::get<0>(r.drawn_by[i]) << " " << std::get<1>(r.drawn_by[i]) << " polygons, "
                     << fixed(100.0 * double(std::get<2>(r.drawn_by[i])) / double(r.pixels), 1) << "% of the pixels";
