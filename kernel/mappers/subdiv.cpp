@@ -1,7 +1,9 @@
 // persp-subdiv-N: our subdividing perspective mapper (docs/mappers.md).
 #include "kernel/mappers/subdiv.h"
 
+#include "kernel/core/asm_offsets.h"
 #include "kernel/core/bound.h"
+#include "kernel/core/selftest.h"
 
 namespace raster {
 
@@ -9,7 +11,28 @@ namespace raster {
 // pixel centre, every N pixels after it and at its last pixel; 16.16 steps between them, rounded
 // to nearest (the divisor is the pixel count between the exact points, so the last pixel of each
 // piece lands on the exact value). Repeat: both ends of a piece reduced by the same whole number of
-// periods, so the piece never straddles a wrap. Every texel read goes through texel().
+// periods, so the piece never straddles a wrap. Each piece is one call of the context's loop
+// (step_loop or asm/subdiv.asm).
+namespace {
+
+uint32_t wrap_mask(int32_t size) { return (size & (size - 1)) == 0 ? uint32_t(size - 1) : 0; }
+
+}  // namespace
+
+void step_loop(const void* raw) {
+    const auto& a = *static_cast<const StepArgs*>(raw);
+    const Texture tex{a.texels, a.width, a.height, a.clamp ? Wrap::Clamp : Wrap::Repeat};
+    uint8_t* dst = a.dst;
+    Fixed16_16 u = Fixed16_16::from_raw(a.u_16_16), v = Fixed16_16::from_raw(a.v_16_16);
+    const Fixed16_16 du = Fixed16_16::from_raw(a.du_16_16), dv = Fixed16_16::from_raw(a.dv_16_16);
+    for (int32_t n = 0; n < a.count; ++n) {
+        *dst = texel(tex, u.floor_int(), v.floor_int());
+        dst += a.stride;
+        u = u + du;
+        v = v + dv;
+    }
+}
+
 template <int N>
 void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
     const PolygonSetup& setup = c.setup;
@@ -40,12 +63,10 @@ void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
             du = Fixed16_16::from_double(((u1 - pu) - (u0 - pu)) / divisor);
             dv = Fixed16_16::from_double(((v1 - pv) - (v0 - pv)) / divisor);
         }
-        for (int32_t n = 0; n < len; ++n) {
-            *dst = texel(c.tex, u.floor_int(), v.floor_int());
-            dst += stride;
-            u = u + du;
-            v = v + dv;
-        }
+        StepArgs a{dst, stride, len, c.tex.texels, c.tex.width, c.tex.height, c.tex.wrap == Wrap::Clamp,
+                   wrap_mask(c.tex.width), wrap_mask(c.tex.height), u.raw, v.raw, du.raw, dv.raw};
+        c.loop(&a);
+        dst += stride * len;
         k += len;
         u0 = u1, v0 = v1;
     }
@@ -100,6 +121,39 @@ ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count
     b.footprint = fits ? worst : NO_BOUND;
     return b;
 }
+
+// The loop's random cases (core/selftest.h): any texture size, repeat and clamp, coordinates and
+// steps over the whole 16.16 range (wrapping adds), strides either way.
+LoopCheck check_step(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<StepArgs>(m, other, seed, cases, buf, [&](Random& r, StepArgs& a) {
+        int32_t w = random_texture_size(r), h = random_texture_size(r);
+        a.texels = buf.texels;
+        a.width = w, a.height = h;
+        a.clamp = int32_t(r.below(2));
+        a.width_mask = wrap_mask(w), a.height_mask = wrap_mask(h);
+        a.count = random_count(r, 0, 3, 320);
+        a.stride = r.below(2) ? 1 : r.range(-330, 330);
+        if (a.stride == 0) a.stride = 80;
+        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0) * size_t(a.stride < 0 ? -a.stride : a.stride);
+        a.dst = buf.a + CHECK_GUARD_BYTES + (a.stride < 0 ? extent : 0);
+        // near the texture most of the time, anywhere now and then; steps from a hundredth of a
+        // texel to whole periods, and the extremes
+        auto coordinate = [&](int32_t size) { return r.below(4) ? r.range(-2 * size, 3 * size) * 65536 + r.range(0, 65535) : int32_t(r.next()); };
+        auto step = [&]() { return r.below(8) ? r.range(-4 << 16, 4 << 16) : int32_t(r.next()); };
+        a.u_16_16 = coordinate(w), a.v_16_16 = coordinate(h);
+        a.du_16_16 = step(), a.dv_16_16 = step();
+        return CheckWindow{0, CHECK_GUARD_BYTES + extent + 1 + CHECK_GUARD_BYTES, uint32_t(a.count > 0 ? a.count : 0)};
+    });
+}
+
+#if defined(MODEXLAB_OFFSETS)
+// The block layout asm/subdiv.asm reads (core/asm_offsets.h).
+void subdiv_offsets() {
+    ASM_FIELDS(STEP, StepArgs, dst, stride, count, texels, width, height, clamp, width_mask, height_mask, u_16_16, v_16_16, du_16_16,
+               dv_16_16)
+    ASM_SIZE(STEP_ARGS_SIZE, StepArgs);
+}
+#endif
 
 template void subdiv_span<4>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template void subdiv_span<8>(const SpanContext&, const Span&, uint8_t*, int32_t);

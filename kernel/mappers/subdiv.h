@@ -1,5 +1,5 @@
 // persp-subdiv-N: exact u, v every N pixels (N = 4, 8, 16, 32) and at each span's last pixel,
-// affine in 16.16 between; any texture, both walkers, C++ only. constant-depth is the same with
+// affine in 16.16 between; any texture, both walkers; the loop in NASM (asm/subdiv.asm). constant-depth is the same with
 // one segment a span (N = SPAN_LONG): exact along lines of constant depth.
 #pragma once
 
@@ -12,9 +12,30 @@ namespace raster {
 // Longer than any span: one segment, exact at the span's first and last pixels.
 constexpr int SPAN_LONG = 1 << 24;
 
+// The inner loop of persp-subdiv-N and constant-depth, one piece between exact points: count
+// pixels, each the texel at (floor(u), floor(v)) wrapped or clamped as texel() does, then u += du,
+// v += dv in 16.16 (wrapping adds). A size's mask is size - 1 for a power of two, else 0: the NASM
+// loop then wraps by `and` instead of idiv (the same texel: two's complement).
+struct StepArgs {
+    uint8_t* dst;
+    int32_t stride;
+    int32_t count;
+    const uint8_t* texels;
+    int32_t width, height;
+    int32_t clamp;  // 0: repeat, 1: clamp
+    uint32_t width_mask, height_mask;
+    int32_t u_16_16, v_16_16, du_16_16, dv_16_16;
+};
+void step_loop(const void* args);
+LoopCheck check_step(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+
 template <int N>
 void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
 template <int N>
 ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count);
 
 }  // namespace raster
+
+extern "C" {
+void step_loop_asm(const void* args);
+}
