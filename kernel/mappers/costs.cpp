@@ -7,11 +7,11 @@ namespace raster {
 const MapperCost MAPPER_COSTS[] = {
     {"affine", 2526.9f, 565.28f, 39.167f}, // 6 scenes
     {"exact", 2531.9f, 383.51f, 79.161f}, // 6 scenes
-    {"persp-subdiv-4", 2526.9f, 413.14f, 111.298f}, // 6 scenes
-    {"persp-subdiv-8", 2526.9f, 466.19f, 72.760f}, // 6 scenes
-    {"persp-subdiv-16", 2526.9f, 493.26f, 54.366f}, // 6 scenes
-    {"persp-subdiv-32", 2526.9f, 506.49f, 45.400f}, // 6 scenes
-    {"constant-depth", 2526.9f, 516.80f, 38.598f}, // 6 scenes
+    {"persp-subdiv-4", 2531.9f, 439.68f, 111.533f}, // 6 scenes
+    {"persp-subdiv-8", 2531.9f, 501.50f, 68.902f}, // 6 scenes
+    {"persp-subdiv-16", 2531.9f, 532.67f, 47.719f}, // 6 scenes
+    {"persp-subdiv-32", 2531.9f, 547.92f, 37.387f}, // 6 scenes
+    {"constant-depth", 2531.9f, 559.93f, 29.459f}, // 6 scenes
     {"fast-affine", 2450.7f, 273.62f, 4.149f}, // 4 scenes
     {"fast-columns", 2445.2f, 320.75f, 5.083f}, // 4 scenes
     {"xsharp-dda", 1688.2f, 549.98f, 33.933f}, // 5 scenes
