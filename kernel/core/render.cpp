@@ -65,7 +65,10 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
     PreparedPolygon prepared[2];
     Choice c = choose_mapper(budget, vertices, count, tex, target, prepared);
     probe_lap(stats->probe, Phase::Setup);
-    if (!c.mapper) return draw_with(vertices, count, tex, *find_mapper("exact"), axis, target, stats, variant, nullptr);
+    if (!c.mapper) {
+        const Axis any = target_supports(target, axis) ? axis : Axis::Columns;  // a walker the target takes
+        return draw_with(vertices, count, tex, *find_mapper("exact"), any, target, stats, variant, nullptr);
+    }
     return draw_with(vertices, count, tex, *c.mapper, c.axis, target, stats, variant, &prepared[int(c.axis)]);
 }
 
