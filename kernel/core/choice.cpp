@@ -32,6 +32,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     for (int a = 0; a < 2; ++a) {
         const Axis axis = Axis(a);
         prepared[a].count = -1, prepared[a].status = SetupStatus::Unsupported;  // not walked
+        PolygonSize size{0, 0};
         for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {
             const Mapper& m = MAPPERS[i];
             if (!choosable(m) || !mapper_walks(m, axis) || !mapper_accepts(m, tex) || !mapper_targets(m, target, axis)) continue;
@@ -40,7 +41,8 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
                 prepare_polygon(vertices, count, axis, target.clip, walked);
                 if (walked->status != SetupStatus::Ok) return choice;
             }
-            double c = estimate_cost(MAPPER_COSTS[i], polygon_size(*walked, axis, target.clip));
+            if (size.pixels == 0 && size.spans == 0) size = polygon_size(*walked, axis, target.clip);
+            double c = estimate_cost(MAPPER_COSTS[i], size);
             int k = n++;
             for (; k > 0 && order[k - 1].cost > c; --k) order[k] = order[k - 1];
             order[k] = Candidate{&m, axis, c};

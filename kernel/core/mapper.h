@@ -89,6 +89,7 @@ struct DrawContext {
     Target& target;
     RenderStats* stats;  // the driver adds spans and pixels through emit() and tally()
     LoopFn loop;
+    const PolygonSetup* setup = nullptr;  // the polygon set up already (auto: every plane), or nullptr
 };
 using DrawFn = SetupStatus (*)(const DrawContext& c, const Vertex* vertices, int count);
 

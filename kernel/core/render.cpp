@@ -18,7 +18,8 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
     LoopFn loop = mapper_loop(mapper, variant, target);
     SetupStatus status;
     if (mapper.draw) {
-        status = mapper.draw(DrawContext{tex, axis, target, stats, loop}, vertices, count);
+        const bool set_up = prepared && prepared->count >= 0 && prepared->status == SetupStatus::Ok;
+        status = mapper.draw(DrawContext{tex, axis, target, stats, loop, set_up ? &prepared->setup : nullptr}, vertices, count);
     } else {
         auto draw_spans = [&](const PolygonSetup& setup, auto&& next) {
             const SpanContext context{setup, tex, axis, loop};

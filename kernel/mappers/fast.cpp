@@ -20,14 +20,23 @@ struct Planes {
     uint32_t v(int32_t x, int32_t y) const { return v0 + uint32_t(x) * vdx + uint32_t(y) * vdy; }
 };
 
+// The polygon's setup (affine planes): the one auto made already, else set up here into `own`.
+const PolygonSetup* set_up(const DrawContext& c, const Vertex* vertices, int count, PolygonSetup* own, SetupStatus* status) {
+    *status = SetupStatus::Ok;
+    if (c.setup) return c.setup;
+    *status = setup_polygon(vertices, count, own, PLANES_AFFINE);
+    return own;
+}
+
 }  // namespace
 
 // Rows go by runs: a run's rows have one live bound a side, so the run loop walks them itself. A
 // row with a vertex on its centre (two live bounds on a side) is walked by next() and drawn as a
 // run of one row between constant bounds.
 SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
-    PolygonSetup s;
-    SetupStatus status = setup_polygon(vertices, count, &s, PLANES_AFFINE);
+    PolygonSetup own;
+    SetupStatus status;
+    const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
     EdgeWalker walker(s, Axis::Rows, c.target.clip);
     const Planes p(s);
@@ -70,8 +79,9 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
 
 // Columns: the walker's spans, one fast_column_loop call each (the map mask set once a column).
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) {
-    PolygonSetup s;
-    SetupStatus status = setup_polygon(vertices, count, &s, PLANES_AFFINE);
+    PolygonSetup own;
+    SetupStatus status;
+    const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
     EdgeWalker walker(s, Axis::Columns, c.target.clip);
     const Planes p(s);
