@@ -12,17 +12,17 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-subdiv-16", 2531.9f, 532.67f, 47.719f}, // 6 scenes
     {"persp-subdiv-32", 2531.9f, 547.92f, 37.387f}, // 6 scenes
     {"constant-depth", 2531.9f, 559.93f, 29.459f}, // 6 scenes
-    {"fast-affine", 2450.7f, 273.62f, 4.149f}, // 4 scenes
-    {"fast-columns", 2445.2f, 320.75f, 5.083f}, // 4 scenes
-    {"xsharp-dda", 1688.2f, 549.98f, 33.933f}, // 5 scenes
-    {"xsharp-row-out", 1694.2f, 683.75f, 15.389f}, // 5 scenes
-    {"xsharp-column", 1694.0f, 628.58f, 8.889f}, // 5 scenes
-    {"hecker-steptable", 2871.2f, 0.00f, 423.062f}, // 5 scenes
-    {"fatmap-256", 1721.9f, 317.91f, 9.731f}, // 4 scenes
-    {"fatmap-256-16", 1721.9f, 322.91f, 8.731f}, // 4 scenes
-    {"fatmap-lut", 1763.6f, 324.96f, 3.097f}, // 3 scenes
-    {"quake-subdiv16", 2579.9f, 372.48f, 12.374f}, // 5 scenes
-    {"quake-subdiv8", 2579.9f, 363.34f, 18.587f}, // 5 scenes
+    {"fast-affine", 2458.7f, 273.62f, 4.149f}, // 4 scenes
+    {"fast-columns", 2453.2f, 320.15f, 5.090f}, // 4 scenes
+    {"xsharp-dda", 1693.2f, 550.27f, 33.931f}, // 5 scenes
+    {"xsharp-row-out", 1699.2f, 684.04f, 15.387f}, // 5 scenes
+    {"xsharp-column", 1699.0f, 628.82f, 8.888f}, // 5 scenes
+    {"hecker-steptable", 2876.2f, 0.00f, 423.064f}, // 5 scenes
+    {"fatmap-256", 1726.5f, 318.19f, 9.725f}, // 4 scenes
+    {"fatmap-256-16", 1726.5f, 323.19f, 8.725f}, // 4 scenes
+    {"fatmap-lut", 1768.2f, 325.25f, 3.091f}, // 3 scenes
+    {"quake-subdiv16", 2584.9f, 372.47f, 12.378f}, // 5 scenes
+    {"quake-subdiv8", 2584.9f, 363.33f, 18.592f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
