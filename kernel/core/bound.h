@@ -91,9 +91,10 @@ double min_footprint_along(const SpanLine& l, double k0, double k1);
 // reference's own rounding, the rounding, as a footprint error over the smallest footprint there.
 double lines_bound(const SpanLine& l, const double* a, const double* b, double k0, double k1, double rounding);
 
-// The same where u and v follow chords between exact points at most h pixels apart (each within
-// `rounding`): a chord's deviation is at most h^2 / 8 of the largest |t''| between its ends, and
-// t'' = -2 K Q' / Q^3 along the span (K = P' Q - P Q', constant), largest where Q is smallest.
+// The same over pixels k0..k1 where u and v follow chords between exact points at most h pixels
+// apart, every chord lying within k0..k1 (each within `rounding`): a chord's deviation is at most
+// h^2 / 8 of the largest |t''| between its ends, and t'' = -2 K Q' / Q^3 along the span
+// (K = P' Q - P Q', constant), largest where Q is smallest.
 double chords_bound(const SpanLine& l, double h, double k0, double k1, double rounding);
 // The largest |t'| over pixels [k0, k1], from above: |K| / Q^2 where Q is smallest.
 double max_step_along(const SpanLine& l, int t, double k0, double k1);

@@ -90,17 +90,18 @@ ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count
         const double last = double(span.count - 1);
         auto segment = [&](double k) { return double(int64_t(k / N)) * N; };  // the first pixel of k's segment
         auto next_exact = [&](double k) { return segment(k) + N < last ? segment(k) + N : last; };
-        // coarse, over pixels k0..k1 (the chords reach the exact point after k1): every chord at
-        // most N pixels and the span long, its steps at most the largest |t'|, its start (clamp)
-        // at most the larger end (t is monotonic along a span); where that may not fit 16.16, no
-        // coarse bound: the pieces are checked one by one
+        // coarse, over pixels k0..k1: the chords through them run from the start of k0's segment
+        // to the exact point after k1, and everything is taken over that whole stretch (a chord's
+        // error depends on t'' all along it): every chord at most N pixels and the span long, its
+        // steps at most the largest |t'|, its start (clamp) at most the larger end (t is monotonic
+        // along a span); where that may not fit 16.16, no coarse bound: the pieces one by one
         auto coarse = [&](double k0, double k1) {
-            const double reach = next_exact(k1), h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
+            const double from = segment(k0), reach = next_exact(k1), h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
             for (int t = 0; t < 2; ++t) {
-                double start = c.tex.wrap == Wrap::Repeat ? 0.0 : larger(magnitude(span_exact(l, t, k0)), magnitude(span_exact(l, t, reach)));
-                if (!fits_16_16(start, max_step_along(l, t, k0, reach), steps, size[t], c.tex.wrap)) return NO_BOUND;
+                double start = c.tex.wrap == Wrap::Repeat ? 0.0 : larger(magnitude(span_exact(l, t, from)), magnitude(span_exact(l, t, reach)));
+                if (!fits_16_16(start, max_step_along(l, t, from, reach), steps, size[t], c.tex.wrap)) return NO_BOUND;
             }
-            return chords_bound(l, h, k0, reach, (1 + steps) * HALF_ULP_16_16);
+            return chords_bound(l, h, from, reach, (1 + steps) * HALF_ULP_16_16);
         };
         auto piece = [&](double k0, double k1) {  // pixels k0..k1 of one segment, on its chord
             const double from = segment(k0), end = next_exact(k0);
