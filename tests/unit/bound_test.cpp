@@ -2,7 +2,8 @@
 // slivers, tiny and huge ones, texture sizes from 1 to 1024, repeat and clamp) and on every
 // polygon of every demo scene at the bench's frames, no mapper's measured footprint error exceeds
 // its bound, a mapper that promises exact coverage draws exactly the reference's pixels, and one
-// that says it draws a polygon draws it. MODEXLAB_BOUND_POLYGONS sets the random polygons per
+// that says it draws a polygon draws it; bounds asked with a budget (coarse where that is enough)
+// hold as well. MODEXLAB_BOUND_POLYGONS sets the random polygons per
 // mapper (make bounds: 100000; make test: fewer).
 #include <gtest/gtest.h>
 
@@ -107,6 +108,16 @@ bool check_polygon(PolygonMeter& meter, const Mapper& m, Axis axis, const std::v
     }
     EXPECT_LE(e.max_footprint_error, b.footprint * (1 + SLACK) + SLACK)
         << what << ": measured " << e.max_footprint_error << " (texel error " << e.max_texel_error << ") over the bound " << b.footprint;
+    // asked with a budget (auto's way: coarse where that is enough, stopping above it), a bound
+    // within the budget is still a bound
+    for (double budget : {0.5, 1.0, 2.0, 4.0}) {
+        BoundContext asked = c;
+        asked.budget = budget;
+        ErrorBound q = m.bound(asked, p.data(), int(p.size()));
+        if (q.draws && q.footprint <= budget) {
+            EXPECT_LE(e.max_footprint_error, q.footprint * (1 + SLACK) + SLACK) << what << ": asked with budget " << budget;
+        }
+    }
     tight->add(e.max_footprint_error, b.footprint);
     return b.footprint < NO_BOUND;
 }
