@@ -7,7 +7,19 @@ namespace {
 
 constexpr double EPSILON = 2.220446049250313e-16;  // 2^-52
 
+// Q at the ends of pixels k0..k1: the smaller and the larger (Q is linear along a span).
+double q_low(const SpanLine& l, double k0, double k1) {
+    double a = l.q0 + l.qm * k0, b = l.q0 + l.qm * k1;
+    return a < b ? a : b;
+}
+double q_high(const SpanLine& l, double k0, double k1) { return larger(l.q0 + l.qm * k0, l.q0 + l.qm * k1); }
 
+// |K| = |P' Q - P Q'| for u (t = 0) or v, constant along the span, and the rounding of its
+// evaluation (the bounds take it away or add it, as their direction needs).
+double k_magnitude(const SpanLine& l, int t, double* rounding) {
+    *rounding = 4 * EPSILON * (magnitude(l.pm[t] * l.q0) + magnitude(l.p0[t] * l.qm));
+    return magnitude(l.pm[t] * l.q0 - l.p0[t] * l.qm);
+}
 // A plane's value at the span's first pixel centre and its change per pixel along the span, with
 // the magnitude of the terms it is summed from (at either end: the larger).
 void along(const Plane& p, double x, double y, Axis axis, int32_t count, double* at, double* per_pixel, double* scale) {
@@ -56,7 +68,7 @@ double line_deviation(const SpanLine& l, int t, double a, double b, double k0, d
 
 double exact_rounding(const SpanLine& l, int t) {
     double last = double(l.count - 1);
-    double q_min = l.q0 + l.qm * last < l.q0 ? l.q0 + l.qm * last : l.q0;
+    double q_min = q_low(l, last, 0);
     double t_max = larger(magnitude(span_exact(l, t, 0)), magnitude(span_exact(l, t, last)));
     // P and Q each within 3 ulps of their terms' sum, the quotient within one more: doubled for
     // the slack of evaluating this bound itself in double
@@ -64,12 +76,11 @@ double exact_rounding(const SpanLine& l, int t) {
 }
 
 double min_footprint_along(const SpanLine& l, double k0, double k1) {
-    double q_max = larger(l.q0 + l.qm * k0, l.q0 + l.qm * k1);
+    double q_max = q_high(l, k0, k1);
     double best = 0;
     for (int t = 0; t < 2; ++t) {
-        double k = magnitude(l.pm[t] * l.q0 - l.p0[t] * l.qm);
-        k -= 4 * EPSILON * (magnitude(l.pm[t] * l.q0) + magnitude(l.p0[t] * l.qm));  // its own rounding, from below
-        best = larger(best, k);
+        double rounding, k = k_magnitude(l, t, &rounding);
+        best = larger(best, k - rounding);  // from below
     }
     return best / (q_max * q_max);
 }
@@ -81,13 +92,13 @@ double lines_bound(const SpanLine& l, const double* a, const double* b, double k
 }
 
 double max_step_along(const SpanLine& l, int t, double k0, double k1) {
-    double q_lo = l.q0 + l.qm * k0 < l.q0 + l.qm * k1 ? l.q0 + l.qm * k0 : l.q0 + l.qm * k1;
-    double k = magnitude(l.pm[t] * l.q0 - l.p0[t] * l.qm) + 4 * EPSILON * (magnitude(l.pm[t] * l.q0) + magnitude(l.p0[t] * l.qm));
-    return k / (q_lo * q_lo) * (1 + 1e-9);  // the margin: this bound's own rounding
+    double q_lo = q_low(l, k0, k1);
+    double rounding, k = k_magnitude(l, t, &rounding);
+    return (k + rounding) / (q_lo * q_lo) * (1 + 1e-9);  // from above; the margin: this bound's own rounding
 }
 
 double chords_bound(const SpanLine& l, double h, double k0, double k1, double rounding) {
-    double q_lo = l.q0 + l.qm * k0 < l.q0 + l.qm * k1 ? l.q0 + l.qm * k0 : l.q0 + l.qm * k1;
+    double q_lo = q_low(l, k0, k1);
     double d[2];
     for (int t = 0; t < 2; ++t) {
         // h^2 / 8 * 2 |K| |Q'| / Q_lo^3, with |K| / Q_lo^2 from max_step_along
@@ -122,6 +133,15 @@ void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRec
     }
 }
 
+void affine_lines(const PolygonSetup& s, Axis axis, const Span& span, double* a, double* step) {
+    double x = centre_x(s, span.x), y = centre_y(s, span.y);
+    const Plane* plane[2] = {&s.u, &s.v};
+    for (int t = 0; t < 2; ++t) {
+        a[t] = plane[t]->at(x, y);
+        step[t] = (axis == Axis::Rows ? plane[t]->gx : plane[t]->gy) * double(SUBPIXEL_ONE);
+    }
+}
+
 bool setup_takes(const BoundContext& c, const Vertex* vertices, int count) {
     if (c.prepared && c.prepared->count >= 0) return c.prepared->status == SetupStatus::Ok;
     PolygonSetup s;
@@ -130,8 +150,7 @@ bool setup_takes(const BoundContext& c, const Vertex* vertices, int count) {
 
 ErrorBound unbounded(const BoundContext& c, const Vertex* vertices, int count) {
     ErrorBound b;
-    PolygonSetup s;
-    b.draws = mapper_accepts(c.mapper, c.tex) && setup_polygon(vertices, count, &s, PLANES_NONE) == SetupStatus::Ok;
+    b.draws = mapper_accepts(c.mapper, c.tex) && setup_takes(c, vertices, count);
     b.exact_coverage = c.mapper.guarantee.exact_coverage;
     b.footprint = NO_BOUND;
     return b;

@@ -159,4 +159,26 @@ bool for_each_span(const BoundContext& c, const Vertex* vertices, int count, Set
 // Whether setup takes the polygon (the prepared one's status, or a coverage-only setup).
 bool setup_takes(const BoundContext& c, const Vertex* vertices, int count);
 
+// The bound of a mapper that draws exactly the reference's pixels and is bounded span by span:
+// span_bound_of(span, setup, &fits) gives a span's bound and clears `fits` where 16.16 does not
+// hold the mapper's coordinates (no bound then); the polygon's is the largest.
+template <typename F>
+ErrorBound bound_by_spans(const BoundContext& c, const Vertex* vertices, int count, SetupPlanes planes, F&& span_bound_of) {
+    ErrorBound b;
+    b.exact_coverage = true;
+    bool fits = true;
+    double worst = 0;
+    b.draws = for_each_span(c, vertices, count, planes, [&](const Span& span, const PolygonSetup& s) {
+        double bound = span_bound_of(span, s, &fits);
+        worst = bound > worst ? bound : worst;
+        return fits ? worst : NO_BOUND;
+    });
+    b.footprint = fits ? worst : NO_BOUND;
+    return b;
+}
+
+// The affine planes' lines along a span: u and v (t = 0, 1) at its first pixel centre, a[t], and
+// their steps a pixel along it, step[t].
+void affine_lines(const PolygonSetup& s, Axis axis, const Span& span, double* a, double* step);
+
 }  // namespace raster

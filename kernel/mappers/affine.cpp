@@ -44,28 +44,16 @@ void affine_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
 // from the exact mapping is measured piece by piece (BOUND_PIECE pixels, over each piece's own
 // smallest footprint).
 ErrorBound affine_bound(const BoundContext& c, const Vertex* vertices, int count) {
-    ErrorBound b;
-    b.exact_coverage = true;
-    bool fits = true;
-    double worst = 0;
-    b.draws = for_each_span(c, vertices, count, PLANES_ALL, [&](const Span& span, const PolygonSetup& s) {
+    return bound_by_spans(c, vertices, count, PLANES_ALL, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
-        double x = centre_x(s, span.x), y = centre_y(s, span.y), last = double(span.count - 1);
-        const Plane* plane[2] = {&s.u, &s.v};
+        const double last = double(span.count - 1);
         const int32_t size[2] = {c.tex.width, c.tex.height};
         double a[2], step[2];
-        for (int t = 0; t < 2; ++t) {
-            a[t] = plane[t]->at(x, y);
-            step[t] = (c.axis == Axis::Rows ? plane[t]->gx : plane[t]->gy) * double(SUBPIXEL_ONE);
-            fits = fits && fits_16_16(a[t], step[t], last, size[t], c.tex.wrap);
-        }
+        affine_lines(s, c.axis, span, a, step);
+        for (int t = 0; t < 2; ++t) *fits = *fits && fits_16_16(a[t], step[t], last, size[t], c.tex.wrap);
         auto piece = [&](double k0, double k1) { return lines_bound(l, a, step, k0, k1, (1 + k1) * HALF_ULP_16_16); };
-        double bound = span_bound(c, 0, last, BOUND_PIECE, piece, piece);
-        worst = bound > worst ? bound : worst;
-        return fits ? worst : NO_BOUND;
+        return span_bound(c, 0, last, BOUND_PIECE, piece, piece);
     });
-    b.footprint = fits ? worst : NO_BOUND;
-    return b;
 }
 
 }  // namespace raster

@@ -112,37 +112,25 @@ SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count
 // deviation from the exact mapping as for affine. 256 wraps harmlessly in 16.16, but a gradient
 // of 32768 texels a pixel or more saturates: no bound then.
 ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
-    ErrorBound b;
-    b.exact_coverage = true;
-    double worst = 0;
-    bool fits = true;
-    b.draws = mapper_accepts(c.mapper, c.tex) &&
-              for_each_span(c, vertices, count, PLANES_ALL, [&](const Span& span, const PolygonSetup& s) {
-                  SpanLine l = span_line(s, c.axis, span);
-                  double x = centre_x(s, span.x), y = centre_y(s, span.y), last = double(span.count - 1);
-                  const Plane* plane[2] = {&s.u, &s.v};
-                  double a[2], step[2];
-                  for (int t = 0; t < 2; ++t) {
-                      a[t] = plane[t]->at(x, y);
-                      step[t] = (c.axis == Axis::Rows ? plane[t]->gx : plane[t]->gy) * double(SUBPIXEL_ONE);
-                      double across = (c.axis == Axis::Rows ? plane[t]->gy : plane[t]->gx) * double(SUBPIXEL_ONE);
-                      fits = fits && fits_16_16(0, step[t], 0, 256, Wrap::Repeat) && fits_16_16(0, across, 0, 256, Wrap::Repeat);
-                  }
-                  // |x - x0| + |y - y0| is convex along the span: largest at a piece's ends
-                  auto reach = [&](double k) {
-                      int32_t px = span.x + (c.axis == Axis::Rows ? int32_t(k) : 0), py = span.y + (c.axis == Axis::Rows ? 0 : int32_t(k));
-                      return double(px > s.u_fx.x0 ? px - s.u_fx.x0 : s.u_fx.x0 - px) + double(py > s.u_fx.y0 ? py - s.u_fx.y0 : s.u_fx.y0 - py);
-                  };
-                  auto piece = [&](double k0, double k1) {
-                      double far = reach(k0) > reach(k1) ? reach(k0) : reach(k1);
-                      return lines_bound(l, a, step, k0, k1, (1 + far) * HALF_ULP_16_16);
-                  };
-                  double bound = span_bound(c, 0, last, BOUND_PIECE, piece, piece);
-                  worst = bound > worst ? bound : worst;
-                  return fits ? worst : NO_BOUND;
-              });
-    b.footprint = fits ? worst : NO_BOUND;
-    return b;
+    if (!mapper_accepts(c.mapper, c.tex)) return ErrorBound{false, true, 0};
+    return bound_by_spans(c, vertices, count, PLANES_ALL, [&](const Span& span, const PolygonSetup& s, bool* fits) {
+        SpanLine l = span_line(s, c.axis, span);
+        const double last = double(span.count - 1);
+        double a[2], step[2];
+        affine_lines(s, c.axis, span, a, step);
+        const Plane* plane[2] = {&s.u, &s.v};
+        for (int t = 0; t < 2; ++t) {
+            double across = (c.axis == Axis::Rows ? plane[t]->gy : plane[t]->gx) * double(SUBPIXEL_ONE);
+            *fits = *fits && fits_16_16(0, step[t], 0, 256, Wrap::Repeat) && fits_16_16(0, across, 0, 256, Wrap::Repeat);
+        }
+        // |x - x0| + |y - y0| is convex along the span: largest at a piece's ends
+        auto reach = [&](double k) {
+            int32_t px = span.x + (c.axis == Axis::Rows ? int32_t(k) : 0), py = span.y + (c.axis == Axis::Rows ? 0 : int32_t(k));
+            return double(px > s.u_fx.x0 ? px - s.u_fx.x0 : s.u_fx.x0 - px) + double(py > s.u_fx.y0 ? py - s.u_fx.y0 : s.u_fx.y0 - py);
+        };
+        auto piece = [&](double k0, double k1) { return lines_bound(l, a, step, k0, k1, (1 + larger(reach(k0), reach(k1))) * HALF_ULP_16_16); };
+        return span_bound(c, 0, last, BOUND_PIECE, piece, piece);
+    });
 }
 
 }  // namespace raster::fast

@@ -79,13 +79,9 @@ void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
 // smallest footprint.
 template <int N>
 ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count) {
-    ErrorBound b;
-    b.exact_coverage = true;
-    bool fits = true;
-    double worst = 0;
     const int32_t size[2] = {c.tex.width, c.tex.height};
     const double length = N < BOUND_PIECE ? N : BOUND_PIECE;
-    b.draws = for_each_span(c, vertices, count, PLANES_PERSPECTIVE, [&](const Span& span, const PolygonSetup& s) {
+    return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
         const double last = double(span.count - 1);
         auto segment = [&](double k) { return double(int64_t(k / N)) * N; };  // the first pixel of k's segment
@@ -111,16 +107,12 @@ ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count
                 step[t] = end > from ? (t1 - t0) / (end - from) : 0.0;
                 a[t] = t0 - step[t] * from;
                 double start = c.tex.wrap == Wrap::Repeat ? 0.0 : t0;  // repeat: reduced into [0, size) first
-                fits = fits && fits_16_16(start, step[t], k1 - from, size[t], c.tex.wrap);
+                *fits = *fits && fits_16_16(start, step[t], k1 - from, size[t], c.tex.wrap);
             }
             return lines_bound(l, a, step, k0, k1, (1 + k1 - from) * HALF_ULP_16_16);
         };
-        double bound = span_bound(c, 0, last, length, coarse, piece);
-        worst = bound > worst ? bound : worst;
-        return fits ? worst : NO_BOUND;
+        return span_bound(c, 0, last, length, coarse, piece);
     });
-    b.footprint = fits ? worst : NO_BOUND;
-    return b;
 }
 
 // The loop's random cases (core/selftest.h): any texture size, repeat and clamp, coordinates and
