@@ -18,9 +18,14 @@ int32_t random_texture_size(Random& r) {
 }
 
 uint8_t* check_span(const CheckBuffers& buf, int32_t count, int32_t stride, CheckWindow* w) {
-    size_t extent = size_t(count > 0 ? count - 1 : 0) * size_t(stride);
+    size_t extent = size_t(count > 0 ? count - 1 : 0) * size_t(stride < 0 ? -stride : stride);
     *w = CheckWindow{0, CHECK_GUARD_BYTES + extent + 1 + CHECK_GUARD_BYTES, uint32_t(count > 0 ? count : 0)};
-    return buf.a + CHECK_GUARD_BYTES;
+    return buf.a + CHECK_GUARD_BYTES + (stride < 0 ? extent : 0);  // a backward span starts at its far end
+}
+
+int32_t random_stride(Random& r) {
+    int32_t stride = r.below(2) ? 1 : r.range(-330, 330);
+    return stride ? stride : 80;
 }
 
 const uint8_t* check_aligned_texture(const CheckBuffers& buf) {

@@ -120,9 +120,21 @@ CheckWindow place_span(const CheckBuffers& buf, Args& a, int32_t stride) {
 
 // A texture size the loops accept: 1..1024, often a power of two, sometimes an extreme.
 int32_t random_texture_size(Random& r);
-// A span of count pixels `stride` bytes apart (count >= 0, stride > 0) starting past the guard in
-// buffer a: its first pixel and its window.
+// A span of count pixels `stride` bytes apart (count >= 0, stride either way, not 0) between the
+// guards in buffer a: its first pixel and its window.
 uint8_t* check_span(const CheckBuffers& buf, int32_t count, int32_t stride, CheckWindow* w);
+// A stride for loops that take any: 1 half the time, else -330..330 (80 for 0).
+int32_t random_stride(Random& r);
+// The texture fields of a block for loops that take any texture (texels, width, height, clamp):
+// sizes 1..1024, repeat or clamp, over the check's texels.
+template <typename Args>
+void random_check_texture(Random& r, const CheckBuffers& buf, Args& a) {
+    int32_t w = random_texture_size(r), h = random_texture_size(r);
+    a.texels = buf.texels;
+    a.width = w;
+    a.height = h;
+    a.clamp = int32_t(r.below(2));
+}
 // The 64 KiB-aligned texture the fatmap-style loops need: the first such address in the buffer.
 const uint8_t* check_aligned_texture(const CheckBuffers& buf);
 // Three planes (a0, gx, gy each): from a real set-up triangle most of the time, else raw values up

@@ -63,18 +63,11 @@ ErrorBound exact_bound(const BoundContext& c, const Vertex* vertices, int count)
 // The loop's random cases (core/selftest.h).
 LoopCheck check_exact(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<ExactArgs>(m, other, seed, cases, buf, [&](Random& r, ExactArgs& a) {
-        int32_t w = random_texture_size(r), h = random_texture_size(r);
-        a.texels = buf.texels;
-        a.width = w;
-        a.height = h;
-        a.clamp = int32_t(r.below(2));
+        random_check_texture(r, buf, a);
         a.reserved = 0;
         a.count = random_count(r, 0, 3, 320);
-        a.stride = r.below(2) ? 1 : r.range(-330, 330);
-        if (a.stride == 0) a.stride = 80;
-        // the destination's first pixel, so that all count pixels stay between the guards
-        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0) * size_t(a.stride < 0 ? -a.stride : a.stride);
-        size_t first = CHECK_GUARD_BYTES + (a.stride < 0 ? extent : 0);
+        a.stride = random_stride(r);
+        CheckWindow window = place_span(buf, a, a.stride);
         double sign = r.below(4) == 0 ? -1.0 : 1.0;
         bool rows = r.below(2) == 0;
         a.step_x = rows ? sign * 256 : 0;
@@ -82,8 +75,7 @@ LoopCheck check_exact(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cas
         a.x = double(r.range(-120000, 120000)) + 128;
         a.y = double(r.range(-90000, 90000)) + 128;
         random_planes(r, a.q, a.pu, a.pv);
-        a.dst = buf.a + first;
-        return CheckWindow{0, CHECK_GUARD_BYTES + extent + 1 + CHECK_GUARD_BYTES, uint32_t(a.count > 0 ? a.count : 0)};
+        return window;
     });
 }
 

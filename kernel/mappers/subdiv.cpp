@@ -119,23 +119,19 @@ ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count
 // steps over the whole 16.16 range (wrapping adds), strides either way.
 LoopCheck check_step(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<StepArgs>(m, other, seed, cases, buf, [&](Random& r, StepArgs& a) {
-        int32_t w = random_texture_size(r), h = random_texture_size(r);
-        a.texels = buf.texels;
-        a.width = w, a.height = h;
-        a.clamp = int32_t(r.below(2));
+        random_check_texture(r, buf, a);
+        const int32_t w = a.width, h = a.height;
         a.width_mask = wrap_mask(w), a.height_mask = wrap_mask(h);
         a.count = random_count(r, 0, 3, 320);
-        a.stride = r.below(2) ? 1 : r.range(-330, 330);
-        if (a.stride == 0) a.stride = 80;
-        size_t extent = size_t(a.count > 0 ? a.count - 1 : 0) * size_t(a.stride < 0 ? -a.stride : a.stride);
-        a.dst = buf.a + CHECK_GUARD_BYTES + (a.stride < 0 ? extent : 0);
+        a.stride = random_stride(r);
+        CheckWindow window = place_span(buf, a, a.stride);
         // near the texture most of the time, anywhere now and then; steps from a hundredth of a
         // texel to whole periods, and the extremes
         auto coordinate = [&](int32_t size) { return r.below(4) ? r.range(-2 * size, 3 * size) * 65536 + r.range(0, 65535) : int32_t(r.next()); };
         auto step = [&]() { return r.below(8) ? r.range(-4 << 16, 4 << 16) : int32_t(r.next()); };
         a.u_16_16 = coordinate(w), a.v_16_16 = coordinate(h);
         a.du_16_16 = step(), a.dv_16_16 = step();
-        return CheckWindow{0, CHECK_GUARD_BYTES + extent + 1 + CHECK_GUARD_BYTES, uint32_t(a.count > 0 ? a.count : 0)};
+        return window;
     });
 }
 
