@@ -135,9 +135,7 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
         row.drawn_by.emplace_back(d["mapper"].get<std::string>(), d["polygons"].get<uint64_t>(), d["pixels"].get<uint64_t>());
     const raster::Budget& b = budget ? *budget : s.host.world->budget;
     row.budget_error = b.max_error, row.budget_exact = b.exact_coverage;
-    char most[32];
-    std::snprintf(most, sizeof most, "footprint error %g", b.max_error);
-    row.budget = (b.max_error < 0 ? std::string("any footprint error") : std::string(most)) +
+    row.budget = (b.max_error < 0 ? std::string("any footprint error") : "footprint error " + budget_text(b.max_error)) +
                  (b.exact_coverage ? ", exact coverage" : ", any coverage") + (b.given ? "" : ": the default");
 
     // accuracy on the host twin, the same frames; the last one also against the kernel's screen

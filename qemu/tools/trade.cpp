@@ -151,12 +151,14 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
     return lines;
 }
 
+namespace {
+
+// Whether the row meets a budget on the whole scene: everything drawn, the measured max footprint
+// error within it, and exact coverage if it asks for it.
 bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage) {
     return r.draws_everything() && (max_error < 0 || r.accuracy.max_footprint_error <= max_error) &&
            (!exact_coverage || (r.accuracy.gaps == 0 && r.accuracy.overdraw == 0));
 }
-
-namespace {
 
 // auto against the fastest single mapper that meets the same budget on the whole scene.
 void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {

@@ -59,10 +59,6 @@ struct ReportInfo {
     std::string wall_clock;          // the Markdown of the wall-clock table, if measured
 };
 
-// Whether the row meets auto's budget on the whole scene: everything drawn, the measured max
-// footprint error within it, and exact coverage if it asks for it.
-bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage);
-
 // build/report/trade.md: per scene, a table sorted by speed; the mappers that cannot draw it; the
 // classics' published figures beside ours.
 void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, const ReportInfo& info);

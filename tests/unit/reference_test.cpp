@@ -20,6 +20,25 @@ struct Brute {
     long double u[3], v[3], w[3];
 };
 
+Brute brute_of(const std::vector<Vertex>& p) {
+    Brute b;
+    for (int i = 0; i < 3; ++i) b.x[i] = p[size_t(i)].x.raw, b.y[i] = p[size_t(i)].y.raw, b.u[i] = p[size_t(i)].u,
+                                    b.v[i] = p[size_t(i)].v, b.w[i] = p[size_t(i)].w;
+    return b;
+}
+
+// u and v from the barycentric weights l (unnormalised), perspective-correct.
+void barycentric_uv(const Brute& t, const long double* l, long double* u, long double* v) {
+    long double num_u = 0, num_v = 0, den = 0;
+    for (int i = 0; i < 3; ++i) {
+        num_u += l[i] * t.u[i] / t.w[i];
+        num_v += l[i] * t.v[i] / t.w[i];
+        den += l[i] / t.w[i];
+    }
+    *u = num_u / den;
+    *v = num_v / den;
+}
+
 i128 side(const Brute& t, int a, int b, i128 px, i128 py) {
     return i128(t.x[b] - t.x[a]) * (py - t.y[a]) - i128(t.y[b] - t.y[a]) * (px - t.x[a]);
 }
@@ -53,14 +72,7 @@ void brute_uv(const Brute& t, int32_t px, int32_t py, long double* u, long doubl
     i128 cx = i128(px) * 256 + 128, cy = i128(py) * 256 + 128;
     long double l[3];
     for (int i = 0; i < 3; ++i) l[i] = (long double)side(t, (i + 1) % 3, (i + 2) % 3, cx, cy);
-    long double num_u = 0, num_v = 0, den = 0;
-    for (int i = 0; i < 3; ++i) {
-        num_u += l[i] * t.u[i] / t.w[i];
-        num_v += l[i] * t.v[i] / t.w[i];
-        den += l[i] / t.w[i];
-    }
-    *u = num_u / den;
-    *v = num_v / den;
+    barycentric_uv(t, l, u, v);
 }
 
 long double distance_to_integer(long double x) { return std::fabs(x - std::round(x)); }
@@ -75,9 +87,7 @@ TEST(Reference, AgreesWithAnIndependentBruteForceEvaluation) {
     long pixels = 0, near_ties = 0, worst_tie = 0;
     for (int trial = 0; trial < 1500; ++trial) {
         std::vector<Vertex> p = gen.triangle();
-        Brute b;
-        for (int i = 0; i < 3; ++i) b.x[i] = p[size_t(i)].x.raw, b.y[i] = p[size_t(i)].y.raw, b.u[i] = p[size_t(i)].u,
-                                        b.v[i] = p[size_t(i)].v, b.w[i] = p[size_t(i)].w;
+        Brute b = brute_of(p);
         clear_pixel_image(pic.view, 0);
         SetupStatus st = reference_polygon(p.data(), 3, texture, pic.view);
         ASSERT_TRUE(st == SetupStatus::Ok || st == SetupStatus::Degenerate);
@@ -115,10 +125,7 @@ void brute_uv_at(const Brute& t, long double cx, long double cy, long double* u,
         int a = (i + 1) % 3, b = (i + 2) % 3;
         l[i] = (long double)(t.x[b] - t.x[a]) * (cy - t.y[a]) - (long double)(t.y[b] - t.y[a]) * (cx - t.x[a]);
     }
-    long double num_u = 0, num_v = 0, den = 0;
-    for (int i = 0; i < 3; ++i) num_u += l[i] * t.u[i] / t.w[i], num_v += l[i] * t.v[i] / t.w[i], den += l[i] / t.w[i];
-    *u = num_u / den;
-    *v = num_v / den;
+    barycentric_uv(t, l, u, v);
 }
 
 TEST(Reference, FootprintAgreesWithFiniteDifferences) {
@@ -130,9 +137,7 @@ TEST(Reference, FootprintAgreesWithFiniteDifferences) {
     long double worst = 0;
     for (int trial = 0; trial < 300; ++trial) {
         std::vector<Vertex> p = gen.triangle();
-        Brute b;
-        for (int i = 0; i < 3; ++i) b.x[i] = p[size_t(i)].x.raw, b.y[i] = p[size_t(i)].y.raw, b.u[i] = p[size_t(i)].u,
-                                        b.v[i] = p[size_t(i)].v, b.w[i] = p[size_t(i)].w;
+        Brute b = brute_of(p);
         clear_pixel_image(pic.view, 0);
         if (reference_polygon(p.data(), 3, texture, pic.view) != SetupStatus::Ok) continue;
         for (size_t i = 0; i < pic.coverage.size(); i += 13) {
