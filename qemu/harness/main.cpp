@@ -157,9 +157,10 @@ int play_scenes(Args& a, Session& s) {
         std::printf("%-9s %6d %9d %11llu %12llu %10.1f  %-28s %s\n", d.name, a.frames, last["polygons"].get<int>(), (unsigned long long)pixels,
                     (unsigned long long)r["ticks_median"].get<uint64_t>(), pixels ? double(r["ticks"].get<uint64_t>()) / double(pixels) : 0.0,
                     (a.out + "/" + stem + ".png").c_str(), same ? "equal" : "DIFFERS");
-        if (r["drawn_by"].size() > 1 || a.mapper != r["drawn_by"][0]["mapper"]) {
+        const json& drawn_by = r["drawn_by"];  // the mappers that drew: several when auto chose
+        if (drawn_by.size() > 1 || (drawn_by.size() == 1 && a.mapper != drawn_by[0]["mapper"])) {
             std::string by;
-            for (const json& m : r["drawn_by"])
+            for (const json& m : drawn_by)
                 by += (by.empty() ? "" : ", ") + m["mapper"].get<std::string>() + " " + std::to_string(m["polygons"].get<uint64_t>()) +
                       " polygons (" + std::to_string(pixels ? 100 * m["pixels"].get<uint64_t>() / pixels : 0) + "% of pixels)";
             std::printf("%9s drawn by %s\n", "", by.c_str());

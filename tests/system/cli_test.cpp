@@ -18,8 +18,9 @@ struct ToolRun {
     std::string out;
 };
 
-ToolRun run(const std::string& args) {
-    std::string cmd = build_dir() + "/host/modexlab-render " + args + " 2>&1";
+// A command line's exit status and its output (stdout and stderr).
+ToolRun run_command(const std::string& command) {
+    std::string cmd = command + " 2>&1";
     FILE* p = popen(cmd.c_str(), "r");
     std::string out;
     char buf[4096];
@@ -28,6 +29,8 @@ ToolRun run(const std::string& args) {
     int st = pclose(p);
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
+
+ToolRun run(const std::string& args) { return run_command(build_dir() + "/host/modexlab-render " + args); }
 
 std::map<std::string, std::string> keys(const std::string& out) {
     std::map<std::string, std::string> k;
@@ -124,6 +127,16 @@ TEST(RenderTool, BadInputGetsAClearError) {
     ToolRun texture = run("scenes/screen/tunnel.scene --mapper fast-affine --out " + tmp("x.png"));
     EXPECT_EQ(texture.status, 1);
     EXPECT_NE(texture.out.find("fast-affine cannot take this scene's texture (checker 64x64 repeat)"), std::string::npos) << texture.out;
+}
+
+// `modexlab run` (make run) with a mapper that refuses every polygon of the scene: a row with no
+// pixels, and no "drawn by" line, not a crash.
+TEST(RunTool, AMapperThatDrawsNothingIsReportedNotACrash) {
+    ToolRun r = run_command(build_dir() + "/host/modexlab run --kernel " + build_dir() + "/kernel/modexlab.elf --out " +
+                            tmp("run-refused") + " --scene corridor --mapper xsharp-dda --frames 2");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("corridor"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("drawn by"), std::string::npos) << r.out;
 }
 
 }  // namespace
