@@ -116,21 +116,156 @@ bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap
     return magnitude(start) + travel < LIMIT;
 }
 
-void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out, const PreparedPolygon* same) {
-    out->count = 0, out->pixels = 0, out->first = 0;
-    if (same) out->status = same->status, out->setup = same->setup;
-    else out->status = setup_polygon(vertices, count, &out->setup, PLANES_ALL);
-    if (out->status != SetupStatus::Ok) return;
-    EdgeWalker walker(out->setup, axis, clip);
+void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out, const PreparedPolygon* same) {
+    out->count = PreparedPolygon::NOT_WALKED, out->pixels = 0, out->first = 0;
+    if (same) {
+        out->status = same->status, out->setup = same->setup, out->spread_known = same->spread_known;
+        if (same->spread_known) out->spread = same->spread;
+    } else {
+        out->status = setup_polygon(vertices, count, &out->setup, PLANES_ALL);
+        out->spread_known = false;
+    }
+}
+
+void walk_polygon(PreparedPolygon* p, Axis axis, const ClipRect& clip) {
+    p->count = 0, p->pixels = 0, p->first = 0;
+    if (p->status != SetupStatus::Ok) return;
+    EdgeWalker walker(p->setup, axis, clip);
     Span span;
     while (walker.next(&span)) {
-        if (out->count == PreparedPolygon::MAX_SPANS) {
-            out->count = -1;
+        if (p->count == PreparedPolygon::MAX_SPANS) {
+            p->count = -1;
             return;
         }
-        out->spans[out->count++] = span;
-        out->pixels += span.count;
+        p->spans[p->count++] = span;
+        p->pixels += span.count;
     }
+}
+
+void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out, const PreparedPolygon* same) {
+    set_up_polygon(vertices, count, out, same);
+    walk_polygon(out, axis, clip);
+}
+
+PolygonSpread& prepared_spread(PreparedPolygon* p) {
+    if (!p->spread_known) polygon_spread(p->setup, &p->spread);
+    p->spread_known = true;
+    return p->spread;
+}
+
+namespace {
+
+// A vertex of the polygon (its edge i's start) relative to the reference vertex, where the planes
+// are evaluated.
+struct Corner {
+    double x, y;
+    Corner(const PolygonSetup& s, int i) : x(double(s.edges[i].px - s.ref_x)), y(double(s.edges[i].py - s.ref_y)) {}
+};
+double terms(const Plane& p, const Corner& c) { return magnitude(p.a0) + magnitude(p.gy * c.y) + magnitude(p.gx * c.x); }
+
+}  // namespace
+
+void polygon_spread(const PolygonSetup& s, PolygonSpread* out) {
+    PolygonSpread& o = *out;
+    const Plane* exact[2] = {&s.pu, &s.pv};
+    const Plane* affine[2] = {&s.u, &s.v};
+    double scale_q = 0, scale_p[2] = {0, 0}, scale_l[2] = {0, 0};
+    for (int i = 0; i < s.edge_count; ++i) {
+        const Corner c(s, i);
+        const double q = s.q.at(c.x, c.y);
+        o.q_min = i ? (q < o.q_min ? q : o.q_min) : q;
+        o.q_max = i ? larger(q, o.q_max) : q;
+        scale_q = larger(scale_q, terms(s.q, c));
+        for (int t = 0; t < 2; ++t) {
+            const double e = exact[t]->at(c.x, c.y) / q, l = affine[t]->at(c.x, c.y);
+            o.t_min[t] = i ? (e < o.t_min[t] ? e : o.t_min[t]) : e;
+            o.t_max[t] = i ? larger(e, o.t_max[t]) : e;
+            o.residual[t] = i ? larger(o.residual[t], magnitude(l - e)) : magnitude(l - e);
+            o.affine_abs[t] = i ? larger(o.affine_abs[t], magnitude(l)) : magnitude(l);
+            scale_p[t] = larger(scale_p[t], terms(*exact[t], c));
+            scale_l[t] = larger(scale_l[t], terms(*affine[t], c));
+        }
+    }
+    // Q's extremes widened by its rounding (a Q_min at or below 0 after that: no bound from the
+    // spread); each vertex value within the reference's rounding of itself, and L within its terms'
+    const double q_err = 8 * EPSILON * scale_q;
+    o.q_min -= q_err, o.q_max += q_err;
+    for (int t = 0; t < 2; ++t) {
+        o.t_abs[t] = larger(magnitude(o.t_min[t]), magnitude(o.t_max[t]));
+        o.reference[t] = 2 * (4 * EPSILON * (scale_p[t] + o.t_abs[t] * scale_q) / o.q_min + 2 * EPSILON * o.t_abs[t]);
+        o.evaluation[t] = o.reference[t] + 4 * EPSILON * scale_l[t];
+    }
+    // pixels whose centres lie in the box: at most its extent plus one along each axis, each
+    // between the floors of the box's ends
+    const double one = double(SUBPIXEL_ONE);
+    o.lines[0] = double(s.max_x - s.min_x) / one + 1;
+    o.lines[1] = double(s.max_y - s.min_y) / one + 1;
+    const double x_lo = double(floor_div(s.min_x, SUBPIXEL_ONE)), x_hi = double(floor_div(s.max_x, SUBPIXEL_ONE));
+    const double y_lo = double(floor_div(s.min_y, SUBPIXEL_ONE)), y_hi = double(floor_div(s.max_y, SUBPIXEL_ONE));
+    const double ax = s.u_fx.x0, ay = s.u_fx.y0;
+    o.reach = larger(magnitude(x_lo - ax), magnitude(x_hi - ax)) + larger(magnitude(y_lo - ay), magnitude(y_hi - ay));
+    o.steps_known = false;
+}
+
+void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
+    PolygonSpread& o = *p;
+    if (o.steps_known) return;
+    o.steps_known = true;
+    const double one = double(SUBPIXEL_ONE);
+    const Plane* exact[2] = {&s.pu, &s.pv};
+    o.footprint = 0;
+    for (int t = 0; t < 2; ++t)
+        for (int a = 0; a < 2; ++a) {
+            // K = (P_a Q - P Q_a) per pixel is linear: its extremes at the vertices too, each within
+            // its own rounding and what P's and Q's do to it (|P_a| and |Q_a| times their terms)
+            const double pa = a ? exact[t]->gy : exact[t]->gx, qa = a ? s.q.gy : s.q.gx;
+            double lo = 0, hi = 0, err = 0;
+            for (int i = 0; i < s.edge_count; ++i) {
+                const Corner c(s, i);
+                const double q = s.q.at(c.x, c.y), pt = exact[t]->at(c.x, c.y);
+                const double k = (pa * q - pt * qa) * one;
+                lo = i ? (k < lo ? k : lo) : k, hi = i ? larger(k, hi) : k;
+                err = larger(err, (magnitude(pa * q) + magnitude(pt * qa) + magnitude(pa) * terms(s.q, c) + magnitude(qa) * terms(*exact[t], c)) *
+                                      4 * EPSILON * one);
+            }
+            o.k_max[t][a] = (larger(magnitude(lo), magnitude(hi)) + err) * (1 + 1e-9);
+            // the least |K| over the polygon: 0 where K changes sign (or may, within its rounding)
+            const double least = lo > 0 ? lo : hi < 0 ? -hi : 0.0;
+            o.footprint = larger(o.footprint, (least - err) * (1 - 1e-9));
+        }
+    o.footprint = o.footprint > 0 && o.q_min > 0 ? o.footprint / (o.q_max * o.q_max) * (1 - 1e-9) : 0.0;
+}
+
+double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double rounding, double budget) {
+    if (!(p.q_min > 0)) return NO_BOUND;
+    double d[2];
+    for (int t = 0; t < 2; ++t) {
+        // L - P/Q at a point of the polygon, with weights l_i of the vertices (sum 1) and
+        // m_i = l_i Q_i / Q (also): sum l_i (L_i - t_i) + sum (l_i - m_i)(t_i - c), the first at
+        // most the largest residual, the second at most (t_max - t_min) / 2 * (Q_max - Q_min) / Q_min
+        const double spread = (p.t_max[t] - p.t_min[t] + 2 * p.evaluation[t]) * (p.q_max - p.q_min) / (2 * p.q_min);
+        d[t] = (p.residual[t] + 2 * p.evaluation[t] + spread) * (1 + 1e-9) + rounding + 2 * p.reference[t];
+    }
+    const double texels = footprint_error(d[0], d[1], 1);  // a bound already: max(1, F) is at least 1
+    if (texels == 0 || (budget >= 0 && texels <= budget)) return texels;
+    spread_steps(s, &p);
+    return footprint_error(d[0], d[1], p.footprint);
+}
+
+double spread_max_step(PolygonSpread& p, const PolygonSetup& s, int t, Axis axis) {
+    spread_steps(s, &p);
+    return p.k_max[t][axis == Axis::Rows ? 0 : 1] / (p.q_min * p.q_min) * (1 + 1e-9);
+}
+
+double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, double h, double rounding) {
+    if (!(p.q_min > 0)) return NO_BOUND;
+    const double qa = magnitude(axis == Axis::Rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
+    double d[2];
+    for (int t = 0; t < 2; ++t) {  // h^2 / 8 of the largest |t''| = 2 |K| |Q_a| / Q^3
+        const double curvature = spread_max_step(p, s, t, axis) * 2 * qa / p.q_min;
+        d[t] = h * h / 8 * curvature * (1 + 1e-9) + rounding + 2 * p.reference[t];
+    }
+    return footprint_error(d[0], d[1], p.footprint);
 }
 
 void affine_lines(const PolygonSetup& s, Axis axis, const Span& span, double* a, double* step) {
@@ -143,7 +278,7 @@ void affine_lines(const PolygonSetup& s, Axis axis, const Span& span, double* a,
 }
 
 bool setup_takes(const BoundContext& c, const Vertex* vertices, int count) {
-    if (c.prepared && c.prepared->count >= 0) return c.prepared->status == SetupStatus::Ok;
+    if (c.prepared) return c.prepared->status == SetupStatus::Ok;
     PolygonSetup s;
     return setup_polygon(vertices, count, &s, PLANES_NONE) == SetupStatus::Ok;
 }

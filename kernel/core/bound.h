@@ -28,22 +28,65 @@ struct ErrorBound {
     double footprint = 0;         // max footprint error on every pixel it draws (NO_BOUND: none)
 };
 
-// A polygon set up (every plane) and walked once, for asking several mappers' bounds in turn
-// (auto): the bounds take its spans rather than setting up and walking again, from `first` on (the
-// span that settled the last bound above its budget: the likeliest to settle the next one).
+// The whole polygon at once (docs/accuracy.md §4b, "The whole polygon"): the extremes over it of
+// what the span bounds take span by span. Linear functions (Q, the affine planes, K below), P/Q
+// (monotone along any line where Q > 0) and sums of magnitudes of linear terms take their extremes
+// over a convex polygon at its vertices, so all of it comes from the vertices. Looser than span by
+// span, and cheap: auto asks it first and walks only the polygons it does not settle.
+struct PolygonSpread {
+    double q_min, q_max;                 // Q
+    double t_min[2], t_max[2], t_abs[2]; // the exact u and v (t = 0, 1): least, largest, largest magnitude
+    double residual[2];                  // |L - P/Q| at the vertices, L the affine planes (0 at a triangle's)
+    double affine_abs[2];                // |L|
+    double evaluation[2];                // how far these vertex values may be off: their own rounding
+    double reference[2];                 // the reference's own rounding at any pixel (exact_rounding)
+    double lines[2];                     // the most pixels a row (a = 0) or a column (a = 1) can have
+    double reach;                        // the most |x - x0| + |y - y0| of a pixel from the 16.16 anchor
+    // the steps, when a bound first needs them (spread_steps)
+    bool steps_known = false;
+    double k_max[2][2];                  // |K| = |P_a Q - P Q_a| per pixel, for t along axis a (0: x, 1: y)
+    double footprint;                    // the smallest footprint over the polygon, from below
+};
+void polygon_spread(const PolygonSetup& s, PolygonSpread* out);
+void spread_steps(const PolygonSetup& s, PolygonSpread* p);
+
+// The deviation bound over the polygon of a mapper whose u and v follow the affine planes to within
+// `rounding` texels, and of one that follows chords between exact points at most h pixels apart
+// along the axis, each within `rounding`: footprint errors (before fits_16_16, the mapper's own).
+// With a budget (at or above 0), the planes' bound divides by the footprint only where the texels
+// alone are above it.
+double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double rounding, double budget);
+double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, double h, double rounding);
+// The largest |t'| along the axis over the polygon, from above.
+double spread_max_step(PolygonSpread& p, const PolygonSetup& s, int t, Axis axis);
+
+// A polygon set up (every plane), for asking several mappers' bounds in turn (auto): the bounds
+// take its spread, and its spans (walked when a bound first needs them) rather than setting up and
+// walking again, from `first` on (the span that settled the last bound above its budget: the
+// likeliest to settle the next one).
 struct PreparedPolygon {
     static constexpr int32_t MAX_SPANS = 512;  // a screen's rows or columns, and more
+    static constexpr int32_t NOT_WALKED = -2;
     SetupStatus status = SetupStatus::Degenerate;
     PolygonSetup setup;
-    int32_t count = -1;  // spans; -1: more than MAX_SPANS, the bounds walk the polygon themselves
+    bool spread_known = false;
+    PolygonSpread spread;
+    // spans; NOT_WALKED: not yet; -1: more than MAX_SPANS, the bounds walk the polygon themselves
+    int32_t count = NOT_WALKED;
     int32_t pixels = 0;
     int32_t first = 0;
     Span spans[MAX_SPANS];
 };
-// Sets the polygon up (or takes the setup of `same`, the polygon prepared for the other walker)
-// and walks it.
+// Sets the polygon up (or takes the setup of `same`, the polygon prepared for the other walker),
+// not walked.
+void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out, const PreparedPolygon* same = nullptr);
+// Walks it along the axis.
+void walk_polygon(PreparedPolygon* p, Axis axis, const ClipRect& clip);
+// Both.
 void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out,
                      const PreparedPolygon* same = nullptr);
+// Its spread, computed once.
+PolygonSpread& prepared_spread(PreparedPolygon* p);
 
 struct BoundContext {
     const Mapper& mapper;
@@ -138,6 +181,7 @@ ErrorBound unbounded(const BoundContext& c, const Vertex* vertices, int count);
 // (settled). False when setup does not take the polygon (refused, or degenerate: nothing to draw).
 template <typename F>
 bool for_each_span(const BoundContext& c, const Vertex* vertices, int count, SetupPlanes planes, F&& f) {
+    if (PreparedPolygon* p = c.prepared; p && p->count == PreparedPolygon::NOT_WALKED) walk_polygon(p, c.axis, c.clip);
     if (PreparedPolygon* p = c.prepared; p && p->count >= 0) {
         if (p->status != SetupStatus::Ok) return false;
         for (int32_t i = 0, k = p->first; i < p->count; ++i, k = k + 1 < p->count ? k + 1 : 0)
@@ -159,12 +203,37 @@ bool for_each_span(const BoundContext& c, const Vertex* vertices, int count, Set
 // Whether setup takes the polygon (the prepared one's status, or a coverage-only setup).
 bool setup_takes(const BoundContext& c, const Vertex* vertices, int count);
 
+// Asked with a budget, the polygon's bound at once where that is within it: whole(spread, setup)
+// (the spread to complete as needed) gives it (NO_BOUND where it cannot say, 16.16 included). True with *out set when it settles.
+template <typename W>
+bool whole_within(const BoundContext& c, const Vertex* vertices, int count, W&& whole, ErrorBound* out) {
+    if (c.budget < 0) return false;
+    PolygonSetup own_setup;
+    PolygonSpread own_spread;
+    const PolygonSetup* s = &own_setup;
+    PolygonSpread* spread = &own_spread;
+    if (c.prepared) {
+        if (c.prepared->status != SetupStatus::Ok) return false;  // the walk says why
+        s = &c.prepared->setup, spread = &prepared_spread(c.prepared);
+    } else {
+        if (setup_polygon(vertices, count, &own_setup, PLANES_ALL) != SetupStatus::Ok) return false;
+        polygon_spread(own_setup, &own_spread);
+    }
+    double footprint = whole(*spread, *s);
+    if (!(footprint <= c.budget)) return false;
+    out->draws = out->exact_coverage = true;
+    out->footprint = footprint;
+    return true;
+}
+
 // The bound of a mapper that draws exactly the reference's pixels and is bounded span by span:
 // span_bound_of(span, setup, &fits) gives a span's bound and clears `fits` where 16.16 does not
-// hold the mapper's coordinates (no bound then); the polygon's is the largest.
-template <typename F>
-ErrorBound bound_by_spans(const BoundContext& c, const Vertex* vertices, int count, SetupPlanes planes, F&& span_bound_of) {
+// hold the mapper's coordinates (no bound then); the polygon's is the largest. Asked with a budget,
+// whole(spread, setup) first (whole_within).
+template <typename W, typename F>
+ErrorBound bound_by_spans(const BoundContext& c, const Vertex* vertices, int count, SetupPlanes planes, W&& whole, F&& span_bound_of) {
     ErrorBound b;
+    if (whole_within(c, vertices, count, whole, &b)) return b;
     b.exact_coverage = true;
     bool fits = true;
     double worst = 0;

@@ -7,56 +7,80 @@ namespace raster {
 
 bool choosable(const Mapper& m) { return !m.chooses && m.bound && m.bound != unbounded; }
 
-PolygonSize polygon_size(const PreparedPolygon& walked, Axis axis, const ClipRect& clip) {
-    const PolygonSetup& s = walked.setup;
-    const bool rows = axis == Axis::Rows;
-    double lo = double(rows ? s.min_y : s.min_x) / SUBPIXEL_ONE, hi = double(rows ? s.max_y : s.max_x) / SUBPIXEL_ONE;
-    double first = rows ? clip.y0 : clip.x0, end = rows ? clip.y1 : clip.x1;
-    lo = lo < first ? first : lo, hi = hi > end ? end : hi;
-    return PolygonSize{hi > lo ? hi - lo : 0, double(walked.pixels)};
+void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size[2]) {
+    const double one = double(SUBPIXEL_ONE);
+    // the box inside the clip, in pixels along x and y
+    auto inside = [](double lo, double hi, double first, double end) {
+        lo = lo < first ? first : lo, hi = hi > end ? end : hi;
+        return hi > lo ? hi - lo : 0.0;
+    };
+    const double w = inside(double(s.min_x) / one, double(s.max_x) / one, clip.x0, clip.x1);
+    const double h = inside(double(s.min_y) / one, double(s.max_y) / one, clip.y0, clip.y1);
+    double area2 = 0;  // twice the signed area, subpixels squared (the shoelace)
+    for (int i = 0; i < s.edge_count; ++i) area2 += double(s.edges[i].px) * double(s.edges[i].dy) - double(s.edges[i].py) * double(s.edges[i].dx);
+    const double area = magnitude(area2) / (2 * one * one), pixels = area < w * h ? area : w * h;
+    size[int(Axis::Rows)] = PolygonSize{h, pixels};
+    size[int(Axis::Columns)] = PolygonSize{w, pixels};
 }
+
+namespace {
+
+// The candidates for a texture and a target, (mapper, walker) pairs: what they depend on is a few
+// bits (the texture's copies and shape, the target's kind), so each set is built once.
+struct Candidates {
+    bool built = false;
+    int count = 0;
+    int16_t row[2 * MAPPER_LIMIT];
+    Axis axis[2 * MAPPER_LIMIT];
+};
+
+const Candidates& candidates(const Texture& tex, const Target& target) {
+    static Candidates cache[8];
+    const bool fast = tex.width == 256 && tex.height == 256 && tex.wrap == Wrap::Repeat && tex.aligned256;
+    Candidates& c = cache[(tex.bordered ? 1 : 0) | (fast ? 2 : 0) | (target.planar ? 4 : 0)];
+    if (c.built) return c;
+    for (int a = 0; a < 2; ++a)
+        for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {
+            const Mapper& m = MAPPERS[i];
+            if (!choosable(m) || !mapper_walks(m, Axis(a)) || !mapper_accepts(m, tex) || !mapper_targets(m, target, Axis(a))) continue;
+            c.row[c.count] = int16_t(i), c.axis[c.count] = Axis(a), ++c.count;
+        }
+    c.built = true;
+    return c;
+}
+
+}  // namespace
 
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
                      PreparedPolygon* prepared) {
     Choice choice;
-    // the candidates, (mapper, walker) pairs, cheapest first (insertion sort: a registry's worth,
-    // twice); the polygon set up and walked for the first walker a candidate takes, the other
-    // walked only when a candidate of it is asked for its bound
-    struct Candidate {
-        const Mapper* mapper;
-        Axis axis;
-        double cost;
-    } order[2 * MAPPER_LIMIT];
-    int n = 0;
-    PreparedPolygon* walked = nullptr;
-    for (int a = 0; a < 2; ++a) {
-        const Axis axis = Axis(a);
-        prepared[a].count = -1, prepared[a].status = SetupStatus::Unsupported;  // not walked
-        PolygonSize size{0, 0};
-        for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {
-            const Mapper& m = MAPPERS[i];
-            if (!choosable(m) || !mapper_walks(m, axis) || !mapper_accepts(m, tex) || !mapper_targets(m, target, axis)) continue;
-            if (!walked) {
-                walked = &prepared[a];
-                prepare_polygon(vertices, count, axis, target.clip, walked);
-                if (walked->status != SetupStatus::Ok) return choice;
-            }
-            if (size.pixels == 0 && size.spans == 0) size = polygon_size(*walked, axis, target.clip);
-            double c = estimate_cost(MAPPER_COSTS[i], size);
-            int k = n++;
-            for (; k > 0 && order[k - 1].cost > c; --k) order[k] = order[k - 1];
-            order[k] = Candidate{&m, axis, c};
-        }
-    }
-    for (int k = 0; k < n; ++k) {
-        const Candidate& o = order[k];
-        PreparedPolygon& p = prepared[int(o.axis)];
-        if (p.status == SetupStatus::Unsupported) prepare_polygon(vertices, count, o.axis, target.clip, &p, walked);
+    for (int a = 0; a < 2; ++a) prepared[a].status = SetupStatus::Unsupported, prepared[a].count = PreparedPolygon::NOT_WALKED;
+    const Candidates& list = candidates(tex, target);
+    if (list.count == 0) return choice;
+    // set up once (the spread and the spans come when a bound asks for them); the other walker's
+    // copy made when a candidate of it is asked
+    PreparedPolygon* first = &prepared[int(list.axis[0])];
+    set_up_polygon(vertices, count, first);
+    if (first->status != SetupStatus::Ok) return choice;
+    PolygonSize size[2];
+    polygon_sizes(first->setup, target.clip, size);
+    double cost[2 * MAPPER_LIMIT];
+    for (int k = 0; k < list.count; ++k) cost[k] = estimate_cost(MAPPER_COSTS[list.row[k]], size[int(list.axis[k])]);
+    // cheapest first: the next cheapest not yet asked, until one's bound meets the budget (ties: the
+    // earlier candidate)
+    for (int tried = 0; tried < list.count; ++tried) {
+        int k = -1;
+        for (int i = 0; i < list.count; ++i)
+            if (cost[i] >= 0 && (k < 0 || cost[i] < cost[k])) k = i;
+        cost[k] = -1;
+        const Mapper& m = MAPPERS[list.row[k]];
+        PreparedPolygon& p = prepared[int(list.axis[k])];
+        if (p.status == SetupStatus::Unsupported) set_up_polygon(vertices, count, &p, first);
         // asked with the budget: a coarse bound within it will do, and above it the search moves on
-        BoundContext c{*o.mapper, tex, o.axis, target.clip, budget.max_error < 0 ? NO_BOUND : budget.max_error, &p};
-        ErrorBound b = o.mapper->bound(c, vertices, count);
+        BoundContext c{m, tex, list.axis[k], target.clip, budget.max_error < 0 ? NO_BOUND : budget.max_error, &p};
+        ErrorBound b = m.bound(c, vertices, count);
         if (budget_allows(budget, b)) {
-            choice.mapper = o.mapper, choice.axis = o.axis, choice.bound = b;
+            choice.mapper = &m, choice.axis = list.axis[k], choice.bound = b;
             break;
         }
     }

@@ -34,12 +34,13 @@ struct MapperCost {
 extern const MapperCost MAPPER_COSTS[];
 extern const int MAPPER_COST_COUNT;
 
-// A polygon's size as the cost model counts it: its lines along the walker (rows or columns, from
-// the bounding box inside the clip) and its pixels (as walked: the same along either walker).
+// A polygon's size as the cost model counts it, from its setup (before any walk): its lines along
+// the walker (rows or columns, from the bounding box inside the clip) and its pixels (its area, at
+// most the box's inside the clip: the same along either walker).
 struct PolygonSize {
     double spans, pixels;
 };
-PolygonSize polygon_size(const PreparedPolygon& walked, Axis axis, const ClipRect& clip);
+void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size[2]);  // [Axis]
 inline double estimate_cost(const MapperCost& c, const PolygonSize& s) {  // not measured (-1): dearer than any measured mapper
     return c.polygon < 0 ? 1e30 : c.polygon + c.span * s.spans + c.pixel * s.pixels;
 }
@@ -56,8 +57,8 @@ struct Choice {
 // The cheapest choosable mapper and walker, by the cost model, that draws into targets like
 // `target`, takes the texture and whose bound meets the budget on the polygon: rows or columns,
 // whichever the target and the mapper take (floors by rows, walls by columns). The polygon is set
-// up once and walked once a walker, into prepared[Axis] (its spans, for the chosen mapper to draw
-// when it takes spans).
+// up once, into prepared[Axis], and walked there only when a bound needs its spans (the chosen
+// mapper draws from its setup, and from its spans when walked).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
                      PreparedPolygon prepared[2]);
 

@@ -18,7 +18,7 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
     LoopFn loop = mapper_loop(mapper, variant, target);
     SetupStatus status;
     if (mapper.draw) {
-        const bool set_up = prepared && prepared->count >= 0 && prepared->status == SetupStatus::Ok;
+        const bool set_up = prepared && prepared->status == SetupStatus::Ok;
         status = mapper.draw(DrawContext{tex, axis, target, stats, loop, set_up ? &prepared->setup : nullptr}, vertices, count);
     } else {
         auto draw_spans = [&](const PolygonSetup& setup, auto&& next) {
@@ -31,10 +31,14 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
                 emit(probe, stats, 1, uint32_t(span.count), [&] { mapper.span(context, span, dst, stride); });
             }
         };
-        if (prepared && prepared->count >= 0) {  // set up with every plane and walked already
+        if (prepared && prepared->status == SetupStatus::Ok) {  // set up with every plane (and maybe walked) already
             status = prepared->status;
             int32_t i = 0;
-            if (status == SetupStatus::Ok) draw_spans(prepared->setup, [&](Span* s) { return i < prepared->count && (*s = prepared->spans[i++], true); });
+            if (prepared->count >= 0) draw_spans(prepared->setup, [&](Span* s) { return i < prepared->count && (*s = prepared->spans[i++], true); });
+            else {
+                EdgeWalker walker(prepared->setup, axis, target.clip);
+                draw_spans(prepared->setup, [&](Span* s) { return walker.next(s); });
+            }
         } else {
             PolygonSetup setup;
             status = setup_polygon(vertices, count, &setup);

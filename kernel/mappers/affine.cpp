@@ -44,10 +44,19 @@ void affine_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
 // from the exact mapping is measured piece by piece (BOUND_PIECE pixels, over each piece's own
 // smallest footprint).
 ErrorBound affine_bound(const BoundContext& c, const Vertex* vertices, int count) {
-    return bound_by_spans(c, vertices, count, PLANES_ALL, [&](const Span& span, const PolygonSetup& s, bool* fits) {
+    const int32_t size[2] = {c.tex.width, c.tex.height};
+    auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
+        const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1;
+        const Plane* plane[2] = {&s.u, &s.v};
+        for (int t = 0; t < 2; ++t) {
+            const double step = (c.axis == Axis::Rows ? plane[t]->gx : plane[t]->gy) * double(SUBPIXEL_ONE);
+            if (!fits_16_16(p.affine_abs[t], step, last, size[t], c.tex.wrap)) return NO_BOUND;
+        }
+        return spread_planes_bound(p, s, (1 + last) * HALF_ULP_16_16, c.budget);
+    };
+    return bound_by_spans(c, vertices, count, PLANES_ALL, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
         const double last = double(span.count - 1);
-        const int32_t size[2] = {c.tex.width, c.tex.height};
         double a[2], step[2];
         affine_lines(s, c.axis, span, a, step);
         for (int t = 0; t < 2; ++t) *fits = *fits && fits_16_16(a[t], step[t], last, size[t], c.tex.wrap);

@@ -81,7 +81,15 @@ template <int N>
 ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count) {
     const int32_t size[2] = {c.tex.width, c.tex.height};
     const double length = N < BOUND_PIECE ? N : BOUND_PIECE;
-    return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, [&](const Span& span, const PolygonSetup& s, bool* fits) {
+    auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {  // the coarse bound below, over the polygon
+        const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
+        for (int t = 0; t < 2; ++t) {
+            const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t];
+            if (!fits_16_16(start, spread_max_step(p, s, t, c.axis), steps, size[t], c.tex.wrap)) return NO_BOUND;
+        }
+        return spread_chords_bound(p, s, c.axis, h, (1 + steps) * HALF_ULP_16_16);
+    };
+    return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
         const double last = double(span.count - 1);
         auto segment = [&](double k) { return double(int64_t(k / N)) * N; };  // the first pixel of k's segment

@@ -79,9 +79,11 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 ++chose[row][int(c.axis)];
                 EXPECT_TRUE(budget_allows(b, c.bound)) << c.mapper->name;
                 EXPECT_TRUE(mapper_targets(*c.mapper, target, c.axis) && mapper_walks(*c.mapper, c.axis)) << c.mapper->name;
-                PreparedPolygon walked;
-                prepare_polygon(p.data(), 3, Axis::Columns, target.clip, &walked);
-                auto size = [&](Axis axis) { return polygon_size(walked, axis, target.clip); };
+                PolygonSetup setup;
+                ASSERT_EQ(setup_polygon(p.data(), 3, &setup), SetupStatus::Ok);
+                PolygonSize sizes[2];
+                polygon_sizes(setup, target.clip, sizes);
+                auto size = [&](Axis axis) { return sizes[int(axis)]; };
                 double cost = estimate_cost(MAPPER_COSTS[row], size(c.axis));
                 for (int i = 0; i < MAPPER_COUNT; ++i) {
                     const Mapper& m = MAPPERS[i];
