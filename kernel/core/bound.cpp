@@ -97,15 +97,31 @@ double max_step_along(const SpanLine& l, int t, double k0, double k1) {
     return (k + rounding) / (q_lo * q_lo) * (1 + 1e-9);  // from above; the margin: this bound's own rounding
 }
 
-double chords_bound(const SpanLine& l, double h, double k0, double k1, double rounding) {
-    double q_lo = q_low(l, k0, k1);
+ChordTerms chord_terms(const SpanLine& l) {
+    ChordTerms c;
+    c.least_k = 0;
+    c.qm = magnitude(l.qm);
+    for (int t = 0; t < 2; ++t) {
+        double rounding, k = k_magnitude(l, t, &rounding);
+        c.k_high[t] = k + rounding;
+        c.least_k = larger(c.least_k, k - rounding);
+        c.reference[t] = 2 * exact_rounding(l, t);
+    }
+    return c;
+}
+
+double chords_bound(const ChordTerms& c, double h, double q_lo, double q_hi, double rounding) {
     double d[2];
     for (int t = 0; t < 2; ++t) {
-        // h^2 / 8 * 2 |K| |Q'| / Q_lo^3, with |K| / Q_lo^2 from max_step_along
-        double curvature = max_step_along(l, t, k0, k1) * 2 * magnitude(l.qm) / q_lo;
-        d[t] = h * h / 8 * curvature * (1 + 1e-9) + rounding + 2 * exact_rounding(l, t);
+        // h^2 / 8 * 2 |K| |Q'| / Q_lo^3, with |K| / Q_lo^2 as max_step_along has it
+        double curvature = c.k_high[t] / (q_lo * q_lo) * (1 + 1e-9) * 2 * c.qm / q_lo;
+        d[t] = h * h / 8 * curvature * (1 + 1e-9) + rounding + c.reference[t];
     }
-    return footprint_error(d[0], d[1], min_footprint_along(l, k0, k1));
+    return footprint_error(d[0], d[1], c.least_k / (q_hi * q_hi));  // min_footprint_along
+}
+
+double chords_bound(const SpanLine& l, double h, double k0, double k1, double rounding) {
+    return chords_bound(chord_terms(l), h, q_low(l, k0, k1), q_high(l, k0, k1), rounding);
 }
 
 bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap) {

@@ -139,6 +139,16 @@ double lines_bound(const SpanLine& l, const double* a, const double* b, double k
 // h^2 / 8 of the largest |t''| between its ends, and t'' = -2 K Q' / Q^3 along the span
 // (K = P' Q - P Q', constant), largest where Q is smallest.
 double chords_bound(const SpanLine& l, double h, double k0, double k1, double rounding);
+// The same in two steps: what is constant along the span, then a stretch of it with Q between
+// q_lo and q_hi (persp-adaptive-B asks it for every run it tries).
+struct ChordTerms {
+    double k_high[2];     // |K| for u and v, from above
+    double least_k;       // the larger |K|, from below (the footprint's numerator)
+    double reference[2];  // the reference's rounding, counted twice
+    double qm;            // |Q'|
+};
+ChordTerms chord_terms(const SpanLine& l);
+double chords_bound(const ChordTerms& c, double h, double q_lo, double q_hi, double rounding);
 // The largest |t'| over pixels [k0, k1], from above: |K| / Q^2 where Q is smallest.
 double max_step_along(const SpanLine& l, int t, double k0, double k1);
 

@@ -7,11 +7,15 @@ namespace raster {
 const MapperCost MAPPER_COSTS[] = {
     {"affine", 2526.9f, 565.28f, 39.167f}, // 6 scenes
     {"exact", 2531.9f, 383.51f, 79.161f}, // 6 scenes
-    {"persp-subdiv-4", 2531.9f, 439.68f, 111.533f}, // 6 scenes
-    {"persp-subdiv-8", 2531.9f, 501.50f, 68.902f}, // 6 scenes
-    {"persp-subdiv-16", 2531.9f, 532.67f, 47.719f}, // 6 scenes
-    {"persp-subdiv-32", 2531.9f, 547.92f, 37.387f}, // 6 scenes
-    {"constant-depth", 2531.9f, 559.93f, 29.459f}, // 6 scenes
+    {"persp-subdiv-4", 2531.9f, 441.32f, 111.778f}, // 6 scenes
+    {"persp-subdiv-8", 2531.9f, 503.33f, 69.019f}, // 6 scenes
+    {"persp-subdiv-16", 2531.9f, 534.59f, 47.773f}, // 6 scenes
+    {"persp-subdiv-32", 2531.9f, 549.88f, 37.410f}, // 6 scenes
+    {"constant-depth", 2531.9f, 561.93f, 29.459f}, // 6 scenes
+    {"persp-adaptive-0.5", 2531.9f, 577.06f, 451.055f}, // 6 scenes
+    {"persp-adaptive-1", 2531.9f, 1165.52f, 50.842f}, // 6 scenes
+    {"persp-adaptive-2", 2531.9f, 1175.06f, 44.106f}, // 6 scenes
+    {"persp-adaptive-4", 2531.9f, 1180.56f, 40.466f}, // 6 scenes
     {"fast-affine", 2458.7f, 273.62f, 4.149f}, // 4 scenes
     {"fast-columns", 2453.2f, 320.15f, 5.090f}, // 4 scenes
     {"xsharp-dda", 1693.2f, 550.27f, 33.931f}, // 5 scenes

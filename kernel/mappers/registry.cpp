@@ -39,6 +39,16 @@ const Mapper MAPPERS[] = {
      "exact u, v at each span's first and last pixel centre, 16.16 steps between: exact up to rounding along lines of constant "
      "depth (floors and ceilings by rows, upright walls by columns), its bound says how far off elsewhere; exact coverage; any texture",
      EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<SPAN_LONG>, TWIN_AND_ASM(step_loop), nullptr, check_step, subdiv_bound<SPAN_LONG>},
+    {"persp-adaptive-0.5", "ours", "runs as long as the bound keeps within half a footprint",
+     "exact u, v at each run's ends, 16.16 steps between; each run the longest (to 256 pixels) whose chord bound is within "
+     "0.5 footprints, from the curvature of 1/w there: long where depth barely changes; exact coverage; any texture",
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, adaptive_span<2>, TWIN_AND_ASM(step_loop), nullptr, check_step, adaptive_bound<2>},
+    {"persp-adaptive-1", "ours", "runs as long as the bound keeps within one footprint", "as persp-adaptive-0.5, within 1 footprint",
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, adaptive_span<4>, TWIN_AND_ASM(step_loop), nullptr, check_step, adaptive_bound<4>},
+    {"persp-adaptive-2", "ours", "runs as long as the bound keeps within two footprints", "as persp-adaptive-0.5, within 2 footprints",
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, adaptive_span<8>, TWIN_AND_ASM(step_loop), nullptr, check_step, adaptive_bound<8>},
+    {"persp-adaptive-4", "ours", "runs as long as the bound keeps within four footprints", "as persp-adaptive-0.5, within 4 footprints",
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, adaptive_span<16>, TWIN_AND_ASM(step_loop), nullptr, check_step, adaptive_bound<16>},
     {"fast-affine", "ours", "fatmap2's 8:16 core, unrolled with a computed entry, walking runs of rows in NASM",
      "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; 256 x 256 repeating textures",
      EXACT_COVERAGE_FLAT_ONE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound},

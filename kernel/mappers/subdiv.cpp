@@ -33,8 +33,12 @@ void step_loop(const void* raw) {
     }
 }
 
-template <int N>
-void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
+namespace {
+
+// Draws span s in runs: length(k) pixels from pixel k (at least 1), each on the chord from the exact
+// point at its first pixel to the one at the next run's first pixel (or at the span's last).
+template <typename Length>
+void runs_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride, Length&& length) {
     const PolygonSetup& setup = c.setup;
     const bool rows = c.axis == Axis::Rows;
     double x = centre_x(setup, s.x), y = centre_y(setup, s.y);
@@ -50,7 +54,7 @@ void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
     double u0, v0;
     exact_at(0, &u0, &v0);
     for (int32_t k = 0; k < s.count;) {
-        int32_t len = s.count - k > N ? N : s.count - k;  // pixels in this piece
+        int32_t len = length(k);  // pixels in this run
         int32_t end = k + len < s.count ? k + len : s.count - 1;  // the next exact point
         double u1, v1;
         if (end != k) exact_at(end, &u1, &v1);
@@ -70,6 +74,60 @@ void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
         k += len;
         u0 = u1, v0 = v1;
     }
+}
+
+// The bound over pixels k0..k1 of the run whose chord goes from exact point `from` to `end`: the
+// chord's deviation (lines_bound), within 16.16 rounding from `from`; clears `fits` where 16.16
+// may not hold it.
+double run_bound(const SpanLine& l, const Texture& tex, double from, double end, double k0, double k1, bool* fits) {
+    const int32_t size[2] = {tex.width, tex.height};
+    double a[2], step[2];
+    for (int t = 0; t < 2; ++t) {
+        double t0 = span_exact(l, t, from), t1 = span_exact(l, t, end);
+        step[t] = end > from ? (t1 - t0) / (end - from) : 0.0;
+        a[t] = t0 - step[t] * from;
+        double start = tex.wrap == Wrap::Repeat ? 0.0 : t0;  // repeat: reduced into [0, size) first
+        *fits = *fits && fits_16_16(start, step[t], k1 - from, size[t], tex.wrap);
+    }
+    return lines_bound(l, a, step, k0, k1, (1 + k1 - from) * HALF_ULP_16_16);
+}
+
+}  // namespace
+
+template <int N>
+void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
+    runs_span(c, s, dst, stride, [&](int32_t k) { return s.count - k > N ? N : s.count - k; });
+}
+
+int32_t adaptive_run(const SpanLine& l, const ChordTerms& terms, int32_t k, double budget) {
+    const int32_t left = l.count - k;
+    if (left <= 1) return left;
+    const double last = double(l.count - 1), q = l.q0 + l.qm * double(k);
+    auto within = [&](double h) {  // the chord from k over h pixels (or to the last), by chords_bound
+        const double end = double(k) + h < last ? double(k) + h : last, q_end = l.q0 + l.qm * end;
+        return chords_bound(terms, h, q < q_end ? q : q_end, larger(q, q_end), (1 + h) * HALF_ULP_16_16) <= budget;
+    };
+    double h = double(left < ADAPTIVE_LONGEST ? left : ADAPTIVE_LONGEST);
+    if (within(h)) return int32_t(h);
+    // from the curvature at k: h^2 / 8 * |t''| within the texels the budget allows there (less a
+    // margin for the rounding), then shorter by a quarter until chords_bound agrees
+    const double room = double(int64_t(budget * larger(1.0, terms.least_k / (q * q)))) - 1.0 / 64;
+    const double curvature = larger(terms.k_high[0], terms.k_high[1]) / (q * q) * 2 * terms.qm / q;
+    if (room > 0 && curvature > 0) {
+        const double guess = __builtin_sqrt(8 * room / curvature);
+        h = guess < h ? double(int64_t(guess)) : h;
+    } else {
+        h = 1;
+    }
+    while (h > 1 && !within(h)) h = double(int64_t(h * 0.75));
+    return h < 1 ? 1 : int32_t(h);
+}
+
+template <int QUARTERS>
+void adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
+    const SpanLine l = span_line(c.setup, c.axis, s);
+    const ChordTerms terms = chord_terms(l);
+    runs_span(c, s, dst, stride, [&](int32_t k) { return adaptive_run(l, terms, k, QUARTERS / 4.0); });
 }
 
 // The bound (docs/accuracy.md, "Error bounds"): each segment runs from the exact value at its
@@ -107,19 +165,42 @@ ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count
             }
             return chords_bound(l, h, from, reach, (1 + steps) * HALF_ULP_16_16);
         };
-        auto piece = [&](double k0, double k1) {  // pixels k0..k1 of one segment, on its chord
-            const double from = segment(k0), end = next_exact(k0);
-            double a[2], step[2];
-            for (int t = 0; t < 2; ++t) {
-                double t0 = span_exact(l, t, from), t1 = span_exact(l, t, end);
-                step[t] = end > from ? (t1 - t0) / (end - from) : 0.0;
-                a[t] = t0 - step[t] * from;
-                double start = c.tex.wrap == Wrap::Repeat ? 0.0 : t0;  // repeat: reduced into [0, size) first
-                *fits = *fits && fits_16_16(start, step[t], k1 - from, size[t], c.tex.wrap);
-            }
-            return lines_bound(l, a, step, k0, k1, (1 + k1 - from) * HALF_ULP_16_16);
-        };
+        auto piece = [&](double k0, double k1) { return run_bound(l, c.tex, segment(k0), next_exact(k0), k0, k1, fits); };  // on its chord
         return span_bound(c, 0, last, length, coarse, piece);
+    });
+}
+
+// persp-adaptive-B's bound: its runs as it draws them, each on its chord (run_bound, pieces of at
+// most BOUND_PIECE). Asked with a budget, the polygon at once: every run the chooser did not have to
+// cut to one pixel is within B by chords_bound; a run of one pixel is within the whole polygon's
+// chords bound for one pixel; and 16.16 holds runs of up to ADAPTIVE_LONGEST pixels.
+template <int QUARTERS>
+ErrorBound adaptive_bound(const BoundContext& c, const Vertex* vertices, int count) {
+    const int32_t size[2] = {c.tex.width, c.tex.height};
+    const double budget = QUARTERS / 4.0;
+    auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
+        const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, steps = ADAPTIVE_LONGEST - 1 < last ? ADAPTIVE_LONGEST - 1 : last;
+        for (int t = 0; t < 2; ++t) {
+            const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t];
+            if (!fits_16_16(start, spread_max_step(p, s, t, c.axis), steps, size[t], c.tex.wrap)) return NO_BOUND;
+        }
+        return larger(budget, spread_chords_bound(p, s, c.axis, 1, 2 * HALF_ULP_16_16));
+    };
+    return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
+        const SpanLine l = span_line(s, c.axis, span);
+        const ChordTerms terms = chord_terms(l);
+        const double last = double(span.count - 1);
+        double worst = 0;
+        for (int32_t k = 0; k < span.count && !c.settled(worst);) {
+            const int32_t len = adaptive_run(l, terms, k, budget);
+            const double from = double(k), end = k + len < span.count ? double(k + len) : last;
+            for (double k0 = from; k0 < double(k + len); k0 += BOUND_PIECE) {
+                const double k1 = k0 + BOUND_PIECE - 1 < double(k + len - 1) ? k0 + BOUND_PIECE - 1 : double(k + len - 1);
+                worst = larger(worst, run_bound(l, c.tex, from, end, k0, k1, fits));
+            }
+            k += len;
+        }
+        return worst;
     });
 }
 
@@ -162,5 +243,13 @@ template ErrorBound subdiv_bound<8>(const BoundContext&, const Vertex*, int);
 template ErrorBound subdiv_bound<16>(const BoundContext&, const Vertex*, int);
 template ErrorBound subdiv_bound<32>(const BoundContext&, const Vertex*, int);
 template ErrorBound subdiv_bound<SPAN_LONG>(const BoundContext&, const Vertex*, int);
+template void adaptive_span<2>(const SpanContext&, const Span&, uint8_t*, int32_t);
+template void adaptive_span<4>(const SpanContext&, const Span&, uint8_t*, int32_t);
+template void adaptive_span<8>(const SpanContext&, const Span&, uint8_t*, int32_t);
+template void adaptive_span<16>(const SpanContext&, const Span&, uint8_t*, int32_t);
+template ErrorBound adaptive_bound<2>(const BoundContext&, const Vertex*, int);
+template ErrorBound adaptive_bound<4>(const BoundContext&, const Vertex*, int);
+template ErrorBound adaptive_bound<8>(const BoundContext&, const Vertex*, int);
+template ErrorBound adaptive_bound<16>(const BoundContext&, const Vertex*, int);
 
 }  // namespace raster

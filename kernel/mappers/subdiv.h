@@ -1,6 +1,7 @@
 // persp-subdiv-N: exact u, v every N pixels (N = 4, 8, 16, 32) and at each span's last pixel,
 // affine in 16.16 between; any texture, both walkers; the loop in NASM (asm/subdiv.asm). constant-depth is the same with
-// one segment a span (N = SPAN_LONG): exact along lines of constant depth.
+// one segment a span (N = SPAN_LONG): exact along lines of constant depth. persp-adaptive-B: runs
+// as long as the bound keeps them within B footprints (B = QUARTERS / 4).
 #pragma once
 
 #include <stdint.h>
@@ -33,6 +34,18 @@ template <int N>
 void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
 template <int N>
 ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count);
+
+// persp-adaptive-B's run from pixel k of the span (line l): the longest, up to ADAPTIVE_LONGEST
+// pixels and the span's end, whose chord chords_bound keeps within `budget` footprints; one pixel
+// where none is.
+constexpr int32_t ADAPTIVE_LONGEST = 256;
+struct SpanLine;
+struct ChordTerms;
+int32_t adaptive_run(const SpanLine& l, const ChordTerms& terms, int32_t k, double budget);
+template <int QUARTERS>
+void adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
+template <int QUARTERS>
+ErrorBound adaptive_bound(const BoundContext& c, const Vertex* vertices, int count);
 
 }  // namespace raster
 
