@@ -136,8 +136,8 @@ void rank_cards(GalleryPage& page, const MeasuredSpeeds& speeds) {
     page.measured = measured;
     if (measured)
         page.speed_source = "measured: draw instructions per pixel (setup, walking, inner loops) in the kernel under QEMU icount, "
-                            "from " + speeds.path + " (make bench; " + std::to_string(frames) +
-                            " frames of the scene, so a figure is their average, not this frame's alone)";
+                            "from " + speeds.path + " (make bench; " + std::to_string(frames) + (frames == 1 ? " frame" : " frames") +
+                            " of the scene, a figure their average, not this frame's alone)";
     else
         page.speed_source = "estimated: draw instructions per pixel by the cost model auto chooses by (kernel/mappers/costs.cpp), "
                             "from the polygons, spans and pixels each mapper drew of this frame; auto's own choosing is not in it (" +

@@ -135,7 +135,7 @@ int run(const Args& a) {
         pages.push_back(std::move(page));
     }
     write_index(a.out, pages);
-    std::printf("gallery: %s/index.html (%zu scenes)\n", a.out.c_str(), pages.size());
+    std::printf("gallery: %s/index.html (%zu %s)\n", a.out.c_str(), pages.size(), pages.size() == 1 ? "scene" : "scenes");
     return 0;
 }
 
