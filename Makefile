@@ -2,7 +2,9 @@
 #   make all    kernel ELF + ISO            make run    boot in QEMU, play the demo scenes, save screenshots
 #                                           (builds only the kernel and the harness)
 #   make test   every test, one summary      make clean  remove build/
-#   make bench  the speed/accuracy report (build/report)
+#   make bench  the speed/accuracy report (build/report), then the gallery
+#   make gallery every mapper's picture beside its error map, a page a scene (build/gallery)
+#   make test-gallery  the gallery's pages in a headless Chromium (installs Debian's chromium)
 #   make bounds the error bounds against measured errors on 100000 random polygons a mapper
 #   make deps   install missing tools (run, bench and test do it themselves)
 
@@ -115,27 +117,32 @@ RENDER := $(HBUILD)/modexlab-render
 WAD := $(HBUILD)/modexlab-wad
 SCENE_TOOL := $(HBUILD)/modexlab-scene
 BENCH := $(HBUILD)/modexlab-bench
+GALLERY := $(HBUILD)/modexlab-gallery
 TESTS := $(HBUILD)/modexlab-tests
 # the unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer
 SBUILD := $(BUILD)/host-san
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 SAN_TESTS := $(SBUILD)/modexlab-unit-tests-san
 UNIT_CXX := tests/main.cpp $(wildcard tests/unit/*.cpp)
+# the gallery's pages in a headless browser (make test-gallery, a tier of its own)
+BROWSER_TESTS := $(HBUILD)/modexlab-browser-tests
+BROWSER_TEST_CXX := tests/main.cpp $(wildcard tests/browser/*.cpp)
 # a Multiboot kernel that enters modexlab with a wrong magic (tests/fixtures)
 WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures run bench report bounds test deps clean
+.PHONY: all iso kernel host fixtures run bench report gallery bounds test test-gallery deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS)
+host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS)
 fixtures: $(WRONG_MAGIC_LOADER)
 
-deps:
+# $(call install,FILE:PACKAGE ...): installs the packages whose file or command is missing.
+define install
 	@missing=""; \
-	for pair in $(DEPS); do \
+	for pair in $(1); do \
 		f="$${pair%%:*}"; p="$${pair#*:}"; \
 		case "$$f" in /*) [ -e "$$f" ] ;; *) command -v "$$f" >/dev/null ;; esac || missing="$$missing $$p"; \
 	done; \
@@ -146,6 +153,10 @@ deps:
 		  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq --no-install-recommends $$missing; \
 		} >$(BUILD)/deps.log 2>&1 || { cat $(BUILD)/deps.log; echo "deps: apt-get failed"; exit 1; }; \
 	fi
+endef
+
+deps:
+	$(call install,$(DEPS))
 
 $(KERNEL): $(KERNEL_OBJS) boot/linker.ld
 	$(call say,LD,$@)
@@ -261,6 +272,10 @@ $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ -lgtest $(HLDLIBS)
 
+$(BROWSER_TESTS): $(BROWSER_TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
+	$(call say,LINK,$@)
+	$(Q)$(HCXX) -o $@ $^ -lgtest $(HLDLIBS)
+
 # `make run SCENE=corridor DISPLAY=1`: a window. DISPLAY=1 on make's command line hides X's own
 # DISPLAY from the recipe; $(shell) still sees the environment make started with.
 X_DISPLAY := $(shell printenv DISPLAY)
@@ -273,13 +288,31 @@ run: deps
 # `make bench`: every mapper on every demo scene; the report in build/report (docs/bench.md), and the
 # cost model auto chooses by, kernel/mappers/costs.cpp, when the run is full.
 # SCENES=a,b MAPPERS=x,y FRAMES=N narrow it.
+# Then the gallery, with the report's speeds.
 bench report: deps
-	@$(MAKE) -s -j$(NPROC) $(KERNEL) $(BENCH) $(CYCLES)
+	@$(MAKE) -s -j$(NPROC) $(KERNEL) $(BENCH) $(CYCLES) $(GALLERY)
 	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
 		$(if $(FRAMES),--frames $(FRAMES))
 	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "cost model not copied (a narrowed run): $(BUILD)/report/costs.cpp",\
 		cmp -s $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model unchanged" || \
 		{ cp $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model updated: kernel/mappers/costs.cpp (commit it)"; })
+	$(GALLERY_RUN)
+
+# `make gallery`: a page a demo scene in build/gallery, every mapper's frame beside its footprint-error
+# map, fastest first (speeds from build/report when make bench made one; docs/bench.md, "The gallery").
+# SCENES=a,b MAPPERS=x,y narrow it.
+GALLERY_RUN = $(GALLERY) --out $(BUILD)/gallery --report $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) \
+	$(if $(MAPPERS),--mappers $(MAPPERS))
+gallery: deps
+	@$(MAKE) -s -j$(NPROC) $(GALLERY) $(FREEDOOM_TEXTURES)
+	$(GALLERY_RUN)
+
+# `make test-gallery`: every page of a whole gallery opened in a headless Chromium (Debian's chromium,
+# installed for this tier only): every image loads, each page shows what it says.
+test-gallery: deps
+	$(call install,chromium:chromium)
+	@$(MAKE) -s -j$(NPROC) $(GALLERY) $(BROWSER_TESTS) $(FREEDOOM_TEXTURES)
+	@tests/run $(BROWSER_TESTS)
 
 # `make bounds`: every mapper's error bound against its measured error on 100000 random polygons
 # (make test runs 600 of them) and on every demo scene (docs/accuracy.md, "Error bounds").

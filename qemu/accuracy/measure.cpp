@@ -262,8 +262,8 @@ PolygonMeter::PolygonMeter(const Mapper& mapper, Axis axis, const Budget& budget
 
 PolygonMeter::~PolygonMeter() = default;
 
-AccuracyMetrics PolygonMeter::measure(const Vertex* v, int n, const Texture& tex, bool* drawn_out,
-                                      const std::function<void(int32_t x, int32_t y, bool rc, bool dc)>& pixel) {
+AccuracyMetrics PolygonMeter::measure(const Vertex* v, int n, const Texture& tex, bool* drawn_out, const PixelFn& pixel,
+                                      RenderStats* stats) {
     Parts& p = *parts_;
     auto& stand_in = p.stand_ins[tex.texels];
     if (!stand_in) stand_in = std::make_unique<MeasureTextures>(tex);
@@ -271,20 +271,23 @@ AccuracyMetrics PolygonMeter::measure(const Vertex* v, int n, const Texture& tex
     bool drawn = true;
     for (int k = 0; k < 5 && drawn; ++k) {
         Target t = p.scratch[size_t(k)].target();
-        RenderStats ignored;
-        drawn = draw_polygon(v, n, stand_in->textures[k]->texture, mapper_, axis_, t, &ignored, Variant::Twin, budget_) == SetupStatus::Ok;
+        RenderStats st;
+        drawn = draw_polygon(v, n, stand_in->textures[k]->texture, mapper_, axis_, t, &st, Variant::Twin, budget_) == SetupStatus::Ok;
+        if (k == 0 && stats) *stats = st;
     }
     AccuracyMetrics m;
     Box::around(v, n).each([&](int32_t x, int32_t y) {
         size_t i = size_t(y) * SCREEN_WIDTH + size_t(x);
         bool rc = p.ref.coverage[i] != 0, dc = drawn && p.scratch[0].at(x, y) != 0;
-        if (pixel) pixel(x, y, rc, dc);
+        double fe = 0;
         if (rc && dc) {
             int32_t tu = p.scratch[1].at(x, y) | (p.scratch[2].at(x, y) << 8), tv = p.scratch[3].at(x, y) | (p.scratch[4].at(x, y) << 8);
             bool folded;
             uint32_t e = texel_error(p.ref.tu[i], p.ref.tv[i], tu, tv, tex.width, tex.height, tex.wrap, &folded);
             add_texel_error(m, e, double(p.ref.footprint[i]), folded);
+            fe = footprint_error(e, double(p.ref.footprint[i]));
         }
+        if (pixel) pixel(x, y, rc, dc, fe);
         p.ref.coverage[i] = 0;
         for (HostSurface& s : p.scratch) s.at(x, y) = 0;
     });
@@ -293,19 +296,37 @@ AccuracyMetrics PolygonMeter::measure(const Vertex* v, int n, const Texture& tex
     return m;
 }
 
-AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis) {
+AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis, FrameMap* map) {
     AccuracyMetrics m;
     std::vector<uint8_t> ref_count(SCREEN_PIXELS, 0), drawn_count(SCREEN_PIXELS, 0);
+    if (map) {
+        map->kind.assign(SCREEN_PIXELS, FrameMap::BACKGROUND);
+        map->footprint_error.assign(SCREEN_PIXELS, 0.0);
+        map->drawn_by.assign(SCREEN_PIXELS, -1);
+        map->polygons.clear();
+    }
     PolygonMeter meter(mapper, axis, frame.budget);
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
         const int n = frame.polygon_size[i];
-        AccuracyMetrics one = meter.measure(v, n, w.textures->objects[frame.polygon_object[i]], nullptr,
-                                            [&](int32_t x, int32_t y, bool rc, bool dc) {
+        bool drawn = false;
+        RenderStats stats;
+        AccuracyMetrics one = meter.measure(v, n, w.textures->objects[frame.polygon_object[i]], &drawn,
+                                            [&](int32_t x, int32_t y, bool rc, bool dc, double fe) {
                                                 size_t p = size_t(y) * SCREEN_WIDTH + size_t(x);
                                                 if (rc && ref_count[p] < 255) ++ref_count[p];
                                                 if (dc && drawn_count[p] < 255) ++drawn_count[p];
-                                            });
+                                                if (!map || !(rc || dc)) return;
+                                                map->kind[p] = rc && dc ? FrameMap::COMPARED : rc ? FrameMap::GAP : FrameMap::OVERDRAW;
+                                                map->footprint_error[p] = fe;
+                                                if (dc) map->drawn_by[p] = i;
+                                            }, &stats);
+        if (map) {
+            const Mapper* by = nullptr;
+            for (int row = 0; row < MAPPER_COUNT && drawn; ++row)
+                if (stats.mapper_polygons[row]) by = &MAPPERS[row];
+            map->polygons.push_back({by, stats.spans, stats.pixels});
+        }
         merge(m, one);
         v += n;
     }

@@ -84,13 +84,17 @@ IndexImage render_world_frame(const LoadedWorld& w, const raster::Frame& frame, 
 // A mapper's polygons measured one at a time against the reference: the texel and footprint
 // errors on the pixels both cover (only the mapper's drawing path is used: five renders, with a
 // texture of ones and four that hold their own coordinates). `pixel` sees, for every pixel of
-// the polygon's box, whether the reference and the mapper cover it. auto chooses for `budget`.
+// the polygon's box, whether the reference and the mapper cover it and, where both do, its
+// footprint error (0 elsewhere). `stats` gets the statistics of the first render: the polygon's
+// spans and pixels and, in mapper_polygons, the mapper that drew it (auto: the one it chose).
+// auto chooses for `budget`.
 class PolygonMeter {
 public:
+    using PixelFn = std::function<void(int32_t x, int32_t y, bool rc, bool dc, double footprint_error)>;
     PolygonMeter(const raster::Mapper& mapper, raster::Axis axis, const raster::Budget& budget = raster::DEFAULT_BUDGET);
     ~PolygonMeter();
     raster::AccuracyMetrics measure(const raster::Vertex* v, int n, const raster::Texture& tex, bool* drawn = nullptr,
-                                    const std::function<void(int32_t x, int32_t y, bool rc, bool dc)>& pixel = {});
+                                    const PixelFn& pixel = {}, raster::RenderStats* stats = nullptr);
 
 private:
     struct Parts;
@@ -104,8 +108,27 @@ private:
 // polygon alone, its texel errors on the pixels both cover for it, with its own texture's size and
 // wrap; coverage counts summed over the polygons; palette indices on the whole pictures. auto
 // chooses for the frame's budget.
+// With `map`, also what it saw where (the gallery's maps): the figures stay the same.
+struct FrameMap {
+    enum Kind : uint8_t { BACKGROUND, GAP, OVERDRAW, COMPARED };
+    // Per pixel (row-major, 320x240), from the last polygon in drawing order that the reference or
+    // the mapper covers there (the one the pictures show): a gap (the reference's, not drawn),
+    // overdraw (drawn, not the reference's) or compared, with its footprint error.
+    std::vector<uint8_t> kind;
+    std::vector<double> footprint_error;
+    std::vector<int32_t> drawn_by;  // the last polygon that drew the pixel; -1: none
+    // Per polygon of the frame, in order: the mapper that drew it (auto: its choice; nullptr: not
+    // drawn, refused or degenerate), its spans and pixels.
+    struct Polygon {
+        const raster::Mapper* mapper;
+        uint32_t spans, pixels;
+    };
+    std::vector<Polygon> polygons;
+    // The mapper that drew pixel p last, or nullptr.
+    const raster::Mapper* mapper_at(size_t p) const { return drawn_by[p] < 0 ? nullptr : polygons[size_t(drawn_by[p])].mapper; }
+};
 raster::AccuracyMetrics measure_world_frame(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper,
-                                            raster::Axis axis);
+                                            raster::Axis axis, FrameMap* map = nullptr);
 
 // Reads a whole file; throws HarnessError when it cannot.
 std::string read_whole_file(const std::string& path);

@@ -35,7 +35,7 @@ uint32_t texel_error(int32_t ru, int32_t rv, int32_t tu, int32_t tv, int32_t tex
 void add_texel_error(AccuracyMetrics& m, uint32_t e, double footprint, bool folded) {
     ++m.compared;
     if (e > m.max_texel_error) m.max_texel_error = e;
-    double fe = double(e) / (footprint > 1 ? footprint : 1.0);
+    double fe = footprint_error(e, footprint);
     if (fe > m.max_footprint_error) m.max_footprint_error = fe;
     m.texel_errors.push_back(e);
     m.footprint_errors.push_back(float(fe));

@@ -46,6 +46,9 @@ uint32_t texel_distance(int32_t a, int32_t b, int32_t size, Wrap wrap);
 // the reference's (ru, rv), wrap-aware; *folded when it is half a period in either direction.
 uint32_t texel_error(int32_t ru, int32_t rv, int32_t tu, int32_t tv, int32_t tex_width, int32_t tex_height, Wrap wrap, bool* folded);
 
+// The footprint error of a compared pixel: its texel error e over max(1, the pixel's footprint).
+inline double footprint_error(uint32_t e, double footprint) { return double(e) / (footprint > 1 ? footprint : 1.0); }
+
 // The pieces of the metrics, for measures built pixel by pixel elsewhere (3D frames): a compared
 // pixel with texel error e at a pixel whose footprint is `footprint` texels; a pixel the reference
 // covers rc times and the mapper draws dc times. finish_metrics() then sets the means and

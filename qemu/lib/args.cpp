@@ -58,6 +58,17 @@ std::vector<std::string> CommandLine::texts(std::string_view option) const {
     return out;
 }
 
+std::vector<std::string> CommandLine::list(std::string_view option) const {
+    std::vector<std::string> out;
+    std::string all = text(option);
+    for (size_t start = 0; start <= all.size();) {
+        size_t comma = std::min(all.find(',', start), all.size());
+        if (comma > start) out.push_back(all.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return out;
+}
+
 int CommandLine::integer(std::string_view option, int low, int high, int fallback) const {
     const std::string* v = last_value(option);
     if (!v) return fallback;

@@ -30,6 +30,8 @@ public:
     bool has(std::string_view option) const;
     std::string text(std::string_view option, std::string fallback = {}) const;
     std::vector<std::string> texts(std::string_view option) const;
+    // A comma-separated value's items, empty ones dropped ("--scenes a,b"); none when absent.
+    std::vector<std::string> list(std::string_view option) const;
     // A whole number in low..high (UsageError "--frames takes 1..1000" else), or fallback when absent.
     int integer(std::string_view option, int low, int high, int fallback) const;
     // The value that goes with the name given (UsageError "--axis takes rows or columns" else).

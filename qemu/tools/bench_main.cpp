@@ -35,14 +35,6 @@ const char* USAGE =
     "  --no-wall  skip the wall-clock frames per second (QEMU without icount)\n"
     "  --costs-from  measure nothing: fit the cost model (costs.cpp) to an earlier run's trade.csv\n";
 
-std::vector<std::string> split_commas(const std::string& s) {
-    std::vector<std::string> out;
-    std::stringstream in(s);
-    for (std::string item; std::getline(in, item, ',');)
-        if (!item.empty()) out.push_back(item);
-    return out;
-}
-
 struct BenchScene {
     std::string name;  // in the report
     std::string path;  // the file on the host
@@ -63,8 +55,8 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     if (args.help()) return std::nullopt;
     if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
     Args a;
-    a.scenes = split_commas(args.text("--scenes"));
-    a.mappers = split_commas(args.text("--mappers"));
+    a.scenes = args.list("--scenes");
+    a.mappers = args.list("--mappers");
     for (const std::string& m : a.mappers)
         if (!raster::find_mapper({m.data(), m.size()})) throw UsageError("unknown mapper '" + m + "'");
     a.frames = args.integer("--frames", 1, 1000, a.frames);
@@ -80,15 +72,9 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
 }
 
 BenchScene open_scene(const std::string& spec) {
+    SceneChoice c = choose_scene(spec);
     BenchScene s;
-    bool demo = false;
-    for (const DemoScene& d : demo_scenes()) demo = demo || spec == d.name;
-    if (demo) {
-        s.name = spec, s.path = "scenes/" + spec + ".scene", s.builtin = true;
-    } else {
-        if (!std::filesystem::is_regular_file(spec)) throw HarnessError("no demo scene or scene file '" + spec + "' (modexlab-scene list)");
-        s.name = std::filesystem::path(spec).stem().string(), s.path = spec, s.builtin = false;
-    }
+    s.name = c.name, s.path = c.path, s.builtin = c.demo != nullptr;
     s.host = load_world_file(s.path);
     return s;
 }
@@ -101,16 +87,6 @@ void load_in_kernel(Session& k, const BenchScene& s) {
 
 
 uint64_t sum_of(const json& r, const char* field) { return r[field]["sum"].get<uint64_t>(); }
-
-// auto's rows at budgets of their own besides the scene's: footprint errors, exact coverage.
-const double BENCH_BUDGETS[] = {0, 0.5, 1, 2, 4};
-
-// A budget as the kernel's `budget` command and the report write it: 0.5, 2.
-std::string budget_text(double max_error) {
-    char t[32];
-    std::snprintf(t, sizeof t, "%g", max_error);
-    return t;
-}
 
 // One row: the mapper on the scene's frames, in the kernel and on the host; auto at `budget`
 // when one is given (the row is named auto@BUDGET), else at the scene's.
@@ -135,8 +111,7 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
         row.drawn_by.emplace_back(d["mapper"].get<std::string>(), d["polygons"].get<uint64_t>(), d["pixels"].get<uint64_t>());
     const raster::Budget& b = budget ? *budget : s.host.world->budget;
     row.budget_error = b.max_error, row.budget_exact = b.exact_coverage;
-    row.budget = (b.max_error < 0 ? std::string("any footprint error") : "footprint error " + budget_text(b.max_error)) +
-                 (b.exact_coverage ? ", exact coverage" : ", any coverage") + (b.given ? "" : ": the default");
+    row.budget = budget_words(b);
 
     // accuracy on the host twin, the same frames; the last one also against the kernel's screen
     const raster::Axis axis = row.walker == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
@@ -272,7 +247,7 @@ int run(const Args& a) {
         }
         for (const raster::Mapper* m : mappers) {
             if (!m->chooses) continue;
-            for (double e : BENCH_BUDGETS) {
+            for (double e : AUTO_BUDGETS) {
                 raster::Budget b{true, e, true};
                 std::fprintf(stderr, "[%s] %s auto at budget %s ", s.name.c_str(), s.name.c_str(), budget_text(e).c_str());
                 TradeRow row = bench_one(k, s, *m, a.frames, &b);

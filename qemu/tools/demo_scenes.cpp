@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
@@ -292,6 +293,13 @@ const std::vector<DemoScene>& demo_scenes() {
         {"freedoom", "the corridor in Freedoom's textures and palette (image files, a scene palette)", freedoom},
     };
     return scenes;
+}
+
+SceneChoice choose_scene(const std::string& spec) {
+    for (const DemoScene& d : demo_scenes())
+        if (spec == d.name) return {spec, "scenes/" + spec + ".scene", &d};
+    if (!std::filesystem::is_regular_file(spec)) throw HarnessError("no demo scene or scene file '" + spec + "' (modexlab-scene list)");
+    return {std::filesystem::path(spec).stem().string(), spec, nullptr};
 }
 
 std::string obj_to_mesh(const std::string& obj, const std::string& mesh_name, const std::string& file) {

@@ -15,6 +15,15 @@ struct DemoScene {
 
 const std::vector<DemoScene>& demo_scenes();
 
+// A scene as the tools' --scenes name it: a demo scene (its file scenes/NAME.scene, from the
+// repository's top, where the tools run) or a scene file (named after its stem). Throws
+// HarnessError "no demo scene or scene file 'X' (modexlab-scene list)" for neither.
+struct SceneChoice {
+    std::string name, path;
+    const DemoScene* demo;  // nullptr: a file
+};
+SceneChoice choose_scene(const std::string& spec);
+
 // A mesh block from a Wavefront OBJ subset (v, vt, f; f corners v/vt or v/vt/vn, negative indices
 // relative; other lines ignored): `v` flipped so that rows run down (OBJ's v runs up), faces of
 // more than 10 corners refused. Throws HarnessError "NAME:LINE: message" on anything it cannot take.

@@ -14,13 +14,13 @@
 
 namespace harness {
 
-namespace {
-
 std::string fixed(double v, int decimals) {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
     return buf;
 }
+
+namespace {
 
 std::ofstream open_out(const std::string& path) {
     std::filesystem::path p(path);
@@ -68,6 +68,17 @@ const Published PUBLISHED[] = {
 };
 
 }  // namespace
+
+std::string budget_text(double max_error) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%g", max_error);
+    return t;
+}
+
+std::string budget_words(const raster::Budget& b) {
+    return (b.max_error < 0 ? std::string("any footprint error") : "footprint error " + budget_text(b.max_error)) +
+           (b.exact_coverage ? ", exact coverage" : ", any coverage") + (b.given ? "" : ": the default");
+}
 
 std::vector<size_t> pareto_front(const std::vector<std::pair<double, double>>& points) {
     std::vector<size_t> front;

@@ -7,9 +7,22 @@
 #include <tuple>
 #include <vector>
 
+#include "kernel/core/choice.h"
 #include "qemu/accuracy/metrics.h"
 
 namespace harness {
+
+// The budgets auto is benched (and shown in the gallery) at besides the scene's own: footprint
+// errors, with exact coverage. A row at one is named auto@BUDGET (budget_text).
+inline constexpr double AUTO_BUDGETS[] = {0, 0.5, 1, 2, 4};
+
+// v with that many decimals: the report's figures.
+std::string fixed(double v, int decimals);
+
+// A budget's footprint error as the kernel's `budget` command and the report write it: 0.5, 2.
+std::string budget_text(double max_error);
+// A budget in words: "footprint error 1, exact coverage: the default".
+std::string budget_words(const raster::Budget& b);
 
 struct TradeRow {
     std::string scene, mapper, family, surface, walker, loop;

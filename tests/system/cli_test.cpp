@@ -7,28 +7,10 @@
 #include <fstream>
 #include <map>
 #include <sstream>
-#include <sys/wait.h>
 
 namespace {
 
 using namespace systest;
-
-struct ToolRun {
-    int status;
-    std::string out;
-};
-
-// A command line's exit status and its output (stdout and stderr).
-ToolRun run_command(const std::string& command) {
-    std::string cmd = command + " 2>&1";
-    FILE* p = popen(cmd.c_str(), "r");
-    std::string out;
-    char buf[4096];
-    size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
-    int st = pclose(p);
-    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
-}
 
 ToolRun run(const std::string& args) { return run_command(build_dir() + "/host/modexlab-render " + args); }
 

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <cstdio>
 #include <string>
 
@@ -33,6 +35,23 @@ inline uint32_t kernel_symbol(const std::string& name) {
         if (name == sym) found = addr;
     pclose(p);
     return uint32_t(found);
+}
+
+struct ToolRun {
+    int status;
+    std::string out;
+};
+
+// A command line's exit status and its output (stdout and stderr).
+inline ToolRun run_command(const std::string& command) {
+    std::string cmd = command + " 2>&1";
+    FILE* p = popen(cmd.c_str(), "r");
+    std::string out;
+    char buf[4096];
+    size_t n;
+    while ((n = std::fread(buf, 1, sizeof buf, p)) > 0) out.append(buf, n);
+    int st = pclose(p);
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
 
 inline const raster::Palette& default_palette() { return raster::palette(raster::PaletteId::Default); }

@@ -94,6 +94,13 @@ TEST(Args, ARepeatedOptionCountsWithItsLastValueOrAllOfThem) {
     EXPECT_EQ(parse({"--frames", "x", "--frames", "7"}).integer("--frames", 1, 10, 5), 7) << "only the last value is read";
 }
 
+TEST(Args, AListIsItsCommaSeparatedItems) {
+    EXPECT_EQ(parse({"--out", "a,b,,c,"}).list("--out"), (std::vector<std::string>{"a", "b", "c"}));
+    EXPECT_EQ(parse({"--out", ",x"}).list("--out"), (std::vector<std::string>{"x"}));
+    EXPECT_TRUE(parse({"--out", ""}).list("--out").empty());
+    EXPECT_TRUE(parse({}).list("--out").empty());
+}
+
 TEST(Args, IntegersInRange) {
     EXPECT_EQ(parse({"--frames", "12"}).integer("--frames", 1, 1000, 8), 12);
     EXPECT_EQ(parse({"--frames", "1"}).integer("--frames", 1, 1000, 8), 1);

@@ -96,7 +96,7 @@ bool check_polygon(PolygonMeter& meter, const Mapper& m, Axis axis, const std::v
     ErrorBound b = m.bound(c, p.data(), int(p.size()));
     bool drawn = false;
     uint32_t coverage_differs = 0;
-    AccuracyMetrics e = meter.measure(p.data(), int(p.size()), tex, &drawn, [&](int32_t, int32_t, bool rc, bool dc) { coverage_differs += rc != dc; });
+    AccuracyMetrics e = meter.measure(p.data(), int(p.size()), tex, &drawn, [&](int32_t, int32_t, bool rc, bool dc, double) { coverage_differs += rc != dc; });
     if (m.bound != unbounded) {
         EXPECT_EQ(b.draws, drawn) << what;
     } else if (!b.draws) {
