@@ -100,6 +100,9 @@ struct BoundContext {
     // above the budget, not the polygon's bound).
     double budget = -1;
     PreparedPolygon* prepared = nullptr;  // the polygon set up and walked already, or nullptr
+    // With a budget: the whole polygon at once only (from its vertices, never walked); where that
+    // is not within the budget, NO_BOUND.
+    bool whole_only = false;
     bool settled(double worst) const { return budget >= 0 && worst > budget; }
 };
 
@@ -245,6 +248,11 @@ ErrorBound bound_by_spans(const BoundContext& c, const Vertex* vertices, int cou
     ErrorBound b;
     if (whole_within(c, vertices, count, whole, &b)) return b;
     b.exact_coverage = true;
+    if (c.whole_only) {
+        b.draws = setup_takes(c, vertices, count);
+        b.footprint = NO_BOUND;
+        return b;
+    }
     bool fits = true;
     double worst = 0;
     b.draws = for_each_span(c, vertices, count, planes, [&](const Span& span, const PolygonSetup& s) {

@@ -30,12 +30,12 @@ namespace {
 struct Candidates {
     bool built = false;
     int count = 0;
-    int16_t row[2 * MAPPER_LIMIT];
-    Axis axis[2 * MAPPER_LIMIT];
+    int16_t row[2 * MAPPER_LIMIT] = {};
+    Axis axis[2 * MAPPER_LIMIT] = {};
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target) {
-    static Candidates cache[8];
+    constinit static Candidates cache[8];
     const bool fast = tex.width == 256 && tex.height == 256 && tex.wrap == Wrap::Repeat && tex.aligned256;
     Candidates& c = cache[(tex.bordered ? 1 : 0) | (fast ? 2 : 0) | (target.planar ? 4 : 0)];
     if (c.built) return c;
@@ -66,24 +66,40 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     polygon_sizes(first->setup, target.clip, size);
     double cost[2 * MAPPER_LIMIT];
     for (int k = 0; k < list.count; ++k) cost[k] = estimate_cost(MAPPER_COSTS[list.row[k]], size[int(list.axis[k])]);
-    // cheapest first: the next cheapest not yet asked, until one's bound meets the budget (ties: the
-    // earlier candidate)
-    for (int tried = 0; tried < list.count; ++tried) {
-        int k = -1;
-        for (int i = 0; i < list.count; ++i)
-            if (cost[i] >= 0 && (k < 0 || cost[i] < cost[k])) k = i;
-        cost[k] = -1;
+    bool asked[2 * MAPPER_LIMIT] = {};
+    // the cheapest candidate not yet asked whose cost is below `ceiling` (ties: the earlier), or -1
+    auto cheapest = [&](double ceiling) {
+        int best = -1;
+        for (int k = 0; k < list.count; ++k)
+            if (!asked[k] && cost[k] < ceiling && (best < 0 || cost[k] < cost[best])) best = k;
+        return best;
+    };
+    auto ask = [&](int k, bool whole_only) {
+        asked[k] = true;
         const Mapper& m = MAPPERS[list.row[k]];
         PreparedPolygon& p = prepared[int(list.axis[k])];
         if (p.status == SetupStatus::Unsupported) set_up_polygon(vertices, count, &p, first);
-        // asked with the budget: a coarse bound within it will do, and above it the search moves on
-        BoundContext c{m, tex, list.axis[k], target.clip, budget.max_error < 0 ? NO_BOUND : budget.max_error, &p};
+        BoundContext c{m, tex, list.axis[k], target.clip, budget.max_error < 0 ? NO_BOUND : budget.max_error, &p, whole_only};
         ErrorBound b = m.bound(c, vertices, count);
-        if (budget_allows(budget, b)) {
-            choice.mapper = &m, choice.axis = list.axis[k], choice.bound = b;
+        if (!budget_allows(budget, b)) return false;
+        choice.mapper = &m, choice.axis = list.axis[k], choice.bound = b, choice.by_spans = !whole_only;
+        return true;
+    };
+    // the cheapest proven by the whole polygon at once (from its vertices: cheap; exact always is);
+    // then the cheaper ones, whose proof takes their spans, by their cost with the proof's, as long
+    // as that is below the first's
+    int before[2 * MAPPER_LIMIT], n = 0;
+    double ceiling = 1e300;
+    for (int k; (k = cheapest(1e300)) >= 0;) {
+        if (ask(k, true)) {
+            ceiling = cost[k];
             break;
         }
+        before[n++] = k;
     }
+    for (int i = 0; i < n; ++i) asked[before[i]] = false, cost[before[i]] += BOUND_SPAN_COST * size[int(list.axis[before[i]])].spans;
+    for (int k; n > 0 && (k = cheapest(ceiling)) >= 0;)
+        if (ask(k, false)) break;
     return choice;
 }
 

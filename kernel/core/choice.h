@@ -53,10 +53,20 @@ struct Choice {
     const Mapper* mapper = nullptr;  // nullptr: no mapper draws the polygon (degenerate, or refused)
     Axis axis = Axis::Rows;          // the walker it draws with
     ErrorBound bound;
+    bool by_spans = false;           // proven span by span (else by the whole polygon at once)
 };
+
+// What proving a bound span by span costs auto, per span of the polygon: the instructions its
+// bounds take to walk a span (a line, the coarse bound, pieces where needed) in the kernel,
+// 400 to 900 under QEMU icount (make bench, setup per polygon of auto against the mappers it
+// chose, over the spans it proved; docs/accuracy.md, "The choice").
+constexpr double BOUND_SPAN_COST = 600;
 // The cheapest choosable mapper and walker, by the cost model, that draws into targets like
 // `target`, takes the texture and whose bound meets the budget on the polygon: rows or columns,
-// whichever the target and the mapper take (floors by rows, walls by columns). The polygon is set
+// whichever the target and the mapper take (floors by rows, walls by columns). The proof counts:
+// a candidate proven by the whole polygon at once (PolygonSpread, from the vertices) costs its
+// estimate, one proven span by span its estimate plus BOUND_SPAN_COST a span, and the choice is
+// the least of these (ties: the earlier candidate, rows first, in registry order). The polygon is set
 // up once, into prepared[Axis], and walked there only when a bound needs its spans (the chosen
 // mapper draws from its setup, and from its spans when walked).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
