@@ -275,7 +275,14 @@ void cmd_mappers(Context&, const StrView*, size_t) {
         r.end_array().begin_array("surfaces");
         for (int k = 0; k < raster::SURFACE_COUNT; ++k)
             if (raster::draws_through(m, raster::Surface(k))) r.item_str(raster::surface_name(raster::Surface(k)));
-        r.end_array().boolean("asm", m.asm_loop != nullptr).end_object();
+        r.end_array().boolean("asm", m.asm_loop != nullptr);
+        // whose NASM loop it runs: the first row with it (selftest checks each loop under that name)
+        for (int k = 0; m.asm_loop && k <= i; ++k)
+            if (raster::MAPPERS[k].asm_loop == m.asm_loop) {
+                r.str("asm_loop", raster::MAPPERS[k].name);
+                break;
+            }
+        r.end_object();
     }
     r.end_array().end();
 }

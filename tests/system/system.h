@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <sstream>
 #include <string>
 
 #include "qemu/harness/session.h"
@@ -29,11 +30,19 @@ inline uint32_t kernel_symbol(const std::string& name) {
     std::string cmd = "nm -P " + build_dir() + "/kernel/modexlab.elf";
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return 0;
-    char sym[256], type[8];
-    unsigned long addr = 0, found = 0;
-    while (std::fscanf(p, "%255s %7s %lx%*[^\n]", sym, type, &addr) == 3)
-        if (name == sym) found = addr;
+    // line by line: C++ symbols (lambdas in templates) run to hundreds of characters
+    std::string text;
+    char chunk[4096];
+    for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, p)) > 0;) text.append(chunk, n);
     pclose(p);
+    std::istringstream lines(text);
+    std::string line, sym, type;
+    unsigned long found = 0;
+    while (std::getline(lines, line)) {
+        std::istringstream fields(line);
+        std::string addr;
+        if (fields >> sym >> type >> addr && sym == name) found = std::stoul(addr, nullptr, 16);
+    }
     return uint32_t(found);
 }
 

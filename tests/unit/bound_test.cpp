@@ -24,7 +24,7 @@ constexpr double SLACK = 1e-6;  // the measure divides by the footprint as store
 
 int polygons_per_mapper() {
     const char* env = std::getenv("MODEXLAB_BOUND_POLYGONS");
-    return env ? std::max(1, std::atoi(env)) : 600;
+    return env ? std::max(1, std::atoi(env)) : 600 / SANITIZED_SHARE;
 }
 
 // A random polygon of one of the classes the bounds must hold on.
@@ -165,7 +165,7 @@ TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
             Axis axis = home_axis(m);
             PolygonMeter meter(m, axis);
             Tightness tight;
-            for (int f = 0; f < 8; ++f) {  // the bench's frames: 8 spread over the animation
+            for (int f = 0; f < 8; f += SANITIZED_SHARE) {  // the bench's frames: 8 spread over the animation
                 auto frame = world_frame(w, int32_t(int64_t(f) * w.world->frames / 8));
                 const Vertex* v = frame->vertices;
                 for (int32_t k = 0; k < frame->polygon_count; ++k) {

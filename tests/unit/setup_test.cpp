@@ -109,7 +109,7 @@ void expect_walks_cover(const std::vector<Vertex>& p, const ClipRect& clip, int 
 TEST(Walker, YieldsExactlyTheCoveredPixels) {
     TriangleGen gen(42);
     int drawn = 0;
-    for (int trial = 0; trial < 3000; ++trial) {
+    for (int trial = 0; trial < 3000 / SANITIZED_SHARE; ++trial) {
         std::vector<Vertex> p = gen.triangle();
         if (trial % 3 == 0) {  // a convex polygon: points on an ellipse
             p.clear();
@@ -121,7 +121,7 @@ TEST(Walker, YieldsExactlyTheCoveredPixels) {
         if (trial % 2) clip = random_clip(gen);
         ASSERT_NO_FATAL_FAILURE(expect_walks_cover(p, clip, trial, &drawn));
     }
-    EXPECT_GT(drawn, 1000000) << "the trials drew something worth checking";
+    EXPECT_GT(drawn, 1000000 / SANITIZED_SHARE) << "the trials drew something worth checking";
 }
 
 // The walker steps each edge only on the lines its extent spans (the polygon is convex): check that
@@ -174,7 +174,7 @@ TEST(Walker, ExtremesCollinearVerticesAndCentres) {
         if (trial % 4 == 1) clip = random_clip(gen);
         ASSERT_NO_FATAL_FAILURE(expect_walks_cover(p, clip, trial, &drawn));
     }
-    EXPECT_GT(drawn, 1000000) << "the trials drew something worth checking";
+    EXPECT_GT(drawn, 1000000 / SANITIZED_SHARE) << "the trials drew something worth checking";
 }
 
 TEST(Walker, SpansComeInOrderInsideTheClip) {
