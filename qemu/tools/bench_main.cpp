@@ -56,9 +56,7 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
     Args a;
     a.scenes = args.list("--scenes");
-    a.mappers = args.list("--mappers");
-    for (const std::string& m : a.mappers)
-        if (!raster::find_mapper({m.data(), m.size()})) throw UsageError("unknown mapper '" + m + "'");
+    a.mappers = known_mappers(args.list("--mappers"));
     a.frames = args.integer("--frames", 1, 1000, a.frames);
     a.out = args.text("--out", build_dir() + "/report");
     a.kernel = args.text("--kernel");

@@ -41,9 +41,7 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
     Args a;
     a.scenes = args.list("--scenes");
-    a.mappers = args.list("--mappers");
-    for (const std::string& m : a.mappers)
-        if (!raster::find_mapper({m.data(), m.size()})) throw UsageError("unknown mapper '" + m + "'");
+    a.mappers = known_mappers(args.list("--mappers"));
     a.frame = args.integer("--frame", 0, raster::MAX_FRAMES - 1, -1);
     a.report = args.text("--report", build_dir() + "/report");
     a.out = args.text("--out", build_dir() + "/gallery");

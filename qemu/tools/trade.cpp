@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "kernel/core/mapper.h"
+#include "qemu/lib/args.h"
 #include "qemu/lib/error.h"
 
 namespace harness {
@@ -78,6 +79,12 @@ std::string budget_text(double max_error) {
 std::string budget_words(const raster::Budget& b) {
     return (b.max_error < 0 ? std::string("any footprint error") : "footprint error " + budget_text(b.max_error)) +
            (b.exact_coverage ? ", exact coverage" : ", any coverage") + (b.given ? "" : ": the default");
+}
+
+std::vector<std::string> known_mappers(std::vector<std::string> names) {
+    for (const std::string& m : names)
+        if (!raster::find_mapper({m.data(), m.size()})) throw UsageError("unknown mapper '" + m + "'");
+    return names;
 }
 
 std::vector<size_t> pareto_front(const std::vector<std::pair<double, double>>& points) {

@@ -24,6 +24,10 @@ std::string budget_text(double max_error);
 // A budget in words: "footprint error 1, exact coverage: the default".
 std::string budget_words(const raster::Budget& b);
 
+// The mappers a tool's --mappers option names, each checked against the registry (UsageError
+// "unknown mapper 'X'").
+std::vector<std::string> known_mappers(std::vector<std::string> names);
+
 struct TradeRow {
     std::string scene, mapper, family, surface, walker, loop;
     uint32_t frames = 0;

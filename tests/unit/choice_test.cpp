@@ -29,8 +29,8 @@ TEST(CostModel, HasOneRowPerRegistryRowInItsOrder) {
     }
 }
 
-// The spans and pixels auto counts (and draws from, for the mappers that take spans) are the
-// walker's: the pixels the exact mapper draws.
+// The spans auto's bounds walk (and the mappers that take spans draw from) are the walker's: the
+// pixels the exact mapper draws.
 TEST(Auto, PreparesThePolygonAsTheWalkerDrawsIt) {
     TriangleGen gen(77u);
     const Mapper& exact = *find_mapper("exact");
