@@ -174,7 +174,8 @@ namespace {
 // A vertex of the polygon (its edge i's start) relative to the reference vertex, where the planes
 // are evaluated.
 struct Corner {
-    double x, y;
+    double x = 0, y = 0;
+    Corner() = default;
     Corner(const PolygonSetup& s, int i) : x(double(s.edges[i].px - s.ref_x)), y(double(s.edges[i].py - s.ref_y)) {}
 };
 double terms(const Plane& p, const Corner& c) { return magnitude(p.a0) + magnitude(p.gy * c.y) + magnitude(p.gx * c.x); }
@@ -185,23 +186,22 @@ void polygon_spread(const PolygonSetup& s, PolygonSpread* out) {
     PolygonSpread& o = *out;
     const Plane* exact[2] = {&s.pu, &s.pv};
     const Plane* affine[2] = {&s.u, &s.v};
-    double scale_q = 0, scale_p[2] = {0, 0}, scale_l[2] = {0, 0};
+    Corner far;  // the largest |x| and |y| of the vertices: each plane's terms at most |a0| + |gx| |x| + |gy| |y| there
     for (int i = 0; i < s.edge_count; ++i) {
         const Corner c(s, i);
         const double q = s.q.at(c.x, c.y);
         o.q_min = i ? (q < o.q_min ? q : o.q_min) : q;
         o.q_max = i ? larger(q, o.q_max) : q;
-        scale_q = larger(scale_q, terms(s.q, c));
+        far.x = larger(far.x, magnitude(c.x)), far.y = larger(far.y, magnitude(c.y));
         for (int t = 0; t < 2; ++t) {
             const double e = exact[t]->at(c.x, c.y) / q, l = affine[t]->at(c.x, c.y);
             o.t_min[t] = i ? (e < o.t_min[t] ? e : o.t_min[t]) : e;
             o.t_max[t] = i ? larger(e, o.t_max[t]) : e;
             o.residual[t] = i ? larger(o.residual[t], magnitude(l - e)) : magnitude(l - e);
             o.affine_abs[t] = i ? larger(o.affine_abs[t], magnitude(l)) : magnitude(l);
-            scale_p[t] = larger(scale_p[t], terms(*exact[t], c));
-            scale_l[t] = larger(scale_l[t], terms(*affine[t], c));
         }
     }
+    const double scale_q = terms(s.q, far), scale_p[2] = {terms(s.pu, far), terms(s.pv, far)}, scale_l[2] = {terms(s.u, far), terms(s.v, far)};
     // Q's extremes widened by its rounding (a Q_min at or below 0 after that: no bound from the
     // spread); each vertex value within the reference's rounding of itself, and L within its terms'
     const double q_err = 8 * EPSILON * scale_q;

@@ -32,6 +32,7 @@ struct Candidates {
     int count = 0;
     int16_t row[2 * MAPPER_LIMIT] = {};
     Axis axis[2 * MAPPER_LIMIT] = {};
+    double polygon[2 * MAPPER_LIMIT] = {}, span[2 * MAPPER_LIMIT] = {}, pixel[2 * MAPPER_LIMIT] = {};  // the cost model's row
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target) {
@@ -43,6 +44,9 @@ const Candidates& candidates(const Texture& tex, const Target& target) {
         for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {
             const Mapper& m = MAPPERS[i];
             if (!choosable(m) || !mapper_walks(m, Axis(a)) || !mapper_accepts(m, tex) || !mapper_targets(m, target, Axis(a))) continue;
+            const MapperCost& cost = MAPPER_COSTS[i];  // not measured: dearer than any measured (estimate_cost)
+            c.polygon[c.count] = cost.polygon < 0 ? 1e30 : cost.polygon, c.span[c.count] = cost.polygon < 0 ? 0 : cost.span;
+            c.pixel[c.count] = cost.polygon < 0 ? 0 : cost.pixel;
             c.row[c.count] = int16_t(i), c.axis[c.count] = Axis(a), ++c.count;
         }
     c.built = true;
@@ -64,8 +68,14 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     if (first->status != SetupStatus::Ok) return choice;
     PolygonSize size[2];
     polygon_sizes(first->setup, target.clip, size);
+    // the estimates (estimate_cost's, from the cached rows), and the cheapest (ties: the earlier)
     double cost[2 * MAPPER_LIMIT];
-    for (int k = 0; k < list.count; ++k) cost[k] = estimate_cost(MAPPER_COSTS[list.row[k]], size[int(list.axis[k])]);
+    int first_asked = 0;
+    for (int k = 0; k < list.count; ++k) {
+        const PolygonSize& z = size[int(list.axis[k])];
+        cost[k] = list.polygon[k] + list.span[k] * z.spans + list.pixel[k] * z.pixels;
+        if (cost[k] < cost[first_asked]) first_asked = k;
+    }
     bool asked[2 * MAPPER_LIMIT] = {};
     // the cheapest candidate not yet asked whose cost is below `ceiling` (ties: the earlier), or -1
     auto cheapest = [&](double ceiling) {
@@ -90,7 +100,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     // as that is below the first's
     int before[2 * MAPPER_LIMIT], n = 0;
     double ceiling = 1e300;
-    for (int k; (k = cheapest(1e300)) >= 0;) {
+    for (int k = first_asked; k >= 0; k = cheapest(1e300)) {
         if (ask(k, true)) {
             ceiling = cost[k];
             break;
