@@ -32,7 +32,7 @@ struct Candidates {
     int count = 0;
     int16_t row[2 * MAPPER_LIMIT] = {};
     Axis axis[2 * MAPPER_LIMIT] = {};
-    double polygon[2 * MAPPER_LIMIT] = {}, span[2 * MAPPER_LIMIT] = {}, pixel[2 * MAPPER_LIMIT] = {};  // the cost model's row
+    CostRow cost[2 * MAPPER_LIMIT] = {};  // the cost model's row
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target) {
@@ -44,10 +44,7 @@ const Candidates& candidates(const Texture& tex, const Target& target) {
         for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {
             const Mapper& m = MAPPERS[i];
             if (!choosable(m) || !mapper_walks(m, Axis(a)) || !mapper_accepts(m, tex) || !mapper_targets(m, target, Axis(a))) continue;
-            const MapperCost& cost = MAPPER_COSTS[i];  // not measured: dearer than any measured (estimate_cost)
-            c.polygon[c.count] = cost.polygon < 0 ? 1e30 : cost.polygon, c.span[c.count] = cost.polygon < 0 ? 0 : cost.span;
-            c.pixel[c.count] = cost.polygon < 0 ? 0 : cost.pixel;
-            c.row[c.count] = int16_t(i), c.axis[c.count] = Axis(a), ++c.count;
+            c.row[c.count] = int16_t(i), c.axis[c.count] = Axis(a), c.cost[c.count] = cost_row(MAPPER_COSTS[i]), ++c.count;
         }
     c.built = true;
     return c;
@@ -68,12 +65,11 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     if (first->status != SetupStatus::Ok) return choice;
     PolygonSize size[2];
     polygon_sizes(first->setup, target.clip, size);
-    // the estimates (estimate_cost's, from the cached rows), and the cheapest (ties: the earlier)
+    // the estimates, and the cheapest (ties: the earlier)
     double cost[2 * MAPPER_LIMIT];
     int first_asked = 0;
     for (int k = 0; k < list.count; ++k) {
-        const PolygonSize& z = size[int(list.axis[k])];
-        cost[k] = list.polygon[k] + list.span[k] * z.spans + list.pixel[k] * z.pixels;
+        cost[k] = estimate_cost(list.cost[k], size[int(list.axis[k])]);
         if (cost[k] < cost[first_asked]) first_asked = k;
     }
     bool asked[2 * MAPPER_LIMIT] = {};

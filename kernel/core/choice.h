@@ -41,9 +41,14 @@ struct PolygonSize {
     double spans, pixels;
 };
 void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size[2]);  // [Axis]
-inline double estimate_cost(const MapperCost& c, const PolygonSize& s) {  // not measured (-1): dearer than any measured mapper
-    return c.polygon < 0 ? 1e30 : c.polygon + c.span * s.spans + c.pixel * s.pixels;
-}
+// A row of the model as the estimate computes with it: not measured (-1), dearer than any measured
+// mapper.
+struct CostRow {
+    double polygon = 0, span = 0, pixel = 0;
+};
+inline CostRow cost_row(const MapperCost& c) { return c.polygon < 0 ? CostRow{1e30, 0, 0} : CostRow{c.polygon, c.span, c.pixel}; }
+inline double estimate_cost(const CostRow& c, const PolygonSize& s) { return c.polygon + c.span * s.spans + c.pixel * s.pixels; }
+inline double estimate_cost(const MapperCost& c, const PolygonSize& s) { return estimate_cost(cost_row(c), s); }
 
 // Whether auto may choose the mapper: not auto itself, and a derived bound (the classics' are not
 // yet: `unbounded` cannot say which polygons they refuse).

@@ -76,6 +76,17 @@ void runs_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride
     }
 }
 
+// Whether 16.16 holds chords of up to `steps` steps anywhere on the polygon (the whole-polygon
+// bounds): from the largest |t| (clamp; repeat reduces the start first) by the largest |t'|.
+bool chords_fit(const BoundContext& c, PolygonSpread& p, const PolygonSetup& s, double steps) {
+    const int32_t size[2] = {c.tex.width, c.tex.height};
+    for (int t = 0; t < 2; ++t) {
+        const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t];
+        if (!fits_16_16(start, spread_max_step(p, s, t, c.axis), steps, size[t], c.tex.wrap)) return false;
+    }
+    return true;
+}
+
 // The bound over pixels k0..k1 of the run whose chord goes from exact point `from` to `end`: the
 // chord's deviation (lines_bound), within 16.16 rounding from `from`; clears `fits` where 16.16
 // may not hold it.
@@ -141,11 +152,7 @@ ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count
     const double length = N < BOUND_PIECE ? N : BOUND_PIECE;
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {  // the coarse bound below, over the polygon
         const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
-        for (int t = 0; t < 2; ++t) {
-            const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t];
-            if (!fits_16_16(start, spread_max_step(p, s, t, c.axis), steps, size[t], c.tex.wrap)) return NO_BOUND;
-        }
-        return spread_chords_bound(p, s, c.axis, h, (1 + steps) * HALF_ULP_16_16);
+        return chords_fit(c, p, s, steps) ? spread_chords_bound(p, s, c.axis, h, (1 + steps) * HALF_ULP_16_16) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
@@ -176,15 +183,10 @@ ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count
 // chords bound for one pixel; and 16.16 holds runs of up to ADAPTIVE_LONGEST pixels.
 template <int QUARTERS>
 ErrorBound adaptive_bound(const BoundContext& c, const Vertex* vertices, int count) {
-    const int32_t size[2] = {c.tex.width, c.tex.height};
     const double budget = QUARTERS / 4.0;
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
         const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, steps = ADAPTIVE_LONGEST - 1 < last ? ADAPTIVE_LONGEST - 1 : last;
-        for (int t = 0; t < 2; ++t) {
-            const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t];
-            if (!fits_16_16(start, spread_max_step(p, s, t, c.axis), steps, size[t], c.tex.wrap)) return NO_BOUND;
-        }
-        return larger(budget, spread_chords_bound(p, s, c.axis, 1, 2 * HALF_ULP_16_16));
+        return chords_fit(c, p, s, steps) ? larger(budget, spread_chords_bound(p, s, c.axis, 1, 2 * HALF_ULP_16_16)) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         const SpanLine l = span_line(s, c.axis, span);

@@ -118,7 +118,7 @@ double estimated_speed(const FrameMap& map) {
         if (!p.mapper) continue;
         const raster::MapperCost& c = raster::MAPPER_COSTS[p.mapper - raster::MAPPERS];
         if (c.polygon < 0) return -1;
-        instructions += c.polygon + c.span * p.spans + c.pixel * p.pixels;
+        instructions += raster::estimate_cost(c, raster::PolygonSize{double(p.spans), double(p.pixels)});
         pixels += p.pixels;
     }
     return pixels > 0 ? instructions / pixels : -1;
