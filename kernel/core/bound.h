@@ -186,7 +186,8 @@ constexpr double HALF_ULP_16_16 = 1.0 / 131072.0;
 // range, and the values in range or wrapping harmlessly (a repeating size that divides 65536).
 bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap);
 
-// For mappers whose error is not (yet) bounded: whether they draw the polygon, and no bound.
+// For mappers whose error is not (yet) bounded: whether they may draw the polygon (they take the
+// texture), and no bound.
 ErrorBound unbounded(const BoundContext& c, const Vertex* vertices, int count);
 
 // Calls f(span, setup) for every span of the polygon inside the clip (the prepared ones, or the

@@ -3,21 +3,34 @@
 #include "kernel/mappers/quake.h"
 
 #include "kernel/core/asm_offsets.h"
+#include "kernel/core/bound.h"
 #include "kernel/core/selftest.h"
 
 #include "kernel/mappers/classic.h"
+#include "kernel/mappers/subdiv.h"
 
 namespace raster::quake {
 
 namespace {
 
+constexpr double MAX_UNSHIFTED = 32000;
+
+// Whether the driver takes the polygon's texture coordinates, and the whole periods that shift them
+// into the texture (sadjust, tadjust).
+SetupStatus takes(const Vertex* vertices, int count, const Texture& tex, double* shift_u, double* shift_v) {
+    SetupStatus status = classic::texture_shift(vertices, count, tex, shift_u, shift_v);
+    if (status != SetupStatus::Ok) return status;
+    for (int i = 0; i < count; ++i)  // s = (int)(s/z * z) must hold the unshifted u in 16.16
+        if (vertices[i].u > MAX_UNSHIFTED || vertices[i].u < -MAX_UNSHIFTED || vertices[i].v > MAX_UNSHIFTED || vertices[i].v < -MAX_UNSHIFTED)
+            return SetupStatus::OutOfRange;
+    return SetupStatus::Ok;
+}
+
 template <int SHIFT>
 SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
     double shift_u, shift_v;
-    SetupStatus status = classic::texture_shift(vertices, count, c.tex, &shift_u, &shift_v);
+    SetupStatus status = takes(vertices, count, c.tex, &shift_u, &shift_v);
     if (status != SetupStatus::Ok) return status;
-    for (int i = 0; i < count; ++i)  // s = (int)(s/z * z) must hold the unshifted u in 16.16
-        if (vertices[i].u > 32000 || vertices[i].u < -32000 || vertices[i].v > 32000 || vertices[i].v < -32000) return SetupStatus::OutOfRange;
     PolygonSetup setup;
     status = setup_polygon(vertices, count, &setup, PLANES_PERSPECTIVE);
     if (status != SetupStatus::Ok) return status;
@@ -57,6 +70,85 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
 
 SetupStatus draw16(const DrawContext& c, const Vertex* vertices, int count) { return draw<4>(c, vertices, count); }
 SetupStatus draw8(const DrawContext& c, const Vertex* vertices, int count) { return draw<3>(c, vertices, count); }
+
+namespace {
+
+constexpr double EPSILON = 2.220446049250313e-16;  // 2^-52
+constexpr double UNIT = 1.0 / 65536;                // a 16.16 unit, in texels
+
+// Quake's arithmetic on a polygon (docs/accuracy.md, "Quake's spans"), in texels from the chord
+// between the exact values at its segment ends:
+// - each end is chop(s/z * z) + sadjust, clamped: the chop within a unit; Quake's own double
+//   evaluation within `evaluation` below; the clamp into [0 or n units, size - 1 unit] moves it by
+//   no more than the exact value's distance from that range, which is at most n units when the
+//   exact value lies in [0, size] (P/Q over a convex polygon stays between its values at the
+//   vertices, which the shift puts in the texture), plus how far the vertices' values may leave it;
+// - the step (snext - s) >> shift (or / (count - 1) on the last segment) is within a unit of the
+//   chord's slope: the drawn value within j units after j steps.
+// NO_BOUND (as `fixed`) where the spread cannot say (Q not positive from the vertices) or s/z * z
+// might not fit 32 bits.
+SegmentArithmetic arithmetic(const BoundContext& c, const PolygonSetup& s, const PolygonSpread& p, const double* shift, int n) {
+    SegmentArithmetic a;
+    a.wraps = false;
+    a.per_step = UNIT;
+    a.fixed = NO_BOUND;
+    if (!(p.q_min > 0)) return a;
+    // every term summed into s/z, t/z and 1/z at a pixel of the clip: the plane at pixel (0, 0)
+    // (two products, two sums), the rows down and the pixels across (two each), the segments' steps
+    // (at most the clip's width more, one sum each) and the last (two): each result within half an
+    // epsilon of the terms' sum
+    const double one = double(SUBPIXEL_ONE);
+    const double xs = larger(magnitude(double(c.clip.x0)), magnitude(double(c.clip.x1))), ys = larger(magnitude(double(c.clip.y0)), magnitude(double(c.clip.y1)));
+    const double X = magnitude(centre_x(s, 0)) + 2 * xs * one, Y = magnitude(centre_y(s, 0)) + ys * one;
+    auto terms = [&](const Plane& q) { return magnitude(q.a0) + magnitude(q.gy) * Y + magnitude(q.gx) * X; };
+    const double operations = 10 + xs / n + 1;
+    const double dq = operations * EPSILON / 2 * terms(s.q) * (1 + 1e-9);
+    if (!(dq < p.q_min / 2)) return a;
+    const Plane* plane[2] = {&s.pu, &s.pv};
+    const int32_t size[2] = {c.tex.width, c.tex.height};
+    double worst = 0;
+    for (int t = 0; t < 2; ++t) {
+        const double most = p.t_abs[t] + p.evaluation[t];
+        // (P + dP) / (Q - dQ) against P / Q, Q at least q_min and dQ at most half of it; then the
+        // divide and the product, each within half an epsilon
+        const double dp = operations * EPSILON / 2 * terms(*plane[t]) * (1 + 1e-9);
+        const double evaluation = (2 * (dp + most * dq) / p.q_min + 2 * EPSILON * most) * (1 + 1e-9);
+        if (!((most + evaluation) / UNIT < 2147483647.0 - 1)) return a;  // chop: 0x80000000 beyond
+        const double lo = p.t_min[t] + shift[t] - p.evaluation[t], hi = p.t_max[t] + shift[t] + p.evaluation[t];
+        const double outside = larger(0.0, larger(-lo, hi - double(size[t])));
+        worst = larger(worst, (1 + n) * UNIT + evaluation + outside);
+    }
+    a.fixed = worst;
+    return a;
+}
+
+template <int SHIFT>
+ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
+    ErrorBound b;
+    double shift[2];
+    if (!mapper_accepts(c.mapper, c.tex) || takes(vertices, count, c.tex, &shift[0], &shift[1]) != SetupStatus::Ok) return b;
+    PolygonSetup own_setup;
+    PolygonSpread own_spread;
+    const PolygonSetup* s = &own_setup;
+    const PolygonSpread* p = &own_spread;
+    if (c.prepared) {
+        if (c.prepared->status != SetupStatus::Ok) return b;
+        s = &c.prepared->setup, p = &prepared_spread(c.prepared);
+    } else {
+        if (setup_polygon(vertices, count, &own_setup, PLANES_ALL) != SetupStatus::Ok) return b;
+        polygon_spread(own_setup, &own_spread);
+    }
+    const SegmentArithmetic a = arithmetic(c, *s, *p, shift, 1 << SHIFT);
+    if (a.fixed < NO_BOUND) return segments_bound(c, vertices, count, 1 << SHIFT, a);
+    b.draws = b.exact_coverage = true;
+    b.footprint = NO_BOUND;
+    return b;
+}
+
+}  // namespace
+
+ErrorBound bound16(const BoundContext& c, const Vertex* vertices, int count) { return bound<4>(c, vertices, count); }
+ErrorBound bound8(const BoundContext& c, const Vertex* vertices, int count) { return bound<3>(c, vertices, count); }
 
 }  // namespace raster::quake
 

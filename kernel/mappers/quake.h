@@ -39,5 +39,9 @@ namespace raster::quake {
 
 SetupStatus draw16(const DrawContext& c, const Vertex* vertices, int count);  // quake-subdiv16
 SetupStatus draw8(const DrawContext& c, const Vertex* vertices, int count);   // quake-subdiv8
+// Their error bounds: the chords of persp-subdiv-16 and -8 with Quake's arithmetic (the chop, the
+// clamps, the floored steps, its own evaluation of s/z * z).
+ErrorBound bound16(const BoundContext& c, const Vertex* vertices, int count);
+ErrorBound bound8(const BoundContext& c, const Vertex* vertices, int count);
 
 }  // namespace raster::quake

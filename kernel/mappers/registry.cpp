@@ -82,10 +82,10 @@ const Mapper MAPPERS[] = {
      fatmap::draw_lut, check_fatmap_lut, unbounded},
     {"quake-subdiv16", "classic", "id Software, WinQuake d_scan.c / d_draw16.s (1996-99)",
      "perspective-correct every 16 pixels and at each span's last pixel, affine between (steps floored); s, t clamped into the texture; exact coverage (our walker)",
-     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw16, check_quake, unbounded},
+     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw16, check_quake, quake::bound16},
     {"quake-subdiv8", "classic", "id Software, WinQuake d_scan.c D_DrawSpans8 / d_draw.s",
      "as quake-subdiv16 with 8-pixel segments",
-     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw8, check_quake, unbounded},
+     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw8, check_quake, quake::bound8},
     {"auto", "ours", "the scene's budget: the cheapest mapper proven to meet it, polygon by polygon",
      "each polygon by the cheapest of our bounded mappers (the cost model: make bench) whose error bound meets the scene's budget "
      "(without a budget line: footprint error 1, exact coverage); exact coverage",

@@ -88,9 +88,10 @@ bool chords_fit(const BoundContext& c, PolygonSpread& p, const PolygonSetup& s, 
 }
 
 // The bound over pixels k0..k1 of the run whose chord goes from exact point `from` to `end`: the
-// chord's deviation (lines_bound), within 16.16 rounding from `from`; clears `fits` where 16.16
-// may not hold it.
-double run_bound(const SpanLine& l, const Texture& tex, double from, double end, double k0, double k1, bool* fits) {
+// chord's deviation (lines_bound), within the arithmetic's rounding after k1 - from steps; clears
+// `fits` where 16.16 may not hold it.
+double run_bound(const SpanLine& l, const Texture& tex, const SegmentArithmetic& arithmetic, double from, double end, double k0, double k1,
+                 bool* fits) {
     const int32_t size[2] = {tex.width, tex.height};
     double a[2], step[2];
     for (int t = 0; t < 2; ++t) {
@@ -98,9 +99,9 @@ double run_bound(const SpanLine& l, const Texture& tex, double from, double end,
         step[t] = end > from ? (t1 - t0) / (end - from) : 0.0;
         a[t] = t0 - step[t] * from;
         double start = tex.wrap == Wrap::Repeat ? 0.0 : t0;  // repeat: reduced into [0, size) first
-        *fits = *fits && fits_16_16(start, step[t], k1 - from, size[t], tex.wrap);
+        *fits = *fits && (!arithmetic.wraps || fits_16_16(start, step[t], k1 - from, size[t], tex.wrap));
     }
-    return lines_bound(l, a, step, k0, k1, (1 + k1 - from) * HALF_ULP_16_16);
+    return lines_bound(l, a, step, k0, k1, arithmetic.at(k1 - from));
 }
 
 }  // namespace
@@ -142,17 +143,15 @@ void adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t st
 }
 
 // The bound (docs/accuracy.md, "Error bounds"): each segment runs from the exact value at its
-// first pixel along the chord to the exact value at the next exact point, to within 16.16 rounding
-// (half a unit at the start and in each step); the chord's deviation from the exact mapping is
-// measured piece by piece (a segment, or BOUND_PIECE pixels of a longer one), each over its own
-// smallest footprint.
-template <int N>
-ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count) {
+// first pixel along the chord to the exact value at the next exact point, to within the
+// arithmetic's rounding; the chord's deviation from the exact mapping is measured piece by piece (a
+// segment, or BOUND_PIECE pixels of a longer one), each over its own smallest footprint.
+ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int count, double N, const SegmentArithmetic& a) {
     const int32_t size[2] = {c.tex.width, c.tex.height};
     const double length = N < BOUND_PIECE ? N : BOUND_PIECE;
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {  // the coarse bound below, over the polygon
         const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
-        return chords_fit(c, p, s, steps) ? spread_chords_bound(p, s, c.axis, h, (1 + steps) * HALF_ULP_16_16) : NO_BOUND;
+        return !a.wraps || chords_fit(c, p, s, steps) ? spread_chords_bound(p, s, c.axis, h, a.at(steps)) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
@@ -166,15 +165,20 @@ ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count
         // along a span); where that may not fit 16.16, no coarse bound: the pieces one by one
         auto coarse = [&](double k0, double k1) {
             const double from = segment(k0), reach = next_exact(k1), h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
-            for (int t = 0; t < 2; ++t) {
+            for (int t = 0; t < 2 && a.wraps; ++t) {
                 double start = c.tex.wrap == Wrap::Repeat ? 0.0 : larger(magnitude(span_exact(l, t, from)), magnitude(span_exact(l, t, reach)));
                 if (!fits_16_16(start, max_step_along(l, t, from, reach), steps, size[t], c.tex.wrap)) return NO_BOUND;
             }
-            return chords_bound(l, h, from, reach, (1 + steps) * HALF_ULP_16_16);
+            return chords_bound(l, h, from, reach, a.at(steps));
         };
-        auto piece = [&](double k0, double k1) { return run_bound(l, c.tex, segment(k0), next_exact(k0), k0, k1, fits); };  // on its chord
+        auto piece = [&](double k0, double k1) { return run_bound(l, c.tex, a, segment(k0), next_exact(k0), k0, k1, fits); };  // on its chord
         return span_bound(c, 0, last, length, coarse, piece);
     });
+}
+
+template <int N>
+ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count) {
+    return segments_bound(c, vertices, count, N, SegmentArithmetic{});
 }
 
 // persp-adaptive-B's bound: its runs as it draws them, each on its chord (run_bound, pieces of at
@@ -198,7 +202,7 @@ ErrorBound adaptive_bound(const BoundContext& c, const Vertex* vertices, int cou
             const double from = double(k), end = k + len < span.count ? double(k + len) : last;
             for (double k0 = from; k0 < double(k + len); k0 += BOUND_PIECE) {
                 const double k1 = k0 + BOUND_PIECE - 1 < double(k + len - 1) ? k0 + BOUND_PIECE - 1 : double(k + len - 1);
-                worst = larger(worst, run_bound(l, c.tex, from, end, k0, k1, fits));
+                worst = larger(worst, run_bound(l, c.tex, SegmentArithmetic{}, from, end, k0, k1, fits));
             }
             k += len;
         }

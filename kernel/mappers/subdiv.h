@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "kernel/core/bound.h"
 #include "kernel/core/mapper.h"
 
 namespace raster {
@@ -35,12 +36,21 @@ void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
 template <int N>
 ErrorBound subdiv_bound(const BoundContext& c, const Vertex* vertices, int count);
 
+// The bound of any mapper whose u and v follow, along each span of its walker, chords between the
+// exact values at pixels 0, N, 2N, ... and the last (persp-subdiv-N, constant-depth, Quake's), with
+// its arithmetic: how far the drawn coordinates may be from the chord, and whether they wrap.
+struct SegmentArithmetic {
+    bool wraps = true;                 // 16.16 that may wrap (fits_16_16 must hold); false: clamped, nothing to check
+    double fixed = HALF_ULP_16_16;     // texels at every pixel (ours: half a 16.16 unit at the start)
+    double per_step = HALF_ULP_16_16;  // texels each step from the segment's first pixel adds (ours: half a unit)
+    double at(double steps) const { return fixed + steps * per_step; }
+};
+ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int count, double N, const SegmentArithmetic& arithmetic);
+
 // persp-adaptive-B's run from pixel k of the span (line l): the longest, up to ADAPTIVE_LONGEST
 // pixels and the span's end, whose chord chords_bound keeps within `budget` footprints; one pixel
 // where none is.
 constexpr int32_t ADAPTIVE_LONGEST = 256;
-struct SpanLine;
-struct ChordTerms;
 int32_t adaptive_run(const SpanLine& l, const ChordTerms& terms, int32_t k, double budget);
 template <int QUARTERS>
 void adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
