@@ -69,7 +69,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     double cost[2 * MAPPER_LIMIT];
     int first_asked = 0;
     for (int k = 0; k < list.count; ++k) {
-        cost[k] = estimate_cost(list.cost[k], size[int(list.axis[k])]);
+        cost[k] = estimate_cost(list.cost[k], size[int(list.axis[k])]) + whole_proof_cost(MAPPERS[list.row[k]]);
         if (cost[k] < cost[first_asked]) first_asked = k;
     }
     bool asked[2 * MAPPER_LIMIT] = {};

@@ -66,12 +66,19 @@ struct Choice {
 // 400 to 900 under QEMU icount (make bench, setup per polygon of auto against the mappers it
 // chose, over the spans it proved; docs/accuracy.md, "The choice").
 constexpr double BOUND_SPAN_COST = 600;
+// What asking a bound of the whole polygon costs: the polygon's spread from its vertices and the
+// bound from it, about 1400 instructions (1430 for fast-affine's on the mesh, callgrind on the
+// 32-bit host build); nothing for a mapper that promises the reference itself (exact: bound 0).
+constexpr double BOUND_WHOLE_COST = 1400;
+inline double whole_proof_cost(const Mapper& m) { return m.guarantee.max_error == 0 ? 0 : BOUND_WHOLE_COST; }
 // The cheapest choosable mapper and walker, by the cost model, that draws into targets like
 // `target`, takes the texture and whose bound meets the budget on the polygon: rows or columns,
 // whichever the target and the mapper take (floors by rows, walls by columns). The proof counts:
-// a candidate proven by the whole polygon at once (PolygonSpread, from the vertices) costs its
-// estimate, one proven span by span its estimate plus BOUND_SPAN_COST a span, and the choice is
-// the least of these (ties: the earlier candidate, rows first, in registry order). The polygon is set
+// every candidate is asked for the whole polygon at once first (PolygonSpread, from the vertices),
+// so one proven that way costs its estimate plus whole_proof_cost, one proven span by span that
+// plus BOUND_SPAN_COST a span, and the choice is the least of these (ties: the earlier candidate,
+// rows first, in registry order): where the reference costs less than proving anything cheaper,
+// exact, unasked. The polygon is set
 // up once, into prepared[Axis], and walked there only when a bound needs its spans (the chosen
 // mapper draws from its setup, and from its spans when walked).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,

@@ -25,8 +25,8 @@ const MapperCost MAPPER_COSTS[] = {
     {"fatmap-256", 1726.5f, 318.19f, 9.725f}, // 4 scenes
     {"fatmap-256-16", 1726.5f, 323.19f, 8.725f}, // 4 scenes
     {"fatmap-lut", 1768.2f, 325.25f, 3.091f}, // 3 scenes
-    {"quake-subdiv16", 2606.9f, 373.06f, 12.385f}, // 5 scenes
-    {"quake-subdiv8", 2606.9f, 363.92f, 18.598f}, // 5 scenes
+    {"quake-subdiv16", 2611.9f, 373.27f, 12.404f}, // 5 scenes
+    {"quake-subdiv8", 2611.9f, 364.14f, 18.617f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
