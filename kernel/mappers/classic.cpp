@@ -24,6 +24,10 @@ double period_shift(double lo, int32_t size, Wrap wrap) {
 }  // namespace
 
 SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double* shift_u, double* shift_v) {
+    return texture_shift(in, n, tex, double(tex.width), double(tex.height), shift_u, shift_v);
+}
+
+SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double limit_u, double limit_v, double* shift_u, double* shift_v) {
     if (n > MAX_VERTICES) return SetupStatus::TooManyVertices;
     if (n < 3) return SetupStatus::Degenerate;
     for (int i = 0; i < n; ++i) {
@@ -41,7 +45,7 @@ SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double* s
     *shift_v = period_shift(lo_v, tex.height, tex.wrap);
     for (int i = 0; i < n; ++i) {
         double u = in[i].u + *shift_u, t = in[i].v + *shift_v;
-        if (u < 0 || u > double(tex.width) || t < 0 || t > double(tex.height)) return SetupStatus::OutsideTexture;
+        if (u < 0 || u > limit_u || t < 0 || t > limit_v) return SetupStatus::OutsideTexture;
     }
     return SetupStatus::Ok;
 }

@@ -63,6 +63,9 @@ constexpr int32_t MAX_COORD = 8192;
 // shifted coordinates still leave [0, width] x [0, height], OutOfRange for coordinates beyond
 // MAX_COORD or non-finite texture coordinates. Every classic's driver starts with it.
 SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double* shift_u, double* shift_v);
+// The same with the shifted coordinates required to lie in [0, limit_u] x [0, limit_v] instead
+// (loops that wrap at the texture's size and hold more in their registers).
+SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double limit_u, double limit_v, double* shift_u, double* shift_v);
 
 // Converts a polygon: x and y rounded to the nearest pixel corner (ties up); clockwise screen order
 // (the classics relied on back-face culling for it; here the winding is fixed up instead); texture

@@ -45,5 +45,9 @@ namespace raster::fatmap {
 
 SetupStatus draw_256(const DrawContext& c, const Vertex* vertices, int count);  // fatmap-256, fatmap-256-16
 SetupStatus draw_lut(const DrawContext& c, const Vertex* vertices, int count);  // fatmap-lut
+// Their error bounds: his rows set up again and each row's lines against the exact mapping.
+ErrorBound bound_256(const BoundContext& c, const Vertex* vertices, int count);     // fatmap-256
+ErrorBound bound_256_16(const BoundContext& c, const Vertex* vertices, int count);  // fatmap-256-16
+ErrorBound bound_lut(const BoundContext& c, const Vertex* vertices, int count);     // fatmap-lut
 
 }  // namespace raster::fatmap

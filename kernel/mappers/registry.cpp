@@ -72,14 +72,14 @@ const Mapper MAPPERS[] = {
      NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(hecker_loop), hecker::draw, check_hecker, unbounded},
     {"fatmap-256", "classic", "Byggmastar, fatmap.txt (1996): the constant-delta setup and the 5-tick loop",
      "affine; whole-pixel vertices, x truncated, no prestep; 8-bit fractions (\"shaky\"); 256 x 256 only, wraps",
-     NO_GUARANTEE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap_loop), fatmap::draw_256, check_fatmap, unbounded},
+     NO_GUARANTEE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap_loop), fatmap::draw_256, check_fatmap, fatmap::bound_256},
     {"fatmap-256-16", "classic", "Byggmastar, fatmap.txt setup with fatmap2.txt's 8:16 loop (Simmons)",
      "as fatmap-256 with 16-bit fractions in the loop",
-     NO_GUARANTEE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap16_loop), fatmap::draw_256, check_fatmap, unbounded},
+     NO_GUARANTEE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap16_loop), fatmap::draw_256, check_fatmap, fatmap::bound_256_16},
     {"fatmap-lut", "classic", "Byggmastar, fatmap.txt section 13: the table-lookup loop",
      "affine; every scanline starts at the table's first entry: its start fractions dropped, up to a texel off on each axis and drifting; 256 x 256 only, cannot wrap",
      NO_GUARANTEE, NEED_ALIGNED256 | NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fatmap_lut_loop),
-     fatmap::draw_lut, check_fatmap_lut, unbounded},
+     fatmap::draw_lut, check_fatmap_lut, fatmap::bound_lut},
     {"quake-subdiv16", "classic", "id Software, WinQuake d_scan.c / d_draw16.s (1996-99)",
      "perspective-correct every 16 pixels and at each span's last pixel, affine between (steps floored); s, t clamped into the texture; exact coverage (our walker)",
      EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw16, check_quake, quake::bound16},
@@ -87,8 +87,8 @@ const Mapper MAPPERS[] = {
      "as quake-subdiv16 with 8-pixel segments",
      EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw8, check_quake, quake::bound8},
     {"auto", "ours", "the scene's budget: the cheapest mapper proven to meet it, polygon by polygon",
-     "each polygon by the cheapest of our bounded mappers (the cost model: make bench) whose error bound meets the scene's budget "
-     "(without a budget line: footprint error 1, exact coverage); exact coverage",
+     "each polygon by the cheapest of the bounded mappers (the cost model: make bench) whose error bound meets the scene's budget "
+     "(without a budget line: footprint error 1, exact coverage); exact coverage unless the budget allows any",
      EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, nullptr, nullptr, nullptr, nullptr, nullptr, auto_bound, true},
 };
 const int MAPPER_COUNT = sizeof(MAPPERS) / sizeof(MAPPERS[0]);

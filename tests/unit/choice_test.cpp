@@ -134,8 +134,10 @@ TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
                     if (b.max_error >= 0) {
                         EXPECT_LE(m.max_footprint_error, b.max_error + 1e-6) << what;
                     }
-                    EXPECT_EQ(m.gaps, 0u) << what;
-                    EXPECT_EQ(m.overdraw, 0u) << what;
+                    if (b.exact_coverage) {  // else a classic's own fill convention may draw
+                        EXPECT_EQ(m.gaps, 0u) << what;
+                        EXPECT_EQ(m.overdraw, 0u) << what;
+                    }
                     RenderStats stats;
                     render_world_frame(w, *frame, a, axis, &stats);
                     uint32_t polygons = 0, pixels = 0;
