@@ -50,8 +50,8 @@ inline CostRow cost_row(const MapperCost& c) { return c.polygon < 0 ? CostRow{1e
 inline double estimate_cost(const CostRow& c, const PolygonSize& s) { return c.polygon + c.span * s.spans + c.pixel * s.pixels; }
 inline double estimate_cost(const MapperCost& c, const PolygonSize& s) { return estimate_cost(cost_row(c), s); }
 
-// Whether auto may choose the mapper: not auto itself, and a derived bound (X-Sharp's and Hecker's
-// are not yet: `unbounded`).
+// Whether auto may choose the mapper: not auto itself, and a derived bound (not `unbounded`, the
+// placeholder a new mapper's row starts with).
 bool choosable(const Mapper& m);
 
 struct Choice {

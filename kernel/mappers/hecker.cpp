@@ -3,6 +3,7 @@
 #include "kernel/mappers/hecker.h"
 
 #include "kernel/core/asm_offsets.h"
+#include "kernel/core/bound.h"
 #include "kernel/core/selftest.h"
 
 #include "kernel/mappers/classic.h"
@@ -159,12 +160,12 @@ void affine_piece(const DrawContext& c, uint8_t* row, int64_t x0, int64_t n, int
     tally(c.stats, 1, uint32_t(a.count));
 }
 
-// SUBAFXFL's DrawScanLine: subdivide every 8 pixels; the last piece aims at the last pixel.
-void draw_scan_line(const DrawContext& c, const Gradients& g, const Edge& left, const Edge& right) {
+// SUBAFXFL's DrawScanLine: subdivide every 8 pixels; the last piece aims at the last pixel. Calls
+// piece(x0, n, u, v, du, dv) for each affine piece: pixels [x0, x0 + n) from 16.16 u, v at x0.
+template <typename F>
+void scan_line_pieces(const Gradients& g, const Edge& left, const Edge& right, F&& piece) {
     int64_t x_start = left.x, width = right.x - x_start;
     if (width <= 0) return;
-    const Target& t = c.target;
-    uint8_t* row = t.base + left.y * t.pitch;
     double one_over_z_left = left.one_over_z, u_over_z_left = left.u_over_z, v_over_z_left = left.v_over_z;
     double d_one_over_z_aff = g.d_one_over_z_dx * AFFINE_LENGTH;
     double d_u_over_z_aff = g.d_u_over_z_dx * AFFINE_LENGTH, d_v_over_z_aff = g.d_v_over_z_dx * AFFINE_LENGTH;
@@ -182,7 +183,7 @@ void draw_scan_line(const DrawContext& c, const Gradients& g, const Edge& left, 
         double u_right = z_right * u_over_z_right, v_right = z_right * v_over_z_right;
         int32_t u = to_fixed16_16(u_left) + g.du_dx_modifier, v = to_fixed16_16(v_left) + g.dv_dx_modifier;
         int32_t du = to_fixed16_16(u_right - u_left) / AFFINE_LENGTH, dv = to_fixed16_16(v_right - v_left) / AFFINE_LENGTH;
-        affine_piece(c, row, x, AFFINE_LENGTH, u, v, du, dv);
+        piece(x, int64_t(AFFINE_LENGTH), u, v, du, dv);
         x += AFFINE_LENGTH;
         u_left = u_right;
         v_left = v_right;
@@ -199,10 +200,14 @@ void draw_scan_line(const DrawContext& c, const Gradients& g, const Edge& left, 
         du = to_fixed16_16(u_right - u_left) / int32_t(width_mod_length - 1);
         dv = to_fixed16_16(v_right - v_left) / int32_t(width_mod_length - 1);
     }
-    affine_piece(c, row, x, width_mod_length, u, v, du, dv);
+    piece(x, width_mod_length, u, v, du, dv);
 }
 
-void draw_triangle(const DrawContext& c, const Vertex28* v) {
+// A triangle as Hecker walks it: the gradients, the three edges, then `ready()` (the setup done)
+// and line(g, left, right) for every scan line inside the clip, the upper half between top-middle
+// and top-bottom, then the lower half (his two loops).
+template <typename R, typename F>
+void walk_triangle(const Vertex28* v, const ClipRect& clip, R&& ready, F&& line) {
     Gradients g;
     if (!make_gradients(v, &g)) return;
     // top, middle, bottom by y; the middle vertex is on the left when it lies left of top-bottom
@@ -213,17 +218,12 @@ void draw_triangle(const DrawContext& c, const Vertex28* v) {
     int64_t side = int64_t(v[bottom].x_28_4 - v[top].x_28_4) * (v[middle].y_28_4 - v[top].y_28_4) - int64_t(v[bottom].y_28_4 - v[top].y_28_4) * (v[middle].x_28_4 - v[top].x_28_4);
     bool middle_is_left = side > 0;
     Edge top_to_bottom(g, v, top, bottom), top_to_middle(g, v, top, middle), middle_to_bottom(g, v, middle, bottom);
-    setup_done(c);
-    const ClipRect& clip = c.target.clip;
-    // the upper half between top-middle and top-bottom, then the lower half (Hecker's two loops)
+    ready();
     auto scan = [&](Edge& short_edge) {
         Edge* left = middle_is_left ? &short_edge : &top_to_bottom;
         Edge* right = middle_is_left ? &top_to_bottom : &short_edge;
         for (int64_t h = short_edge.height; h-- > 0;) {
-            if (left->y >= clip.y0 && left->y < clip.y1) {
-                // the span routine (its divides and pieces) is the inner loop
-                emit(c.stats->probe, c.stats, 0, 0, [&] { draw_scan_line(c, g, *left, *right); });
-            }
+            if (left->y >= clip.y0 && left->y < clip.y1) line(g, *left, *right);
             short_edge.step();
             top_to_bottom.step();
         }
@@ -232,31 +232,102 @@ void draw_triangle(const DrawContext& c, const Vertex28* v) {
     scan(middle_to_bottom);
 }
 
-}  // namespace
+void draw_triangle(const DrawContext& c, const Vertex28* tri) {
+    const Target& t = c.target;
+    walk_triangle(tri, t.clip, [&] { setup_done(c); }, [&](const Gradients& g, const Edge& left, const Edge& right) {
+        uint8_t* row = t.base + left.y * t.pitch;
+        // the span routine (its divides and pieces) is the inner loop
+        emit(c.stats->probe, c.stats, 0, 0, [&] {
+            scan_line_pieces(g, left, right, [&](int64_t x0, int64_t n, int32_t u, int32_t v, int32_t du, int32_t dv) {
+                affine_piece(c, row, x0, n, u, v, du, dv);
+            });
+        });
+    });
+}
 
-SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
-    double shift_u, shift_v;
-    SetupStatus status = classic::texture_shift(vertices, count, c.tex, &shift_u, &shift_v);
+// The polygon in his vertices (28.4, texel centres at integers) after the checks the driver makes;
+// shift: the whole periods added to u and v.
+SetupStatus convert_polygon(const Vertex* vertices, int count, const Texture& tex, Vertex28* v, double* shift) {
+    SetupStatus status = classic::texture_shift(vertices, count, tex, &shift[0], &shift[1]);
     if (status != SetupStatus::Ok) return status;
     // A convex polygon must really be one: Hecker drew triangles, here its fan.
     PolygonSetup check;
     status = setup_polygon(vertices, count, &check, PLANES_NONE);
     if (status != SetupStatus::Ok) return status;
-    Vertex28 v[classic::MAX_VERTICES];
     for (int i = 0; i < count; ++i) {
         const Vertex& in = vertices[i];
         // 28.4 with pixel centres at integers: (x - 1/2) * 16, truncated as FloatToFixed28_4 did
         v[i].x_28_4 = (in.x.raw - int32_t(SUBPIXEL_HALF)) / 16;
         v[i].y_28_4 = (in.y.raw - int32_t(SUBPIXEL_HALF)) / 16;
         v[i].one_over_z = 1.0 / in.w;
-        v[i].u_over_z = (in.u + shift_u - 0.5) / in.w;  // texel centres at integers
-        v[i].v_over_z = (in.v + shift_v - 0.5) / in.w;
+        v[i].u_over_z = (in.u + shift[0] - 0.5) / in.w;  // texel centres at integers
+        v[i].v_over_z = (in.v + shift[1] - 0.5) / in.w;
     }
+    return SetupStatus::Ok;
+}
+
+}  // namespace
+
+SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
+    Vertex28 v[classic::MAX_VERTICES];
+    double shift[2];
+    SetupStatus status = convert_polygon(vertices, count, c.tex, v, shift);
+    if (status != SetupStatus::Ok) return status;
     for (int k = 1; k + 1 < count; ++k) {
         Vertex28 tri[3] = {v[0], v[k], v[k + 1]};
         draw_triangle(c, tri);
     }
     return SetupStatus::Ok;
+}
+
+// The bound (docs/accuracy.md, "Hecker's pieces"): his walk and his divides run again, and each
+// affine piece's texel indices, floor((u + k du) / 65536) along u and v (the loop's 16-bit
+// fractions carry into the texel pointer: exactly that), against the exact mapping at its pixel
+// centres (lines_bound) over every pixel he draws. The bordered copy as for X-Sharp: one texel
+// more where a piece reaches the border, no bound beyond it or where Q is not positive.
+ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
+    ErrorBound b;
+    Vertex28 v[classic::MAX_VERTICES];
+    double shift[2];
+    if (!mapper_accepts(c.mapper, c.tex) || convert_polygon(vertices, count, c.tex, v, shift) != SetupStatus::Ok) return b;
+    b.draws = true;
+    b.footprint = NO_BOUND;
+    if (c.whole_only) return b;  // nothing cheaper than his pieces
+    PolygonSetup own;
+    const PolygonSetup* s = &own;
+    if (c.prepared && c.prepared->status == SetupStatus::Ok) s = &c.prepared->setup;
+    else if (setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE) != SetupStatus::Ok) return b;
+    const double size[2] = {double(c.tex.width), double(c.tex.height)};
+    double worst = 0;
+    bool fits = true;
+    for (int k = 1; k + 1 < count && fits && !c.settled(worst); ++k) {
+        Vertex28 tri[3] = {v[0], v[k], v[k + 1]};
+        walk_triangle(tri, c.clip, [] {}, [&](const Gradients& g, const Edge& left, const Edge& right) {
+            scan_line_pieces(g, left, right, [&](int64_t x0, int64_t n, int32_t u, int32_t pv, int32_t du, int32_t dv) {
+                const int64_t lo = x0 < c.clip.x0 ? c.clip.x0 : x0, hi = x0 + n > c.clip.x1 ? c.clip.x1 : x0 + n;
+                if (lo >= hi || !fits || c.settled(worst)) return;
+                const SpanLine l = span_line(*s, Axis::Rows, Span{int32_t(lo), int32_t(left.y), int32_t(hi - lo)});
+                const double last = double(hi - lo - 1);
+                if (!(l.q0 > 0) || !(l.q0 + l.qm * last > 0)) {
+                    fits = false;
+                    return;
+                }
+                const int32_t start[2] = {u, pv}, delta[2] = {du, dv};
+                double a[2], step[2], border = 0;
+                for (int t = 0; t < 2; ++t) {
+                    a[t] = double(int64_t(start[t]) + (lo - x0) * delta[t]) / 65536, step[t] = double(delta[t]) / 65536;
+                    const double first = a[t], end = a[t] + step[t] * last;
+                    const double low = first < end ? first : end, high = larger(first, end);
+                    fits = fits && low >= -1 && high < size[t] + 1;  // the bordered copy: indices -1 .. size
+                    if (low < 0 || high >= size[t]) border = 1;
+                    a[t] -= shift[t];  // the unshifted coordinates, as the reference's
+                }
+                if (fits) worst = larger(worst, lines_bound(l, a, step, 0, last, border));
+            });
+        });
+    }
+    b.footprint = fits ? worst : NO_BOUND;
+    return b;
 }
 
 }  // namespace raster::hecker

@@ -33,5 +33,8 @@ void hecker_loop_asm(const void* args);
 namespace raster::hecker {
 
 SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count);
+// Its error bound: his walk and divides run again, each affine piece's texel indices against the
+// exact mapping.
+ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count);
 
 }  // namespace raster::hecker

@@ -3,6 +3,7 @@
 #include "kernel/mappers/xsharp.h"
 
 #include "kernel/core/asm_offsets.h"
+#include "kernel/core/bound.h"
 #include "kernel/core/selftest.h"
 
 #include "kernel/mappers/classic.h"
@@ -44,9 +45,9 @@ int32_t across(const Vertex16& v, bool columns) { return columns ? v.y : v.x; } 
 // The polygon in X-Sharp's terms (whole-pixel vertices, texture coordinates shifted into the
 // texture), refused unless monotone along the scan; its first and last vertex along the scan
 // (DRAWTEXP.C's MinVert and MaxVert, the first of equals).
-SetupStatus prepare(const DrawContext& c, const Vertex* vertices, int count, bool columns, Polygon* p, int* min_vert) {
+SetupStatus prepare(const Texture& tex, const Vertex* vertices, int count, bool columns, Polygon* p, int* min_vert) {
     p->columns = columns;
-    SetupStatus status = classic::convert(vertices, count, c.tex, TEXEL_OFFSET, p->v, &p->n);
+    SetupStatus status = classic::convert(vertices, count, tex, TEXEL_OFFSET, p->v, &p->n);
     if (status != SetupStatus::Ok) return status;
     if (!classic::monotone(p->v, p->n, columns)) return SetupStatus::NotConvex;
     int lo = 0, hi = 0;
@@ -125,31 +126,54 @@ bool step_edge(Edge& e, const Polygon& p) {
     return true;
 }
 
-// The span between two row edges, common to 57.1 and 57.2: steps from the unclipped width, the
-// half-step, then the clip. Returns false when nothing is left to draw.
+// A line (row or column) between two edges, as every X-Sharp ScanOutLine sets it up: steps from
+// the unclipped length, the half-step, then the clip to [lo, hi) across. `first` is the line's
+// first pixel across (x for rows, y for columns). Returns false when nothing is left to draw.
 struct SpanSetup {
-    int32_t x, count;
+    int32_t first, count;
     int32_t source_x, source_y, step_x, step_y;
 };
 
-bool span_setup(const Edge& left, const Edge& right, const ClipRect& clip, SpanSetup* s) {
-    int32_t x_max = right.dest, x = left.dest;
-    if (x_max <= clip.x0 || x >= clip.x1) return false;
-    if (x_max - x <= 0) return false;
-    int32_t width = (x_max - x) << 16;
-    s->step_x = fixed_div(right.source_x - left.source_x, width);
-    s->step_y = fixed_div(right.source_y - left.source_y, width);
-    s->source_x = left.source_x + (s->step_x >> 1);  // the half-step prestep (57.1)
-    s->source_y = left.source_y + (s->step_y >> 1);
-    if (x_max > clip.x1) x_max = clip.x1;
-    if (x < clip.x0) {
-        s->source_x += fixed_mul(s->step_x, (clip.x0 - x) << 16);
-        s->source_y += fixed_mul(s->step_y, (clip.x0 - x) << 16);
-        x = clip.x0;
+__attribute__((always_inline)) inline bool line_setup(const Edge& near, const Edge& far, int32_t lo, int32_t hi, SpanSetup* s) {
+    int32_t end = far.dest, first = near.dest;
+    if (end <= lo || first >= hi || end - first <= 0) return false;
+    int32_t length = (end - first) << 16;
+    s->step_x = fixed_div(far.source_x - near.source_x, length);
+    s->step_y = fixed_div(far.source_y - near.source_y, length);
+    s->source_x = near.source_x + (s->step_x >> 1);  // the half-step prestep (57.1)
+    s->source_y = near.source_y + (s->step_y >> 1);
+    if (end > hi) end = hi;
+    if (first < lo) {
+        s->source_x += fixed_mul(s->step_x, (lo - first) << 16);
+        s->source_y += fixed_mul(s->step_y, (lo - first) << 16);
+        first = lo;
     }
-    s->x = x;
-    s->count = x_max - x;
+    s->first = first;
+    s->count = end - first;
     return true;
+}
+
+// Sets up the two edge chains from the first vertex along the scan (rows: left and right; columns:
+// top and bottom), calls ready() (the setup done), then line(m, SpanSetup) for every line m (a
+// row, or a column) of the polygon with pixels in the clip, as DRAWTEXP.C walks them: both chains
+// stepped together until either reaches the last vertex.
+template <bool COLUMNS, typename R, typename F>
+void for_each_line(const Polygon& p, int min_vert, const ClipRect& clip, R&& ready, F&& line) {
+    constexpr bool columns = COLUMNS;
+    Edge near, far;
+    near.direction = columns ? 1 : -1;
+    far.direction = -near.direction;
+    set_up_edge(near, min_vert, p);
+    set_up_edge(far, min_vert, p);
+    ready();
+    const int32_t start = columns ? clip.x0 : clip.y0, end = columns ? clip.x1 : clip.y1;
+    const int32_t lo = columns ? clip.y0 : clip.x0, hi = columns ? clip.y1 : clip.x1;
+    for (int32_t m = along(p.v[min_vert], columns);; ++m) {
+        if (m >= end) break;
+        SpanSetup s;
+        if (m >= start && line_setup(near, far, lo, hi, &s)) line(m, s);
+        if (!step_edge(near, p) || !step_edge(far, p)) break;
+    }
 }
 
 using RowSpanFn = void (*)(const DrawContext& c, const SpanSetup& s, int32_t y);
@@ -159,7 +183,7 @@ void dda_span(const DrawContext& c, const SpanSetup& s, int32_t y) {
     const uint8_t* origin = bordered_origin(c.tex);
     const int32_t pitch = bordered_pitch(c.tex);
     int32_t sx = s.source_x, sy = s.source_y;
-    for (int32_t x = s.x; x < s.x + s.count; ++x) {
+    for (int32_t x = s.first; x < s.first + s.count; ++x) {
         *pixel_at(c.target, x, y) = origin[round_fixed(sy) * pitch + round_fixed(sx)];
         sx = int32_t(uint32_t(sx) + uint32_t(s.step_x));
         sy = int32_t(uint32_t(sy) + uint32_t(s.step_y));
@@ -173,10 +197,10 @@ void row_out_span(const DrawContext& c, const SpanSetup& s, int32_t y) {
     SplitStep xs = split(s.step_x), ys = split(s.step_y);
     XSharpRowArgs a;
     const Target& t = c.target;
-    a.dst = t.base + y * t.row_bytes + (s.x >> 2);
+    a.dst = t.base + y * t.row_bytes + (s.first >> 2);
     a.plane_bytes = t.plane_bytes;
     a.count = s.count;
-    a.mask = 0x11u << (s.x & 3);
+    a.mask = 0x11u << (s.first & 3);
     a.texel = bordered_origin(c.tex) + (sy >> 16) * pitch + (sx >> 16);
     a.x_frac = counting_fraction(sx, s.step_x);
     a.y_frac = counting_fraction(sy, s.step_y);
@@ -194,62 +218,108 @@ void row_out_span(const DrawContext& c, const SpanSetup& s, int32_t y) {
 SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count, RowSpanFn span) {
     Polygon p;
     int min_vert;
-    SetupStatus status = prepare(c, vertices, count, false, &p, &min_vert);
+    SetupStatus status = prepare(c.tex, vertices, count, false, &p, &min_vert);
     if (status != SetupStatus::Ok) return status;
-    Edge left, right;
-    left.direction = -1;
-    right.direction = 1;
-    set_up_edge(left, min_vert, p);
-    set_up_edge(right, min_vert, p);
-    setup_done(c);
-    const ClipRect& clip = c.target.clip;
-    for (int32_t y = p.v[min_vert].y;; ++y) {
-        if (y >= clip.y1) break;
-        SpanSetup s;
-        if (y >= clip.y0 && span_setup(left, right, clip, &s)) {
-            emit(c.stats->probe, c.stats, 1, uint32_t(s.count), [&] { span(c, s, y); });  // the span routine is the inner loop
-        }
-        if (!step_edge(left, p) || !step_edge(right, p)) break;
-    }
+    for_each_line<false>(p, min_vert, c.target.clip, [&] { setup_done(c); }, [&](int32_t y, const SpanSetup& s) {
+        emit(c.stats->probe, c.stats, 1, uint32_t(s.count), [&] { span(c, s, y); });  // the span routine is the inner loop
+    });
     return SetupStatus::Ok;
 }
 
-// X-Sharp 22's column ScanOutLine: steps from the column's pixel count, half-step, clip, the
-// rounding folded into the pointer, the fractions packed for the 58.4 loop.
-void column_span(const DrawContext& c, const Edge& top, const Edge& bottom, int32_t x) {
-    const ClipRect& clip = c.target.clip;
-    int32_t y_max = bottom.dest, y = top.dest;
-    if (y_max <= clip.y0 || y >= clip.y1 || y_max - y <= 0) return;
-    int32_t height = (y_max - y) << 16;
-    int32_t step_x = fixed_div(bottom.source_x - top.source_x, height);
-    int32_t step_y = fixed_div(bottom.source_y - top.source_y, height);
-    int32_t sx = top.source_x + (step_x >> 1), sy = top.source_y + (step_y >> 1);
-    if (y_max > clip.y1) y_max = clip.y1;
-    if (y < clip.y0) {
-        sx += fixed_mul(step_x, (clip.y0 - y) << 16);
-        sy += fixed_mul(step_y, (clip.y0 - y) << 16);
-        y = clip.y0;
-    }
+// X-Sharp 22's column ScanOutLine after the common setup: the rounding folded into the pointer,
+// the fractions packed for the 58.4 loop.
+void column_span(const DrawContext& c, const SpanSetup& s, int32_t x) {
     const int32_t pitch = bordered_pitch(c.tex);
-    sx = int32_t(uint32_t(sx) + 0x8000);
-    sy = int32_t(uint32_t(sy) + 0x8000);
-    SplitStep xs = split(step_x), ys = split(step_y);
+    const int32_t sx = int32_t(uint32_t(s.source_x) + 0x8000), sy = int32_t(uint32_t(s.source_y) + 0x8000);
+    SplitStep xs = split(s.step_x), ys = split(s.step_y);
     XSharpColumnArgs a;
     Target& t = c.target;
     int plane = x & 3;
     if (t.select_plane) t.select_plane(t.ctx, plane);  // the map mask, once per column
-    a.dst = t.base + plane * t.plane_bytes + y * t.row_bytes + (x >> 2);
-    a.count = y_max - y;
+    a.dst = t.base + plane * t.plane_bytes + s.first * t.row_bytes + (x >> 2);
+    a.count = s.count;
     a.texel = bordered_origin(c.tex) + (sy >> 16) * pitch + (sx >> 16);
-    a.fractions = (counting_fraction(sx, step_x) << 16) | (counting_fraction(sy, step_y) >> 1);
+    a.fractions = (counting_fraction(sx, s.step_x) << 16) | (counting_fraction(sy, s.step_y) >> 1);
     a.steps = (xs.fraction << 16) | (ys.fraction >> 1);  // the Y fraction keeps 15 bits
     a.base = xs.whole + ys.whole * pitch;
     a.row = ys.carry_advance * pitch;
-    a.backwards = step_x < 0;
+    a.backwards = s.step_x < 0;
     emit(c, &a, 1, uint32_t(a.count));
 }
 
+// The texel index a loop reads after k steps from a 16.16 coordinate `start` (the rounding's
+// 0x8000 folded in) moving by `step`: the start's whole part, k whole steps toward zero, and a
+// carry (+1, or -1 for negative steps) each time a counting-up fraction of `bits` bits overflows
+// (57.2's and 58.4's x: 16 bits; 58.4's y: 15, the step's and the start's low bit dropped). That
+// is floor(a + b k) exactly, for a and b below (minus floor(n / m) is floor((m - 1 - n) / m) for
+// integers n, m > 0); 57.1's round_fixed(start + k step) is the same line for 16 bits.
+void counting_line(int32_t start, int32_t step, int bits, double* a, double* b) {
+    const SplitStep split_step = split(step);
+    const double one = double(1 << bits);
+    const double fraction = double(counting_fraction(start, step) >> (16 - bits)), per_step = double(split_step.fraction >> (16 - bits));
+    const double whole = double(start >> 16);
+    if (step >= 0) {
+        *a = whole + fraction / one, *b = double(split_step.whole) + per_step / one;
+    } else {
+        *a = whole + (one - 1 - fraction) / one, *b = double(split_step.whole) - per_step / one;
+    }
+}
+
+// The bound (docs/accuracy.md, "X-Sharp's lines"): DRAWTEXP.C's walk run again, and each line's
+// texel indices, floor(a + b k) along u and v, against the exact mapping at its pixel centres
+// (lines_bound, pieces of BOUND_PIECE pixels) over every pixel it draws. The loops read the
+// bordered copy, whose border repeats the edge texels: where a line's indices reach the border
+// the texel read may be one nearer than its index (one texel more in the bound), and beyond it no
+// bound. No bound either where Q is not positive at a line's end.
+ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count, bool columns, int y_bits) {
+    ErrorBound b;
+    Polygon p;
+    int min_vert;
+    double shift[2];
+    if (!mapper_accepts(c.mapper, c.tex) || prepare(c.tex, vertices, count, columns, &p, &min_vert) != SetupStatus::Ok) return b;
+    classic::texture_shift(vertices, count, c.tex, &shift[0], &shift[1]);  // what convert shifted by
+    b.draws = true;
+    b.footprint = NO_BOUND;
+    if (c.whole_only) return b;  // nothing cheaper than its lines
+    PolygonSetup own;
+    const PolygonSetup* s = &own;
+    if (c.prepared && c.prepared->status == SetupStatus::Ok) s = &c.prepared->setup;
+    else if (setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE) != SetupStatus::Ok) return b;
+    const Axis axis = columns ? Axis::Columns : Axis::Rows;
+    const double size[2] = {double(c.tex.width), double(c.tex.height)};
+    double worst = 0;
+    bool fits = true;
+    auto each_line = [&](int32_t m, const SpanSetup& line) {
+        if (!fits || c.settled(worst)) return;
+        const SpanLine l = span_line(*s, axis, columns ? Span{m, line.first, line.count} : Span{line.first, m, line.count});
+        const double last = double(line.count - 1);
+        if (!(l.q0 > 0) || !(l.q0 + l.qm * last > 0)) {
+            fits = false;
+            return;
+        }
+        double a[2], step[2], border = 0;
+        counting_line(int32_t(uint32_t(line.source_x) + 0x8000), line.step_x, 16, &a[0], &step[0]);
+        counting_line(int32_t(uint32_t(line.source_y) + 0x8000), line.step_y, y_bits, &a[1], &step[1]);
+        for (int t = 0; t < 2; ++t) {
+            const double first = a[t], end = a[t] + step[t] * last;
+            const double lo = first < end ? first : end, hi = larger(first, end);
+            fits = fits && lo >= -1 && hi < size[t] + 1;  // the bordered copy: indices -1 .. size
+            if (lo < 0 || hi >= size[t]) border = 1;
+            a[t] -= shift[t];  // the unshifted coordinates, as the reference's
+        }
+        for (double k0 = 0; k0 <= last && fits; k0 += BOUND_PIECE)
+            worst = larger(worst, lines_bound(l, a, step, k0, k0 + BOUND_PIECE - 1 < last ? k0 + BOUND_PIECE - 1 : last, border));
+    };
+    if (columns) for_each_line<true>(p, min_vert, c.clip, [] {}, each_line);
+    else for_each_line<false>(p, min_vert, c.clip, [] {}, each_line);
+    b.footprint = fits ? worst : NO_BOUND;
+    return b;
+}
+
 }  // namespace
+
+ErrorBound bound_rows(const BoundContext& c, const Vertex* vertices, int count) { return bound(c, vertices, count, false, 16); }
+ErrorBound bound_column(const BoundContext& c, const Vertex* vertices, int count) { return bound(c, vertices, count, true, 15); }
 
 SetupStatus draw_dda(const DrawContext& c, const Vertex* vertices, int count) { return draw_rows(c, vertices, count, dda_span); }
 
@@ -260,19 +330,9 @@ SetupStatus draw_row_out(const DrawContext& c, const Vertex* vertices, int count
 SetupStatus draw_column(const DrawContext& c, const Vertex* vertices, int count) {
     Polygon p;
     int min_vert;
-    SetupStatus status = prepare(c, vertices, count, true, &p, &min_vert);
+    SetupStatus status = prepare(c.tex, vertices, count, true, &p, &min_vert);
     if (status != SetupStatus::Ok) return status;
-    Edge top, bottom;
-    top.direction = 1;
-    bottom.direction = -1;
-    set_up_edge(top, min_vert, p);
-    set_up_edge(bottom, min_vert, p);
-    setup_done(c);
-    for (int32_t x = p.v[min_vert].x;; ++x) {
-        if (x >= c.target.clip.x1) break;
-        if (x >= c.target.clip.x0) column_span(c, top, bottom, x);
-        if (!step_edge(top, p) || !step_edge(bottom, p)) break;
-    }
+    for_each_line<true>(p, min_vert, c.target.clip, [&] { setup_done(c); }, [&](int32_t x, const SpanSetup& s) { column_span(c, s, x); });
     return SetupStatus::Ok;
 }
 

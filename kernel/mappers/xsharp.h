@@ -62,5 +62,8 @@ namespace raster::xsharp {
 SetupStatus draw_dda(const DrawContext& c, const Vertex* vertices, int count);      // listing 57.1
 SetupStatus draw_row_out(const DrawContext& c, const Vertex* vertices, int count);  // listing 57.2 / 58.1
 SetupStatus draw_column(const DrawContext& c, const Vertex* vertices, int count);   // listing 58.4, X-Sharp 22
+// Their error bounds: the walk run again and each line's texel indices against the exact mapping.
+ErrorBound bound_rows(const BoundContext& c, const Vertex* vertices, int count);    // xsharp-dda, xsharp-row-out
+ErrorBound bound_column(const BoundContext& c, const Vertex* vertices, int count);  // xsharp-column
 
 }  // namespace raster::xsharp
