@@ -25,26 +25,30 @@ void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size
 
 namespace {
 
-// The candidates for a texture and a target, (mapper, walker) pairs: what they depend on is a few
-// bits (the texture's copies and shape, the target's kind), so each set is built once.
+// The candidates for a texture, a target and a budget's coverage, (mapper, walker) pairs: what
+// they depend on is a few bits (the texture's copies and shape, the target's kind, whether the
+// budget asks for exact coverage, which only some mappers promise), so each set is built once.
 struct Candidates {
     bool built = false;
     int count = 0;
     int16_t row[2 * MAPPER_LIMIT] = {};
     Axis axis[2 * MAPPER_LIMIT] = {};
-    CostRow cost[2 * MAPPER_LIMIT] = {};  // the cost model's row
+    CostRow cost[2 * MAPPER_LIMIT] = {};  // the cost model's row with the first proof (proven_cost)
+    bool walks[2 * MAPPER_LIMIT] = {};    // bound_walks: proven span by span only
 };
 
-const Candidates& candidates(const Texture& tex, const Target& target) {
-    constinit static Candidates cache[8];
+const Candidates& candidates(const Texture& tex, const Target& target, bool exact_coverage) {
+    constinit static Candidates cache[16];
     const bool fast = tex.width == 256 && tex.height == 256 && tex.wrap == Wrap::Repeat && tex.aligned256;
-    Candidates& c = cache[(tex.bordered ? 1 : 0) | (fast ? 2 : 0) | (target.planar ? 4 : 0)];
+    Candidates& c = cache[(tex.bordered ? 1 : 0) | (fast ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0)];
     if (c.built) return c;
     for (int a = 0; a < 2; ++a)
         for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {
             const Mapper& m = MAPPERS[i];
             if (!choosable(m) || !mapper_walks(m, Axis(a)) || !mapper_accepts(m, tex) || !mapper_targets(m, target, Axis(a))) continue;
-            c.row[c.count] = int16_t(i), c.axis[c.count] = Axis(a), c.cost[c.count] = cost_row(MAPPER_COSTS[i]), ++c.count;
+            if (exact_coverage && !m.guarantee.exact_coverage) continue;
+            c.row[c.count] = int16_t(i), c.axis[c.count] = Axis(a), c.cost[c.count] = proven_cost(m, cost_row(MAPPER_COSTS[i]));
+            c.walks[c.count] = bound_walks(m), ++c.count;
         }
     c.built = true;
     return c;
@@ -56,7 +60,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
                      PreparedPolygon* prepared) {
     Choice choice;
     for (int a = 0; a < 2; ++a) prepared[a].status = SetupStatus::Unsupported, prepared[a].count = PreparedPolygon::NOT_WALKED;
-    const Candidates& list = candidates(tex, target);
+    const Candidates& list = candidates(tex, target, budget.exact_coverage);
     if (list.count == 0) return choice;
     // set up once (the spread and the spans come when a bound asks for them); the other walker's
     // copy made when a candidate of it is asked
@@ -65,13 +69,10 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     if (first->status != SetupStatus::Ok) return choice;
     PolygonSize size[2];
     polygon_sizes(first->setup, target.clip, size);
-    // the estimates, and the cheapest (ties: the earlier)
+    // the estimates with the first proofs (a mapper whose bound walks: span by span already)
     double cost[2 * MAPPER_LIMIT];
-    int first_asked = 0;
-    for (int k = 0; k < list.count; ++k) {
-        cost[k] = estimate_cost(list.cost[k], size[int(list.axis[k])]) + whole_proof_cost(MAPPERS[list.row[k]]);
-        if (cost[k] < cost[first_asked]) first_asked = k;
-    }
+    for (int k = 0; k < list.count; ++k) cost[k] = estimate_cost(list.cost[k], size[int(list.axis[k])]);
+    const bool* walks = list.walks;
     bool asked[2 * MAPPER_LIMIT] = {};
     // the cheapest candidate not yet asked whose cost is below `ceiling` (ties: the earlier), or -1
     auto cheapest = [&](double ceiling) {
@@ -96,14 +97,20 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     // as that is below the first's
     int before[2 * MAPPER_LIMIT], n = 0;
     double ceiling = 1e300;
-    for (int k = first_asked; k >= 0; k = cheapest(1e300)) {
-        if (ask(k, true)) {
+    for (int k = cheapest(1e300); k >= 0; k = cheapest(1e300)) {
+        if (walks[k]) {
+            asked[k] = true;
+        } else if (ask(k, true)) {
             ceiling = cost[k];
             break;
         }
         before[n++] = k;
     }
-    for (int i = 0; i < n; ++i) asked[before[i]] = false, cost[before[i]] += BOUND_SPAN_COST * size[int(list.axis[before[i]])].spans;
+    for (int i = 0; i < n; ++i) {
+        const int k = before[i];
+        asked[k] = false;
+        if (!walks[k]) cost[k] += BOUND_SPAN_COST * size[int(list.axis[k])].spans;
+    }
     for (int k; n > 0 && (k = cheapest(ceiling)) >= 0;)
         if (ask(k, false)) break;
     return choice;

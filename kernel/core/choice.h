@@ -71,6 +71,18 @@ constexpr double BOUND_SPAN_COST = 600;
 // 32-bit host build); nothing for a mapper that promises the reference itself (exact: bound 0).
 constexpr double BOUND_WHOLE_COST = 1400;
 inline double whole_proof_cost(const Mapper& m) { return m.guarantee.max_error == 0 ? 0 : BOUND_WHOLE_COST; }
+// Whether the mapper's bound runs its own walk again, with nothing for the whole polygon at once:
+// the classics with a fill convention of their own (X-Sharp, Hecker, fatmap). auto asks them only
+// span by span.
+inline bool bound_walks(const Mapper& m) { return !m.guarantee.exact_coverage; }
+// A candidate's cost to auto with its first proof, as a cost row: its estimate and the
+// whole-polygon bound (whole_proof_cost), or, for a mapper whose bound walks, its setup and walk
+// again (its row without the pixels) and BOUND_SPAN_COST a line. A candidate proven span by span
+// after its whole-polygon bound costs BOUND_SPAN_COST a span more.
+inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
+    if (bound_walks(m)) return CostRow{2 * row.polygon, 2 * row.span + BOUND_SPAN_COST, row.pixel};
+    return CostRow{row.polygon + whole_proof_cost(m), row.span, row.pixel};
+}
 // The cheapest choosable mapper and walker, by the cost model, that draws into targets like
 // `target`, takes the texture and whose bound meets the budget on the polygon: rows or columns,
 // whichever the target and the mapper take (floors by rows, walls by columns). The proof counts:

@@ -50,11 +50,12 @@ SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double li
     return SetupStatus::Ok;
 }
 
-SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_offset, Vertex16* out, int* count) {
+SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_offset, Vertex16* out, int* count, double* shift) {
     *count = 0;
     double shift_u, shift_v;
     SetupStatus status = texture_shift(in, n, tex, &shift_u, &shift_v);
     if (status != SetupStatus::Ok) return status;
+    if (shift) shift[0] = shift_u, shift[1] = shift_v;
     for (int i = 0; i < n; ++i) {
         const Vertex& v = in[i];
         out[i].x = (v.x.raw + int32_t(SUBPIXEL_HALF)) >> SUBPIXEL_BITS;

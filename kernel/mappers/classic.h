@@ -74,7 +74,8 @@ SetupStatus texture_shift(const Vertex* in, int n, const Texture& tex, double li
 // Hecker put texel centres at integers: -0.5; Quake and fatmap at half-integers: 0).
 // Returns Ok, Degenerate (zero area after rounding: nothing to draw), TooManyVertices, OutOfRange
 // (beyond MAX_COORD, or u, v not finite) or OutsideTexture; `count` receives the vertex count.
-SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_offset, Vertex16* out, int* count);
+// shift, where given, receives the whole periods added to u and v.
+SetupStatus convert(const Vertex* in, int n, const Texture& tex, double texel_offset, Vertex16* out, int* count, double* shift = nullptr);
 
 // Whether both vertex chains from the first vertex of least y (x for columns) to the first of
 // greatest y (x) run monotonically: the classics' "every horizontal (vertical) line crosses exactly

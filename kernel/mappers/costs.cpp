@@ -18,15 +18,15 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-4", 2531.9f, 1180.56f, 40.466f}, // 6 scenes
     {"fast-affine", 2458.7f, 273.62f, 4.149f}, // 4 scenes
     {"fast-columns", 2453.2f, 320.15f, 5.090f}, // 4 scenes
-    {"xsharp-dda", 1688.1f, 545.69f, 33.897f}, // 5 scenes
-    {"xsharp-row-out", 1694.1f, 679.46f, 15.353f}, // 5 scenes
-    {"xsharp-column", 1694.9f, 615.86f, 8.912f}, // 5 scenes
+    {"xsharp-dda", 1697.1f, 546.22f, 33.889f}, // 5 scenes
+    {"xsharp-row-out", 1703.1f, 680.00f, 15.345f}, // 5 scenes
+    {"xsharp-column", 1703.9f, 616.30f, 8.908f}, // 5 scenes
     {"hecker-steptable", 2901.1f, 0.00f, 423.482f}, // 5 scenes
     {"fatmap-256", 1723.9f, 322.21f, 9.723f}, // 4 scenes
     {"fatmap-256-16", 1723.9f, 327.21f, 8.723f}, // 4 scenes
     {"fatmap-lut", 1762.8f, 329.26f, 3.091f}, // 3 scenes
-    {"quake-subdiv16", 2597.8f, 373.28f, 12.401f}, // 5 scenes
-    {"quake-subdiv8", 2597.8f, 364.14f, 18.614f}, // 5 scenes
+    {"quake-subdiv16", 2601.8f, 373.28f, 12.401f}, // 5 scenes
+    {"quake-subdiv8", 2601.8f, 364.14f, 18.614f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

@@ -280,7 +280,7 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count, Loop 
         int32_t table_length = 0;
         if (loop == Loop::Table) {
             table_length = lut_length(t);
-            const double reach = double(table_length) * 256;  // |k (delta >> 8)| within int32 for every entry
+            const double reach = double(table_length) * 256;  // |k (delta >> 8)| within int32 for every entry (with room: delta, not delta >> 8)
             fits = fits && magnitude(double(t.dudx)) < 2147483647.0 * 256 / reach && magnitude(double(t.dvdx)) < 2147483647.0 * 256 / reach;
         }
         for_each_row(t, c.clip, table_length, [&](const Row& r) {

@@ -40,8 +40,10 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
     QuakeArgs a;
     a.texels = c.tex.texels;
     a.pitch = c.tex.width;
-    a.sadjust_16_16 = int32_t(shift_u * 65536.0);
-    a.tadjust_16_16 = int32_t(shift_v * 65536.0);
+    // the whole periods in 16.16, modulo 2^32 (a shift can pass 32768 texels: u near -32000 in a
+    // 999-texel texture; add_wrapping then lands on the shifted value, which fits)
+    a.sadjust_16_16 = int32_t(uint32_t(int64_t(shift_u * 65536.0)));
+    a.tadjust_16_16 = int32_t(uint32_t(int64_t(shift_v * 65536.0)));
     a.bbextents = (c.tex.width << 16) - 1;
     a.bbextentt = (c.tex.height << 16) - 1;
     a.shift = SHIFT;
@@ -95,8 +97,9 @@ SegmentArithmetic arithmetic(const BoundContext& c, const PolygonSetup& s, const
     if (!(p.q_min > 0)) return a;
     // every term summed into s/z, t/z and 1/z at a pixel of the clip: the plane at pixel (0, 0)
     // (two products, two sums), the rows down and the pixels across (two each), the segments' steps
-    // (at most the clip's width more, one sum each) and the last (two): each result within half an
-    // epsilon of the terms' sum
+    // (one sum each) and the last (two): each result within half an epsilon of the terms' sum; the
+    // pixels across and the steps together reach at most the clip's far side (X counts it twice:
+    // slack)
     const double one = double(SUBPIXEL_ONE);
     const double xs = larger(magnitude(double(c.clip.x0)), magnitude(double(c.clip.x1))), ys = larger(magnitude(double(c.clip.y0)), magnitude(double(c.clip.y1)));
     const double X = magnitude(centre_x(s, 0)) + 2 * xs * one, Y = magnitude(centre_y(s, 0)) + ys * one;

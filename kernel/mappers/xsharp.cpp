@@ -44,10 +44,10 @@ int32_t across(const Vertex16& v, bool columns) { return columns ? v.y : v.x; } 
 
 // The polygon in X-Sharp's terms (whole-pixel vertices, texture coordinates shifted into the
 // texture), refused unless monotone along the scan; its first and last vertex along the scan
-// (DRAWTEXP.C's MinVert and MaxVert, the first of equals).
-SetupStatus prepare(const Texture& tex, const Vertex* vertices, int count, bool columns, Polygon* p, int* min_vert) {
+// (DRAWTEXP.C's MinVert and MaxVert, the first of equals); shift: the whole periods added, where given.
+SetupStatus prepare(const Texture& tex, const Vertex* vertices, int count, bool columns, Polygon* p, int* min_vert, double* shift = nullptr) {
     p->columns = columns;
-    SetupStatus status = classic::convert(vertices, count, tex, TEXEL_OFFSET, p->v, &p->n);
+    SetupStatus status = classic::convert(vertices, count, tex, TEXEL_OFFSET, p->v, &p->n, shift);
     if (status != SetupStatus::Ok) return status;
     if (!classic::monotone(p->v, p->n, columns)) return SetupStatus::NotConvex;
     int lo = 0, hi = 0;
@@ -276,8 +276,7 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count, bool 
     Polygon p;
     int min_vert;
     double shift[2];
-    if (!mapper_accepts(c.mapper, c.tex) || prepare(c.tex, vertices, count, columns, &p, &min_vert) != SetupStatus::Ok) return b;
-    classic::texture_shift(vertices, count, c.tex, &shift[0], &shift[1]);  // what convert shifted by
+    if (!mapper_accepts(c.mapper, c.tex) || prepare(c.tex, vertices, count, columns, &p, &min_vert, shift) != SetupStatus::Ok) return b;
     b.draws = true;
     b.footprint = NO_BOUND;
     if (c.whole_only) return b;  // nothing cheaper than its lines

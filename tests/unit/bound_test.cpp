@@ -173,6 +173,28 @@ TEST(Bounds, NoMapperExceedsItsBoundOnRandomPolygons) {
     }
 }
 
+// Found in review: Quake's driver put the whole-period shift into 16.16 with a plain conversion,
+// which overflows past 32768 texels (u near -32000 in a 999-texel texture: 0x80000000, every texel
+// 199 off), while its bound said one texel.
+TEST(Bounds, QuakeTakesWholePeriodShiftsBeyondSixteenBits) {
+    std::vector<uint8_t> texels(999 * 64), bordered(size_t(bordered_bytes(999, 64))), aligned(ALIGNED256_BYTES);
+    generate_texture(TextureKind::Xor, 999, 64, texels.data());
+    Texture tex{texels.data(), 999, 64, Wrap::Repeat};
+    prepare_texture(&tex, bordered.data(), aligned.data());
+    const std::vector<Vertex> p = {vertex_raw(20 * 256, 20 * 256, 1, -32000, 0), vertex_raw(300 * 256, 20 * 256, 1, -31970, 0),
+                                   vertex_raw(20 * 256, 200 * 256, 1, -32000, 60)};
+    for (const char* name : {"quake-subdiv16", "quake-subdiv8"}) {
+        const Mapper& m = *find_mapper(name);
+        PolygonMeter meter(m, Axis::Rows);
+        Tightness tight;
+        EXPECT_TRUE(check_polygon(meter, m, Axis::Rows, p, tex, &tight, name)) << name << ": a finite bound";
+        bool drawn = false;
+        AccuracyMetrics e = meter.measure(p.data(), int(p.size()), tex, &drawn, [](int32_t, int32_t, bool, bool, double) {});
+        EXPECT_TRUE(drawn);
+        EXPECT_LE(e.max_texel_error, 1u) << name;
+    }
+}
+
 TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
     for (const DemoScene& d : demo_scenes()) {
         LoadedWorld w = load_world_file(std::string("scenes/") + d.name + ".scene");
