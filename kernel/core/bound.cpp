@@ -293,6 +293,26 @@ void affine_lines(const PolygonSetup& s, Axis axis, const Span& span, double* a,
     }
 }
 
+const PolygonSetup* exact_setup(const BoundContext& c, const Vertex* vertices, int count, PolygonSetup* own) {
+    if (c.prepared && c.prepared->status == SetupStatus::Ok) return &c.prepared->setup;
+    return setup_polygon(vertices, count, own, PLANES_PERSPECTIVE) == SetupStatus::Ok ? own : nullptr;
+}
+
+double drawn_line_bound(const PolygonSetup& s, Axis axis, const Span& span, const double* a, const double* b, double extra) {
+    const SpanLine l = span_line(s, axis, span);
+    const double last = double(span.count - 1);
+    if (!(l.q0 > 0) || !(l.q0 + l.qm * last > 0)) return NO_BOUND;
+    double worst = 0;
+    for (double k0 = 0; k0 <= last; k0 += BOUND_PIECE) worst = larger(worst, lines_bound(l, a, b, k0, k0 + BOUND_PIECE - 1 < last ? k0 + BOUND_PIECE - 1 : last, extra));
+    return worst;
+}
+
+bool within_border(double a, double b, double last, double size, double* extra) {
+    const double end = a + b * last, lo = a < end ? a : end, hi = larger(a, end);
+    if (lo < 0 || hi >= size) *extra = 1;
+    return lo >= -1 && hi < size + 1;
+}
+
 bool setup_takes(const BoundContext& c, const Vertex* vertices, int count) {
     if (c.prepared) return c.prepared->status == SetupStatus::Ok;
     PolygonSetup s;

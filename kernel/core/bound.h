@@ -265,6 +265,19 @@ ErrorBound bound_by_spans(const BoundContext& c, const Vertex* vertices, int cou
     return b;
 }
 
+// For the classics' bounds, which run their own walk again. The polygon's setup for the exact
+// mapping: the prepared one, or one set up into `own`; nullptr where setup does not take it.
+const PolygonSetup* exact_setup(const BoundContext& c, const Vertex* vertices, int count, PolygonSetup* own);
+// The bound over a line the mapper draws (the span's pixels along the axis) reading texel
+// floor(a[t] + b[t] k) at pixel k: each line against the exact mapping (lines_bound), BOUND_PIECE
+// pixels at a time, with `extra` texels more; NO_BOUND where Q is not positive at either end (a
+// pixel far outside the polygon).
+double drawn_line_bound(const PolygonSetup& s, Axis axis, const Span& span, const double* a, const double* b, double extra);
+// Whether the indices floor(a + b k), k in [0, last], stay in a bordered copy (-1 .. size, the
+// border repeating the edge texels); where they reach the border the texel read may be one nearer
+// the texture than the index, one texel further from the reference's: *extra becomes 1.
+bool within_border(double a, double b, double last, double size, double* extra);
+
 // The affine planes' lines along a span: u and v (t = 0, 1) at its first pixel centre, a[t], and
 // their steps a pixel along it, step[t].
 void affine_lines(const PolygonSetup& s, Axis axis, const Span& span, double* a, double* step);

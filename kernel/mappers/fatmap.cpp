@@ -268,9 +268,8 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count, Loop 
     b.footprint = NO_BOUND;
     if (c.whole_only) return b;  // nothing cheaper than his rows
     PolygonSetup own;
-    const PolygonSetup* s = &own;
-    if (c.prepared && c.prepared->status == SetupStatus::Ok) s = &c.prepared->setup;
-    else if (setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE) != SetupStatus::Ok) return b;
+    const PolygonSetup* s = exact_setup(c, vertices, count, &own);
+    if (!s) return b;
     double worst = 0;
     bool fits = true;
     for (int k = 1; k + 1 < count && fits && !c.settled(worst); ++k) {
@@ -285,12 +284,7 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count, Loop 
         }
         for_each_row(t, c.clip, table_length, [&](const Row& r) {
             if (!fits || c.settled(worst)) return;
-            const SpanLine l = span_line(*s, Axis::Rows, Span{r.x, r.y, r.count});
             const double last = double(r.count - 1);
-            if (!(l.q0 > 0) || !(l.q0 + l.qm * last > 0)) {
-                fits = false;
-                return;
-            }
             RowLines lines = row_lines(loop, t, r);
             for (int i = 0; i < 2; ++i) {
                 if (loop == Loop::Table) {  // the address is the texel's only inside the texture
@@ -299,8 +293,8 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count, Loop 
                 }
                 lines.a[i] -= shift[i];  // the unshifted coordinates, as the reference's
             }
-            for (double k0 = 0; k0 <= last && fits; k0 += BOUND_PIECE)
-                worst = larger(worst, lines_bound(l, lines.a, lines.b, k0, k0 + BOUND_PIECE - 1 < last ? k0 + BOUND_PIECE - 1 : last, 0));
+            if (fits) worst = larger(worst, drawn_line_bound(*s, Axis::Rows, Span{r.x, r.y, r.count}, lines.a, lines.b, 0));
+            fits = fits && worst < NO_BOUND;
         });
     }
     b.footprint = fits ? worst : NO_BOUND;

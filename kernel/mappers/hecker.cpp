@@ -294,9 +294,8 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
     b.footprint = NO_BOUND;
     if (c.whole_only) return b;  // nothing cheaper than his pieces
     PolygonSetup own;
-    const PolygonSetup* s = &own;
-    if (c.prepared && c.prepared->status == SetupStatus::Ok) s = &c.prepared->setup;
-    else if (setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE) != SetupStatus::Ok) return b;
+    const PolygonSetup* s = exact_setup(c, vertices, count, &own);
+    if (!s) return b;
     const double size[2] = {double(c.tex.width), double(c.tex.height)};
     double worst = 0;
     bool fits = true;
@@ -306,23 +305,15 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
             scan_line_pieces(g, left, right, [&](int64_t x0, int64_t n, int32_t u, int32_t pv, int32_t du, int32_t dv) {
                 const int64_t lo = x0 < c.clip.x0 ? c.clip.x0 : x0, hi = x0 + n > c.clip.x1 ? c.clip.x1 : x0 + n;
                 if (lo >= hi || !fits || c.settled(worst)) return;
-                const SpanLine l = span_line(*s, Axis::Rows, Span{int32_t(lo), int32_t(left.y), int32_t(hi - lo)});
-                const double last = double(hi - lo - 1);
-                if (!(l.q0 > 0) || !(l.q0 + l.qm * last > 0)) {
-                    fits = false;
-                    return;
-                }
                 const int32_t start[2] = {u, pv}, delta[2] = {du, dv};
                 double a[2], step[2], border = 0;
                 for (int t = 0; t < 2; ++t) {
                     a[t] = double(int64_t(start[t]) + (lo - x0) * delta[t]) / 65536, step[t] = double(delta[t]) / 65536;
-                    const double first = a[t], end = a[t] + step[t] * last;
-                    const double low = first < end ? first : end, high = larger(first, end);
-                    fits = fits && low >= -1 && high < size[t] + 1;  // the bordered copy: indices -1 .. size
-                    if (low < 0 || high >= size[t]) border = 1;
+                    fits = fits && within_border(a[t], step[t], double(hi - lo - 1), size[t], &border);
                     a[t] -= shift[t];  // the unshifted coordinates, as the reference's
                 }
-                if (fits) worst = larger(worst, lines_bound(l, a, step, 0, last, border));
+                if (fits) worst = larger(worst, drawn_line_bound(*s, Axis::Rows, Span{int32_t(lo), int32_t(left.y), int32_t(hi - lo)}, a, step, border));
+                fits = fits && worst < NO_BOUND;
             });
         });
     }

@@ -281,33 +281,24 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count, bool 
     b.footprint = NO_BOUND;
     if (c.whole_only) return b;  // nothing cheaper than its lines
     PolygonSetup own;
-    const PolygonSetup* s = &own;
-    if (c.prepared && c.prepared->status == SetupStatus::Ok) s = &c.prepared->setup;
-    else if (setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE) != SetupStatus::Ok) return b;
+    const PolygonSetup* s = exact_setup(c, vertices, count, &own);
+    if (!s) return b;
     const Axis axis = columns ? Axis::Columns : Axis::Rows;
     const double size[2] = {double(c.tex.width), double(c.tex.height)};
     double worst = 0;
     bool fits = true;
     auto each_line = [&](int32_t m, const SpanSetup& line) {
         if (!fits || c.settled(worst)) return;
-        const SpanLine l = span_line(*s, axis, columns ? Span{m, line.first, line.count} : Span{line.first, m, line.count});
-        const double last = double(line.count - 1);
-        if (!(l.q0 > 0) || !(l.q0 + l.qm * last > 0)) {
-            fits = false;
-            return;
-        }
         double a[2], step[2], border = 0;
         counting_line(int32_t(uint32_t(line.source_x) + 0x8000), line.step_x, 16, &a[0], &step[0]);
         counting_line(int32_t(uint32_t(line.source_y) + 0x8000), line.step_y, y_bits, &a[1], &step[1]);
         for (int t = 0; t < 2; ++t) {
-            const double first = a[t], end = a[t] + step[t] * last;
-            const double lo = first < end ? first : end, hi = larger(first, end);
-            fits = fits && lo >= -1 && hi < size[t] + 1;  // the bordered copy: indices -1 .. size
-            if (lo < 0 || hi >= size[t]) border = 1;
+            fits = fits && within_border(a[t], step[t], double(line.count - 1), size[t], &border);
             a[t] -= shift[t];  // the unshifted coordinates, as the reference's
         }
-        for (double k0 = 0; k0 <= last && fits; k0 += BOUND_PIECE)
-            worst = larger(worst, lines_bound(l, a, step, k0, k0 + BOUND_PIECE - 1 < last ? k0 + BOUND_PIECE - 1 : last, border));
+        const Span span = columns ? Span{m, line.first, line.count} : Span{line.first, m, line.count};
+        if (fits) worst = larger(worst, drawn_line_bound(*s, axis, span, a, step, border));
+        fits = fits && worst < NO_BOUND;
     };
     if (columns) for_each_line<true>(p, min_vert, c.clip, [] {}, each_line);
     else for_each_line<false>(p, min_vert, c.clip, [] {}, each_line);
