@@ -25,9 +25,11 @@ void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size
 
 namespace {
 
-// The candidates for a texture, a target and a budget's coverage, (mapper, walker) pairs: what
-// they depend on is a few bits (the texture's copies and shape, the target's kind, whether the
-// budget asks for exact coverage, which only some mappers promise), so each set is built once.
+// The candidates for a texture, a target and a budget, (mapper, walker) pairs: what they depend on
+// is a few bits (the texture's copies and shape, the target's kind, whether the budget asks for
+// exact coverage, which only some mappers promise, and whether it asks for no error at all, which
+// only the reference itself promises: every other bound counts some rounding), so each set is
+// built once.
 struct Candidates {
     bool built = false;
     int count = 0;
@@ -37,16 +39,17 @@ struct Candidates {
     bool walks[2 * MAPPER_LIMIT] = {};    // bound_walks: proven span by span only
 };
 
-const Candidates& candidates(const Texture& tex, const Target& target, bool exact_coverage) {
-    constinit static Candidates cache[16];
+const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
+    constinit static Candidates cache[32];
     const bool fast = tex.width == 256 && tex.height == 256 && tex.wrap == Wrap::Repeat && tex.aligned256;
-    Candidates& c = cache[(tex.bordered ? 1 : 0) | (fast ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0)];
+    const bool exact_coverage = budget.exact_coverage, no_error = budget.max_error == 0;
+    Candidates& c = cache[(tex.bordered ? 1 : 0) | (fast ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0) | (no_error ? 16 : 0)];
     if (c.built) return c;
     for (int a = 0; a < 2; ++a)
         for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {
             const Mapper& m = MAPPERS[i];
             if (!choosable(m) || !mapper_walks(m, Axis(a)) || !mapper_accepts(m, tex) || !mapper_targets(m, target, Axis(a))) continue;
-            if (exact_coverage && !m.guarantee.exact_coverage) continue;
+            if ((exact_coverage && !m.guarantee.exact_coverage) || (no_error && m.guarantee.max_error != 0)) continue;
             c.row[c.count] = int16_t(i), c.axis[c.count] = Axis(a), c.cost[c.count] = proven_cost(m, cost_row(MAPPER_COSTS[i]));
             c.walks[c.count] = bound_walks(m), ++c.count;
         }
@@ -60,7 +63,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
                      PreparedPolygon* prepared) {
     Choice choice;
     for (int a = 0; a < 2; ++a) prepared[a].status = SetupStatus::Unsupported, prepared[a].count = PreparedPolygon::NOT_WALKED;
-    const Candidates& list = candidates(tex, target, budget.exact_coverage);
+    const Candidates& list = candidates(tex, target, budget);
     if (list.count == 0) return choice;
     // set up once (the spread and the spans come when a bound asks for them); the other walker's
     // copy made when a candidate of it is asked
