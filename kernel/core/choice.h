@@ -85,12 +85,14 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
 }
 // The cheapest choosable mapper and walker, by the cost model, that draws into targets like
 // `target`, takes the texture and whose bound meets the budget on the polygon: rows or columns,
-// whichever the target and the mapper take (floors by rows, walls by columns). The proof counts:
-// every candidate is asked for the whole polygon at once first (PolygonSpread, from the vertices),
-// so one proven that way costs its estimate plus whole_proof_cost, one proven span by span that
-// plus BOUND_SPAN_COST a span, and the choice is the least of these (ties: the earlier candidate,
-// rows first, in registry order): where the reference costs less than proving anything cheaper,
-// exact, unasked. The polygon is set
+// whichever the target and the mapper take (floors by rows, walls by columns); a mapper that does
+// not promise exact coverage only where the budget allows any, and at budget 0 only exact. The
+// proof counts (proven_cost): a candidate is asked for the whole polygon at once first
+// (PolygonSpread, from the vertices), so one proven that way costs its estimate plus
+// whole_proof_cost, one proven span by span that plus BOUND_SPAN_COST a span; one whose bound
+// walks is asked span by span only, at its own price; the choice is the least of these (ties: the
+// earlier candidate, rows first, in registry order): where the reference costs less than proving
+// anything cheaper, exact, unasked. The polygon is set
 // up once, into prepared[Axis], and walked there only when a bound needs its spans (the chosen
 // mapper draws from its setup, and from its spans when walked).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,

@@ -232,7 +232,7 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count, int32_
 // What each loop reads at pixel k of a row: the texel floor(a + b k) along u and v (t = 0, 1),
 // with a, b from the row exactly (no rounding left over: the loops' arithmetic is integer);
 // repeat wraps it at 256 (fatmap-lut's address does not wrap: the texel is that only while the
-// line stays inside the texture, which `inside` says).
+// line stays inside the texture, which its bound checks).
 enum class Loop { Bits8, Bits16, Table };
 struct RowLines {
     double a[2], b[2];

@@ -130,19 +130,13 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
     ErrorBound b;
     double shift[2];
     if (!mapper_accepts(c.mapper, c.tex) || takes(vertices, count, c.tex, &shift[0], &shift[1]) != SetupStatus::Ok) return b;
-    PolygonSetup own_setup;
-    PolygonSpread own_spread;
-    const PolygonSetup* s = &own_setup;
-    const PolygonSpread* p = &own_spread;
-    if (c.prepared) {
-        if (c.prepared->status != SetupStatus::Ok) return b;
-        s = &c.prepared->setup, p = &prepared_spread(c.prepared);
-    } else {
-        if (setup_polygon(vertices, count, &own_setup, PLANES_ALL) != SetupStatus::Ok) return b;
-        polygon_spread(own_setup, &own_spread);
-    }
-    const SegmentArithmetic a = arithmetic(c, *s, *p, shift, 1 << SHIFT);
-    if (a.fixed < NO_BOUND) return segments_bound(c, vertices, count, 1 << SHIFT, a);
+    // set up once for the arithmetic and the chords both: auto's polygon, or one prepared here
+    PreparedPolygon own;
+    BoundContext with = c;
+    if (!with.prepared) set_up_polygon(vertices, count, &own), with.prepared = &own;
+    if (with.prepared->status != SetupStatus::Ok) return b;
+    const SegmentArithmetic a = arithmetic(c, with.prepared->setup, prepared_spread(with.prepared), shift, 1 << SHIFT);
+    if (a.fixed < NO_BOUND) return segments_bound(with, vertices, count, 1 << SHIFT, a);
     b.draws = b.exact_coverage = true;
     b.footprint = NO_BOUND;
     return b;
