@@ -132,34 +132,30 @@ bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap
     return magnitude(start) + travel < LIMIT;
 }
 
-void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out, const PreparedPolygon* same) {
-    out->count = PreparedPolygon::NOT_WALKED, out->pixels = 0, out->first = 0;
-    if (same) {
-        out->status = same->status, out->setup = same->setup, out->spread_known = same->spread_known;
-        if (same->spread_known) out->spread = same->spread;
-    } else {
-        out->status = setup_polygon(vertices, count, &out->setup, PLANES_ALL);
-        out->spread_known = false;
-    }
+void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out) {
+    for (PreparedSpans& w : out->walked) w.count = PreparedSpans::NOT_WALKED, w.pixels = 0, w.first = 0;
+    out->status = setup_polygon(vertices, count, &out->setup, PLANES_ALL);
+    out->spread_known = false;
 }
 
 void walk_polygon(PreparedPolygon* p, Axis axis, const ClipRect& clip) {
-    p->count = 0, p->pixels = 0, p->first = 0;
+    PreparedSpans& w = p->walked[int(axis)];
+    w.count = 0, w.pixels = 0, w.first = 0;
     if (p->status != SetupStatus::Ok) return;
     EdgeWalker walker(p->setup, axis, clip);
     Span span;
     while (walker.next(&span)) {
-        if (p->count == PreparedPolygon::MAX_SPANS) {
-            p->count = -1;
+        if (w.count == PreparedSpans::MAX_SPANS) {
+            w.count = -1;
             return;
         }
-        p->spans[p->count++] = span;
-        p->pixels += span.count;
+        w.spans[w.count++] = span;
+        w.pixels += span.count;
     }
 }
 
-void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out, const PreparedPolygon* same) {
-    set_up_polygon(vertices, count, out, same);
+void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out) {
+    set_up_polygon(vertices, count, out);
     walk_polygon(out, axis, clip);
 }
 

@@ -60,31 +60,32 @@ double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, d
 // The largest |t'| along the axis over the polygon, from above.
 double spread_max_step(PolygonSpread& p, const PolygonSetup& s, int t, Axis axis);
 
-// A polygon set up (every plane), for asking several mappers' bounds in turn (auto): the bounds
-// take its spread, and its spans (walked when a bound first needs them) rather than setting up and
-// walking again, from `first` on (the span that settled the last bound above its budget: the
-// likeliest to settle the next one).
-struct PreparedPolygon {
+// A polygon set up (every plane) once, for asking several mappers' bounds in turn (auto): the
+// bounds take its spread, and its spans along either walker (walked when a bound first needs them)
+// rather than setting up and walking again, from `first` on (the span that settled the last bound
+// above its budget: the likeliest to settle the next one).
+struct PreparedSpans {
     static constexpr int32_t MAX_SPANS = 512;  // a screen's rows or columns, and more
     static constexpr int32_t NOT_WALKED = -2;
-    SetupStatus status = SetupStatus::Degenerate;
-    PolygonSetup setup;
-    bool spread_known = false;
-    PolygonSpread spread;
     // spans; NOT_WALKED: not yet; -1: more than MAX_SPANS, the bounds walk the polygon themselves
     int32_t count = NOT_WALKED;
     int32_t pixels = 0;
     int32_t first = 0;
     Span spans[MAX_SPANS];
 };
-// Sets the polygon up (or takes the setup of `same`, the polygon prepared for the other walker),
-// not walked.
-void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out, const PreparedPolygon* same = nullptr);
+struct PreparedPolygon {
+    SetupStatus status = SetupStatus::Degenerate;
+    PolygonSetup setup;
+    bool spread_known = false;
+    PolygonSpread spread;
+    PreparedSpans walked[2];  // [Axis]
+};
+// Sets the polygon up, not walked.
+void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out);
 // Walks it along the axis.
 void walk_polygon(PreparedPolygon* p, Axis axis, const ClipRect& clip);
 // Both.
-void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out,
-                     const PreparedPolygon* same = nullptr);
+void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out);
 // Its spread, computed once.
 PolygonSpread& prepared_spread(PreparedPolygon* p);
 
@@ -195,12 +196,13 @@ ErrorBound unbounded(const BoundContext& c, const Vertex* vertices, int count);
 // (settled). False when setup does not take the polygon (refused, or degenerate: nothing to draw).
 template <typename F>
 bool for_each_span(const BoundContext& c, const Vertex* vertices, int count, SetupPlanes planes, F&& f) {
-    if (PreparedPolygon* p = c.prepared; p && p->count == PreparedPolygon::NOT_WALKED) walk_polygon(p, c.axis, c.clip);
-    if (PreparedPolygon* p = c.prepared; p && p->count >= 0) {
+    if (PreparedPolygon* p = c.prepared; p && p->walked[int(c.axis)].count == PreparedSpans::NOT_WALKED) walk_polygon(p, c.axis, c.clip);
+    if (PreparedPolygon* p = c.prepared; p && p->walked[int(c.axis)].count >= 0) {
         if (p->status != SetupStatus::Ok) return false;
-        for (int32_t i = 0, k = p->first; i < p->count; ++i, k = k + 1 < p->count ? k + 1 : 0)
-            if (c.settled(f(p->spans[k], p->setup))) {
-                p->first = k;
+        PreparedSpans& w = p->walked[int(c.axis)];
+        for (int32_t i = 0, k = w.first; i < w.count; ++i, k = k + 1 < w.count ? k + 1 : 0)
+            if (c.settled(f(w.spans[k], p->setup))) {
+                w.first = k;
                 break;
             }
         return true;

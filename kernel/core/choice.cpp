@@ -29,10 +29,13 @@ namespace {
 // is a few bits (the texture's copies and shape, the target's kind, whether the budget asks for
 // exact coverage, which only some mappers promise, and whether it asks for no error at all, which
 // only the reference itself promises: every other bound counts some rounding), so each set is
-// built once.
+// built once, in the order of their cost per polygon (setup and first proof), so that the
+// candidates dearer per polygon than the certain one (exact, proven for nothing) on the whole
+// polygon are never priced.
 struct Candidates {
     bool built = false;
     int count = 0;
+    int certain = -1;  // the first that promises the reference itself (exact): its bound costs nothing and always holds
     int16_t row[2 * MAPPER_LIMIT] = {};
     Axis axis[2 * MAPPER_LIMIT] = {};
     CostRow cost[2 * MAPPER_LIMIT] = {};  // the cost model's row with the first proof (proven_cost)
@@ -50,9 +53,17 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
             const Mapper& m = MAPPERS[i];
             if (!choosable(m) || !mapper_walks(m, Axis(a)) || !mapper_accepts(m, tex) || !mapper_targets(m, target, Axis(a))) continue;
             if ((exact_coverage && !m.guarantee.exact_coverage) || (no_error && m.guarantee.max_error != 0)) continue;
-            c.row[c.count] = int16_t(i), c.axis[c.count] = Axis(a), c.cost[c.count] = proven_cost(m, cost_row(MAPPER_COSTS[i]));
-            c.walks[c.count] = bound_walks(m), ++c.count;
+            // insertion by the cost per polygon (stable: ties keep rows first, registry order)
+            const CostRow cost = proven_cost(m, cost_row(MAPPER_COSTS[i]));
+            int k = c.count++;
+            for (; k > 0 && c.cost[k - 1].polygon > cost.polygon; --k)
+                c.row[k] = c.row[k - 1], c.axis[k] = c.axis[k - 1], c.cost[k] = c.cost[k - 1], c.walks[k] = c.walks[k - 1];
+            c.row[k] = int16_t(i), c.axis[k] = Axis(a), c.cost[k] = cost, c.walks[k] = bound_walks(m);
         }
+    for (int k = 0; k < c.count && c.certain < 0; ++k) {
+        const Mapper& m = MAPPERS[c.row[k]];
+        if (m.guarantee.max_error == 0 && m.guarantee.exact_coverage && whole_proof_cost(m) == 0 && !c.walks[k]) c.certain = k;
+    }
     c.built = true;
     return c;
 }
@@ -62,34 +73,40 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
                      PreparedPolygon* prepared) {
     Choice choice;
-    for (int a = 0; a < 2; ++a) prepared[a].status = SetupStatus::Unsupported, prepared[a].count = PreparedPolygon::NOT_WALKED;
+    for (PreparedSpans& w : prepared->walked) w.count = PreparedSpans::NOT_WALKED;
+    prepared->status = SetupStatus::Unsupported;
     const Candidates& list = candidates(tex, target, budget);
     if (list.count == 0) return choice;
-    // set up once (the spread and the spans come when a bound asks for them); the other walker's
-    // copy made when a candidate of it is asked
-    PreparedPolygon* first = &prepared[int(list.axis[0])];
-    set_up_polygon(vertices, count, first);
-    if (first->status != SetupStatus::Ok) return choice;
+    // set up once, for both walkers (the spread and the spans come when a bound asks for them)
+    set_up_polygon(vertices, count, prepared);
+    if (prepared->status != SetupStatus::Ok) return choice;
     PolygonSize size[2];
-    polygon_sizes(first->setup, target.clip, size);
-    // the estimates with the first proofs (a mapper whose bound walks: span by span already)
+    polygon_sizes(prepared->setup, target.clip, size);
+    // the estimates with the first proofs (a mapper whose bound walks: span by span already), of
+    // the candidates cheaper per polygon than the certain one on the whole polygon: the others
+    // cannot cost less than it
     double cost[2 * MAPPER_LIMIT];
-    for (int k = 0; k < list.count; ++k) cost[k] = estimate_cost(list.cost[k], size[int(list.axis[k])]);
+    const double ceiling0 = list.certain >= 0 ? estimate_cost(list.cost[list.certain], size[int(list.axis[list.certain])]) : 1e300;
+    int live = 0;
+    for (; live < list.count && list.cost[live].polygon < ceiling0; ++live) cost[live] = estimate_cost(list.cost[live], size[int(list.axis[live])]);
+    if (list.certain >= live) {  // the certain one, after dearer ones left unpriced
+        for (int k = live; k < list.certain; ++k) cost[k] = 1e300;
+        cost[list.certain] = ceiling0, live = list.certain + 1;
+    }
     const bool* walks = list.walks;
-    bool asked[2 * MAPPER_LIMIT] = {};
+    bool asked[2 * MAPPER_LIMIT];
+    for (int k = 0; k < live; ++k) asked[k] = false;
     // the cheapest candidate not yet asked whose cost is below `ceiling` (ties: the earlier), or -1
     auto cheapest = [&](double ceiling) {
         int best = -1;
-        for (int k = 0; k < list.count; ++k)
+        for (int k = 0; k < live; ++k)
             if (!asked[k] && cost[k] < ceiling && (best < 0 || cost[k] < cost[best])) best = k;
         return best;
     };
     auto ask = [&](int k, bool whole_only) {
         asked[k] = true;
         const Mapper& m = MAPPERS[list.row[k]];
-        PreparedPolygon& p = prepared[int(list.axis[k])];
-        if (p.status == SetupStatus::Unsupported) set_up_polygon(vertices, count, &p, first);
-        BoundContext c{m, tex, list.axis[k], target.clip, budget.max_error < 0 ? NO_BOUND : budget.max_error, &p, whole_only};
+        BoundContext c{m, tex, list.axis[k], target.clip, budget.max_error < 0 ? NO_BOUND : budget.max_error, prepared, whole_only};
         ErrorBound b = m.bound(c, vertices, count);
         if (!budget_allows(budget, b)) return false;
         choice.mapper = &m, choice.axis = list.axis[k], choice.bound = b, choice.by_spans = !whole_only;
@@ -122,8 +139,8 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count) {
     Target kind = surface_kind(c.axis == Axis::Rows ? Surface::Linear : Surface::Planar);
     kind.clip = c.clip;
-    PreparedPolygon prepared[2];
-    return choose_mapper(DEFAULT_BUDGET, vertices, count, c.tex, kind, prepared).bound;
+    PreparedPolygon prepared;
+    return choose_mapper(DEFAULT_BUDGET, vertices, count, c.tex, kind, &prepared).bound;
 }
 
 }  // namespace raster

@@ -91,12 +91,13 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
 // (PolygonSpread, from the vertices), so one proven that way costs its estimate plus
 // whole_proof_cost, one proven span by span that plus BOUND_SPAN_COST a span; one whose bound
 // walks is asked span by span only, at its own price; the choice is the least of these (ties: the
-// earlier candidate, rows first, in registry order): where the reference costs less than proving
-// anything cheaper, exact, unasked. The polygon is set
-// up once, into prepared[Axis], and walked there only when a bound needs its spans (the chosen
-// mapper draws from its setup, and from its spans when walked).
+// one cheaper per polygon, then rows first, in registry order): where the reference costs less
+// than proving anything cheaper, exact, unasked. Candidates dearer per polygon alone than exact on
+// the whole polygon are not priced. The polygon is set up once, into *prepared, and walked along a
+// walker only when a bound needs its spans (the chosen mapper draws from its setup, and from its
+// spans when walked).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
-                     PreparedPolygon prepared[2]);
+                     PreparedPolygon* prepared);
 
 // auto's own bound: its choice's under the default budget.
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count);

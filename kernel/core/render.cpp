@@ -34,7 +34,8 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
         if (prepared && prepared->status == SetupStatus::Ok) {  // set up with every plane (and maybe walked) already
             status = prepared->status;
             int32_t i = 0;
-            if (prepared->count >= 0) draw_spans(prepared->setup, [&](Span* s) { return i < prepared->count && (*s = prepared->spans[i++], true); });
+            const PreparedSpans& w = prepared->walked[int(axis)];
+            if (w.count >= 0) draw_spans(prepared->setup, [&](Span* s) { return i < w.count && (*s = w.spans[i++], true); });
             else {
                 EdgeWalker walker(prepared->setup, axis, target.clip);
                 draw_spans(prepared->setup, [&](Span* s) { return walker.next(s); });
@@ -67,14 +68,14 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
     if (!mapper.chooses) return draw_with(vertices, count, tex, mapper, axis, target, stats, variant, nullptr);
     // auto: the mapper and the walker chosen (the choice counts as setup); where no mapper draws
     // the polygon, exact's setup says why
-    PreparedPolygon prepared[2];
-    Choice c = choose_mapper(budget, vertices, count, tex, target, prepared);
+    PreparedPolygon prepared;
+    Choice c = choose_mapper(budget, vertices, count, tex, target, &prepared);
     probe_lap(stats->probe, Phase::Setup);
     if (!c.mapper) {
         const Axis any = target_supports(target, axis) ? axis : Axis::Columns;  // a walker the target takes
         return draw_with(vertices, count, tex, *find_mapper("exact"), any, target, stats, variant, nullptr);
     }
-    return draw_with(vertices, count, tex, *c.mapper, c.axis, target, stats, variant, &prepared[int(c.axis)]);
+    return draw_with(vertices, count, tex, *c.mapper, c.axis, target, stats, variant, &prepared);
 }
 
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,

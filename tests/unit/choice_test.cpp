@@ -46,8 +46,8 @@ TEST(Auto, PreparesThePolygonAsTheWalkerDrawsIt) {
             SetupStatus status = draw_polygon(p.data(), 3, tex, exact, axis, t, &stats);
             EXPECT_EQ(prepared.status, status);
             if (status != SetupStatus::Ok) continue;
-            EXPECT_EQ(uint32_t(prepared.count), stats.spans);
-            EXPECT_EQ(uint32_t(prepared.pixels), stats.pixels);
+            EXPECT_EQ(uint32_t(prepared.walked[int(axis)].count), stats.spans);
+            EXPECT_EQ(uint32_t(prepared.walked[int(axis)].pixels), stats.pixels);
         }
     }
 }
@@ -72,8 +72,8 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
             target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
             double last_total = 1e300;
             for (const Budget& b : BUDGETS) {
-                PreparedPolygon prepared[2];
-                Choice c = choose_mapper(b, p.data(), 3, tex, target, prepared);
+                PreparedPolygon prepared;
+                Choice c = choose_mapper(b, p.data(), 3, tex, target, &prepared);
                 if (!c.mapper) {  // only where exact cannot draw it either
                     EXPECT_FALSE(find_mapper("exact")->bound(BoundContext{*find_mapper("exact"), tex, Axis::Rows, target.clip}, p.data(), 3).draws);
                     break;
