@@ -30,8 +30,8 @@ namespace {
 // exact coverage, which only some mappers promise, and whether it asks for no error at all, which
 // only the reference itself promises: every other bound counts some rounding), so each set is
 // built once, in the order of their cost per polygon (setup and first proof), so that the
-// candidates dearer per polygon than the certain one (exact, proven for nothing) on the whole
-// polygon are never priced.
+// candidates that cannot cost less than the certain one (exact, proven for nothing) on the polygon
+// are never priced.
 struct Candidates {
     bool built = false;
     int count = 0;
@@ -40,6 +40,10 @@ struct Candidates {
     Axis axis[2 * MAPPER_LIMIT] = {};
     CostRow cost[2 * MAPPER_LIMIT] = {};  // the cost model's row with the first proof (proven_cost)
     bool walks[2 * MAPPER_LIMIT] = {};    // bound_walks: proven span by span only
+    bool spans[2 * MAPPER_LIMIT] = {};    // proven_by_spans: asked span by span (after the whole polygon)
+    // the least cost a span and a pixel of candidates k on: with the cost per polygon (which only
+    // grows), what any of them costs at least
+    double least_span[2 * MAPPER_LIMIT] = {}, least_pixel[2 * MAPPER_LIMIT] = {};
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
@@ -57,9 +61,14 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
             const CostRow cost = proven_cost(m, cost_row(MAPPER_COSTS[i]));
             int k = c.count++;
             for (; k > 0 && c.cost[k - 1].polygon > cost.polygon; --k)
-                c.row[k] = c.row[k - 1], c.axis[k] = c.axis[k - 1], c.cost[k] = c.cost[k - 1], c.walks[k] = c.walks[k - 1];
-            c.row[k] = int16_t(i), c.axis[k] = Axis(a), c.cost[k] = cost, c.walks[k] = bound_walks(m);
+                c.row[k] = c.row[k - 1], c.axis[k] = c.axis[k - 1], c.cost[k] = c.cost[k - 1], c.walks[k] = c.walks[k - 1], c.spans[k] = c.spans[k - 1];
+            c.row[k] = int16_t(i), c.axis[k] = Axis(a), c.cost[k] = cost, c.walks[k] = bound_walks(m), c.spans[k] = proven_by_spans(m);
         }
+    for (int k = c.count - 1; k >= 0; --k) {
+        const bool last = k == c.count - 1;
+        c.least_span[k] = last || c.cost[k].span < c.least_span[k + 1] ? c.cost[k].span : c.least_span[k + 1];
+        c.least_pixel[k] = last || c.cost[k].pixel < c.least_pixel[k + 1] ? c.cost[k].pixel : c.least_pixel[k + 1];
+    }
     for (int k = 0; k < c.count && c.certain < 0; ++k) {
         const Mapper& m = MAPPERS[c.row[k]];
         if (m.guarantee.max_error == 0 && m.guarantee.exact_coverage && whole_proof_cost(m) == 0 && !c.walks[k]) c.certain = k;
@@ -83,12 +92,13 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     PolygonSize size[2];
     polygon_sizes(prepared->setup, target.clip, size);
     // the estimates with the first proofs (a mapper whose bound walks: span by span already), of
-    // the candidates cheaper per polygon than the certain one on the whole polygon: the others
-    // cannot cost less than it
+    // the candidates up to the first from which on none can cost less than the certain one
     double cost[2 * MAPPER_LIMIT];
     const double ceiling0 = list.certain >= 0 ? estimate_cost(list.cost[list.certain], size[int(list.axis[list.certain])]) : 1e300;
+    const double fewest_spans = size[0].spans < size[1].spans ? size[0].spans : size[1].spans, pixels = size[0].pixels;
     int live = 0;
-    for (; live < list.count && list.cost[live].polygon < ceiling0; ++live) cost[live] = estimate_cost(list.cost[live], size[int(list.axis[live])]);
+    for (; live < list.count && list.cost[live].polygon + list.least_span[live] * fewest_spans + list.least_pixel[live] * pixels < ceiling0; ++live)
+        cost[live] = estimate_cost(list.cost[live], size[int(list.axis[live])]);
     if (list.certain >= live) {  // the certain one, after dearer ones left unpriced
         for (int k = live; k < list.certain; ++k) cost[k] = 1e300;
         cost[list.certain] = ceiling0, live = list.certain + 1;
@@ -113,8 +123,8 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         return true;
     };
     // the cheapest proven by the whole polygon at once (from its vertices: cheap; exact always is);
-    // then the cheaper ones, whose proof takes their spans, by their cost with the proof's, as long
-    // as that is below the first's
+    // then the cheaper ones proven span by span, by their cost with the proof's, as long as that is
+    // below the first's
     int before[2 * MAPPER_LIMIT], n = 0;
     double ceiling = 1e300;
     for (int k = cheapest(1e300); k >= 0; k = cheapest(1e300)) {
@@ -124,7 +134,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
             ceiling = cost[k];
             break;
         }
-        before[n++] = k;
+        if (list.spans[k]) before[n++] = k;
     }
     for (int i = 0; i < n; ++i) {
         const int k = before[i];

@@ -144,6 +144,12 @@ using BoundFn = ErrorBound (*)(const BoundContext& c, const Vertex* vertices, in
 // The differential check of a mapper's NASM loop against its twin (core/selftest.h).
 using CheckFn = LoopCheck (*)(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
+// Whether auto, where a mapper's bound of the whole polygon at once is above the budget, asks its
+// bound span by span (which costs a few hundred instructions a span): only where the spans' bounds
+// can be much tighter than the whole polygon's, as they are where the error depends on each line's
+// own direction or place (docs/accuracy.md, "The choice").
+enum SpanProof : uint8_t { SPANS_NOT_ASKED, SPANS_ASKED };
+
 struct Mapper {
     const char* name;
     const char* family;   // "ours" or "classic"
@@ -160,6 +166,7 @@ struct Mapper {
                               // or one the kernel checks on the VGA itself, NEED_VGA_FOR_ASM)
     BoundFn bound = nullptr;  // its error bound on a polygon (unbounded: none derived)
     bool chooses = false;     // auto: draws each polygon with a mapper it chooses (core/choice.h)
+    SpanProof span_proof = SPANS_NOT_ASKED;  // whether auto asks its bound span by span (core/choice.h)
 };
 
 extern const Mapper MAPPERS[];

@@ -18,7 +18,8 @@ namespace raster {
 // Each row: name, family, origin; the promise in words; the promise checkable, what it needs, the
 // walkers it takes; its span function (generic walker) or nullptr; its twin loop and NASM loop
 // (TWIN_AND_ASM); its own polygon driver; the random cases that check its NASM loop; its error
-// bound on a polygon (core/bound.h; unbounded where none is derived yet).
+// bound on a polygon (core/bound.h; unbounded where none is derived yet); whether it is auto; and
+// whether auto asks its bound span by span (SpanProof).
 const Mapper MAPPERS[] = {
     {"affine", "ours", "textbook affine interpolation",
      "exact coverage; u, v affine in screen space (16.16 steps): error grows with depth variation",
@@ -38,7 +39,7 @@ const Mapper MAPPERS[] = {
     {"constant-depth", "ours", "Doom's floors and walls: exact at both ends of each row or column, affine between",
      "exact u, v at each span's first and last pixel centre, 16.16 steps between: exact up to rounding along lines of constant "
      "depth (floors and ceilings by rows, upright walls by columns), its bound says how far off elsewhere; exact coverage; any texture",
-     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<SPAN_LONG>, TWIN_AND_ASM(step_loop), nullptr, check_step, subdiv_bound<SPAN_LONG>},
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, subdiv_span<SPAN_LONG>, TWIN_AND_ASM(step_loop), nullptr, check_step, subdiv_bound<SPAN_LONG>, false, SPANS_ASKED},
     {"persp-adaptive-0.5", "ours", "runs as long as the bound keeps within half a footprint",
      "exact u, v at each run's ends, 16.16 steps between; each run the longest (to 256 pixels) whose chord bound is within "
      "0.5 footprints, from the curvature of 1/w there: long where depth barely changes; exact coverage; any texture",
@@ -82,10 +83,10 @@ const Mapper MAPPERS[] = {
      fatmap::draw_lut, check_fatmap_lut, fatmap::bound_lut},
     {"quake-subdiv16", "classic", "id Software, WinQuake d_scan.c / d_draw16.s (1996-99)",
      "perspective-correct every 16 pixels and at each span's last pixel, affine between (steps floored); s, t clamped into the texture; exact coverage (our walker)",
-     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw16, check_quake, quake::bound16},
+     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw16, check_quake, quake::bound16, false, SPANS_ASKED},
     {"quake-subdiv8", "classic", "id Software, WinQuake d_scan.c D_DrawSpans8 / d_draw.s",
      "as quake-subdiv16 with 8-pixel segments",
-     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw8, check_quake, quake::bound8},
+     EXACT_COVERAGE, NEED_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(quake_span_loop), quake::draw8, check_quake, quake::bound8, false, SPANS_ASKED},
     {"auto", "ours", "the scene's budget: the cheapest mapper proven to meet it, polygon by polygon",
      "each polygon by the cheapest of the bounded mappers (the cost model: make bench) whose error bound meets the scene's budget "
      "(without a budget line: footprint error 1, exact coverage); exact coverage unless the budget allows any",

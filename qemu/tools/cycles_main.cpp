@@ -68,7 +68,7 @@ std::vector<std::string> split_commas(const char* s) {
 
 int main(int argc, char** argv) {
     if (argc != 5) {
-        std::fprintf(stderr, "usage: modexlab-cycles SCENE.scene,... MAPPER,... FRAMES TEXTURE_DIR\n"
+        std::fprintf(stderr, "usage: modexlab-cycles SCENE.scene,... MAPPER[@BUDGET],... FRAMES TEXTURE_DIR\n"
                              "  times each mapper drawing FRAMES frames of each scene (spread over its animation)\n");
         return 2;
     }
@@ -94,14 +94,25 @@ int main(int argc, char** argv) {
         build_texture_set(*world, textures.get());
         std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1);
         name = name.substr(0, name.rfind('.'));
-        for (const std::string& mapper_name : mapper_names) {
+        for (const std::string& full_name : mapper_names) {
+            // auto@B: auto at a budget of B footprints with exact coverage (the bench's rows)
+            const size_t at = full_name.find('@');
+            const std::string mapper_name = full_name.substr(0, at);
             const Mapper* m = find_mapper({mapper_name.data(), mapper_name.size()});
             if (!m) fail("unknown mapper '" + mapper_name + "'");
+            Budget budget;
+            if (at != std::string::npos) {
+                char* end = nullptr;
+                const std::string b = full_name.substr(at + 1);
+                budget = Budget{true, std::strtod(b.c_str(), &end), true};
+                if (!m->chooses || b.empty() || *end || !(budget.max_error >= 0)) fail("'" + full_name + "': only auto takes @BUDGET, a number of footprints from 0");
+            }
             const Axis axis = home_axis(*m);
             const bool planar = ram_planar(*m, axis);
             uint64_t pixels = 0, cycles = 0;
             for (int i = 0; i < frames; ++i) {
                 build_frame(*world, int32_t(int64_t(i) * world->frames / frames), frame.get(), scratch.get());
+                if (at != std::string::npos) frame->budget = budget;
                 uint64_t best = ~uint64_t(0);
                 RenderStats stats;
                 for (int r = 0; r < REPEATS; ++r) {
@@ -115,7 +126,7 @@ int main(int argc, char** argv) {
                 pixels += stats.pixels;
                 cycles += best;
             }
-            std::printf("%s %s %llu %llu\n", name.c_str(), m->name, (unsigned long long)pixels, (unsigned long long)cycles);
+            std::printf("%s %s %llu %llu\n", name.c_str(), full_name.c_str(), (unsigned long long)pixels, (unsigned long long)cycles);
             std::fflush(stdout);
         }
     }

@@ -54,9 +54,9 @@ TEST(Auto, PreparesThePolygonAsTheWalkerDrawsIt) {
 
 // The choice against every candidate (mapper and walker), worked out here from the bounds and the
 // cost model: a candidate proven by the whole polygon at once costs its estimate and that proof,
-// one proven span by span (its tight bound, asked without a budget) BOUND_SPAN_COST a span more
-// (proven_cost; a mapper whose bound walks is proven only so, at its own price); auto takes the
-// least, and a looser budget never costs more.
+// one proven span by span (its tight bound, asked without a budget, where proven_by_spans)
+// BOUND_SPAN_COST a span more (proven_cost; a mapper whose bound walks is proven only so, at its own
+// price); auto takes the least, and a looser budget never costs more.
 TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     TriangleGen gen(1123u);
     std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
@@ -91,7 +91,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                     const double cost = estimate_cost(proven_cost(m, cost_row(MAPPER_COSTS[&m - MAPPERS])), sizes[int(axis)]);
                     BoundContext whole{m, tex, axis, target.clip, b.max_error < 0 ? NO_BOUND : b.max_error, nullptr, true};
                     if (!bound_walks(m) && budget_allows(b, m.bound(whole, p.data(), 3))) return cost;
-                    if (budget_allows(b, m.bound(BoundContext{m, tex, axis, target.clip}, p.data(), 3)))
+                    if (proven_by_spans(m) && budget_allows(b, m.bound(BoundContext{m, tex, axis, target.clip}, p.data(), 3)))
                         return cost + (bound_walks(m) ? 0 : BOUND_SPAN_COST * sizes[int(axis)].spans);
                     return 1e300;
                 };
