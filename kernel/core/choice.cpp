@@ -95,10 +95,14 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     // the candidates up to the first from which on none can cost less than the certain one
     double cost[2 * MAPPER_LIMIT];
     const double ceiling0 = list.certain >= 0 ? estimate_cost(list.cost[list.certain], size[int(list.axis[list.certain])]) : 1e300;
-    const double fewest_spans = size[0].spans < size[1].spans ? size[0].spans : size[1].spans, pixels = size[0].pixels;
+    const bool rows_fewer = size[0].spans < size[1].spans;
+    const double fewest_spans = size[rows_fewer ? 0 : 1].spans, most_spans = size[rows_fewer ? 1 : 0].spans, pixels = size[0].pixels;
+    auto least_cost = [&](int k) {  // (a fitted cost below 0 a span: least where the spans are most)
+        const double a_span = list.least_span[k];
+        return list.cost[k].polygon + a_span * (a_span < 0 ? most_spans : fewest_spans) + list.least_pixel[k] * pixels;
+    };
     int live = 0;
-    for (; live < list.count && list.cost[live].polygon + list.least_span[live] * fewest_spans + list.least_pixel[live] * pixels < ceiling0; ++live)
-        cost[live] = estimate_cost(list.cost[live], size[int(list.axis[live])]);
+    for (; live < list.count && least_cost(live) < ceiling0; ++live) cost[live] = estimate_cost(list.cost[live], size[int(list.axis[live])]);
     if (list.certain >= live) {  // the certain one, after dearer ones left unpriced
         for (int k = live; k < list.certain; ++k) cost[k] = 1e300;
         cost[list.certain] = ceiling0, live = list.certain + 1;
