@@ -225,25 +225,31 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
     o.steps_known = true;
     const double one = double(SUBPIXEL_ONE);
     const Plane* exact[2] = {&s.pu, &s.pv};
+    // K = (P_a Q - P Q_a) per pixel is linear: its extremes at the vertices too, each within its own
+    // rounding and what P's and Q's do to it (|P_a| and |Q_a| times their terms); Q, P and their
+    // terms at a vertex once for both t and both axes a
+    double lo[2][2] = {}, hi[2][2] = {}, err[2][2] = {};
+    for (int i = 0; i < s.edge_count; ++i) {
+        const Corner c(s, i);
+        const double q = s.q.at(c.x, c.y), q_terms = terms(s.q, c);
+        for (int t = 0; t < 2; ++t) {
+            const double pt = exact[t]->at(c.x, c.y), p_terms = terms(*exact[t], c);
+            for (int a = 0; a < 2; ++a) {
+                const double pa = a ? exact[t]->gy : exact[t]->gx, qa = a ? s.q.gy : s.q.gx;
+                const double k = (pa * q - pt * qa) * one;
+                lo[t][a] = i ? (k < lo[t][a] ? k : lo[t][a]) : k, hi[t][a] = i ? larger(k, hi[t][a]) : k;
+                err[t][a] = larger(err[t][a], (magnitude(pa * q) + magnitude(pt * qa) + magnitude(pa) * q_terms + magnitude(qa) * p_terms) *
+                                                  4 * EPSILON * one);
+            }
+        }
+    }
     o.footprint = 0;
     for (int t = 0; t < 2; ++t)
         for (int a = 0; a < 2; ++a) {
-            // K = (P_a Q - P Q_a) per pixel is linear: its extremes at the vertices too, each within
-            // its own rounding and what P's and Q's do to it (|P_a| and |Q_a| times their terms)
-            const double pa = a ? exact[t]->gy : exact[t]->gx, qa = a ? s.q.gy : s.q.gx;
-            double lo = 0, hi = 0, err = 0;
-            for (int i = 0; i < s.edge_count; ++i) {
-                const Corner c(s, i);
-                const double q = s.q.at(c.x, c.y), pt = exact[t]->at(c.x, c.y);
-                const double k = (pa * q - pt * qa) * one;
-                lo = i ? (k < lo ? k : lo) : k, hi = i ? larger(k, hi) : k;
-                err = larger(err, (magnitude(pa * q) + magnitude(pt * qa) + magnitude(pa) * terms(s.q, c) + magnitude(qa) * terms(*exact[t], c)) *
-                                      4 * EPSILON * one);
-            }
-            o.k_max[t][a] = (larger(magnitude(lo), magnitude(hi)) + err) * (1 + 1e-9);
+            o.k_max[t][a] = (larger(magnitude(lo[t][a]), magnitude(hi[t][a])) + err[t][a]) * (1 + 1e-9);
             // the least |K| over the polygon: 0 where K changes sign (or may, within its rounding)
-            const double least = lo > 0 ? lo : hi < 0 ? -hi : 0.0;
-            o.footprint = larger(o.footprint, (least - err) * (1 - 1e-9));
+            const double least = lo[t][a] > 0 ? lo[t][a] : hi[t][a] < 0 ? -hi[t][a] : 0.0;
+            o.footprint = larger(o.footprint, (least - err[t][a]) * (1 - 1e-9));
         }
     o.footprint = o.footprint > 0 && o.q_min > 0 ? o.footprint / (o.q_max * o.q_max) * (1 - 1e-9) : 0.0;
 }
