@@ -20,6 +20,10 @@ namespace files {
 namespace {
 
 constexpr uint32_t BYTE_TIMEOUT_MS = 5000;
+// A refused upload's bytes are dropped while they keep coming: a client that sent them with the
+// header sends them back to back; one that waits for `ready` sends none, and hears the refusal this
+// much later.
+constexpr uint32_t DISCARD_GAP_MS = 250;
 
 File g_files[MAX_FILES];
 int g_count = 0;
@@ -106,27 +110,45 @@ bool receive(uint8_t* out, size_t length, uint32_t crc32, lib::Fmt* error) {
     return true;
 }
 
-bool upload(lib::StrView name, size_t length, uint32_t crc32, lib::Fmt* error) {
+size_t discard(size_t length) {
+    size_t i = 0;
+    for (; i < length; ++i) {
+        if (!serial::byte_ready() && !timer::wait_ms_or(DISCARD_GAP_MS, byte_waiting, nullptr)) break;
+        serial::read_byte();
+    }
+    return i;
+}
+
+namespace {
+
+File* find_upload(lib::StrView name) {
+    for (int i = 0; i < g_count; ++i)
+        if (g_files[i].origin == Origin::Upload && same(g_files[i].name, name)) return &g_files[i];
+    return nullptr;
+}
+
+}  // namespace
+
+bool upload_fits(lib::StrView name, size_t length, lib::Fmt* error) {
     if (length > UPLOAD_SPACE - g_upload_used) {
-        // read the bytes all the same (up to a stall), so that they are not taken for commands
-        for (size_t i = 0; i < length; ++i) {
-            if (!serial::byte_ready() && !timer::wait_ms_or(BYTE_TIMEOUT_MS, byte_waiting, nullptr)) break;
-            serial::read_byte();
-        }
         error->s("no room: ").u(uint32_t(UPLOAD_SPACE - g_upload_used)).s(" of ").u(uint32_t(UPLOAD_SPACE)).s(" upload bytes left in this boot");
         return false;
     }
+    if (!find_upload(name) && g_count == MAX_FILES) {
+        error->s("too many files (at most ").u(MAX_FILES).s(")");
+        return false;
+    }
+    return true;
+}
+
+bool upload(lib::StrView name, size_t length, uint32_t crc32, lib::Fmt* error) {
+    if (!upload_fits(name, length, error)) return false;
     uint8_t* data = g_upload_space + g_upload_used;
     if (!receive(data, length, crc32, error)) return false;
     g_upload_used += length;
-    for (int i = 0; i < g_count; ++i)
-        if (g_files[i].origin == Origin::Upload && same(g_files[i].name, name)) {
-            g_files[i].data = data, g_files[i].size = length;
-            return true;
-        }
-    if (g_count == MAX_FILES) {
-        error->s("too many files (at most ").u(MAX_FILES).s(")");
-        return false;
+    if (File* f = find_upload(name)) {
+        f->data = data, f->size = length;
+        return true;
     }
     add(name.data, name.size, data, length, Origin::Upload);
     return true;

@@ -36,9 +36,17 @@ int count();
 const File& at(int i);
 const File* find(lib::StrView name);
 
+// Whether an upload of `length` bytes under `name` would be taken: room in the upload space, and a
+// place in the file table (a name already uploaded is replaced). False with `error` otherwise.
+bool upload_fits(lib::StrView name, size_t length, lib::Fmt* error);
 // Receives `length` bytes from COM1 (a stall of 5 s between bytes ends it) and checks their CRC-32;
-// on success the file named `name` is (re)placed in the upload space. False with `error` otherwise.
+// on success the file named `name` is (re)placed in the upload space. False with `error` otherwise
+// (upload_fits' refusals before reading a byte).
 bool upload(lib::StrView name, size_t length, uint32_t crc32, lib::Fmt* error);
+// Reads and drops up to `length` bytes from COM1, stopping where none comes for 250 ms: the bytes
+// that follow a refused upload's header, so that they are never taken for commands. How many it
+// read.
+size_t discard(size_t length);
 size_t upload_space_used();
 
 // Receives bytes from COM1 into `out` with the same rules (for callers with their own buffer).

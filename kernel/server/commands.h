@@ -20,6 +20,9 @@ using lib::StrView;
 // A handler gets the words after the command's name, their count already checked against the row.
 using Handler = void (*)(Context& ctx, const StrView* args, size_t nargs);
 
+// The most words after a command's name: a line of 255 characters holds at most 128 words.
+constexpr size_t MAX_ARGS = 127;
+
 struct Command {
     const char* name;
     const char* usage;  // what `help` lists and a usage error quotes

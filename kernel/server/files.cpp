@@ -1,5 +1,6 @@
 // The file commands: uploads (scene, file), the file list, and loading a scene file of either
 // version, whose reply describes what was loaded.
+#include "drivers/serial.h"
 #include "kernel/files.h"
 #include "kernel/scenes.h"
 #include "kernel/server/commands.h"
@@ -67,21 +68,70 @@ void load_and_reply(const char* cmd, const files::File& f) {
     r.end();
 }
 
-bool parse_upload(const char* cmd, StrView bytes, StrView crc, uint32_t* length, uint32_t* crc32) {
-    if (!lib::parse_u32(bytes, length) || *length == 0 || *length > files::MAX_UPLOAD || !lib::parse_u32(crc, crc32)) {
-        lib::Fmt m;
-        m.s("bad length or checksum: BYTES 1..").u(uint32_t(files::MAX_UPLOAD)).s(", CRC32 decimal or 0x hex");
-        reply::error(cmd, m.c_str());
+// The length an upload's header gives, where one can be read, for a refusal (the word
+// `announced`, below); decimal or 0x hex, a number beyond 32 bits meaning every byte that comes
+// (while they come). 0 where there is none.
+size_t announced_length(StrView word) {
+    size_t i = word.size > 2 && word.data[0] == '0' && (word.data[1] == 'x' || word.data[1] == 'X') ? 2 : 0;
+    const uint64_t base = i ? 16 : 10;
+    uint64_t value = 0;
+    if (i == word.size) return 0;
+    for (; i < word.size; ++i) {
+        const char c = word.data[i];
+        const uint64_t digit = c >= '0' && c <= '9' ? uint64_t(c - '0') : c >= 'a' && c <= 'f' ? uint64_t(c - 'a' + 10)
+                               : c >= 'A' && c <= 'F' ? uint64_t(c - 'A' + 10) : 99;
+        if (digit >= base) return 0;
+        value = value * base + digit;
+        if (value > 0xFFFFFFFFull) return SIZE_MAX;
+    }
+    return size_t(value);
+}
+
+// Refuses an upload: the bytes its header announced are read and dropped first (while they come,
+// files::discard), so that none of them is taken for a command, then the error, with how many were
+// dropped (a scene error carries "line" 0, as a parse error carries its line).
+void refuse_upload(const char* cmd, StrView announced, const char* message) {
+    const size_t dropped = files::discard(announced_length(announced));
+    lib::JsonLine r = reply::begin(false);
+    r.str("cmd", cmd).str("error", message).u32("discarded", uint32_t(dropped));
+    if (cmd[0] == 's') r.u32("line", 0);
+    r.end();
+}
+
+// Checks an upload's header (BYTES CRC32 after `name_args` words; `name` the file's name) and
+// says "ready" when the bytes may come; else refuses it. False when refused. The length a refusal
+// drops is scene's first argument and file's second-to-last (a name with a space in it still ends
+// the header with BYTES CRC32), or its second where it has only two.
+bool accept_upload(const char* cmd, StrView name, const StrView* args, size_t nargs, size_t name_args, uint32_t* length, uint32_t* crc32) {
+    const StrView announced = name_args == 0 ? (nargs ? args[0] : StrView{}) : nargs >= 3 ? args[nargs - 2] : nargs == 2 ? args[1] : StrView{};
+    lib::Fmt m;
+    if (nargs != name_args + 2) {
+        const Command* c = find_command(StrView{cmd, lib::c_length(cmd)});
+        refuse_upload(cmd, announced, m.s("usage: ").s(c->usage).c_str());
         return false;
     }
+    const StrView bytes = args[name_args], crc = args[name_args + 1];
+    if (!lib::parse_u32(bytes, length) || *length == 0 || *length > files::MAX_UPLOAD || !lib::parse_u32(crc, crc32)) {
+        refuse_upload(cmd, bytes, m.s("bad length or checksum: BYTES 1..").u(uint32_t(files::MAX_UPLOAD)).s(", CRC32 decimal or 0x hex").c_str());
+        return false;
+    }
+    if (name.size == 0 || name.size >= size_t(raster::MAX_FILE_NAME)) {
+        refuse_upload(cmd, bytes, m.s("bad name: 1 to ").u(uint32_t(raster::MAX_FILE_NAME - 1)).s(" characters").c_str());
+        return false;
+    }
+    if (!files::upload_fits(name, *length, &m)) {
+        refuse_upload(cmd, bytes, m.c_str());
+        return false;
+    }
+    lib::JsonLine(serial::sink()).str("event", "ready").str("cmd", cmd).u32("bytes", *length).end();
     return true;
 }
 
 }  // namespace
 
-void cmd_scene(Context&, const StrView* args, size_t) {
+void cmd_scene(Context&, const StrView* args, size_t nargs) {
     uint32_t length, crc;
-    if (!parse_upload("scene", args[0], args[1], &length, &crc)) return;
+    if (!accept_upload("scene", UPLOADED_SCENE, args, nargs, 0, &length, &crc)) return;
     lib::Fmt error;
     if (!files::upload(UPLOADED_SCENE, length, crc, &error)) {
         // every scene error carries "line", as a parse error does: 0, no line
@@ -91,15 +141,9 @@ void cmd_scene(Context&, const StrView* args, size_t) {
     load_and_reply("scene", *files::find(UPLOADED_SCENE));
 }
 
-void cmd_file(Context&, const StrView* args, size_t) {
+void cmd_file(Context&, const StrView* args, size_t nargs) {
     uint32_t length, crc;
-    if (!parse_upload("file", args[1], args[2], &length, &crc)) return;
-    if (args[0].size == 0 || args[0].size >= size_t(raster::MAX_FILE_NAME)) {
-        lib::Fmt m;
-        m.s("bad name: 1 to ").u(uint32_t(raster::MAX_FILE_NAME - 1)).s(" characters");
-        reply::error("file", m.c_str());
-        return;
-    }
+    if (!accept_upload("file", nargs == 3 ? args[0] : StrView{}, args, nargs, 1, &length, &crc)) return;
     lib::Fmt error;
     if (!files::upload(args[0], length, crc, &error)) {
         reply::error("file", error.c_str());

@@ -17,8 +17,9 @@ constexpr Command COMMANDS[] = {
     {"flip", "flip PAGE", 1, 1, cmd_flip},
     {"readback", "readback PAGE", 1, 1, cmd_readback},
     {"fault", "fault [ud|de|gp|triple|hang]", 0, 1, cmd_fault},
-    {"scene", "scene BYTES CRC32 (then BYTES bytes of scene text, either version)", 2, 2, cmd_scene},
-    {"file", "file NAME BYTES CRC32 (then BYTES bytes: a texture or scene file)", 3, 3, cmd_file},
+    // uploads check their own argument counts: a refused header's bytes are dropped (files.cpp)
+    {"scene", "scene BYTES CRC32 (then, after the ready event, BYTES bytes of scene text, either version)", 0, MAX_ARGS, cmd_scene},
+    {"file", "file NAME BYTES CRC32 (then, after the ready event, BYTES bytes: a texture or scene file)", 0, MAX_ARGS, cmd_file},
     {"files", "files", 0, 0, cmd_files},
     {"load", "load NAME (a scene file: built in, a module or uploaded)", 1, 1, cmd_load},
     {"render", "render MAPPER PAGE [linear|planar|vga] [asm|twin] (the screen-space scene)", 2, 4, cmd_render},

@@ -80,6 +80,7 @@ json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds t
         case KernelLine::Kind::BootEvent: throw HarnessError("the kernel rebooted while waiting for the reply to " + what);
         case KernelLine::Kind::PanicEvent: throw HarnessError("kernel panic: " + k.body.value("error", "?"));
         case KernelLine::Kind::OtherEvent:
+            if (!on_event && k.body.value("event", "") == "ready") continue;
             if (!on_event) throw HarnessError("unexpected event while waiting for the reply to " + what + ": " + k.body.dump());
             on_event(k.body);
             deadline = Clock::now() + timeout;
@@ -96,6 +97,18 @@ json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds t
             throw KernelFault("kernel fault during " + what + ": " + k.body.value("error", "?"), k.body);
         return k.body;
     }
+}
+
+json KernelLink::upload(const std::string& header, const std::string& bytes, std::chrono::milliseconds timeout) {
+    send_raw(header + "\n");
+    bool sent = false;
+    return read_reply("'" + header + "'", timeout, [&](const json& e) {
+        if (e.value("event", "") != "ready" || sent) throw HarnessError("unexpected event during an upload: " + e.dump());
+        if (e.value("bytes", uint64_t(0)) != bytes.size())
+            throw HarnessError("the kernel is ready for " + e["bytes"].dump() + " bytes, the upload has " + std::to_string(bytes.size()));
+        send_raw(bytes);
+        sent = true;
+    });
 }
 
 }  // namespace harness

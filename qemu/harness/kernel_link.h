@@ -57,8 +57,13 @@ public:
     // Sends raw bytes (tests of malformed input); no reply is awaited.
     void send_raw(const std::string& bytes);
 
-    // Reads the reply to a command sent with send_raw.
+    // Reads the reply to a command sent with send_raw. Without `on_event`, an upload's `ready` event
+    // (raw uploads that send their bytes at once) is skipped; any other event is an error.
     json read_reply(const std::string& what, std::chrono::milliseconds timeout, const EventFn& on_event = nullptr);
+
+    // An upload as the protocol has it: the header line, then, once the kernel says `ready`, the
+    // bytes; a refused header's reply comes instead of `ready`, and the bytes are not sent.
+    json upload(const std::string& header, const std::string& bytes, std::chrono::milliseconds timeout);
 
     uint32_t next_seq() const { return next_seq_; }
 

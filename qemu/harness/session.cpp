@@ -95,13 +95,13 @@ json Session::raw(const std::string& bytes) {
 json Session::upload_scene(const std::string& text) {
     char crc[16];
     std::snprintf(crc, sizeof crc, "0x%08x", lib::crc32(0, reinterpret_cast<const uint8_t*>(text.data()), text.size()));
-    return raw("scene " + std::to_string(text.size()) + " " + crc + "\n" + text);
+    return guarded([&] { return link_.upload("scene " + std::to_string(text.size()) + " " + crc, text, options_.command_timeout); });
 }
 
 json Session::upload_file(const std::string& name, const std::string& bytes) {
     char crc[16];
     std::snprintf(crc, sizeof crc, "0x%08x", lib::crc32(0, reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()));
-    return raw("file " + name + " " + std::to_string(bytes.size()) + " " + crc + "\n" + bytes);
+    return guarded([&] { return link_.upload("file " + name + " " + std::to_string(bytes.size()) + " " + crc, bytes, options_.command_timeout); });
 }
 
 RgbImage Session::screendump(const std::string& name) {

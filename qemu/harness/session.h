@@ -52,9 +52,10 @@ public:
     // Sends bytes as they are (malformed input tests) and reads one reply.
     json raw(const std::string& bytes);
 
-    // `scene BYTES CRC32` followed by the text: the reply (ok true or false).
+    // `scene BYTES CRC32`, then the text once the kernel is ready for it: the reply (ok true or
+    // false; a refused header's without the text sent).
     json upload_scene(const std::string& text);
-    // `file NAME BYTES CRC32` followed by the bytes: the reply (ok true or false).
+    // `file NAME BYTES CRC32`, then the bytes, likewise.
     json upload_file(const std::string& name, const std::string& bytes);
 
     // QMP stop, screendump (PNG, saved as RUN_DIR/NAME.png), cont.

@@ -31,7 +31,8 @@ TEST(Commands, EveryMalformedCommandGetsAnErrorAndTheNextCommandWorks) {
         {"exit 64", "bad code"},
         {"exit", "usage: exit CODE"},
         {std::string(300, 'x'), "line too long"},
-        {"\x01\x02\xff\xfe", "unknown command"},
+        {"\x01\x02\xff\xfe", "control character 0x01 at column 1"},
+        {"\xff\xfe", "unknown command"},
     };
     for (const auto& [line, error] : bad) {
         json r = s.command(line);
@@ -48,6 +49,76 @@ TEST(Commands, EveryMalformedCommandGetsAnErrorAndTheNextCommandWorks) {
     EXPECT_EQ(r["cmd"], "hello");
     s.ok("exit 63");
     EXPECT_EQ(s.wait_exit().status, 127);
+}
+
+// A string literal's bytes, NULs included.
+template <size_t N>
+std::string bytes_of(const char (&text)[N]) {
+    return std::string(text, N - 1);
+}
+
+// Lines end at LF, CR or CR LF (a terminal's Enter sends any of them); a line holding a control
+// character (a NUL too) is refused whole, naming the byte, so nothing after a NUL is cut off and
+// nothing before it run; every line that is not blank gets one reply.
+TEST(Commands, LinesEndAtCrOrLfAndControlCharactersAreRefused) {
+    Session s(options_for_this_test());
+    EXPECT_EQ(s.raw("hello\r")["cmd"], "hello");
+    EXPECT_EQ(s.raw("hello\r\n")["cmd"], "hello");  // one reply: the next one's seq says so
+    EXPECT_EQ(s.raw("hello\n")["cmd"], "hello");
+    const std::vector<std::pair<std::string, std::string>> refused = {
+        {bytes_of("mode modex\0junk\n"), "control character 0x00 at column 11"},
+        {bytes_of("\0hello\n"), "control character 0x00 at column 1"},
+        {bytes_of("\0\n"), "control character 0x00 at column 1"},
+        {bytes_of("exit 0\0 please do not\n"), "control character 0x00 at column 7"},
+        {"fault \x1b[A\n", "control character 0x1b at column 7"},
+    };
+    for (const auto& [bytes, error] : refused) {
+        json r = s.raw(bytes);
+        EXPECT_FALSE(r["ok"].get<bool>());
+        EXPECT_NE(r.value("error", "").find(error), std::string::npos) << r.dump();
+    }
+    EXPECT_NE(s.command("pattern ramp 0").value("error", "").find("no graphics mode"), std::string::npos) << "'mode modex' was not run";
+    // every byte value in order: LF (10) and CR (13) end three lines, each holding control
+    // characters (backspace and DEL edit them as a terminal's would): three refusals
+    std::string every;
+    for (int b = 0; b < 256; ++b) every += char(b);
+    json first = s.raw(every + "\n");
+    EXPECT_NE(first.value("error", "").find("control character 0x00 at column 1"), std::string::npos) << first.dump();
+    EXPECT_NE(s.raw("").value("error", "").find("control character 0x0b at column 1"), std::string::npos);
+    EXPECT_NE(s.raw("").value("error", "").find("control character 0x0e at column 1"), std::string::npos);
+    EXPECT_TRUE(s.ok("hello")["ok"].get<bool>());
+    EXPECT_FALSE(s.exit_info()) << "QEMU still runs";
+}
+
+// A refused upload's bytes are read and dropped, never run as commands, whatever is wrong with its
+// header: its length is read wherever it can be (scene's first word, file's second-to-last), and
+// the bytes that follow are dropped while they come. Each payload here would leave QEMU with
+// status 15 if it ran.
+TEST(Commands, ARefusedUploadsBytesAreNeverRunAsCommands) {
+    Session s(options_for_this_test());
+    const std::string payload = "exit 7\nexit 7\n", n = std::to_string(payload.size());
+    const std::vector<std::pair<std::string, std::string>> headers = {
+        {"scene " + n + " 0x1ffffffff", "bad length or checksum"},  // a CRC wider than 32 bits
+        {"scene 4194305 0", "bad length or checksum"},            // longer than an upload may be
+        {"scene 99999999999 0", "bad length or checksum"},        // beyond 32 bits
+        {"scene " + n, "usage: scene"},                           // no checksum
+        {"scene " + n + " 0 extra", "usage: scene"},
+        {"file " + std::string(64, 'n') + " " + n + " 0", "bad name"},
+        {"file two words " + n + " 0", "usage: file"},  // a name with a space
+        {"file x.bmp " + n, "usage: file"},
+    };
+    for (const auto& [header, error] : headers) {
+        json r = s.raw(header + "\n" + payload);
+        EXPECT_FALSE(r["ok"].get<bool>()) << header;
+        EXPECT_NE(r.value("error", "").find(error), std::string::npos) << header << ": " << r.dump();
+        EXPECT_EQ(r.value("discarded", -1), int(payload.size())) << header << ": " << r.dump();
+        ASSERT_TRUE(s.ok("hello")["ok"].get<bool>()) << "after '" << header << "'";
+        ASSERT_FALSE(s.exit_info()) << "the payload after '" << header << "' ran";
+    }
+    // a client that waits for `ready` hears the refusal at once and sends nothing
+    json r = s.command("scene 0 0");
+    EXPECT_FALSE(r["ok"].get<bool>());
+    EXPECT_EQ(r["discarded"], 0);
 }
 
 // A CPU exception is this command's reply, names the vector and the faulting EIP, and ends QEMU
