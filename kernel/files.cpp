@@ -134,8 +134,10 @@ bool upload_fits(lib::StrView name, size_t length, lib::Fmt* error) {
         error->s("no room: ").u(uint32_t(UPLOAD_SPACE - g_upload_used)).s(" of ").u(uint32_t(UPLOAD_SPACE)).s(" upload bytes left in this boot");
         return false;
     }
-    if (!find_upload(name) && g_count == MAX_FILES) {
-        error->s("too many files (at most ").u(MAX_FILES).s(")");
+    const lib::StrView scene{SCENE_UPLOAD, lib::c_length(SCENE_UPLOAD)};
+    const int places = MAX_FILES - (name.equals(SCENE_UPLOAD) || find_upload(scene) ? 0 : 1);
+    if (!find_upload(name) && g_count >= places) {
+        error->s("too many files (at most ").u(MAX_FILES).s(", the last kept for ").s(SCENE_UPLOAD).s(")");
         return false;
     }
     return true;

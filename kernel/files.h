@@ -17,6 +17,9 @@ enum class Origin : uint8_t { Builtin, Module, Upload };
 const char* origin_name(Origin o);
 
 constexpr int MAX_FILES = 96;
+// The name a `scene` upload is kept under; its place in the file table is kept for it (a full table
+// refuses new `file` uploads first).
+constexpr const char* SCENE_UPLOAD = "upload.scene";
 constexpr size_t UPLOAD_SPACE = 6 << 20;   // bytes for all uploads of a boot
 constexpr size_t MAX_UPLOAD = 4 << 20;     // one upload
 
@@ -37,7 +40,8 @@ const File& at(int i);
 const File* find(lib::StrView name);
 
 // Whether an upload of `length` bytes under `name` would be taken: room in the upload space, and a
-// place in the file table (a name already uploaded is replaced). False with `error` otherwise.
+// place in the file table (a name already uploaded is replaced; the last place is SCENE_UPLOAD's
+// until it has one). False with `error` otherwise.
 bool upload_fits(lib::StrView name, size_t length, lib::Fmt* error);
 // Receives `length` bytes from COM1 (a stall of 5 s between bytes ends it) and checks their CRC-32;
 // on success the file named `name` is (re)placed in the upload space. False with `error` otherwise

@@ -20,13 +20,14 @@ struct Reader {
     uint32_t u32(size_t o) const { return u16(o) | u16(o + 2) << 16; }
 };
 
-bool check_size(Reader& r, size_t offset, int64_t width, int64_t height, size_t capacity) {
+// The size, as the header stores it (`shown_height`: a top-down BMP's negative height), in range.
+bool check_size(Reader& r, size_t offset, int64_t width, int64_t height, size_t capacity, int64_t shown_height) {
     if (width < 1 || height < 1 || width > MAX_IMAGE_SIZE || height > MAX_IMAGE_SIZE) {
         r.error->s("byte ").u(uint32_t(offset)).s(": image size ");
         if (width < 0) r.error->s("-");
         r.error->u(uint32_t(width < 0 ? -width : width)).s(" x ");
-        if (height < 0) r.error->s("-");
-        r.error->u(uint32_t(height < 0 ? -height : height)).s(" out of range (1..1024 a side)");
+        if (shown_height < 0) r.error->s("-");
+        r.error->u(uint32_t(shown_height < 0 ? -shown_height : shown_height)).s(" out of range (1..1024 a side)");
         return false;
     }
     if (size_t(width) * size_t(height) > capacity) return r.fail_at(offset, "image larger than the room left for textures");
@@ -54,10 +55,11 @@ bool decode_bmp(Reader& r, IndexedImage* out, uint8_t* pixels, size_t capacity) 
     if (planes != 1) return r.fail_at(dib == 12 ? 22 : 26, "BMP planes must be 1");
     if (bits != 8) return r.fail_at(dib == 12 ? 24 : 28, "not an 8-bit indexed BMP (bits per pixel must be 8)");
     if (compression != 0 && compression != 1) return r.fail_at(30, "BMP compression not supported (none or RLE8 only)");
+    const int64_t stored_height = height;
     const bool top_down = height < 0;
     if (top_down) height = -height;
     if (top_down && compression == 1) return r.fail_at(22, "a top-down BMP cannot be RLE8-compressed");
-    if (!check_size(r, 18, width, height, capacity)) return false;
+    if (!check_size(r, 18, width, height, capacity, stored_height)) return false;
     if (colours == 0) colours = 256;
     if (colours > 256) return r.fail_at(46, "more than 256 colours in the colour table");
     const size_t table = 14 + dib;
@@ -117,7 +119,7 @@ bool decode_pcx(Reader& r, IndexedImage* out, uint8_t* pixels, size_t capacity) 
     if (r.u8(65) != 1) return r.fail_at(65, "not an 8-bit indexed PCX (colour planes must be 1)");
     const int64_t xmin = r.u16(4), ymin = r.u16(6), xmax = r.u16(8), ymax = r.u16(10);
     const int64_t width = xmax - xmin + 1, height = ymax - ymin + 1;
-    if (!check_size(r, 4, width, height, capacity)) return false;
+    if (!check_size(r, 4, width, height, capacity, height)) return false;
     const size_t line = r.u16(66);
     if (line < size_t(width) || (line & 1)) return r.fail_at(66, "PCX bytes per line must be even and at least the width");
     if (r.size < 128 + 769 || r.u8(r.size - 769) != 0x0C) return r.fail_at(r.size >= 769 ? r.size - 769 : 0, "no 256-colour palette at the end of the PCX file (0x0C and 768 bytes)");

@@ -12,7 +12,7 @@ namespace server {
 namespace {
 
 // The name an upload by `scene` is stored under, so that it is also a file like any other.
-constexpr StrView UPLOADED_SCENE{"upload.scene", sizeof("upload.scene") - 1};
+const StrView UPLOADED_SCENE{files::SCENE_UPLOAD, lib::c_length(files::SCENE_UPLOAD)};
 
 void reply_parse_error(const char* cmd, const char* file, const raster::ParseError& e) {
     lib::Fmt m;

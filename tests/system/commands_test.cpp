@@ -121,6 +121,26 @@ TEST(Commands, ARefusedUploadsBytesAreNeverRunAsCommands) {
     EXPECT_EQ(r["discarded"], 0);
 }
 
+// `file` uploads fill the file table up to its last place, which stays the scene upload's.
+TEST(Commands, AFullFileTableStillTakesASceneUpload) {
+    Session s(options_for_this_test());
+    int taken = 0;
+    json r;
+    for (; taken < 100; ++taken) {
+        r = s.upload_file("f" + std::to_string(taken) + ".bmp", "x");
+        if (!r["ok"].get<bool>()) break;
+    }
+    EXPECT_NE(r.value("error", "").find("too many files"), std::string::npos) << r.dump();
+    EXPECT_EQ(r.value("discarded", -1), 0) << "refused before the byte was sent";
+    EXPECT_GT(taken, 50);
+    EXPECT_TRUE(s.upload_file("f0.bmp", "y")["ok"].get<bool>()) << "a name already there is replaced";
+    const std::string scene = "modexlab-scene 1\ntexture checker 64 64\ntriangle 0 0 1 0 0  100 0 1 64 0  0 100 1 0 64\n";
+    json up = s.upload_scene(scene);
+    EXPECT_TRUE(up["ok"].get<bool>()) << up.dump();
+    EXPECT_TRUE(s.upload_scene(scene)["ok"].get<bool>()) << "and again";
+    EXPECT_EQ(s.ok("files")["files"].size(), 96u);
+}
+
 // A CPU exception is this command's reply, names the vector and the faulting EIP, and ends QEMU
 // with status 2 * (0x40 + vector) + 1.
 void expect_fault(const std::string& which, int vector, const std::string& name, const std::string& site, uint32_t error_code) {

@@ -95,6 +95,8 @@ TEST(TextureFile, BadFilesAreRefusedWithTheByteTheyAreAbout) {
         {with(bmp, 30, {3, 0, 0, 0}), "byte 30: BMP compression not supported"},
         {with(bmp, 18, {0, 0, 0, 0}), "byte 18: image size 0 x 8 out of range"},
         {with(bmp, 18, {1, 4, 0, 0}), "byte 18: image size 1025 x 8 out of range"},
+        {with(bmp, 22, {0, 0, 0, 0x80}), "byte 18: image size 8 x -2147483648 out of range"},  // top-down, the sign kept
+        {with(bmp, 22, {0xFB, 0xFB, 0xFF, 0xFF}), "byte 18: image size 8 x -1029 out of range"},
         {with(bmp, 46, {1, 1, 0, 0}), "byte 46: more than 256 colours"},
         {cut(bmp, 100), "colour table runs past the end"},
         {cut(bmp, bmp.size() - 1), "BMP pixel rows run past the end"},
