@@ -1,6 +1,7 @@
 // Argument helpers the handlers share: pages, the drawing and animation arguments, and the errors
 // that name the choices, listed from the same tables the parsers read so that they cannot drift.
 #include "drivers/vga.h"
+#include "drivers/serial.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
 #include "kernel/worlds.h"
@@ -60,6 +61,8 @@ void cannot_draw_through(const char* cmd, const raster::Mapper& mp, raster::Surf
 }
 
 }  // namespace
+
+bool interrupted(uint32_t step) { return step > 0 && serial::byte_ready(); }
 
 void usage_error(const char* cmd) {
     const Command* c = find_command(StrView{cmd, lib::c_length(cmd)});

@@ -65,6 +65,11 @@ void cmd_exit(Context& ctx, const StrView* args, size_t nargs);
 
 // --- argument helpers (args.cpp): each replies with the error itself and returns false ---------
 
+// Whether a long command stops before its step `step` (a frame, a loop checked): a byte has come on
+// COM1 (the next line, left for the reader), and at least one step is done. The reply then says
+// `interrupted` and how far it got.
+bool interrupted(uint32_t step);
+
 // "usage: " and the usage of the command's row.
 void usage_error(const char* cmd);
 

@@ -61,7 +61,8 @@ void cmd_selftest(Context&, const StrView* args, size_t nargs) {
     bool vga_checked = vga::mode() == vga::Mode::ModeX;
     const raster::Mapper* loops[MAX_CHECKED_LOOPS];
     int count = raster::checked_loops(loops, MAX_CHECKED_LOOPS);
-    for (int i = 0; i < count; ++i) {
+    bool stopped = false;
+    for (int i = 0; i < count && !(stopped = interrupted(uint32_t(n))); ++i) {
         const raster::Mapper& loop = *loops[i];
         bool vga = loop.needs & raster::NEED_VGA_FOR_ASM;
         if (!loop.asm_loop || (vga && !vga_checked)) continue;
@@ -73,7 +74,7 @@ void cmd_selftest(Context&, const StrView* args, size_t nargs) {
     lib::JsonLine r = reply::begin(all_equal);
     r.str("cmd", "selftest");
     if (!all_equal) r.str("error", "a NASM loop differs from its C++ twin");
-    r.u32("cases", cases).u64("ticks", timer::rdtsc() - t0);
+    r.u32("cases", cases).u64("ticks", timer::rdtsc() - t0).boolean("interrupted", stopped);
     r.boolean("vga_loops_checked", vga_checked);  // those draw into page 2 of Mode X: 'mode modex' first
     r.begin_array("loops");
     for (int i = 0; i < n; ++i)

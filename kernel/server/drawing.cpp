@@ -82,9 +82,11 @@ void frame_fields(lib::JsonLine& r, const worlds::FrameResult& f) {
 }
 
 // The reply of play and bench begins alike: what was animated, and how.
-lib::JsonLine animation_reply(const char* cmd, uint32_t frames, const DrawArgs& d) {
+// `frames` drawn of `asked`: fewer where a byte on COM1 interrupted the command after a frame.
+lib::JsonLine animation_reply(const char* cmd, uint32_t frames, uint32_t asked, const DrawArgs& d) {
     lib::JsonLine r = reply::begin(true);
-    r.str("cmd", cmd).str("scene", worlds::name()).u32("frames", frames).str("mapper", d.mapper->name);
+    r.str("cmd", cmd).str("scene", worlds::name()).u32("frames", frames).u32("frames_asked", asked).boolean("interrupted", frames < asked);
+    r.str("mapper", d.mapper->name);
     r.str("surface", raster::surface_name(d.surface)).str("walker", walker_name(d.axis));
     return r;
 }
@@ -141,7 +143,8 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     if (!parse_animation_args("play", args, nargs, MAX_PLAY_FRAMES, "", &frames, &d)) return;
     uint64_t pixels = 0, total = 0, t_start = timer::rdtsc();
     MapperTally tally;
-    for (uint32_t i = 0; i < frames; ++i) {
+    uint32_t done = 0;
+    for (uint32_t i = 0; i < frames && !interrupted(i); ++i, ++done) {
         int32_t n = int32_t(i % uint32_t(worlds::world().frames));
         d.page = hidden_page();
         worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant);
@@ -169,8 +172,8 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     }
     uint64_t wall = timer::rdtsc() - t_start;
     // `ticks` is the unclamped total; the summary's sum is of the clamped figures.
-    lib::Summary s = lib::summarise_in_place(g_play_ticks, frames);
-    lib::JsonLine r = animation_reply("play", frames, d);
+    lib::Summary s = lib::summarise_in_place(g_play_ticks, done);
+    lib::JsonLine r = animation_reply("play", done, frames, d);
     r.u64("pixels", pixels).u64("ticks", total).u32("ticks_min", s.min).u32("ticks_median", s.median).u32("ticks_max", s.max);
     r.u64("ticks_wall", wall);
     tally.write(r);
@@ -188,7 +191,8 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     uint64_t polygons = 0, rejected = 0, spans = 0, pixels = 0;
     MapperTally tally;
     bool used_asm = false;
-    for (uint32_t i = 0; i < frames; ++i) {
+    uint32_t done = 0;
+    for (uint32_t i = 0; i < frames && !interrupted(i); ++i, ++done) {
         int32_t n = int32_t(uint64_t(i) * length / frames);
         d.page = hidden_page();
         worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant);
@@ -213,11 +217,11 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
         tally.add(r.stats);
         used_asm = r.used_asm;
     }
-    lib::JsonLine r = animation_reply("bench", frames, d);
+    lib::JsonLine r = animation_reply("bench", done, frames, d);
     r.str("loop", used_asm ? "asm" : "twin").u64("lap_cost", probe.lap_cost);
     r.u64("polygons", polygons).u64("rejected", rejected).u64("spans", spans).u64("pixels", pixels);
     for (uint32_t k = 0; k < B_FIELDS; ++k) {
-        lib::Summary s = lib::summarise_in_place(g_bench[k], frames);
+        lib::Summary s = lib::summarise_in_place(g_bench[k], done);
         r.begin_object(BENCH_FIELD_NAMES[k]).u64("sum", s.sum).u32("min", s.min).u32("median", s.median).end_object();
     }
     tally.write(r);

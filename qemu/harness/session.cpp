@@ -85,6 +85,8 @@ json Session::ok(const std::string& line, const KernelLink::EventFn& on_event) {
     return reply;
 }
 
+void Session::send(const std::string& bytes) { link_.send_raw(bytes); }
+
 json Session::raw(const std::string& bytes) {
     return guarded([&] {
         link_.send_raw(bytes);

@@ -51,6 +51,9 @@ public:
     json ok(const std::string& line, const KernelLink::EventFn& on_event = nullptr);
     // Sends bytes as they are (malformed input tests) and reads one reply.
     json raw(const std::string& bytes);
+    // Sends bytes as they are and reads nothing (from an event callback: a line that interrupts the
+    // command in progress).
+    void send(const std::string& bytes);
 
     // `scene BYTES CRC32`, then the text once the kernel is ready for it: the reply (ok true or
     // false; a refused header's without the text sent).

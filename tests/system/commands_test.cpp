@@ -141,6 +141,35 @@ TEST(Commands, AFullFileTableStillTakesASceneUpload) {
     EXPECT_EQ(s.ok("files")["files"].size(), 96u);
 }
 
+// A line sent while play, bench or selftest runs stops it after the frame (or loop) in hand: its
+// reply says interrupted and how far it got, and the line is then answered as the next command.
+TEST(Commands, ALineSentDuringLongWorkInterruptsIt) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    s.ok("load corridor.scene");
+    for (const std::string& cmd : {std::string("play 100000 exact"), std::string("bench 1000 exact")}) {
+        int events = 0;
+        json r = s.command(cmd, [&](const json&) {
+            if (events++ == 1) s.send("hello\n");
+        });
+        EXPECT_TRUE(r["ok"].get<bool>()) << r.dump();
+        EXPECT_TRUE(r["interrupted"].get<bool>()) << cmd;
+        EXPECT_GE(r["frames"].get<int>(), 2) << cmd;
+        EXPECT_LE(r["frames"].get<int>(), 5) << cmd << ": stopped within a frame or so of the line";
+        EXPECT_EQ(r["frames"].get<int>(), events) << "one event a frame drawn";
+        EXPECT_EQ(s.raw("")["cmd"], "hello") << "the line is answered next";
+    }
+    // selftest sends no events: the line goes with the command, and one loop is checked
+    json st = s.raw("selftest 1000\nhello\n");
+    EXPECT_TRUE(st["interrupted"].get<bool>()) << st.dump();
+    EXPECT_EQ(st["loops"].size(), 1u);
+    EXPECT_EQ(s.raw("")["cmd"], "hello");
+    json r = s.command("play 3 exact", [](const json&) {});
+    EXPECT_FALSE(r["interrupted"].get<bool>());
+    EXPECT_EQ(r["frames"], 3);
+    EXPECT_EQ(r["frames_asked"], 3);
+}
+
 // A CPU exception is this command's reply, names the vector and the faulting EIP, and ends QEMU
 // with status 2 * (0x40 + vector) + 1.
 void expect_fault(const std::string& which, int vector, const std::string& name, const std::string& site, uint32_t error_code) {
