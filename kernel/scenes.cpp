@@ -69,12 +69,17 @@ RenderResult render_with(const raster::Mapper& mapper, raster::Surface surface, 
     return r;
 }
 
-RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant) {
+RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant, const raster::Watch* watch) {
+    struct Drawing {
+        const raster::Mapper* mapper;
+        const raster::Watch* watch;
+    } drawing{&mapper, watch};
     return render_with(mapper, surface, page, variant,
-                       [](void* m, raster::Target& target, raster::Axis axis, raster::Variant v) {
-                           return raster::render_scene(g_scene, g_texture, *static_cast<const raster::Mapper*>(m), axis, target, v);
+                       [](void* ctx, raster::Target& target, raster::Axis axis, raster::Variant v) {
+                           auto* d = static_cast<Drawing*>(ctx);
+                           return raster::render_scene(g_scene, g_texture, *d->mapper, axis, target, v, nullptr, d->watch);
                        },
-                       const_cast<raster::Mapper*>(&mapper));
+                       &drawing);
 }
 
 }  // namespace scenes

@@ -27,8 +27,10 @@ struct RenderResult {
 // The kernel's texture for the current scene (with its bordered copy).
 const raster::Texture& texture();
 
-// Clears the surface to 0, draws the scene with `mapper`, and blits (unless drawn in place).
-RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant);
+// Clears the surface to 0, draws the scene with `mapper`, and blits (unless drawn in place); with a
+// watch, the drawing may stop early (core/render.h).
+RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
+                    const raster::Watch* watch = nullptr);
 
 // The same for any drawing: clears the surface, calls draw(target, axis), blits; times each step.
 using DrawFn = raster::RenderStats (*)(void* ctx, raster::Target& target, raster::Axis axis, raster::Variant variant);

@@ -46,7 +46,7 @@ const raster::World& world() { return g_world; }
 const char* name() { return g_name; }
 
 FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
-                   raster::Probe* probe) {
+                   raster::Probe* probe, const raster::Watch* watch) {
     FrameResult r{};
     uint64_t t0 = timer::rdtsc();
     raster::build_frame(g_world, n, &g_frame, &g_scratch);
@@ -56,12 +56,13 @@ FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surf
     struct Drawing {
         const raster::Mapper* mapper;
         raster::Probe* probe;
-    } drawing{&mapper, probe};
+        const raster::Watch* watch;
+    } drawing{&mapper, probe, watch};
     r.render = scenes::render_with(mapper, surface, page, variant,
                                    [](void* ctx, raster::Target& target, raster::Axis axis, raster::Variant v) {
                                        auto* d = static_cast<Drawing*>(ctx);
                                        if (d->probe) d->probe->start();
-                                       return raster::render_frame(g_frame, g_textures, *d->mapper, axis, target, v, d->probe);
+                                       return raster::render_frame(g_frame, g_textures, *d->mapper, axis, target, v, d->probe, d->watch);
                                    },
                                    &drawing);
     return r;

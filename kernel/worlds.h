@@ -31,8 +31,8 @@ raster::Budget budget();
 bool budget_overridden();
 
 // Builds frame `n` and draws it with `mapper` into `page` through `surface`; with a probe, times
-// the drawing's phases (the probe's clock must be set).
+// the drawing's phases (the probe's clock must be set); with a watch, the drawing may stop early.
 FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
-                   raster::Probe* probe = nullptr);
+                   raster::Probe* probe = nullptr, const raster::Watch* watch = nullptr);
 
 }  // namespace worlds

@@ -77,6 +77,7 @@ struct RenderStats {
     uint32_t spans = 0;
     uint32_t pixels = 0;
     Probe* probe = nullptr;  // the bench's lap timer, when it times the phases
+    bool interrupted = false;  // a Watch stopped the drawing before its last polygon (render.h)
     // by registry row: the polygons each mapper drew and their pixels (auto draws with several)
     uint32_t mapper_polygons[MAPPER_LIMIT] = {};
     uint32_t mapper_pixels[MAPPER_LIMIT] = {};

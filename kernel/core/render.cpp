@@ -79,11 +79,12 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
 }
 
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                         Variant variant, Probe* probe) {
+                         Variant variant, Probe* probe, const Watch* watch) {
     RenderStats stats;
     stats.probe = probe;
     const Vertex* v = scene.vertices;
     for (int32_t i = 0; i < scene.polygon_count; ++i) {
+        if (watch && watch->stops(uint32_t(i), uint32_t(scene.polygon_count), &stats)) break;
         draw_polygon(v, scene.polygon_size[i], tex, mapper, axis, target, &stats, variant);
         v += scene.polygon_size[i];
     }

@@ -17,9 +17,23 @@ namespace raster {
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant = Variant::Twin, const Budget& budget = DEFAULT_BUDGET);
 
+// A long drawing watched (the kernel: progress events, and a line on COM1 stops it): before every
+// WATCH_EVERY-th polygon, keep_going(ctx, polygons handled, polygons in all); false stops the
+// drawing there, and RenderStats::interrupted says so.
+struct Watch {
+    static constexpr uint32_t WATCH_EVERY = 16;
+    bool (*keep_going)(void* ctx, uint32_t done, uint32_t total) = nullptr;
+    void* ctx = nullptr;
+    bool stops(uint32_t done, uint32_t total, RenderStats* stats) const {
+        if (done == 0 || done % WATCH_EVERY || keep_going(ctx, done, total)) return false;
+        stats->interrupted = true;
+        return true;
+    }
+};
+
 // Draws every polygon of the scene in order; with a probe, times the phases (probe.h). Screen-space
 // scenes have no budget line: auto takes the default.
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                         Variant variant = Variant::Twin, Probe* probe = nullptr);
+                         Variant variant = Variant::Twin, Probe* probe = nullptr, const Watch* watch = nullptr);
 
 }  // namespace raster

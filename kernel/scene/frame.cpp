@@ -253,11 +253,12 @@ void build_texture_set(const World& world, TextureSet* out) {
 }
 
 RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target, Variant variant,
-                         Probe* probe) {
+                         Probe* probe, const Watch* watch) {
     RenderStats stats;
     stats.probe = probe;
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
+        if (watch && watch->stops(uint32_t(i), uint32_t(frame.polygon_count), &stats)) break;
         draw_polygon(v, frame.polygon_size[i], textures.objects[frame.polygon_object[i]], mapper, axis, target, &stats, variant,
                      frame.budget);
         v += frame.polygon_size[i];

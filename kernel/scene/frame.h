@@ -87,8 +87,10 @@ struct TextureSet {
 };
 void build_texture_set(const World& world, TextureSet* out);
 
-// Draws the frame's polygons in order into `target`; with a probe, times the phases (probe.h).
+// Draws the frame's polygons in order into `target`; with a probe, times the phases (probe.h);
+// with a watch, it may stop early (core/render.h).
+struct Watch;
 RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target,
-                         Variant variant = Variant::Twin, Probe* probe = nullptr);
+                         Variant variant = Variant::Twin, Probe* probe = nullptr, const Watch* watch = nullptr);
 
 }  // namespace raster

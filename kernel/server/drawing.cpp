@@ -27,6 +27,27 @@ const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry",
 // Static: every field of every frame for the medians, 36 KB, more than half the 64 KiB kernel stack.
 uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
 
+// A drawing watched (core/render.h): a line arriving on COM1 stops it between polygons, and where
+// `interval` is set (TSC ticks) a `progress` event goes out that often, so that a scene that takes
+// minutes shows it is alive.
+struct Progress {
+    const char* cmd;
+    uint64_t interval, next;
+    raster::Watch watch() { return raster::Watch{keep_going, this}; }
+    static bool keep_going(void* ctx, uint32_t done, uint32_t total) {
+        if (serial::byte_ready()) return false;
+        auto* p = static_cast<Progress*>(ctx);
+        const uint64_t now = timer::rdtsc();
+        if (p->interval && now >= p->next) {
+            lib::JsonLine(serial::sink()).str("event", "progress").str("cmd", p->cmd).u32("polygons", done).u32("of", total).end();
+            p->next = now + p->interval;
+        }
+        return true;
+    }
+};
+// A second's worth of ticks (tsc_hz: none where the CPU has no TSC, nor events then).
+Progress progress(const char* cmd, const Context& ctx) { return Progress{cmd, ctx.tsc_hz, timer::rdtsc() + ctx.tsc_hz}; }
+
 // The polygons and pixels each mapper drew (auto draws with several), summed over frames.
 struct MapperTally {
     uint64_t polygons[raster::MAPPER_LIMIT] = {}, pixels[raster::MAPPER_LIMIT] = {};
@@ -62,7 +83,8 @@ void render_fields(lib::JsonLine& r, const DrawArgs& d, const scenes::RenderResu
         .u32("skipped", res.stats.skipped)
         .u32("rejected", res.stats.rejected)
         .u32("spans", res.stats.spans)
-        .u32("pixels", res.stats.pixels);
+        .u32("pixels", res.stats.pixels)
+        .boolean("interrupted", res.stats.interrupted);
     MapperTally t;
     t.add(res.stats);
     t.write(r);
@@ -93,7 +115,7 @@ lib::JsonLine animation_reply(const char* cmd, uint32_t frames, uint32_t asked, 
 
 }  // namespace
 
-void cmd_render(Context&, const StrView* args, size_t nargs) {
+void cmd_render(Context& ctx, const StrView* args, size_t nargs) {
     DrawArgs d;
     if (!parse_draw_args("render", args, nargs, true, &d)) return;
     if (!scenes::loaded()) {
@@ -108,7 +130,9 @@ void cmd_render(Context&, const StrView* args, size_t nargs) {
         reply::error("render", m.s(")").c_str());
         return;
     }
-    scenes::RenderResult res = scenes::render(*d.mapper, d.surface, d.page, d.variant);
+    Progress p = progress("render", ctx);
+    const raster::Watch watch = p.watch();
+    scenes::RenderResult res = scenes::render(*d.mapper, d.surface, d.page, d.variant, &watch);
     lib::JsonLine r = reply::begin(true);
     r.str("cmd", "render");
     render_fields(r, d, res);
@@ -119,7 +143,7 @@ void cmd_render(Context&, const StrView* args, size_t nargs) {
         .end();
 }
 
-void cmd_frame(Context&, const StrView* args, size_t nargs) {
+void cmd_frame(Context& ctx, const StrView* args, size_t nargs) {
     uint32_t n;
     if (!lib::parse_u32(args[0], &n) || n >= uint32_t(raster::MAX_FRAMES)) {
         lib::Fmt m;
@@ -129,7 +153,9 @@ void cmd_frame(Context&, const StrView* args, size_t nargs) {
     }
     DrawArgs d;
     if (!parse_draw_args("frame", args + 1, nargs - 1, true, &d) || !need_world("frame")) return;
-    worlds::FrameResult f = worlds::render(int32_t(n), *d.mapper, d.surface, d.page, d.variant);
+    Progress p = progress("frame", ctx);
+    const raster::Watch watch = p.watch();
+    worlds::FrameResult f = worlds::render(int32_t(n), *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
     lib::JsonLine r = reply::begin(true);
     r.str("cmd", "frame").str("scene", worlds::name()).u32("frame", n);
     render_fields(r, d, f.render);
@@ -144,10 +170,12 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     uint64_t pixels = 0, total = 0, t_start = timer::rdtsc();
     MapperTally tally;
     uint32_t done = 0;
+    Progress p{"play", 0, 0};  // stops a long frame; the frame events are the progress
+    const raster::Watch watch = p.watch();
     for (uint32_t i = 0; i < frames && !interrupted(i); ++i, ++done) {
         int32_t n = int32_t(i % uint32_t(worlds::world().frames));
         d.page = hidden_page();
-        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant);
+        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
         uint64_t t0 = timer::rdtsc();
         bool retrace = vga::flip(d.page);
         uint64_t flip_ticks = timer::rdtsc() - t0;
@@ -192,12 +220,14 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     MapperTally tally;
     bool used_asm = false;
     uint32_t done = 0;
+    Progress p{"bench", 0, 0};  // stops a long frame; the bench events are the progress
+    const raster::Watch watch = p.watch();
     for (uint32_t i = 0; i < frames && !interrupted(i); ++i, ++done) {
         int32_t n = int32_t(uint64_t(i) * length / frames);
         d.page = hidden_page();
-        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant);
+        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
         raster::Probe timed = probe;
-        worlds::render(n, *d.mapper, d.surface, d.page, d.variant, &timed);
+        worlds::render(n, *d.mapper, d.surface, d.page, d.variant, &timed, &watch);
         uint64_t t0 = timer::rdtsc();
         bool retrace = vga::flip(d.page);
         uint64_t flip = timer::rdtsc() - t0;

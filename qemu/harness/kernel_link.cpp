@@ -80,7 +80,10 @@ json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds t
         case KernelLine::Kind::BootEvent: throw HarnessError("the kernel rebooted while waiting for the reply to " + what);
         case KernelLine::Kind::PanicEvent: throw HarnessError("kernel panic: " + k.body.value("error", "?"));
         case KernelLine::Kind::OtherEvent:
-            if (!on_event && k.body.value("event", "") == "ready") continue;
+            if (!on_event && (k.body.value("event", "") == "ready" || k.body.value("event", "") == "progress")) {
+                deadline = Clock::now() + timeout;  // alive: the command is making progress
+                continue;
+            }
             if (!on_event) throw HarnessError("unexpected event while waiting for the reply to " + what + ": " + k.body.dump());
             on_event(k.body);
             deadline = Clock::now() + timeout;

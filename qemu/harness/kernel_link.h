@@ -58,7 +58,8 @@ public:
     void send_raw(const std::string& bytes);
 
     // Reads the reply to a command sent with send_raw. Without `on_event`, an upload's `ready` event
-    // (raw uploads that send their bytes at once) is skipped; any other event is an error.
+    // (raw uploads that send their bytes at once) and a long drawing's `progress` events are
+    // skipped (each restarts the timeout); any other event is an error.
     json read_reply(const std::string& what, std::chrono::milliseconds timeout, const EventFn& on_event = nullptr);
 
     // An upload as the protocol has it: the header line, then, once the kernel says `ready`, the

@@ -170,6 +170,29 @@ TEST(Commands, ALineSentDuringLongWorkInterruptsIt) {
     EXPECT_EQ(r["frames_asked"], 3);
 }
 
+// A drawing that takes long says so with a progress event a second, and a line stops it between
+// polygons: 800 screen-size triangles with the exact mapper (about 5 billion instructions).
+TEST(Commands, ALongRenderShowsProgressAndALineStopsIt) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    std::string scene = "modexlab-scene 1\ntexture checker 64 64\n";
+    for (int i = 0; i < 800; ++i) scene += "triangle -10 -10 1 0 0  700 -10 2 64 0  -10 500 3 0 64\n";
+    ASSERT_TRUE(s.upload_scene(scene)["ok"].get<bool>());
+    json progress;
+    json r = s.command("render exact 0", [&](const json& e) {
+        if (progress.is_null()) s.send("hello\n");
+        progress = e;
+    });
+    EXPECT_EQ(progress.value("event", ""), "progress") << progress.dump();
+    EXPECT_EQ(progress.value("cmd", ""), "render");
+    EXPECT_EQ(progress.value("of", 0), 800);
+    EXPECT_TRUE(r["ok"].get<bool>()) << r.dump();
+    EXPECT_TRUE(r["interrupted"].get<bool>());
+    EXPECT_GT(r["polygons"].get<int>(), 0);
+    EXPECT_LT(r["polygons"].get<int>(), 800);
+    EXPECT_EQ(s.raw("")["cmd"], "hello");
+}
+
 // A CPU exception is this command's reply, names the vector and the faulting EIP, and ends QEMU
 // with status 2 * (0x40 + vector) + 1.
 void expect_fault(const std::string& which, int vector, const std::string& name, const std::string& site, uint32_t error_code) {

@@ -228,3 +228,44 @@ TEST(Stability, TinyTrianglesCoverAtMostTheirPixel) {
 }
 
 }  // namespace
+
+namespace {
+
+// A watched drawing is asked before every 16th polygon and stops there when told to: the polygons
+// before are drawn, none after.
+TEST(Stability, AWatchStopsTheDrawingBetweenPolygons) {
+    auto scene = rastertest::empty_scene(TextureKind::Checker, 64, 64, Wrap::Repeat);
+    rastertest::TriangleGen gen(5u);
+    for (int i = 0; i < 100; ++i) rastertest::add_polygon(*scene, gen.triangle());
+    std::vector<uint8_t> texels(64 * 64, 7), pixels(SCREEN_PIXELS);
+    Texture tex{texels.data(), 64, 64, Wrap::Repeat};
+    struct Seen {
+        std::vector<uint32_t> done;
+        uint32_t stop_at;
+    };
+    raster::Watch watch;
+    watch.keep_going = [](void* ctx, uint32_t done, uint32_t total) {
+        auto* s = static_cast<Seen*>(ctx);
+        EXPECT_EQ(total, 100u);
+        s->done.push_back(done);
+        return done < s->stop_at;
+    };
+    for (uint32_t stop_at : {48u, 1000u}) {
+        Seen seen{{}, stop_at};
+        watch.ctx = &seen;
+        Target t = rastertest::ram_target(pixels.data(), false);
+        RenderStats stats = render_scene(*scene, tex, *find_mapper("exact"), Axis::Rows, t, Variant::Twin, nullptr, &watch);
+        const uint32_t handled = stats.polygons + stats.skipped + stats.rejected;
+        if (stop_at == 48) {
+            EXPECT_TRUE(stats.interrupted);
+            EXPECT_EQ(handled, 48u);
+            EXPECT_EQ(seen.done, (std::vector<uint32_t>{16, 32, 48}));
+        } else {
+            EXPECT_FALSE(stats.interrupted);
+            EXPECT_EQ(handled, 100u);
+            EXPECT_EQ(seen.done.size(), 6u);  // 16 .. 96
+        }
+    }
+}
+
+}  // namespace
