@@ -72,19 +72,16 @@ void load_and_reply(const char* cmd, const files::File& f) {
 // `announced`, below); decimal or 0x hex, a number beyond 32 bits meaning every byte that comes
 // (while they come). 0 where there is none.
 size_t announced_length(StrView word) {
-    size_t i = word.size > 2 && word.data[0] == '0' && (word.data[1] == 'x' || word.data[1] == 'X') ? 2 : 0;
-    const uint64_t base = i ? 16 : 10;
-    uint64_t value = 0;
-    if (i == word.size) return 0;
-    for (; i < word.size; ++i) {
+    uint32_t n;
+    if (lib::parse_u32(word, &n)) return n;
+    // digits all the same: a number too large for 32 bits
+    const bool hex = word.size > 2 && word.data[0] == '0' && (word.data[1] == 'x' || word.data[1] == 'X');
+    bool digits = word.size > (hex ? 2u : 0u);
+    for (size_t i = hex ? 2 : 0; i < word.size && digits; ++i) {
         const char c = word.data[i];
-        const uint64_t digit = c >= '0' && c <= '9' ? uint64_t(c - '0') : c >= 'a' && c <= 'f' ? uint64_t(c - 'a' + 10)
-                               : c >= 'A' && c <= 'F' ? uint64_t(c - 'A' + 10) : 99;
-        if (digit >= base) return 0;
-        value = value * base + digit;
-        if (value > 0xFFFFFFFFull) return SIZE_MAX;
+        digits = (c >= '0' && c <= '9') || (hex && ((c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')));
     }
-    return size_t(value);
+    return digits ? SIZE_MAX : 0;
 }
 
 // Refuses an upload: the bytes its header announced are read and dropped first (while they come,
@@ -94,7 +91,7 @@ void refuse_upload(const char* cmd, StrView announced, const char* message) {
     const size_t dropped = files::discard(announced_length(announced));
     lib::JsonLine r = reply::begin(false);
     r.str("cmd", cmd).str("error", message).u32("discarded", uint32_t(dropped));
-    if (cmd[0] == 's') r.u32("line", 0);
+    if (StrView{cmd, lib::c_length(cmd)}.equals("scene")) r.u32("line", 0);
     r.end();
 }
 

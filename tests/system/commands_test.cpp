@@ -170,6 +170,22 @@ TEST(Commands, ALineSentDuringLongWorkInterruptsIt) {
     EXPECT_EQ(r["frames_asked"], 3);
 }
 
+// Replacing an upload frees its old copy: the uploads after it move down, intact, and the space is
+// used again.
+TEST(Commands, ReplacingAnUploadFreesItsSpace) {
+    Session s(options_for_this_test());
+    const uint64_t start = s.ok("files")["upload_space_used"].get<uint64_t>();
+    const std::string scene = "modexlab-scene 1\ntexture checker 64 64\ntriangle 0 0 1 0 0  100 0 1 64 0  0 100 1 0 64\n";
+    EXPECT_EQ(s.upload_file("a.bin", std::string(1000, 'a'))["upload_space_used"], start + 1000);
+    EXPECT_EQ(s.upload_file("s.scene", scene)["upload_space_used"], start + 1000 + scene.size());
+    for (int i = 0; i < 3; ++i) {
+        json r = s.upload_file("a.bin", std::string(2000 + i, 'b'));
+        EXPECT_EQ(r["upload_space_used"], start + scene.size() + 2000 + i) << "the old copy is freed";
+    }
+    json loaded = s.ok("load s.scene");
+    EXPECT_EQ(loaded["polygons"], 1) << "the scene after it moved down intact";
+}
+
 // A drawing that takes long says so with a progress event a second, and a line stops it between
 // polygons: 800 screen-size triangles with the exact mapper (about 5 billion instructions).
 TEST(Commands, ALongRenderShowsProgressAndALineStopsIt) {
