@@ -135,7 +135,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures run bench report gallery bounds test test-gallery deps clean
+.PHONY: all iso kernel host fixtures run bench report gallery bounds fuzz-protocol test test-gallery deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
@@ -323,6 +323,14 @@ BOUND_POLYGONS ?= 100000
 bounds: deps
 	@$(MAKE) -s -j$(NPROC) $(TESTS)
 	MODEXLAB_BOUND_POLYGONS=$(BOUND_POLYGONS) $(TESTS) --gtest_filter='Bounds.*'
+
+# `make fuzz-protocol`: random and mutated commands and uploads to a booted kernel, a marker
+# answered after each (make test sends 300; docs/protocol.md).
+PROTOCOL_INPUTS ?= 20000
+PROTOCOL_SEED ?= 2026
+fuzz-protocol: deps
+	@$(MAKE) -s -j$(NPROC) all host fixtures
+	MODEXLAB_PROTOCOL_FUZZ=$(PROTOCOL_INPUTS) MODEXLAB_PROTOCOL_SEED=$(PROTOCOL_SEED) $(TESTS) --gtest_filter='ProtocolFuzz.*'
 
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures

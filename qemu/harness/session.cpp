@@ -87,10 +87,10 @@ json Session::ok(const std::string& line, const KernelLink::EventFn& on_event) {
 
 void Session::send(const std::string& bytes) { link_.send_raw(bytes); }
 
-json Session::raw(const std::string& bytes) {
+json Session::raw(const std::string& bytes, const KernelLink::EventFn& on_event) {
     return guarded([&] {
-        link_.send_raw(bytes);
-        return link_.read_reply("raw input", options_.command_timeout);
+        if (!bytes.empty()) link_.send_raw(bytes);
+        return link_.read_reply("raw input", options_.command_timeout, on_event);
     });
 }
 

@@ -49,8 +49,8 @@ public:
     json command(const std::string& line, const KernelLink::EventFn& on_event = nullptr);
     // As command(), but an ok:false reply is a failure too.
     json ok(const std::string& line, const KernelLink::EventFn& on_event = nullptr);
-    // Sends bytes as they are (malformed input tests) and reads one reply.
-    json raw(const std::string& bytes);
+    // Sends bytes as they are (malformed input tests) and reads one reply (events to `on_event`).
+    json raw(const std::string& bytes, const KernelLink::EventFn& on_event = nullptr);
     // Sends bytes as they are and reads nothing (from an event callback: a line that interrupts the
     // command in progress).
     void send(const std::string& bytes);

@@ -1,0 +1,163 @@
+// The command server under hostile input: random and mutated command lines and uploads, from a
+// fixed seed, to one booted kernel; after each, a marker command (`load sync-N`, whose error names
+// it) must still be answered, every reply with the next sequence number, and QEMU must still run. `make test` sends a few hundred; `make fuzz-protocol` many more
+// (MODEXLAB_PROTOCOL_FUZZ inputs, MODEXLAB_PROTOCOL_SEED).
+#include <cstdlib>
+#include <random>
+
+#include "kernel/lib/encode.h"
+#include "tests/system/system.h"
+
+namespace {
+
+using namespace systest;
+
+// Words each command takes, valid and not; the commands that end the session (exit, fault) are left
+// out, and so are counts that make a command long without a frame to stop at (selftest).
+const std::vector<std::vector<std::string>> COMMANDS = {
+    {"hello"}, {"help"}, {"files"}, {"mappers"},
+    {"mode", "13h", "modex", "12h", ""},
+    {"pattern", "ramp", "planes", "grid", "border", "0", "1", "2", "3", "-1"},
+    {"clear", "0", "1", "2", "255", "256", "0x10"},
+    {"palette", "default", "gray", "purple"},
+    {"flip", "0", "1", "2", "4294967296"},
+    {"readback", "0", "1", "2", "9"},
+    {"load", "corridor.scene", "ball.scene", "mesh.scene", "upload.scene", "x.bmp", "nothing"},
+    {"render", "exact", "affine", "auto", "fast-affine", "quake-subdiv16", "xsharp-column", "0", "1", "linear", "planar", "vga", "asm", "twin"},
+    {"frame", "0", "7", "359", "1000000", "exact", "auto", "fatmap-lut", "0", "1", "linear", "vga", "twin"},
+    {"play", "1", "2", "100000", "exact", "auto", "fast-columns", "planar", "vga"},
+    {"bench", "1", "2", "1000", "exact", "auto", "linear", "asm"},
+    {"budget", "scene", "0", "0.5", "4", "any", "exact", "-1", "1e9"},
+    {"selftest", "1", "2", "0"},
+    {"vbe", "on", "off"},
+};
+
+class Fuzzer {
+public:
+    explicit Fuzzer(uint32_t seed) : rng_(seed) {}
+
+    uint32_t below(uint32_t n) { return std::uniform_int_distribution<uint32_t>(0, n - 1)(rng_); }
+    bool chance(uint32_t percent) { return below(100) < percent; }
+
+    // A command line from the dictionary: its name and up to five of its words, or a number.
+    std::string line() {
+        const auto& c = COMMANDS[below(uint32_t(COMMANDS.size()))];
+        std::string out = c[0];
+        for (uint32_t n = below(6), i = 0; i < n && c.size() > 1; ++i) out += " " + word(c);
+        return out;
+    }
+    std::string word(const std::vector<std::string>& c) {
+        switch (below(8)) {
+        case 0: return std::to_string(int64_t(rng_()) - int64_t(1u << 31));
+        case 1: return "0x" + std::to_string(rng_());
+        default: return c[1 + below(uint32_t(c.size() - 1))];
+        }
+    }
+    // Bytes changed, inserted, dropped or repeated; line ends where they fall.
+    std::string mutate(std::string s) {
+        for (uint32_t n = 1 + below(4), i = 0; i < n; ++i) {
+            const size_t at = s.empty() ? 0 : below(uint32_t(s.size()));
+            switch (below(5)) {
+            case 0: if (!s.empty()) s[at] = char(below(256)); break;
+            case 1: s.insert(at, 1, char(below(256))); break;
+            case 2: if (!s.empty()) s.erase(at, 1 + below(4)); break;
+            case 3: s.insert(at, s.substr(at, below(16))); break;
+            default: s.insert(at, 1, "\r\n\t \0"[below(5)]); break;
+            }
+        }
+        return s;
+    }
+    // An upload's header (one line, sometimes broken: bytes changed, never a line end) for the bytes.
+    std::string upload_header(const std::string& payload) {
+        char crc[16];
+        std::snprintf(crc, sizeof crc, "0x%08x", lib::crc32(0, reinterpret_cast<const uint8_t*>(payload.data()), payload.size()));
+        std::string header = (below(2) ? std::string("scene") : "file f" + std::to_string(below(4)) + ".scene") + " " +
+                             std::to_string(payload.size()) + " " + (chance(80) ? std::string(crc) : std::to_string(rng_()));
+        for (uint32_t n = chance(30) ? 1 + below(3) : 0, i = 0; i < n; ++i) {
+            char c = char(below(256));
+            header[below(uint32_t(header.size()))] = c == '\n' || c == '\r' ? 'x' : c;
+        }
+        return header;
+    }
+private:
+    std::mt19937 rng_;
+};
+
+// Bytes as C escapes, for a failure message.
+std::string shown(const std::string& bytes) {
+    std::string out = "\"";
+    for (unsigned char c : bytes) {
+        char hex[8];
+        std::snprintf(hex, sizeof hex, "\\x%02x", c);
+        out += c >= 0x20 && c < 0x7F && c != '"' && c != '\\' ? std::string(1, char(c)) : std::string(hex);
+    }
+    return out + "\"";
+}
+
+uint32_t env_or(const char* name, uint32_t fallback) {
+    const char* v = std::getenv(name);
+    return v && *v ? uint32_t(std::strtoul(v, nullptr, 10)) : fallback;
+}
+
+TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
+    const uint32_t inputs = env_or("MODEXLAB_PROTOCOL_FUZZ", 300), seed = env_or("MODEXLAB_PROTOCOL_SEED", 2026);
+    SessionOptions o = options_for_this_test();
+    Session s(o);
+    Fuzzer f(seed);
+    const std::string scene = "modexlab-scene 1\ntexture checker 64 64\ntriangle 0 0 1 0 0  300 0 2 64 0  0 200 3 0 64\n";
+    const std::string world = "modexlab-scene 2\ntexture t checker 64 64\nmesh m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 t\nobject a m\n";
+    uint32_t replies = 0, uploads = 0, taken = 0;
+    // the bytes after a `ready` (an upload the kernel took): as many as it asked for; after an input
+    // sent with its marker (which then went into the upload), a line end and the marker again
+    std::string payload, marker;
+    bool marker_again = false;
+    auto on_event = [&](const json& e) {
+        if (e.value("event", "") != "ready") return;  // frames of play and bench
+        std::string bytes = payload;
+        bytes.resize(e.value("bytes", size_t(0)), '\n');
+        s.send(marker_again ? bytes + "\n" + marker : bytes);
+        ++taken;
+    };
+    // reads replies up to the marker's: each has the next seq (the harness checks)
+    auto until_marker = [&](uint32_t i, const std::string& input) {
+        const std::string name = "'sync-" + std::to_string(i) + "'";
+        json r = json::object();
+        for (uint32_t read = 0; read < 64 && r.value("error", "").find(name) == std::string::npos; ++read, ++replies) r = s.raw("", on_event);
+        ASSERT_NE(r.value("error", "").find(name), std::string::npos) << "input " << i << " did not let the marker through: " << shown(input);
+        ASSERT_FALSE(s.exit_info()) << "input " << i << ": " << shown(input);
+    };
+    for (uint32_t i = 0; i < inputs && !HasFatalFailure(); ++i) {
+        std::string input;
+        payload.clear();
+        marker = "load sync-" + std::to_string(i) + "\n";
+        switch (f.below(4)) {
+        case 0: input = f.line() + "\n"; break;
+        case 1: input = f.mutate(f.line()) + "\n"; break;
+        case 2: {  // as a protocol client: the header alone, the bytes once the kernel is ready
+            const std::string& text = f.chance(50) ? scene : world;
+            payload = f.chance(50) ? f.mutate(text) : text;
+            input = f.upload_header(payload) + "\n";
+            ++uploads;
+            marker_again = false;
+            s.send(input);
+            s.raw("", on_event);  // the header's one reply: the upload's, or why not
+            ++replies;
+            s.send(marker);
+            until_marker(i, input);
+            continue;
+        }
+        default: {
+            for (uint32_t n = 1 + f.below(40), k = 0; k < n; ++k) input += char(f.below(256));
+            input += "\n";
+        }
+        }
+        // the input and the marker at once
+        marker_again = true;
+        s.send(input + marker);
+        until_marker(i, input);
+    }
+    EXPECT_GT(taken, 0u) << "some uploads were taken";
+    std::printf("  %u inputs (%u uploads, %u taken), %u replies, seed %u\n", inputs, uploads, taken, replies, seed);
+}
+
+}  // namespace
