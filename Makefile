@@ -135,7 +135,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures run bench report gallery bounds fuzz-protocol test test-gallery deps clean
+.PHONY: all iso kernel host fixtures run bench report gallery bounds fuzz-protocol soak test test-gallery deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
@@ -331,6 +331,12 @@ PROTOCOL_SEED ?= 2026
 fuzz-protocol: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
 	MODEXLAB_PROTOCOL_FUZZ=$(PROTOCOL_INPUTS) MODEXLAB_PROTOCOL_SEED=$(PROTOCOL_SEED) $(TESTS) --gtest_filter='ProtocolFuzz.*'
+
+# `make soak N=20`: the system-test tier N times; which tests changed their result (issue 13).
+N ?= 20
+soak: deps
+	@$(MAKE) -s -j$(NPROC) all host fixtures
+	@tests/soak $(N) $(TESTS)
 
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
