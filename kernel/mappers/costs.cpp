@@ -5,28 +5,28 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2526.9f, 565.28f, 39.167f}, // 6 scenes
-    {"exact", 2531.9f, 383.51f, 79.161f}, // 6 scenes
-    {"persp-subdiv-4", 2531.9f, 441.32f, 111.778f}, // 6 scenes
-    {"persp-subdiv-8", 2531.9f, 503.33f, 69.019f}, // 6 scenes
-    {"persp-subdiv-16", 2531.9f, 534.59f, 47.773f}, // 6 scenes
-    {"persp-subdiv-32", 2531.9f, 549.88f, 37.410f}, // 6 scenes
-    {"constant-depth", 2531.9f, 561.93f, 29.459f}, // 6 scenes
-    {"persp-adaptive-0.5", 2531.9f, 577.06f, 451.055f}, // 6 scenes
-    {"persp-adaptive-1", 2531.9f, 1165.52f, 50.842f}, // 6 scenes
-    {"persp-adaptive-2", 2531.9f, 1175.06f, 44.106f}, // 6 scenes
-    {"persp-adaptive-4", 2531.9f, 1180.56f, 40.466f}, // 6 scenes
-    {"fast-affine", 2458.7f, 273.62f, 4.149f}, // 4 scenes
-    {"fast-columns", 2453.2f, 320.15f, 5.090f}, // 4 scenes
-    {"xsharp-dda", 1697.1f, 546.22f, 33.889f}, // 5 scenes
-    {"xsharp-row-out", 1703.1f, 680.00f, 15.345f}, // 5 scenes
-    {"xsharp-column", 1703.9f, 616.30f, 8.908f}, // 5 scenes
-    {"hecker-steptable", 2901.1f, 0.00f, 423.482f}, // 5 scenes
-    {"fatmap-256", 1723.9f, 322.21f, 9.723f}, // 4 scenes
-    {"fatmap-256-16", 1723.9f, 327.21f, 8.723f}, // 4 scenes
-    {"fatmap-lut", 1762.8f, 329.26f, 3.091f}, // 3 scenes
-    {"quake-subdiv16", 2601.8f, 373.28f, 12.401f}, // 5 scenes
-    {"quake-subdiv8", 2601.8f, 364.14f, 18.614f}, // 5 scenes
+    {"affine", 2525.9f, 571.01f, 39.059f}, // 6 scenes
+    {"exact", 2530.9f, 389.24f, 79.053f}, // 6 scenes
+    {"persp-subdiv-4", 2530.9f, 447.05f, 111.671f}, // 6 scenes
+    {"persp-subdiv-8", 2530.9f, 509.06f, 68.912f}, // 6 scenes
+    {"persp-subdiv-16", 2530.9f, 540.32f, 47.666f}, // 6 scenes
+    {"persp-subdiv-32", 2530.9f, 555.61f, 37.303f}, // 6 scenes
+    {"constant-depth", 2530.9f, 567.66f, 29.352f}, // 6 scenes
+    {"persp-adaptive-0.5", 2530.9f, 582.78f, 450.947f}, // 6 scenes
+    {"persp-adaptive-1", 2530.9f, 1171.25f, 50.735f}, // 6 scenes
+    {"persp-adaptive-2", 2530.9f, 1180.79f, 43.999f}, // 6 scenes
+    {"persp-adaptive-4", 2530.9f, 1186.29f, 40.359f}, // 6 scenes
+    {"fast-affine", 2457.7f, 279.30f, 4.087f}, // 4 scenes
+    {"fast-columns", 2452.2f, 325.69f, 5.026f}, // 4 scenes
+    {"xsharp-dda", 1696.1f, 552.71f, 33.750f}, // 5 scenes
+    {"xsharp-row-out", 1702.1f, 686.49f, 15.206f}, // 5 scenes
+    {"xsharp-column", 1702.9f, 621.68f, 8.810f}, // 5 scenes
+    {"hecker-steptable", 2900.1f, 0.00f, 423.716f}, // 5 scenes
+    {"fatmap-256", 1723.0f, 328.70f, 9.592f}, // 4 scenes
+    {"fatmap-256-16", 1723.0f, 333.70f, 8.592f}, // 4 scenes
+    {"fatmap-lut", 1761.9f, 335.77f, 2.949f}, // 3 scenes
+    {"quake-subdiv16", 2600.8f, 379.03f, 12.276f}, // 5 scenes
+    {"quake-subdiv8", 2600.8f, 369.90f, 18.490f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
