@@ -295,7 +295,10 @@ void affine_lines(const PolygonSetup& s, Axis axis, const Span& span, double* a,
     }
 }
 
-const PolygonSetup* exact_setup(const BoundContext& c, const Vertex* vertices, int count, PolygonSetup* own) {
+const PolygonSetup* exact_setup(const BoundContext& c, const Vertex* vertices, int count, PolygonSetup* own, ErrorBound* b) {
+    b->draws = true;
+    b->footprint = NO_BOUND;
+    if (c.whole_only) return nullptr;
     if (c.prepared && c.prepared->status == SetupStatus::Ok) return &c.prepared->setup;
     return setup_polygon(vertices, count, own, PLANES_PERSPECTIVE) == SetupStatus::Ok ? own : nullptr;
 }

@@ -267,9 +267,11 @@ ErrorBound bound_by_spans(const BoundContext& c, const Vertex* vertices, int cou
     return b;
 }
 
-// For the classics' bounds, which run their own walk again. The polygon's setup for the exact
-// mapping: the prepared one, or one set up into `own`; nullptr where setup does not take it.
-const PolygonSetup* exact_setup(const BoundContext& c, const Vertex* vertices, int count, PolygonSetup* own);
+// For the classics' bounds, which run their own walk again, once the classic's own conversion has
+// taken the polygon: *b says it draws, with no bound yet; asked for the whole polygon only, there
+// is nothing cheaper than that walk (nullptr); else the polygon's setup for the exact mapping: the
+// prepared one, or one set up into `own` (nullptr where setup does not take it).
+const PolygonSetup* exact_setup(const BoundContext& c, const Vertex* vertices, int count, PolygonSetup* own, ErrorBound* b);
 // The bound over a line the mapper draws (the span's pixels along the axis) reading texel
 // floor(a[t] + b[t] k) at pixel k: each line against the exact mapping (lines_bound), BOUND_PIECE
 // pixels at a time, with `extra` texels more; NO_BOUND where Q is not positive at either end (a

@@ -264,11 +264,8 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count, Loop 
     FVertex v[classic::MAX_VERTICES];
     double shift[2];
     if (!mapper_accepts(c.mapper, c.tex) || convert_polygon(vertices, count, c.tex, limit, v, shift) != SetupStatus::Ok) return b;
-    b.draws = true;
-    b.footprint = NO_BOUND;
-    if (c.whole_only) return b;  // nothing cheaper than his rows
     PolygonSetup own;
-    const PolygonSetup* s = exact_setup(c, vertices, count, &own);
+    const PolygonSetup* s = exact_setup(c, vertices, count, &own, &b);
     if (!s) return b;
     double worst = 0;
     bool fits = true;

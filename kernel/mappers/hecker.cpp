@@ -290,11 +290,8 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
     Vertex28 v[classic::MAX_VERTICES];
     double shift[2];
     if (!mapper_accepts(c.mapper, c.tex) || convert_polygon(vertices, count, c.tex, v, shift) != SetupStatus::Ok) return b;
-    b.draws = true;
-    b.footprint = NO_BOUND;
-    if (c.whole_only) return b;  // nothing cheaper than his pieces
     PolygonSetup own;
-    const PolygonSetup* s = exact_setup(c, vertices, count, &own);
+    const PolygonSetup* s = exact_setup(c, vertices, count, &own, &b);
     if (!s) return b;
     const double size[2] = {double(c.tex.width), double(c.tex.height)};
     double worst = 0;

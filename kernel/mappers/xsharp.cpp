@@ -277,11 +277,8 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count, bool 
     int min_vert;
     double shift[2];
     if (!mapper_accepts(c.mapper, c.tex) || prepare(c.tex, vertices, count, columns, &p, &min_vert, shift) != SetupStatus::Ok) return b;
-    b.draws = true;
-    b.footprint = NO_BOUND;
-    if (c.whole_only) return b;  // nothing cheaper than its lines
     PolygonSetup own;
-    const PolygonSetup* s = exact_setup(c, vertices, count, &own);
+    const PolygonSetup* s = exact_setup(c, vertices, count, &own, &b);
     if (!s) return b;
     const Axis axis = columns ? Axis::Columns : Axis::Rows;
     const double size[2] = {double(c.tex.width), double(c.tex.height)};
