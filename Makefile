@@ -6,6 +6,7 @@
 #   make gallery every mapper's picture beside its error map, a page a scene (build/gallery)
 #   make test-gallery  the gallery's pages in a headless Chromium (installs Debian's chromium)
 #   make bounds the error bounds against measured errors on 100000 random polygons a mapper
+#   make fuzz   every mapper over 10^6 random polygons under the sanitizers, the parsers under libFuzzer
 #   make deps   install missing tools (run, bench and test do it themselves)
 
 MAKEFLAGS += -rR --no-print-directory
@@ -90,7 +91,7 @@ NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error -I$(KBUILD)/gen/ -Iasm/
 
 # portable kernel code the host builds too (no port I/O, no inline asm)
 CORE_CXX := $(wildcard $(PORTABLE_DIRS:%=%/*.cpp))
-PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp kernel/lib/stats.cpp $(CORE_CXX)
+PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/protocol.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp kernel/lib/stats.cpp $(CORE_CXX)
 # host-only code: the exact reference and the accuracy measures, the harness, the tools' libraries
 HARNESS_CXX := $(filter-out %/main.cpp %_main.cpp,$(wildcard qemu/*/*.cpp))
 HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
@@ -130,16 +131,26 @@ UNIT_CXX := tests/main.cpp $(wildcard tests/unit/*.cpp)
 # the gallery's pages in a headless browser (make test-gallery, a tier of its own)
 BROWSER_TESTS := $(HBUILD)/modexlab-browser-tests
 BROWSER_TEST_CXX := tests/main.cpp $(wildcard tests/browser/*.cpp)
+# the fuzz targets (tests/fuzz, one per parser of outside input): the replay program runs each over
+# its committed corpus under the sanitizers (make test); `make fuzz` builds each as a libFuzzer
+# program with Debian's clang and runs it
+FUZZ_TARGETS := $(patsubst tests/fuzz/%_fuzz.cpp,%,$(wildcard tests/fuzz/*_fuzz.cpp))
+FUZZ_REPLAY := $(SBUILD)/modexlab-fuzz-replay
+FUZZ_COMMON_CXX := tests/fuzz/fuzz.cpp $(FUZZ_TARGETS:%=tests/fuzz/%_fuzz.cpp)
+FBUILD := $(BUILD)/fuzz
+FUZZ_CXX := clang++
+FUZZ_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -O1 -g
+FUZZERS := $(FUZZ_TARGETS:%=$(FBUILD)/fuzz-%)
 # a Multiboot kernel that enters modexlab with a wrong magic (tests/fixtures)
 WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures run bench report gallery bounds fuzz-protocol soak test test-gallery deps clean
+.PHONY: all iso kernel host fixtures run bench report gallery bounds fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS)
+host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(FUZZ_REPLAY)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 # $(call install,FILE:PACKAGE ...): installs the packages whose file or command is missing.
@@ -253,6 +264,22 @@ $(SAN_TESTS): $(UNIT_CXX:%=$(SBUILD)/%.o) $(HARNESS_CXX:%=$(SBUILD)/%.o) $(PORTA
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) $(SAN_FLAGS) -o $@ $^ -lgtest $(HLDLIBS)
 
+# where the replay program finds the committed corpora
+$(SBUILD)/tests/fuzz/replay_main.cpp.o: HCXXFLAGS += -DMODEXLAB_SOURCE_DIR='"$(abspath .)"'
+$(FUZZ_REPLAY): $(SBUILD)/tests/fuzz/replay_main.cpp.o $(FUZZ_COMMON_CXX:%=$(SBUILD)/%.o) $(HARNESS_CXX:%=$(SBUILD)/%.o) $(PORTABLE_CXX:%=$(SBUILD)/%.o)
+	$(call say,LINK,$@)
+	$(Q)$(HCXX) $(SAN_FLAGS) -o $@ $^ $(HLDLIBS)
+
+# libFuzzer programs: everything instrumented for coverage (fuzzer-no-link), one program a target
+$(FBUILD)/%.cpp.o: %.cpp | deps
+	@mkdir -p $(@D)
+	$(call say,CLANG,$<)
+	$(Q)$(FUZZ_CXX) $(HCXXFLAGS) $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link -DMODEXLAB_LIBFUZZER -c $< -o $@
+
+$(FBUILD)/fuzz-%: $(FBUILD)/tests/fuzz/%_fuzz.cpp.o $(FBUILD)/tests/fuzz/fuzz.cpp.o $(HARNESS_CXX:%=$(FBUILD)/%.o) $(PORTABLE_CXX:%=$(FBUILD)/%.o)
+	$(call say,LINK,$@)
+	$(Q)$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer -o $@ $^ $(HLDLIBS)
+
 $(H32BUILD)/%.cpp.o: %.cpp | deps
 	@mkdir -p $(@D)
 	$(call say,CXX32,$<)
@@ -332,6 +359,28 @@ fuzz-protocol: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
 	MODEXLAB_PROTOCOL_FUZZ=$(PROTOCOL_INPUTS) MODEXLAB_PROTOCOL_SEED=$(PROTOCOL_SEED) $(TESTS) --gtest_filter='ProtocolFuzz.*'
 
+# `make fuzz`: every mapper over FUZZ_POLYGONS random polygons under ASan and UBSan, reads and
+# writes bounds-checked (make test draws a share), then every fuzz target under libFuzzer for
+# FUZZ_SECONDS (docs/fuzzing.md). `make fuzz-corpus` adds what it found that reaches
+# new code to the committed corpora (make test replays them).
+FUZZ_POLYGONS ?= 1000000
+FUZZ_SEED ?= 2026
+FUZZ_SECONDS ?= 120
+FUZZ_DEPS := clang++:clang /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a:libclang-rt-14-dev
+fuzz: deps
+	$(call install,$(FUZZ_DEPS))
+	@$(MAKE) -s -j$(NPROC) $(SAN_TESTS) $(FUZZERS)
+	MODEXLAB_FUZZ_POLYGONS=$(FUZZ_POLYGONS) MODEXLAB_FUZZ_SEED=$(FUZZ_SEED) $(SAN_TESTS) --gtest_filter='PolygonFuzz.*'
+	tests/fuzz/run $(FUZZ_SECONDS) $(FBUILD) $(FUZZ_TARGETS)
+
+fuzz-corpus: deps
+	$(call install,$(FUZZ_DEPS))
+	@$(MAKE) -s -j$(NPROC) $(FUZZERS)
+	@for t in $(FUZZ_TARGETS); do mkdir -p $(FBUILD)/corpus/$$t; before=$$(ls tests/fuzz/corpus/$$t | wc -l); \
+		$(FBUILD)/fuzz-$$t -merge=1 tests/fuzz/corpus/$$t $(FBUILD)/corpus/$$t >$(FBUILD)/logs/merge-$$t.log 2>&1 || \
+		{ cat $(FBUILD)/logs/merge-$$t.log; exit 1; }; \
+		echo "fuzz-corpus: $$t: $$before -> $$(ls tests/fuzz/corpus/$$t | wc -l) inputs"; done
+
 # `make soak N=20`: the system-test tier N times; which tests changed their result (issue 13).
 N ?= 20
 soak: deps
@@ -340,7 +389,7 @@ soak: deps
 
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
-	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(TESTS)
+	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(FUZZ_REPLAY) $(TESTS)
 
 clean:
 	rm -rf $(BUILD)

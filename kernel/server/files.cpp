@@ -2,6 +2,7 @@
 // version, whose reply describes what was loaded.
 #include "drivers/serial.h"
 #include "kernel/files.h"
+#include "kernel/lib/protocol.h"
 #include "kernel/scenes.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
@@ -68,69 +69,47 @@ void load_and_reply(const char* cmd, const files::File& f) {
     r.end();
 }
 
-// The length an upload's header gives, where one can be read, for a refusal (the word
-// `announced`, below); decimal or 0x hex, a number beyond 32 bits meaning every byte that comes
-// (while they come). 0 where there is none.
-size_t announced_length(StrView word) {
-    uint32_t n;
-    if (lib::parse_u32(word, &n)) return n;
-    // digits all the same: a number too large for 32 bits
-    const bool hex = word.size > 2 && word.data[0] == '0' && (word.data[1] == 'x' || word.data[1] == 'X');
-    bool digits = word.size > (hex ? 2u : 0u);
-    for (size_t i = hex ? 2 : 0; i < word.size && digits; ++i) {
-        const char c = word.data[i];
-        digits = (c >= '0' && c <= '9') || (hex && ((c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F')));
-    }
-    return digits ? SIZE_MAX : 0;
-}
-
 // Refuses an upload: the bytes its header announced are read and dropped first (while they come,
 // files::discard), so that none of them is taken for a command, then the error, with how many were
 // dropped (a scene error carries "line" 0, as a parse error carries its line).
-void refuse_upload(const char* cmd, StrView announced, const char* message) {
-    const size_t dropped = files::discard(announced_length(announced));
+void refuse_upload(const char* cmd, size_t announced, const char* message) {
+    const size_t dropped = files::discard(announced);
     lib::JsonLine r = reply::begin(false);
     r.str("cmd", cmd).str("error", message).u32("discarded", uint32_t(dropped));
     if (StrView{cmd, lib::c_length(cmd)}.equals("scene")) r.u32("line", 0);
     r.end();
 }
 
-// Checks an upload's header (BYTES CRC32 after `name_args` words; `name` the file's name) and
-// says "ready" when the bytes may come; else refuses it. False when refused. The length a refusal
-// drops is scene's first argument and file's second-to-last (a name with a space in it still ends
-// the header with BYTES CRC32), or its second where it has only two.
-bool accept_upload(const char* cmd, StrView name, const StrView* args, size_t nargs, size_t name_args, uint32_t* length, uint32_t* crc32) {
-    const StrView announced = name_args == 0 ? (nargs ? args[0] : StrView{}) : nargs >= 3 ? args[nargs - 2] : nargs == 2 ? args[1] : StrView{};
+// Checks an upload's header (lib::check_upload_header: BYTES CRC32 after `name_args` words of name)
+// and says "ready" when the bytes may come; else refuses it. False when refused.
+bool accept_upload(const char* cmd, const StrView* args, size_t nargs, size_t name_args, lib::UploadHeader* h) {
+    const lib::HeaderProblem problem = lib::check_upload_header(args, nargs, name_args, UPLOADED_SCENE, files::MAX_UPLOAD,
+                                                                 size_t(raster::MAX_FILE_NAME), h);
     lib::Fmt m;
-    if (nargs != name_args + 2) {
-        const Command* c = find_command(StrView{cmd, lib::c_length(cmd)});
-        refuse_upload(cmd, announced, m.s("usage: ").s(c->usage).c_str());
+    bool ok = false;
+    switch (problem) {
+    case lib::HeaderProblem::Usage: m.s("usage: ").s(find_command(StrView{cmd, lib::c_length(cmd)})->usage); break;
+    case lib::HeaderProblem::LengthOrChecksum:
+        m.s("bad length or checksum: BYTES 1..").u(uint32_t(files::MAX_UPLOAD)).s(", CRC32 decimal or 0x hex");
+        break;
+    case lib::HeaderProblem::Name: m.s("bad name: 1 to ").u(uint32_t(raster::MAX_FILE_NAME - 1)).s(" characters"); break;
+    case lib::HeaderProblem::None: ok = files::upload_fits(h->name, h->length, &m); break;
+    }
+    if (!ok) {
+        refuse_upload(cmd, h->announced, m.c_str());
         return false;
     }
-    const StrView bytes = args[name_args], crc = args[name_args + 1];
-    if (!lib::parse_u32(bytes, length) || *length == 0 || *length > files::MAX_UPLOAD || !lib::parse_u32(crc, crc32)) {
-        refuse_upload(cmd, bytes, m.s("bad length or checksum: BYTES 1..").u(uint32_t(files::MAX_UPLOAD)).s(", CRC32 decimal or 0x hex").c_str());
-        return false;
-    }
-    if (name.size == 0 || name.size >= size_t(raster::MAX_FILE_NAME)) {
-        refuse_upload(cmd, bytes, m.s("bad name: 1 to ").u(uint32_t(raster::MAX_FILE_NAME - 1)).s(" characters").c_str());
-        return false;
-    }
-    if (!files::upload_fits(name, *length, &m)) {
-        refuse_upload(cmd, bytes, m.c_str());
-        return false;
-    }
-    lib::JsonLine(serial::sink()).str("event", "ready").str("cmd", cmd).u32("bytes", *length).end();
+    lib::JsonLine(serial::sink()).str("event", "ready").str("cmd", cmd).u32("bytes", h->length).end();
     return true;
 }
 
 }  // namespace
 
 void cmd_scene(Context&, const StrView* args, size_t nargs) {
-    uint32_t length, crc;
-    if (!accept_upload("scene", UPLOADED_SCENE, args, nargs, 0, &length, &crc)) return;
+    lib::UploadHeader h;
+    if (!accept_upload("scene", args, nargs, 0, &h)) return;
     lib::Fmt error;
-    if (!files::upload(UPLOADED_SCENE, length, crc, &error)) {
+    if (!files::upload(UPLOADED_SCENE, h.length, h.crc32, &error)) {
         // every scene error carries "line", as a parse error does: 0, no line
         reply::begin(false).str("cmd", "scene").str("error", error.c_str()).u32("line", 0).end();
         return;
@@ -139,10 +118,10 @@ void cmd_scene(Context&, const StrView* args, size_t nargs) {
 }
 
 void cmd_file(Context&, const StrView* args, size_t nargs) {
-    uint32_t length, crc;
-    if (!accept_upload("file", nargs == 3 ? args[0] : StrView{}, args, nargs, 1, &length, &crc)) return;
+    lib::UploadHeader h;
+    if (!accept_upload("file", args, nargs, 1, &h)) return;
     lib::Fmt error;
-    if (!files::upload(args[0], length, crc, &error)) {
+    if (!files::upload(h.name, h.length, h.crc32, &error)) {
         reply::error("file", error.c_str());
         return;
     }

@@ -300,7 +300,7 @@ AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, co
     AccuracyMetrics m;
     std::vector<uint8_t> ref_count(SCREEN_PIXELS, 0), drawn_count(SCREEN_PIXELS, 0);
     if (map) {
-        map->kind.assign(SCREEN_PIXELS, FrameMap::BACKGROUND);
+        map->kind.assign(SCREEN_PIXELS, FrameMap::UNCOVERED);
         map->footprint_error.assign(SCREEN_PIXELS, 0.0);
         map->drawn_by.assign(SCREEN_PIXELS, -1);
         map->polygons.clear();

@@ -110,7 +110,7 @@ private:
 // chooses for the frame's budget.
 // With `map`, also what it saw where (the gallery's maps): the figures stay the same.
 struct FrameMap {
-    enum Kind : uint8_t { BACKGROUND, GAP, OVERDRAW, COMPARED };
+    enum Kind : uint8_t { UNCOVERED, GAP, OVERDRAW, COMPARED };  // UNCOVERED: the background
     // Per pixel (row-major, 320x240), from the last polygon in drawing order that the reference or
     // the mapper covers there (the one the pictures show): a gap (the reference's, not drawn),
     // overdraw (drawn, not the reference's) or compared, with its footprint error.
