@@ -4,7 +4,10 @@
 #include "drivers/debug_exit.h"
 #include "drivers/serial.h"
 #include "drivers/vga.h"
+#include "kernel/core/render.h"
+#include "kernel/guard.h"
 #include "kernel/lib/fmt.h"
+#include "kernel/lib/json.h"
 #include "kernel/server/reply.h"
 
 extern "C" const uint32_t isr_stub_table[32];
@@ -38,8 +41,29 @@ constexpr const char* NAMES[32] = {
 };
 
 bool g_in_handler = false;
+raster::DrawingNow g_drawing_now;
+constexpr uint32_t PAGE_FAULT = 14;
+
+// A page fault's address (CR2), the guarded buffer it hit, and what was being drawn.
+void describe_page_fault(lib::JsonLine& r, uint32_t error_code) {
+    uint32_t cr2;
+    asm volatile("mov %%cr2, %0" : "=r"(cr2));
+    r.hex32("cr2", cr2);
+    guard::Hit hit;
+    if (guard::find(cr2, &hit)) {
+        lib::Fmt m;
+        m.s(error_code & 2 ? "a write " : "a read ").u(hit.offset).s(hit.offset == 1 ? " byte" : " bytes");
+        m.s(hit.after ? " past the end of " : " before the start of ").s(hit.what);
+        if (hit.name) m.s(" ").s(hit.name);
+        r.str("buffer", m.c_str());
+    }
+    const raster::DrawingNow& now = drawing_now();
+    if (now.mapper) r.str("mapper", now.mapper).u32("polygon", now.polygon);
+}
 
 }  // namespace
+
+raster::DrawingNow& drawing_now() { return g_drawing_now; }
 
 const char* exception_name(uint32_t vector) { return vector < 32 ? NAMES[vector] : "?"; }
 
@@ -62,8 +86,8 @@ extern "C" [[noreturn]] void exception_handler(const idt::ExceptionFrame* f) {
         // The fault is the reply to the command in progress (or an unsolicited line at boot).
         lib::Fmt message;
         message.s("CPU exception ").s(idt::exception_name(f->vector)).s(" (vector ").u(f->vector).s(") at eip ").hex(f->eip);
-        reply::begin(false)
-            .str("error", message.c_str())
+        lib::JsonLine r = reply::begin(false);
+        r.str("error", message.c_str())
             .str("event", "fault")
             .u32("vector", f->vector)
             .str("name", idt::exception_name(f->vector))
@@ -78,8 +102,9 @@ extern "C" [[noreturn]] void exception_handler(const idt::ExceptionFrame* f) {
             .hex32("esi", f->esi)
             .hex32("edi", f->edi)
             .hex32("ebp", f->ebp)
-            .hex32("esp", fault_esp)
-            .end();
+            .hex32("esp", fault_esp);
+        if (f->vector == idt::PAGE_FAULT) idt::describe_page_fault(r, f->error_code);
+        r.end();
         serial::flush();
         vga::text_write("modexlab: CPU exception ");
         vga::text_write(idt::exception_name(f->vector));

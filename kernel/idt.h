@@ -3,6 +3,8 @@
 
 #include <stdint.h>
 
+#include "kernel/core/render.h"
+
 namespace idt {
 
 // Register state pushed by the stubs in boot/isr.asm (pushad, then what the stub and the CPU pushed).
@@ -19,6 +21,9 @@ static_assert(__builtin_offsetof(ExceptionFrame, eip) == 40);
 static_assert(sizeof(ExceptionFrame) == 52);
 
 void init();
+
+// What is being drawn, for a page fault's report: the drawing commands' watches point here.
+raster::DrawingNow& drawing_now();
 
 // Human name of an exception vector ("#UD", ...).
 const char* exception_name(uint32_t vector);

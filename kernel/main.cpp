@@ -8,11 +8,13 @@
 #include "drivers/timer.h"
 #include "drivers/vga.h"
 #include "kernel/files.h"
+#include "kernel/guard.h"
 #include "kernel/idt.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
 #include "kernel/lib/words.h"
 #include "kernel/multiboot.h"
+#include "kernel/panic.h"
 #include "kernel/core/mapper.h"
 #include "kernel/server/server.h"
 #include "kernel/show.h"
@@ -74,16 +76,6 @@ BootOptions parse_options(const char* cmdline) {
     return o;
 }
 
-[[noreturn]] void panic(const char* message) {
-    lib::JsonLine(serial::sink()).str("event", "panic").str("error", message).end();
-    serial::flush();
-    vga::text_write("modexlab panic: ");
-    vga::text_write(message);
-    vga::text_write("\n");
-    debug_exit::exit(debug_exit::PANIC);
-    for (;;) asm volatile("cli; hlt");
-}
-
 }  // namespace
 
 extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* info) {
@@ -103,6 +95,7 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     if (info->flags & multiboot::INFO_CMDLINE) ctx.cmdline = reinterpret_cast<const char*>(info->cmdline);
     BootOptions options = parse_options(ctx.cmdline);
     ctx.cpu = cpu::detect();
+    const bool guard_pages = guard::init(ctx.cpu.features_edx);
     ctx.tsc_hz = cpu::has_tsc(ctx.cpu) ? timer::calibrate_tsc_hz() : 0;
     bool vbe_found = vga::disable_bochs_vbe();
     if ((info->flags & multiboot::INFO_MEMORY) && 0x100000 + uint64_t(info->mem_upper) * 1024 < uint64_t(reinterpret_cast<uintptr_t>(__kernel_end)))
@@ -118,6 +111,7 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     boot.boolean("bochs_vbe_cleared", vbe_found).u64("tsc_hz", ctx.tsc_hz);
     boot.u32("files", uint32_t(files::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
     boot.u32("memory_kib", (info->flags & multiboot::INFO_MEMORY) ? info->mem_upper + 1024 : 0);
+    boot.boolean("guard_pages", guard_pages);
     boot.begin_array("ignored_options");
     for (size_t i = 0; i < options.rejected_count; ++i) {
         lib::Fmt w;

@@ -3,6 +3,7 @@
 
 #include "drivers/timer.h"
 #include "drivers/vga.h"
+#include "kernel/guard.h"
 #include "kernel/lib/mem.h"
 
 namespace scenes {
@@ -10,23 +11,39 @@ namespace scenes {
 namespace {
 
 raster::Scene g_parsed;     // parsed into here first, so a bad upload leaves the current scene alone
-raster::Scene g_scene;
 bool g_loaded = false;
-uint8_t g_texels[raster::MAX_TEXTURE_SIZE * raster::MAX_TEXTURE_SIZE];
-uint8_t g_bordered[(raster::MAX_TEXTURE_SIZE + 2) * (raster::MAX_TEXTURE_SIZE + 2)];
-uint8_t g_aligned[raster::ALIGNED256_BYTES];
 raster::Texture g_texture;
-alignas(4) uint8_t g_linear[raster::SCREEN_PIXELS];
-alignas(4) uint8_t g_planes[raster::SCREEN_PIXELS];
+
+// What the mappers read and write, each between guard pages (guard.h): the scene's vertices, its
+// texture and the texture's copies (each placed to end where its buffer ends), the RAM surfaces.
+constexpr size_t TEXELS_BYTES = size_t(raster::MAX_TEXTURE_SIZE) * raster::MAX_TEXTURE_SIZE;
+constexpr size_t BORDERED_BYTES = size_t(raster::MAX_TEXTURE_SIZE + 2) * (raster::MAX_TEXTURE_SIZE + 2);
+struct Buffers {
+    raster::Scene* scene = guard::take_object<raster::Scene>("screen-space scene");
+    uint8_t* texels = guard::take(TEXELS_BYTES, "screen-space texture");
+    uint8_t* bordered = guard::take(BORDERED_BYTES, "screen-space texture (bordered copy)");
+    uint8_t* aligned = guard::take(raster::ALIGNED256_BYTES, "screen-space texture (aligned copy)");
+    uint8_t* linear = guard::take(raster::SCREEN_PIXELS, "RAM surface (linear)");
+    uint8_t* planes = guard::take(raster::SCREEN_PIXELS, "RAM surface (planar)");
+};
+Buffers& buffers() {
+    static Buffers b;
+    return b;
+}
 
 }  // namespace
 
 bool load(const char* text, size_t length, raster::ParseError* error) {
     if (!raster::parse_scene(text, length, &g_parsed, error)) return false;
-    memcpy(&g_scene, &g_parsed, sizeof g_scene);
-    raster::generate_texture(g_scene.texture_kind, g_scene.texture_width, g_scene.texture_height, g_texels);
-    g_texture = raster::Texture{g_texels, g_scene.texture_width, g_scene.texture_height, g_scene.wrap};
-    raster::prepare_texture(&g_texture, g_bordered, g_aligned);
+    Buffers& b = buffers();
+    memcpy(b.scene, &g_parsed, sizeof g_parsed);
+    const raster::Scene& sc = *b.scene;
+    const size_t texels = size_t(sc.texture_width) * size_t(sc.texture_height);
+    uint8_t* at = b.texels + TEXELS_BYTES - texels;  // its last texel against the guard page
+    raster::generate_texture(sc.texture_kind, sc.texture_width, sc.texture_height, at);
+    g_texture = raster::Texture{at, sc.texture_width, sc.texture_height, sc.wrap};
+    raster::prepare_texture(&g_texture, b.bordered + BORDERED_BYTES - size_t(raster::bordered_bytes(sc.texture_width, sc.texture_height)),
+                            b.aligned);
     g_loaded = true;
     return true;
 }
@@ -34,7 +51,7 @@ bool load(const char* text, size_t length, raster::ParseError* error) {
 bool loaded() { return g_loaded; }
 const raster::Texture& texture() { return g_texture; }
 
-const raster::Scene& scene() { return g_scene; }
+const raster::Scene& scene() { return *buffers().scene; }
 
 RenderResult render_with(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant, DrawFn draw, void* ctx) {
     RenderResult r{};
@@ -43,12 +60,12 @@ RenderResult render_with(const raster::Mapper& mapper, raster::Surface surface, 
     raster::Axis axis = raster::surface_axis(mapper, surface);
     switch (surface) {
     case raster::Surface::Linear:
-        memset(g_linear, 0, sizeof g_linear);
-        target = raster::linear_target(g_linear, raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT, raster::SCREEN_WIDTH);
+        memset(buffers().linear, 0, raster::SCREEN_PIXELS);
+        target = raster::linear_target(buffers().linear, raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT, raster::SCREEN_WIDTH);
         break;
     case raster::Surface::Planar:
-        memset(g_planes, 0, sizeof g_planes);
-        target = raster::planar_target(g_planes);
+        memset(buffers().planes, 0, raster::SCREEN_PIXELS);
+        target = raster::planar_target(buffers().planes);
         break;
     case raster::Surface::Vga:
         vga::clear_page(page, 0);
@@ -60,8 +77,8 @@ RenderResult render_with(const raster::Mapper& mapper, raster::Surface surface, 
     r.used_asm = loop && loop == mapper.asm_loop;
     r.stats = draw(ctx, target, axis, variant);
     uint64_t t2 = timer::rdtsc();
-    if (surface == raster::Surface::Linear) vga::blit_linear(g_linear, page);
-    if (surface == raster::Surface::Planar) vga::blit_planar(g_planes, page);
+    if (surface == raster::Surface::Linear) vga::blit_linear(buffers().linear, page);
+    if (surface == raster::Surface::Planar) vga::blit_planar(buffers().planes, page);
     uint64_t t3 = timer::rdtsc();
     r.ticks_clear = t1 - t0;
     r.ticks_draw = t2 - t1;
@@ -77,7 +94,7 @@ RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int p
     return render_with(mapper, surface, page, variant,
                        [](void* ctx, raster::Target& target, raster::Axis axis, raster::Variant v) {
                            auto* d = static_cast<Drawing*>(ctx);
-                           return raster::render_scene(g_scene, g_texture, *d->mapper, axis, target, v, nullptr, d->watch);
+                           return raster::render_scene(*buffers().scene, g_texture, *d->mapper, axis, target, v, nullptr, d->watch);
                        },
                        &drawing);
 }

@@ -4,19 +4,54 @@
 #include "drivers/timer.h"
 #include "drivers/vga.h"
 #include "kernel/files.h"
+#include "kernel/guard.h"
+#include "kernel/lib/mem.h"
 
 namespace worlds {
 
 namespace {
 
-raster::World g_world;
+// The world and the frame the mappers draw from, between guard pages (guard.h); the texture set is
+// built here, then each texture and its copies go to buffers of their own in the pool (place_textures).
+raster::World& g_world = *guard::take_object<raster::World>("3D scene");
+raster::Frame& g_frame = *guard::take_object<raster::Frame>("frame");
 raster::TextureSet g_textures;
-raster::Frame g_frame;
+size_t g_textures_mark = guard::mark();  // after the world and the frame: release() keeps them
 raster::FrameScratch g_scratch;
 bool g_loaded = false;
 bool g_overridden = false;
 raster::Budget g_override;
 char g_name[raster::MAX_FILE_NAME];
+
+// Copies each texture of the world, and its bordered and aligned copies, to buffers of their own that
+// end against a guard page, and points the objects' textures at them (a texture's copies are shared
+// by the objects that use it). The last world's buffers are given back first.
+void place_textures() {
+    guard::release(g_textures_mark);
+    g_textures_mark = guard::mark();
+    raster::Texture placed[raster::MAX_WORLD_TEXTURES] = {};
+    for (int32_t o = 0; o < g_world.object_count; ++o) {
+        const int32_t i = g_world.objects[o].texture;
+        raster::Texture& t = placed[i];
+        const raster::Texture& built = g_textures.objects[o];
+        if (!t.texels) {
+            const char* name = g_world.textures[i].name;
+            const size_t texels = size_t(built.width) * size_t(built.height), bordered = size_t(raster::bordered_bytes(built.width, built.height));
+            uint8_t* at = guard::take(texels, "world texture", name);
+            memcpy(at, built.texels, texels);
+            t.texels = at;
+            if (built.bordered) {
+                at = guard::take(bordered, "world texture (bordered copy)", name);
+                memcpy(at, built.bordered, bordered);
+                t.bordered = at;
+            }
+            if (built.aligned256) t.aligned256 = raster::make_aligned256(built, guard::take(raster::ALIGNED256_BYTES, "world texture (aligned copy)", name));
+        }
+        g_textures.objects[o].texels = t.texels;
+        g_textures.objects[o].bordered = t.bordered;
+        g_textures.objects[o].aligned256 = t.aligned256;
+    }
+}
 
 }  // namespace
 
@@ -25,6 +60,7 @@ bool load(const char* name, const uint8_t* text, size_t length, raster::ParseErr
     g_overridden = false;
     if (!raster::parse_world(reinterpret_cast<const char*>(text), length, files::resolver(), &g_world, error)) return false;
     raster::build_texture_set(g_world, &g_textures);
+    place_textures();
     size_t i = 0;
     for (; name[i] && i + 1 < sizeof g_name; ++i) g_name[i] = name[i];
     g_name[i] = 0;

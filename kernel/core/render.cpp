@@ -85,9 +85,11 @@ RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& m
     const Vertex* v = scene.vertices;
     for (int32_t i = 0; i < scene.polygon_count; ++i) {
         if (watch && watch->stops(uint32_t(i), uint32_t(scene.polygon_count), &stats)) break;
+        if (watch) watch->drawing(mapper, uint32_t(i));
         draw_polygon(v, scene.polygon_size[i], tex, mapper, axis, target, &stats, variant);
         v += scene.polygon_size[i];
     }
+    if (watch) watch->drawn();
     return stats;
 }
 

@@ -17,15 +17,30 @@ namespace raster {
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant = Variant::Twin, const Budget& budget = DEFAULT_BUDGET);
 
+// The polygon being drawn, for a fault's report (the kernel's page-fault handler names them): the
+// mapper asked for and the polygon's index in the scene, frame or run; mapper null between drawings.
+struct DrawingNow {
+    const char* mapper = nullptr;
+    uint32_t polygon = 0;
+};
+
 // A long drawing watched (the kernel: progress events, and a line on COM1 stops it): before every
 // WATCH_EVERY-th polygon, keep_going(ctx, polygons handled, polygons in all); false stops the
 // drawing there, and RenderStats::interrupted says so.
+// With `now`, the drawing loops also say there which polygon they draw (the caller's memory).
 struct Watch {
     static constexpr uint32_t WATCH_EVERY = 16;
     bool (*keep_going)(void* ctx, uint32_t done, uint32_t total) = nullptr;
     void* ctx = nullptr;
+    DrawingNow* now = nullptr;
+    void drawing(const Mapper& mapper, uint32_t polygon) const {
+        if (now) *now = DrawingNow{mapper.name, polygon};
+    }
+    void drawn() const {
+        if (now) *now = DrawingNow{};
+    }
     bool stops(uint32_t done, uint32_t total, RenderStats* stats) const {
-        if (done == 0 || done % WATCH_EVERY || keep_going(ctx, done, total)) return false;
+        if (done == 0 || done % WATCH_EVERY || !keep_going || keep_going(ctx, done, total)) return false;
         stats->interrupted = true;
         return true;
     }

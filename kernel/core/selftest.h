@@ -9,23 +9,9 @@
 #include <stdint.h>
 
 #include "kernel/core/mapper.h"
+#include "kernel/core/random.h"
 
 namespace raster {
-
-// xorshift32: small, portable, the same sequence everywhere.
-struct Random {
-    uint32_t state;
-    explicit Random(uint32_t seed) : state(seed ? seed : 0x9E3779B9u) {}
-    uint32_t next() {
-        state ^= state << 13;
-        state ^= state >> 17;
-        state ^= state << 5;
-        return state;
-    }
-    uint32_t below(uint32_t n) { return n ? next() % n : 0; }
-    int32_t range(int32_t lo, int32_t hi) { return lo + int32_t(below(uint32_t(hi - lo + 1))); }
-    double unit() { return double(next()) / 4294967296.0; }
-};
 
 struct CheckBuffers {
     uint8_t* a;           // the twin's destination

@@ -259,10 +259,12 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
         if (watch && watch->stops(uint32_t(i), uint32_t(frame.polygon_count), &stats)) break;
+        if (watch) watch->drawing(mapper, uint32_t(i));
         draw_polygon(v, frame.polygon_size[i], textures.objects[frame.polygon_object[i]], mapper, axis, target, &stats, variant,
                      frame.budget);
         v += frame.polygon_size[i];
     }
+    if (watch) watch->drawn();
     return stats;
 }
 

@@ -61,6 +61,7 @@ void write_budget(lib::JsonLine& r, const char* key, const raster::Budget& b);
 // diagnostics.cpp: faults on purpose, the NASM loops' self-test, leaving QEMU
 void cmd_fault(Context& ctx, const StrView* args, size_t nargs);
 void cmd_selftest(Context& ctx, const StrView* args, size_t nargs);
+void cmd_fuzz(Context& ctx, const StrView* args, size_t nargs);
 void cmd_exit(Context& ctx, const StrView* args, size_t nargs);
 
 // --- argument helpers (args.cpp): each replies with the error itself and returns false ---------

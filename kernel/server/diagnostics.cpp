@@ -4,7 +4,11 @@
 #include "drivers/serial.h"
 #include "drivers/timer.h"
 #include "drivers/vga.h"
+#include "kernel/core/fuzz.h"
+#include "kernel/core/policy.h"
+#include "kernel/core/render.h"
 #include "kernel/core/selftest.h"
+#include "kernel/guard.h"
 #include "kernel/idt.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
@@ -13,6 +17,34 @@
 namespace server {
 
 namespace {
+
+// A mapper reading past its texture or writing past its surface, caught by the guard pages
+// (kernel/guard.h): `exact` draws a quad over the whole screen with a texture that says it is
+// 64 x 64 but whose buffer holds 32 rows (clamped, the screen's lower half reads rows 32 to 63), or
+// into a linear surface that says it is 320 x 240 but whose buffer holds 120 rows. The page
+// fault's report names the buffer, the mapper and the polygon.
+void draw_out_of_bounds(bool short_texture) {
+    constexpr int32_t SIDE = 64;
+    static uint8_t* const texels = guard::take(size_t(SIDE) * SIDE, "fault texture");
+    static uint8_t* const short_texels = guard::take(size_t(SIDE) * SIDE / 2, "fault texture (32 of its 64 rows)");
+    static uint8_t* const surface = guard::take(raster::SCREEN_PIXELS, "fault surface");
+    static uint8_t* const short_surface = guard::take(raster::SCREEN_PIXELS / 2, "fault surface (120 of its 240 rows)");
+    const raster::Texture tex{short_texture ? short_texels : texels, SIDE, SIDE, raster::Wrap::Clamp};
+    raster::Target target = raster::linear_target(short_texture ? surface : short_surface, raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT,
+                                                  raster::SCREEN_WIDTH);
+    const double W = raster::SCREEN_WIDTH, H = raster::SCREEN_HEIGHT;
+    const raster::Vertex quad[4] = {{raster::snap(0), raster::snap(0), 1, 0, 0},
+                                    {raster::snap(W), raster::snap(0), 1, SIDE, 0},
+                                    {raster::snap(W), raster::snap(H), 1, SIDE, SIDE},
+                                    {raster::snap(0), raster::snap(H), 1, 0, SIDE}};
+    const raster::Mapper& exact = *raster::find_mapper("exact");
+    raster::RenderStats stats;
+    idt::drawing_now() = raster::DrawingNow{exact.name, 0};
+    raster::draw_polygon(quad, 4, tex, exact, raster::Axis::Rows, target, &stats);
+    idt::drawing_now() = raster::DrawingNow{};
+}
+void read_past_texture() { draw_out_of_bounds(true); }
+void write_past_surface() { draw_out_of_bounds(false); }
 
 // The CPU exception's report is fault's reply (kernel/idt.cpp); triple and hang test that the
 // harness catches the failures a kernel cannot report. The first is the default.
@@ -26,6 +58,8 @@ constexpr Fault FAULTS[] = {
     {"gp", fault_gp},
     {"triple", fault_triple},  // no reply: QEMU ends with status 0
     {"hang", fault_hang},      // no reply ever
+    {"texture-read", read_past_texture},    // a page fault (#PF) naming the buffer
+    {"surface-write", write_past_surface},
 };
 constexpr int FAULT_COUNT = sizeof(FAULTS) / sizeof(FAULTS[0]);
 
@@ -102,6 +136,63 @@ void cmd_exit(Context&, const StrView* args, size_t) {
     // No isa-debug-exit device (a real PC): stop here.
     vga::text_write("modexlab: exit; halted\n");
     for (;;) asm volatile("cli; hlt");
+}
+
+namespace {
+
+// fuzz's textures (kernel/core/fuzz.h), each copy between guard pages: made on the first `fuzz`.
+struct FuzzBank {
+    raster::Texture textures[raster::FUZZ_TEXTURE_COUNT];
+    char names[raster::FUZZ_TEXTURE_COUNT][24];
+    FuzzBank() {
+        for (int i = 0; i < raster::FUZZ_TEXTURE_COUNT; ++i) {
+            const raster::FuzzTextureSize size = raster::fuzz_texture_size(i);
+            const raster::Wrap wrap = raster::fuzz_texture_wrap(i);
+            lib::Fmt n;
+            n.u(uint32_t(size.width)).s(" x ").u(uint32_t(size.height)).s(" ").s(raster::wrap_name(wrap));
+            for (size_t k = 0; k < sizeof names[i]; ++k) names[i][k] = k + 1 < sizeof names[i] ? n.c_str()[k] : 0;
+            uint8_t* texels = guard::take(size_t(size.width) * size_t(size.height), "fuzz texture", names[i]);
+            raster::generate_texture(raster::TextureKind::Xor, size.width, size.height, texels);
+            textures[i] = raster::Texture{texels, size.width, size.height, wrap};
+            uint8_t* bordered = guard::take(size_t(raster::bordered_bytes(size.width, size.height)), "fuzz texture (bordered copy)", names[i]);
+            uint8_t* aligned = raster::wants_aligned256(textures[i]) ? guard::take(raster::ALIGNED256_BYTES, "fuzz texture (aligned copy)", names[i]) : nullptr;
+            raster::prepare_texture(&textures[i], bordered, aligned);
+        }
+    }
+};
+
+uint8_t* fuzz_surface(void*, bool) {
+    static uint8_t* const surface = guard::take(raster::SCREEN_PIXELS, "fuzz surface");
+    return surface;
+}
+
+bool fuzz_keep_going(void*, uint32_t, uint32_t) { return !serial::byte_ready(); }
+
+}  // namespace
+
+void cmd_fuzz(Context&, const StrView* args, size_t nargs) {
+    constexpr uint32_t MOST = 100000000;
+    uint32_t count = 0, seed = 1;
+    if (!lib::parse_u32(args[0], &count) || count == 0 || count > MOST || (nargs > 2 && !lib::parse_u32(args[2], &seed))) {
+        usage_error("fuzz");
+        return;
+    }
+    const raster::Mapper* mapper = raster::find_mapper(args[1]);
+    if (!mapper) {
+        unknown_name_error("fuzz", "mapper", args[1], [](int i) { return raster::MAPPERS[i].name; }, raster::MAPPER_COUNT);
+        return;
+    }
+    static FuzzBank bank;
+    const raster::Watch watch{fuzz_keep_going, nullptr, &idt::drawing_now()};
+    const uint64_t t0 = timer::rdtsc();
+    const raster::FuzzStats f = raster::fuzz_mapper(*mapper, seed, count, bank.textures, fuzz_surface, nullptr, raster::Variant::Asm, &watch);
+    const uint64_t ticks = timer::rdtsc() - t0;
+    lib::JsonLine r = reply::begin(true);
+    r.str("cmd", "fuzz").str("mapper", mapper->name).u32("seed", seed).u32("polygons", f.tried).u32("polygons_asked", count);
+    r.u32("drawn", f.by_status[0]).begin_object("refused");
+    for (int s = 1; s < 7; ++s) r.u32(raster::setup_status_name(raster::SetupStatus(s)), f.by_status[s]);
+    r.end_object().u64("pixels", f.pixels).u32("written_outside_clip", f.written_outside).u32("first_bad_batch", f.first_bad_batch);
+    r.boolean("interrupted", f.interrupted).u64("ticks", ticks).end();
 }
 
 }  // namespace server

@@ -6,6 +6,7 @@
 #include "kernel/lib/stats.h"
 #include "kernel/scene/scene_text.h"
 #include "kernel/scenes.h"
+#include "kernel/idt.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
 #include "kernel/worlds.h"
@@ -33,7 +34,7 @@ uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
 struct Progress {
     const char* cmd;
     uint64_t interval, next;
-    raster::Watch watch() { return raster::Watch{keep_going, this}; }
+    raster::Watch watch() { return raster::Watch{keep_going, this, &idt::drawing_now()}; }
     static bool keep_going(void* ctx, uint32_t done, uint32_t total) {
         if (serial::byte_ready()) return false;
         auto* p = static_cast<Progress*>(ctx);

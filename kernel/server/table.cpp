@@ -16,7 +16,7 @@ constexpr Command COMMANDS[] = {
     {"palette", "palette default|gray", 1, 1, cmd_palette},
     {"flip", "flip PAGE", 1, 1, cmd_flip},
     {"readback", "readback PAGE", 1, 1, cmd_readback},
-    {"fault", "fault [ud|de|gp|triple|hang]", 0, 1, cmd_fault},
+    {"fault", "fault [ud|de|gp|triple|hang|texture-read|surface-write]", 0, 1, cmd_fault},
     // uploads check their own argument counts: a refused header's bytes are dropped (files.cpp)
     {"scene", "scene BYTES CRC32 (then, after the ready event, BYTES bytes of scene text, either version)", 0, MAX_ARGS, cmd_scene},
     {"file", "file NAME BYTES CRC32 (then, after the ready event, BYTES bytes: a texture or scene file)", 0, MAX_ARGS, cmd_file},
@@ -29,6 +29,7 @@ constexpr Command COMMANDS[] = {
     {"mappers", "mappers", 0, 0, cmd_mappers},
     {"budget", "budget [scene|MAX-ERROR|any [exact|any]] (what auto draws the 3D scene to)", 0, 2, cmd_budget},
     {"selftest", "selftest [CASES]", 0, 1, cmd_selftest},
+    {"fuzz", "fuzz N MAPPER [SEED] (N random extreme polygons, drawn between guard pages)", 2, 3, cmd_fuzz},
     {"vbe", "vbe on", 1, 1, cmd_vbe},
     {"exit", "exit CODE", 1, 1, cmd_exit},
 };

@@ -4,6 +4,7 @@
 // stays the definition's.
 #include <gtest/gtest.h>
 
+#include "kernel/core/fuzz.h"
 #include "kernel/core/policy.h"
 #include "kernel/mappers/classic.h"
 #include "tests/unit/raster_helpers.h"
@@ -275,92 +276,11 @@ namespace {
 using namespace rastertest;
 
 // `make fuzz`: every mapper over MODEXLAB_FUZZ_POLYGONS random polygons (make fuzz: 10^6; make test
-// a fixed-seed share), built under AddressSanitizer and UBSan there, from every class of extreme:
-// moderate triangles and convex polygons, slivers and needles down to 1/256 pixel at any angle,
-// collinear and repeated vertices, triangles below a pixel, huge ones at the coordinate limits,
-// w ratios up to 2^24 and beyond, texture coordinates at the format's limits and large offsets
-// with tiny gradients; every texture size from 1 x 1 to 1024 x 1024, odd and non-square, repeat
-// and clamp, each texel array and its copies exactly its size (ASan sees a stray read); the surface
-// between guard bytes and the clip rectangle inside it (a stray write is counted).
-struct PolygonFuzzer {
-    static constexpr double BEYOND[] = {0, MAX_UV * 2, -MAX_UV * 2, INFINITY, -INFINITY, NAN};
-    std::mt19937 rng;
-    double limit;     // coordinates: the setup's, or the classics' +-8192
-    int32_t inside;   // texture coordinates within 0..inside (mappers that cannot wrap), or 0: any
-    PolygonFuzzer(uint32_t seed, double coordinate_limit, int32_t texture_inside)
-        : rng(seed), limit(coordinate_limit), inside(texture_inside) {}
-
-    double any(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); }
-    double log_any(double lo, double hi) { return std::exp(any(std::log(lo), std::log(hi))); }
-    double w() { return rng() % 4 ? log_any(0.25, 64) : log_any(MIN_W, MAX_W); }
-    // texture coordinates: (u0, v0) + (du, dv) * t with a gradient from tiny to huge
-    double uv(double base, double step) {
-        if (inside) return std::clamp(base + step, 0.0, double(inside));
-        return std::clamp(base + step, -MAX_UV, MAX_UV);
-    }
-
-    std::vector<Vertex> polygon() {
-        const uint32_t kind = rng() % 64;  // in 64ths: the classes below, huge ones rare (their pixels dominate)
-        const double cx = rng() % 8 ? any(-20, 340) : any(-limit, limit), cy = rng() % 8 ? any(-20, 260) : any(-limit, limit);
-        const double u0 = inside ? any(0, inside) : rng() % 4 ? any(-300, 300) : any(-MAX_UV, MAX_UV);
-        const double v0 = inside ? any(0, inside) : rng() % 4 ? any(-300, 300) : any(-MAX_UV, MAX_UV);
-        const double gradient = rng() % 4 ? log_any(1.0 / 64, 8) : log_any(1.0 / 65536, 4096);
-        const double angle = any(0, 2 * M_PI);
-        std::vector<Vertex> p;
-        auto add = [&](double x, double y, double ww) {
-            x = std::clamp(x, -limit, limit), y = std::clamp(y, -limit, limit);
-            const double du = (x - cx) * gradient, dv = (y - cy) * gradient;
-            p.push_back(vertex(x, y, ww, uv(u0, du * std::cos(angle) - dv * std::sin(angle)), uv(v0, du * std::sin(angle) + dv * std::cos(angle))));
-        };
-        if (kind < 24) {  // a convex polygon of 3 to 12 corners, 1 to 200 pixels across
-            const int n = kind < 12 ? 3 : 3 + int(rng() % 10);
-            const double r = log_any(0.5, 200), squash = rng() % 3 ? 1 : log_any(1.0 / 256, 1);
-            for (int k = 0; k < n; ++k) {
-                const double a = angle + k * 2 * M_PI / n, x = r * std::cos(a), y = r * squash * std::sin(a);
-                add(cx + x * std::cos(angle) - y * std::sin(angle), cy + x * std::sin(angle) + y * std::cos(angle), w());
-            }
-        } else if (kind < 36) {  // a sliver or needle: thickness down to 1/256 pixel, length up to 400
-            const double len = log_any(1, 400), thick = log_any(1.0 / 256, 2);
-            const double dx = std::cos(angle), dy = std::sin(angle);
-            add(cx, cy, w());
-            add(cx + dx * len, cy + dy * len, w());
-            add(cx + dx * len * any(0, 1) - dy * thick, cy + dy * len * any(0, 1) + dx * thick, w());
-        } else if (kind < 44) {  // below a pixel
-            for (int k = 0; k < 3; ++k) add(cx + any(0, 1), cy + any(0, 1), w());
-        } else if (kind < 45) {  // huge: corners at the limits
-            for (int k = 0; k < 3; ++k) add(rng() % 2 ? -limit : limit, any(-limit, limit), w());
-            std::swap(p[0], p[rng() % 3]);
-        } else if (kind < 49) {  // collinear or repeated corners
-            const double dx = std::cos(angle), dy = std::sin(angle), len = log_any(1, 300);
-            add(cx, cy, w());
-            add(cx + dx * len, cy + dy * len, w());
-            if (rng() % 2) add(cx + dx * len * 0.5, cy + dy * len * 0.5, w());
-            else add(cx, cy, w());
-        } else if (kind < 57) {  // strong perspective: w from one end of its range to the other
-            const double r = log_any(4, 300);
-            for (int k = 0; k < 4; ++k) {
-                const double a = angle + k * M_PI / 2;
-                add(cx + r * std::cos(a), cy + r * std::sin(a), k < 2 ? MIN_W * any(1, 16) : MAX_W / any(1, 16));
-            }
-        } else if (kind < 62) {  // anything within the limits, corners at random
-            const int n = 3 + int(rng() % 6);
-            for (int k = 0; k < n; ++k) add(any(-limit, limit), any(-limit, limit), log_any(MIN_W, MAX_W));
-        } else {  // a triangle with one value beyond its limit or not finite: refused, never drawn
-            for (int k = 0; k < 3; ++k) add(cx + any(-50, 50), cy + any(-50, 50), w());
-            const double bad = *std::next(std::begin(BEYOND), rng() % std::size(BEYOND));
-            Vertex& v = p[rng() % 3];
-            switch (rng() % 5) {
-            case 0: v.w = bad == 0 ? 0 : std::fabs(bad); break;
-            case 1: v.u = bad; break;
-            case 2: v.v = bad; break;
-            case 3: v.w = MIN_W / 2; break;
-            default: v.w = MAX_W * 2; break;
-            }
-        }
-        return p;
-    }
-};
-
+// a fixed-seed share) from every class of extreme (kernel/core/fuzz.h, docs/fuzzing.md), built under
+// AddressSanitizer and UBSan there; every texture size from 1 x 1 to 1024 x 1024, odd and
+// non-square, repeat and clamp, each texel array and its copies exactly its size (ASan sees a stray
+// read), and the surface too (a stray write), with a clip rectangle inside it whose border must
+// keep its fill. The kernel's `fuzz` command runs the same polygons between guard pages.
 // Textures of every size class, each in arrays of exactly its size.
 struct FuzzTexture {
     std::vector<uint8_t> texels, bordered, aligned;
@@ -384,46 +304,27 @@ TEST(PolygonFuzz, EveryMapperKeepsToItsTextureAndItsClip) {
     const uint64_t per_mapper = env_count("MODEXLAB_FUZZ_POLYGONS", 5000);
     const uint32_t seed = uint32_t(env_count("MODEXLAB_FUZZ_SEED", 2026));
     std::vector<std::unique_ptr<FuzzTexture>> textures;
-    for (Wrap wrap : {Wrap::Repeat, Wrap::Clamp})
-        for (auto [w, h] : {std::pair{1, 1}, {2, 2}, {3, 5}, {64, 64}, {256, 256}, {1024, 1024}, {17, 256}, {256, 64}, {1024, 3}, {128, 1024}})
-            textures.push_back(std::make_unique<FuzzTexture>(w, h, wrap));
+    Texture bank[FUZZ_TEXTURE_COUNT];
+    for (int i = 0; i < FUZZ_TEXTURE_COUNT; ++i) {
+        textures.push_back(std::make_unique<FuzzTexture>(fuzz_texture_size(i).width, fuzz_texture_size(i).height, fuzz_texture_wrap(i)));
+        bank[i] = textures.back()->tex;
+    }
+    std::vector<uint8_t> surface(SCREEN_PIXELS);  // exactly the surface: ASan sees a write past it
+    auto give_surface = [](void* ctx, bool) { return static_cast<std::vector<uint8_t>*>(ctx)->data(); };
     std::printf("%-20s %10s %10s %10s %12s %s\n", "mapper", "polygons", "drawn", "refused", "pixels", "refusals by reason");
     for (int m = 0; m < MAPPER_COUNT; ++m) {
         const Mapper& mapper = MAPPERS[m];
-        const bool classic = std::string(mapper.family) == "classic";
-        std::vector<const FuzzTexture*> usable;
-        for (const auto& t : textures)
-            if (mapper_accepts(mapper, t->tex)) usable.push_back(t.get());
-        ASSERT_FALSE(usable.empty()) << mapper.name;
-        std::vector<Axis> axes;
-        for (Axis axis : {Axis::Rows, Axis::Columns})
-            if (mapper_walks(mapper, axis)) axes.push_back(axis);
-        std::mt19937 pick(seed + uint32_t(m));
-        uint64_t tried = 0, refused[8] = {};
-        RenderStats stats;
-        // a batch: one texture, one walker, one surface checked after it
-        while (tried < per_mapper) {
-            const FuzzTexture& t = *usable[pick() % usable.size()];
-            const Axis axis = axes[pick() % axes.size()];
-            PolygonFuzzer gen(pick(), classic ? classic_limit() : MAX_COORD_PIXELS, classic ? std::min(t.tex.width, t.tex.height) : 0);
-            GuardedSurface surface(mapper, axis);
-            const uint64_t batch = std::min<uint64_t>(256, per_mapper - tried);
-            for (uint64_t i = 0; i < batch; ++i) {
-                const std::vector<Vertex> p = gen.polygon();
-                const SetupStatus s = draw_polygon(p.data(), int(p.size()), t.tex, mapper, axis, surface.target, &stats);
-                ++refused[int(s) & 7];
-            }
-            tried += batch;
-            ASSERT_EQ(surface.written_outside(), 0u) << mapper.name << ": a batch of " << batch << " polygons (seed " << seed
-                                                     << ") wrote outside the clip rectangle, texture " << t.tex.width << " x "
-                                                     << t.tex.height;
-        }
+        // the seed's low bits: the mapper, so that each gets polygons of its own
+        const FuzzStats f = fuzz_mapper(mapper, seed * 64 + uint32_t(m), uint32_t(per_mapper), bank, give_surface, &surface);
         std::string reasons;
-        for (int s = 1; s < 8; ++s)
-            if (refused[s]) reasons += std::string(" ") + setup_status_name(SetupStatus(s)) + " " + std::to_string(refused[s]);
-        std::printf("%-20s %10llu %10llu %10llu %12u%s\n", mapper.name, (unsigned long long)tried, (unsigned long long)refused[0],
-                    (unsigned long long)(tried - refused[0]), stats.pixels, reasons.c_str());
-        EXPECT_GT(refused[0], tried / 4) << mapper.name << ": most polygons should be drawn, not refused";
+        for (int s = 1; s < 7; ++s)
+            if (f.by_status[s]) reasons += std::string(" ") + setup_status_name(SetupStatus(s)) + " " + std::to_string(f.by_status[s]);
+        std::printf("%-20s %10u %10u %10u %12llu%s\n", mapper.name, f.tried, f.by_status[0], f.tried - f.by_status[0],
+                    (unsigned long long)f.pixels, reasons.c_str());
+        EXPECT_EQ(f.tried, uint32_t(per_mapper)) << mapper.name;
+        EXPECT_EQ(f.written_outside, 0u) << mapper.name << ": bytes outside the clip rectangle written, first in batch " << f.first_bad_batch
+                                         << " (seed " << seed << ")";
+        EXPECT_GT(f.by_status[0], f.tried / 2) << mapper.name << ": most polygons should be drawn, not refused";
     }
 }
 
