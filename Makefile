@@ -7,6 +7,7 @@
 #   make test-gallery  the gallery's pages in a headless Chromium (installs Debian's chromium)
 #   make bounds the error bounds against measured errors on 100000 random polygons a mapper
 #   make fuzz   every mapper over 10^6 random polygons under the sanitizers, the parsers under libFuzzer
+#   make extremes  every mapper through the classes of extreme input: build/report/extremes.md
 #   make deps   install missing tools (run, bench and test do it themselves)
 
 MAKEFLAGS += -rR --no-print-directory
@@ -119,6 +120,7 @@ WAD := $(HBUILD)/modexlab-wad
 SCENE_TOOL := $(HBUILD)/modexlab-scene
 BENCH := $(HBUILD)/modexlab-bench
 GALLERY := $(HBUILD)/modexlab-gallery
+EXTREMES := $(HBUILD)/modexlab-extremes
 TESTS := $(HBUILD)/modexlab-tests
 # the unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer
 SBUILD := $(BUILD)/host-san
@@ -146,11 +148,11 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures run bench report gallery bounds fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
+.PHONY: all iso kernel host fixtures run bench report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(FUZZ_REPLAY)
+host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(EXTREMES) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(FUZZ_REPLAY)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 # $(call install,FILE:PACKAGE ...): installs the packages whose file or command is missing.
@@ -358,6 +360,14 @@ PROTOCOL_SEED ?= 2026
 fuzz-protocol: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
 	MODEXLAB_PROTOCOL_FUZZ=$(PROTOCOL_INPUTS) MODEXLAB_PROTOCOL_SEED=$(PROTOCOL_SEED) $(TESTS) --gtest_filter='ProtocolFuzz.*'
+
+# `make extremes`: every mapper through the classes of extreme input, measured against the exact
+# reference; build/report/extremes.md and .csv (docs/accuracy.md, "Stability at the extremes").
+# EXTREME_POLYGONS= a random class (default 300), MAPPERS=a,b, CLASSES=a,b narrow it.
+EXTREME_POLYGONS ?= 300
+extremes: deps
+	@$(MAKE) -s -j$(NPROC) $(EXTREMES)
+	$(EXTREMES) --out $(BUILD)/report --polygons $(EXTREME_POLYGONS) $(if $(MAPPERS),--mappers $(MAPPERS)) $(if $(CLASSES),--classes $(CLASSES))
 
 # `make fuzz`: every mapper over FUZZ_POLYGONS random polygons under ASan and UBSan, reads and
 # writes bounds-checked (make test draws a share), then every fuzz target under libFuzzer for

@@ -16,13 +16,30 @@ constexpr double INF = __builtin_inf();
 
 }  // namespace
 
-// The classes, in 64ths: convex polygons (24), slivers and needles (12), below a pixel (8), huge (1),
+const char* polygon_class_name(PolygonClass c) {
+    constexpr const char* NAMES[POLYGON_CLASS_COUNT] = {"convex", "sliver", "tiny", "huge", "degenerate", "perspective", "anywhere", "beyond"};
+    return NAMES[int(c) % POLYGON_CLASS_COUNT];
+}
+
+// The mixture, in 64ths: convex polygons (24), slivers and needles (12), below a pixel (8), huge (1),
 // collinear or repeated corners (4), strong perspective (8), corners anywhere (5), a value beyond
-// its limit or not finite (2). docs/fuzzing.md describes them.
+// its limit or not finite (2).
 int RandomPolygons::next(Vertex* out) {
+    const uint32_t k = rng_.below(64);
+    const PolygonClass c = k < 24   ? PolygonClass::Convex
+                           : k < 36 ? PolygonClass::Sliver
+                           : k < 44 ? PolygonClass::Tiny
+                           : k < 45 ? PolygonClass::Huge
+                           : k < 49 ? PolygonClass::Degenerate
+                           : k < 57 ? PolygonClass::Perspective
+                           : k < 62 ? PolygonClass::Anywhere
+                                    : PolygonClass::Beyond;
+    return next(out, c);
+}
+
+int RandomPolygons::next(Vertex* out, PolygonClass kind) {
     Random& r = rng_;
     const double L = limit_;
-    const uint32_t kind = r.below(64);
     const double cx = r.below(8) ? r.uniform(-20, 340) : r.uniform(-L, L), cy = r.below(8) ? r.uniform(-20, 260) : r.uniform(-L, L);
     const double u0 = inside_ ? r.uniform(0, inside_) : r.below(4) ? r.uniform(-300, 300) : r.uniform(-MAX_UV, MAX_UV);
     const double v0 = inside_ ? r.uniform(0, inside_) : r.below(4) ? r.uniform(-300, 300) : r.uniform(-MAX_UV, MAX_UV);
@@ -41,8 +58,8 @@ int RandomPolygons::next(Vertex* out) {
         v = inside_ ? clamp(v, 0, inside_) : clamp(v, -MAX_UV, MAX_UV);
         out[n++] = Vertex{snap(x), snap(y), clamp(ww, MIN_W, MAX_W), u, v};
     };
-    if (kind < 24) {  // convex: 3 to 12 corners on an ellipse, 1 to 512 pixels across
-        const int corners = kind < 12 ? 3 : 3 + int(r.below(10));
+    if (kind == PolygonClass::Convex) {  // 3 to 12 corners on an ellipse, 1 to 1024 pixels across
+        const int corners = r.below(2) ? 3 : 3 + int(r.below(10));
         const double radius = r.octaves(-1, 8), squash = r.below(3) ? 1 : r.octaves(-8, 0);
         for (int k = 0; k < corners; ++k) {
             double s, c;
@@ -50,32 +67,32 @@ int RandomPolygons::next(Vertex* out) {
             const double x = radius * c, y = radius * squash * s;
             add(cx + x * cos_a - y * sin_a, cy + x * sin_a + y * cos_a, w());
         }
-    } else if (kind < 36) {  // a sliver or needle: 1/256 to 4 pixels thick, 1 to 1024 long
+    } else if (kind == PolygonClass::Sliver) {  // 1/256 to 4 pixels thick, 1 to 1024 long
         const double length = r.octaves(0, 9), thick = r.octaves(-8, 1), along = r.uniform(0, 1);
         add(cx, cy, w());
         add(cx + cos_a * length, cy + sin_a * length, w());
         add(cx + cos_a * length * along - sin_a * thick, cy + sin_a * length * along + cos_a * thick, w());
-    } else if (kind < 44) {  // inside one pixel
+    } else if (kind == PolygonClass::Tiny) {  // inside one pixel
         for (int k = 0; k < 3; ++k) add(cx + r.uniform(0, 1), cy + r.uniform(0, 1), w());
-    } else if (kind < 45) {  // huge: corners at the limits
+    } else if (kind == PolygonClass::Huge) {  // corners at the limits
         for (int k = 0; k < 3; ++k) add(r.below(2) ? -L : L, r.uniform(-L, L), w());
-    } else if (kind < 49) {  // collinear or repeated corners
+    } else if (kind == PolygonClass::Degenerate) {  // collinear or repeated corners
         const double length = r.octaves(0, 9);
         add(cx, cy, w());
         add(cx + cos_a * length, cy + sin_a * length, w());
         if (r.below(2)) add(cx + cos_a * length * 0.5, cy + sin_a * length * 0.5, w());
         else add(cx, cy, w());
-    } else if (kind < 57) {  // strong perspective: w from near 2^-16 to near 2^24 across a quad
+    } else if (kind == PolygonClass::Perspective) {  // w from near 2^-16 to near 2^24 across a quad
         const double radius = r.octaves(2, 9);
         for (int k = 0; k < 4; ++k) {
             double s, c;
             sin_cos_degrees(angle + 90.0 * k, &s, &c);
             add(cx + radius * c, cy + radius * s, k < 2 ? MIN_W * r.uniform(1, 16) : MAX_W / r.uniform(1, 16));
         }
-    } else if (kind < 62) {  // corners anywhere within the limits
+    } else if (kind == PolygonClass::Anywhere) {  // corners anywhere within the limits
         const int corners = 3 + int(r.below(6));
         for (int k = 0; k < corners; ++k) add(r.uniform(-L, L), r.uniform(-L, L), r.octaves(-16, 24));
-    } else {  // one value beyond its limit or not finite: refused, never drawn
+    } else {  // Beyond: one value beyond its limit or not finite, refused, never drawn
         for (int k = 0; k < 3; ++k) add(cx + r.uniform(-50, 50), cy + r.uniform(-50, 50), w());
         const double BEYOND[] = {2 * MAX_UV, -2 * MAX_UV, INF, -INF, __builtin_nan("")};
         const double bad = BEYOND[r.below(5)];

@@ -16,14 +16,30 @@ namespace raster {
 
 constexpr int MAX_FUZZ_CORNERS = 12;
 
+// The classes of extreme polygons (docs/fuzzing.md), in the share of the mixture next() draws.
+enum class PolygonClass : uint8_t {
+    Convex,       // 3 to 12 corners, 1 to 1024 pixels across, a third squashed to 1/256 (24/64)
+    Sliver,       // slivers and needles: 1/256 to 4 pixels thick, 1 to 1024 long, any angle (12/64)
+    Tiny,         // inside one pixel (8/64)
+    Huge,         // corners at the coordinate limits (1/64)
+    Degenerate,   // collinear or repeated corners (4/64)
+    Perspective,  // w from near 2^-16 to near 2^24 across one quad (8/64)
+    Anywhere,     // 3 to 8 corners anywhere within the limits (5/64)
+    Beyond,       // one value beyond its limit or not finite: refused (2/64)
+};
+constexpr int POLYGON_CLASS_COUNT = 8;
+const char* polygon_class_name(PolygonClass c);  // "convex", "sliver", ...
+
 class RandomPolygons {
 public:
     // coordinate_limit: the setup's +-16384 pixels, or the classics' +-8192; texture_inside > 0:
     // texture coordinates within 0..texture_inside (for mappers that cannot wrap)
     RandomPolygons(uint32_t seed, double coordinate_limit, int32_t texture_inside)
         : rng_(seed), limit_(coordinate_limit), inside_(texture_inside) {}
-    // The next polygon's corners into out (MAX_FUZZ_CORNERS); returns their count.
+    // The next polygon's corners into out (MAX_FUZZ_CORNERS); returns their count. From the
+    // mixture, or of one class.
     int next(Vertex* out);
+    int next(Vertex* out, PolygonClass c);
 
 private:
     Random rng_;
