@@ -363,8 +363,8 @@ fuzz-protocol: deps
 
 # `make extremes`: every mapper through the classes of extreme input, measured against the exact
 # reference; build/report/extremes.md and .csv (docs/accuracy.md, "Stability at the extremes").
-# EXTREME_POLYGONS= a random class (default 300), MAPPERS=a,b, CLASSES=a,b narrow it.
-EXTREME_POLYGONS ?= 300
+# EXTREME_POLYGONS= a random class (default 1000), MAPPERS=a,b, CLASSES=a,b narrow it.
+EXTREME_POLYGONS ?= 1000
 extremes: deps
 	@$(MAKE) -s -j$(NPROC) $(EXTREMES)
 	$(EXTREMES) --out $(BUILD)/report --polygons $(EXTREME_POLYGONS) $(if $(MAPPERS),--mappers $(MAPPERS)) $(if $(CLASSES),--classes $(CLASSES))

@@ -13,6 +13,12 @@ double q_low(const SpanLine& l, double k0, double k1) {
     return a < b ? a : b;
 }
 double q_high(const SpanLine& l, double k0, double k1) { return larger(l.q0 + l.qm * k0, l.q0 + l.qm * k1); }
+// Whether Q > 0 all along the span (at both ends: it is linear). The span bounds need it: where Q
+// is not positive the exact mapping has a pole or runs backwards, D = (lQ - P) / Q need not take
+// its extremes at the ends or where D' = 0, the footprint is not smallest where Q is largest, and
+// the reference's rounding (exact_rounding, over Q's least along the span) is not bounded. No
+// bound there (as drawn_line_bound and the spread say).
+bool q_positive(const SpanLine& l) { return l.q0 > 0 && l.q0 + l.qm * double(l.count - 1) > 0; }
 
 // |K| = |P' Q - P Q'| for u (t = 0) or v, constant along the span, and the rounding of its
 // evaluation (the bounds take it away or add it, as their direction needs).
@@ -86,6 +92,7 @@ double min_footprint_along(const SpanLine& l, double k0, double k1) {
 }
 
 double lines_bound(const SpanLine& l, const double* a, const double* b, double k0, double k1, double rounding) {
+    if (!q_positive(l)) return NO_BOUND;
     double d[2];
     for (int t = 0; t < 2; ++t) d[t] = line_deviation(l, t, a[t], b[t], k0, k1) + rounding + 2 * exact_rounding(l, t);
     return footprint_error(d[0], d[1], min_footprint_along(l, k0, k1));
@@ -111,6 +118,7 @@ ChordTerms chord_terms(const SpanLine& l) {
 }
 
 double chords_bound(const ChordTerms& c, double h, double q_lo, double q_hi, double rounding) {
+    if (!(q_lo > 0)) return NO_BOUND;  // t'' = -2 K Q' / Q^3 is largest where Q is least only where Q > 0
     double d[2];
     for (int t = 0; t < 2; ++t) {
         // h^2 / 8 * 2 |K| |Q'| / Q_lo^3, with |K| / Q_lo^2 as max_step_along has it
@@ -121,6 +129,7 @@ double chords_bound(const ChordTerms& c, double h, double q_lo, double q_hi, dou
 }
 
 double chords_bound(const SpanLine& l, double h, double k0, double k1, double rounding) {
+    if (!q_positive(l)) return NO_BOUND;  // chord_terms' reference rounding is the whole span's
     return chords_bound(chord_terms(l), h, q_low(l, k0, k1), q_high(l, k0, k1), rounding);
 }
 

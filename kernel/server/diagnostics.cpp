@@ -65,6 +65,9 @@ constexpr int FAULT_COUNT = sizeof(FAULTS) / sizeof(FAULTS[0]);
 
 constexpr uint32_t SELFTEST_SEED = 20261121;
 constexpr uint32_t DEFAULT_CASES = 2000, MAX_CASES = 1000000;
+// Cases checked between looks at COM1 (each chunk its own seed: SELFTEST_SEED + its first case), so
+// that a line stops even a long check within a fraction of a second.
+constexpr uint32_t CHUNK_CASES = 1000;
 constexpr int MAX_CHECKED_LOOPS = 16;
 // Static: the loops' destinations and texels, over a megabyte, far beyond the 64 KiB kernel stack.
 alignas(4) uint8_t g_check_a[raster::CHECK_DST_BYTES];
@@ -96,13 +99,23 @@ void cmd_selftest(Context&, const StrView* args, size_t nargs) {
     const raster::Mapper* loops[MAX_CHECKED_LOOPS];
     int count = raster::checked_loops(loops, MAX_CHECKED_LOOPS);
     bool stopped = false;
-    for (int i = 0; i < count && !(stopped = interrupted(uint32_t(n))); ++i) {
+    uint32_t chunks = 0;  // done, over all loops: a byte on COM1 stops the check before the next
+    for (int i = 0; i < count && !stopped; ++i) {
         const raster::Mapper& loop = *loops[i];
         bool vga = loop.needs & raster::NEED_VGA_FOR_ASM;
         if (!loop.asm_loop || (vga && !vga_checked)) continue;
-        results[n] = vga ? vga_selftest::check(loop, SELFTEST_SEED, cases, g_check_texels)
-                         : loop.check(loop, loop.asm_loop, SELFTEST_SEED, cases, buffers);
-        all_equal = all_equal && results[n].mismatches == 0;
+        raster::LoopCheck& total = results[n];
+        total = raster::LoopCheck{loop.name};
+        for (uint32_t done = 0; done < cases && !(stopped = interrupted(chunks)); done += CHUNK_CASES, ++chunks) {
+            const uint32_t k = cases - done < CHUNK_CASES ? cases - done : CHUNK_CASES;
+            const raster::LoopCheck c = vga ? vga_selftest::check(loop, SELFTEST_SEED + done, k, g_check_texels)
+                                            : loop.check(loop, loop.asm_loop, SELFTEST_SEED + done, k, buffers);
+            total.loop = c.loop;
+            if (c.mismatches && !total.mismatches) total.first_mismatch = done + c.first_mismatch;
+            total.cases += c.cases, total.mismatches += c.mismatches, total.pixels += c.pixels;
+        }
+        if (total.cases == 0) break;
+        all_equal = all_equal && total.mismatches == 0;
         ++n;
     }
     lib::JsonLine r = reply::begin(all_equal);

@@ -121,11 +121,11 @@ struct Measurer {
         bool drawn = false;
         AccuracyMetrics e = meter.measure(v, n, tex, &drawn, [&](int32_t x, int32_t y, bool rc, bool dc, double) {
             differs += rc != dc;
+            row.gaps += rc && !dc;
+            row.overdraw += dc && !rc;
             if (rc) sums[0] += x, sums[1] += y, ++counts[0];
             if (dc) sums[2] += x, sums[3] += y, ++counts[1];
         });
-        row.gaps += e.gaps;
-        row.overdraw += e.overdraw;
         row.compared += e.compared;
         row.sum_footprint += e.mean_footprint_error * double(e.compared);
         row.max_footprint = std::max(row.max_footprint, e.max_footprint_error);

@@ -13,7 +13,7 @@ namespace {
 using namespace systest;
 
 // Words each command takes, valid and not; the commands that end the session (exit, fault) are left
-// out, and so are counts that make a command long without a frame to stop at (selftest).
+// out. Long work (play 100000, selftest 100000) stops at the marker that follows it.
 const std::vector<std::vector<std::string>> COMMANDS = {
     {"hello"}, {"help"}, {"files"}, {"mappers"},
     {"mode", "13h", "modex", "12h", ""},
@@ -28,7 +28,7 @@ const std::vector<std::vector<std::string>> COMMANDS = {
     {"play", "1", "2", "100000", "exact", "auto", "fast-columns", "planar", "vga"},
     {"bench", "1", "2", "1000", "exact", "auto", "linear", "asm"},
     {"budget", "scene", "0", "0.5", "4", "any", "exact", "-1", "1e9"},
-    {"selftest", "1", "2", "0"},
+    {"selftest", "1", "2", "0", "100000"},
     {"vbe", "on", "off"},
 };
 
@@ -67,13 +67,14 @@ public:
         }
         return s;
     }
-    // An upload's header (one line, sometimes broken: bytes changed, never a line end) for the bytes.
-    std::string upload_header(const std::string& payload) {
+    // An upload's header (one line, sometimes broken when `may_break`: bytes changed, never a line
+    // end) for the bytes.
+    std::string upload_header(const std::string& payload, bool may_break = true) {
         char crc[16];
         std::snprintf(crc, sizeof crc, "0x%08x", lib::crc32(0, reinterpret_cast<const uint8_t*>(payload.data()), payload.size()));
         std::string header = (below(2) ? std::string("scene") : "file f" + std::to_string(below(4)) + ".scene") + " " +
                              std::to_string(payload.size()) + " " + (chance(80) ? std::string(crc) : std::to_string(rng_()));
-        for (uint32_t n = chance(30) ? 1 + below(3) : 0, i = 0; i < n; ++i) {
+        for (uint32_t n = may_break && chance(30) ? 1 + below(3) : 0, i = 0; i < n; ++i) {
             char c = char(below(256));
             header[below(uint32_t(header.size()))] = c == '\n' || c == '\r' ? 'x' : c;
         }
@@ -110,13 +111,14 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
     // the bytes after a `ready` (an upload the kernel took): as many as it asked for; after an input
     // sent with its marker (which then went into the upload), a line end and the marker again
     std::string payload, marker;
-    bool marker_again = false;
+    bool marker_again = false, impatient = false;
     auto on_event = [&](const json& e) {
         if (e.value("event", "") != "ready") return;  // frames of play and bench
+        ++taken;
+        if (impatient) return;  // the bytes went with the header
         std::string bytes = payload;
         bytes.resize(e.value("bytes", size_t(0)), '\n');
         s.send(marker_again ? bytes + "\n" + marker : bytes);
-        ++taken;
     };
     // reads replies up to the marker's: each has the next seq (the harness checks)
     auto until_marker = [&](uint32_t i, const std::string& input) {
@@ -130,7 +132,7 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
         std::string input;
         payload.clear();
         marker = "load sync-" + std::to_string(i) + "\n";
-        switch (f.below(4)) {
+        switch (f.below(5)) {
         case 0: input = f.line() + "\n"; break;
         case 1: input = f.mutate(f.line()) + "\n"; break;
         case 2: {  // as a protocol client: the header alone, the bytes once the kernel is ready
@@ -142,6 +144,19 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
             s.send(input);
             s.raw("", on_event);  // the header's one reply: the upload's, or why not
             ++replies;
+            s.send(marker);
+            until_marker(i, input);
+            continue;
+        }
+        case 3: {  // an impatient client: the header and the bytes at once, not waiting for `ready`
+            payload = f.chance(50) ? scene : world;
+            input = f.upload_header(payload, false) + "\n" + payload;
+            ++uploads;
+            impatient = true;
+            s.send(input);
+            s.raw("", on_event);  // the upload's reply (its ready event seen on the way)
+            ++replies;
+            impatient = false;
             s.send(marker);
             until_marker(i, input);
             continue;

@@ -195,6 +195,28 @@ TEST(Bounds, QuakeTakesWholePeriodShiftsBeyondSixteenBits) {
     }
 }
 
+// Found with extreme depths: a quad whose planes (through three of its vertices) put Q = 1/w at or
+// below 0 at the fourth, so Q crosses 0 on some spans. The span bounds assumed Q > 0 (t'' largest
+// where Q is least, the footprint least where Q is largest): the coarse chord bound came out below
+// a texel where constant-depth erred by 128 footprints. Now no bound where Q is not positive.
+TEST(Bounds, NoBoundWhereQIsNotPositive) {
+    std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    generate_texture(TextureKind::Xor, 256, 256, texels.data());
+    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
+    prepare_texture(&tex, bordered.data(), aligned.data());
+    const std::vector<Vertex> p = {{snap(206.9570), snap(-81.6484), 0.000233777472, -417.951969, -179.658735},
+                                   {snap(299.7500), snap(27.8164), 0.000183679473, -264.901175, -289.130108},
+                                   {snap(190.2852), snap(120.6094), 2358196.74, -155.429802, -136.079315},
+                                   {snap(97.4922), snap(11.1445), 1984981.56, -308.480596, -26.6079415}};
+    for (const char* name : {"constant-depth", "persp-subdiv-16", "persp-adaptive-1", "affine", "auto"})
+        for (Axis axis : {Axis::Rows, Axis::Columns}) {
+            const Mapper& m = *find_mapper(name);
+            PolygonMeter meter(m, axis);
+            Tightness tight;
+            check_polygon(meter, m, axis, p, tex, &tight, std::string(name) + (axis == Axis::Rows ? " rows" : " columns"));
+        }
+}
+
 TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
     for (const DemoScene& d : demo_scenes()) {
         LoadedWorld w = load_world_file(std::string("scenes/") + d.name + ".scene");
