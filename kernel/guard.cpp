@@ -12,7 +12,7 @@ constexpr size_t POOL_BYTES = 40u << 20;
 constexpr size_t BIG_PAGE = 4u << 20;
 constexpr size_t POOL_TABLES = POOL_BYTES / BIG_PAGE;
 constexpr uint32_t PRESENT = 1, WRITABLE = 2, BIG = 1 << 7;
-constexpr int MAX_REGIONS = 96;
+constexpr int MAX_REGIONS = 160;
 
 alignas(BIG_PAGE) uint8_t g_pool[POOL_BYTES];
 alignas(PAGE) uint32_t g_directory[1024];
@@ -24,9 +24,13 @@ struct Region {
     uint32_t first_page;  // the buffer's pages: [first_page, end), the buffer flush against end
     uint32_t start, end;  // the buffer's bytes
 };
+// the buffers kept for the boot (from the pool's start up) and the transient ones (from its end down)
 Region g_regions[MAX_REGIONS];
 int g_region_count = 0;
-size_t g_cursor = PAGE;  // the pool's first page is the first buffer's guard
+Region g_transient[MAX_REGIONS];
+int g_transient_count = 0;
+size_t g_cursor = PAGE;               // the pool's first page is the first buffer's guard
+size_t g_top = POOL_BYTES - PAGE;     // and its last page the last transient buffer's
 bool g_enabled = false;
 bool g_tables_ready = false;  // buffers may be taken by constructors, before init()
 
@@ -45,6 +49,13 @@ void prepare_tables() {
     for (uint32_t t = 0; t < POOL_TABLES; ++t)
         for (uint32_t p = 0; p < 1024; ++p) g_tables[t][p] = (base + (t * 1024 + p) * PAGE) | PRESENT | WRITABLE;
     g_tables[0][0] &= ~PRESENT;
+    g_tables[POOL_TABLES - 1][1023] &= ~PRESENT;
+}
+
+[[noreturn]] void full(const char* what, size_t bytes) {
+    lib::Fmt m;
+    m.s("the guarded pool is full: ").s(what).s(" needs ").u(uint32_t(bytes)).s(" bytes, ").u(uint32_t(g_top - g_cursor)).s(" left");
+    panic(m.c_str());
 }
 
 void set_present(uint32_t address, bool present) {
@@ -74,11 +85,7 @@ bool enabled() { return g_enabled; }
 
 uint8_t* take(size_t bytes, const char* what, const char* name) {
     const size_t pages = (bytes + PAGE - 1) / PAGE;
-    if (bytes == 0 || g_region_count == MAX_REGIONS || pages + 1 > (POOL_BYTES - g_cursor) / PAGE) {
-        lib::Fmt m;
-        m.s("the guarded pool is full: ").s(what).s(" needs ").u(uint32_t(bytes)).s(" bytes, ").u(uint32_t(POOL_BYTES - g_cursor)).s(" left");
-        panic(m.c_str());
-    }
+    if (bytes == 0 || g_region_count == MAX_REGIONS || (pages + 1) * PAGE > g_top - g_cursor) full(what, bytes);
     prepare_tables();
     const uint32_t first = pool_base() + uint32_t(g_cursor), end = first + uint32_t(pages * PAGE);
     for (uint32_t a = first; a < end; a += PAGE) set_present(a, true);
@@ -88,32 +95,39 @@ uint8_t* take(size_t bytes, const char* what, const char* name) {
     return reinterpret_cast<uint8_t*>(end - bytes);
 }
 
-size_t mark() { return size_t(g_region_count); }
+uint8_t* take_transient(size_t bytes, const char* what, const char* name) {
+    const size_t pages = (bytes + PAGE - 1) / PAGE;
+    if (bytes == 0 || g_transient_count == MAX_REGIONS || (pages + 1) * PAGE > g_top - g_cursor) full(what, bytes);
+    prepare_tables();
+    const uint32_t end = pool_base() + uint32_t(g_top), first = end - uint32_t(pages * PAGE);
+    for (uint32_t a = first; a < end; a += PAGE) set_present(a, true);
+    set_present(first - PAGE, false);  // the guard before it (and after the next)
+    g_transient[g_transient_count++] = Region{what, name, first, end - uint32_t(bytes), end};
+    g_top -= (pages + 1) * PAGE;
+    return reinterpret_cast<uint8_t*>(end - bytes);
+}
 
-void release(size_t m) {
-    if (m >= size_t(g_region_count)) return;
-    g_region_count = int(m);
-    g_cursor = m == 0 ? PAGE : g_regions[m - 1].end + PAGE - pool_base();
+void release_transient() {
+    g_transient_count = 0;
+    g_top = POOL_BYTES - PAGE;
 }
 
 bool find(uint32_t address, Hit* hit) {
     if (address < pool_base() || address >= pool_base() + POOL_BYTES) return false;
     const uint32_t page = address & ~uint32_t(PAGE - 1);
-    for (int i = 0; i < g_region_count; ++i) {
-        const Region& r = g_regions[i];
-        if (page == r.end) {
-            *hit = Hit{r.what, r.name, true, address - r.end + 1};
-            return true;
-        }
-        if (page + PAGE == r.first_page) {
-            *hit = Hit{r.what, r.name, false, r.start - address};
-            return true;
-        }
-    }
+    const Region* const lists[2] = {g_regions, g_transient};
+    const int counts[2] = {g_region_count, g_transient_count};
+    // past the end of a buffer first (the likelier stray), then before the start of one
+    for (int after = 1; after >= 0; --after)
+        for (int l = 0; l < 2; ++l)
+            for (int i = 0; i < counts[l]; ++i) {
+                const Region& r = lists[l][i];
+                if (after ? page == r.end : page + PAGE == r.first_page) {
+                    *hit = Hit{r.what, r.name, after == 1, after ? address - r.end + 1 : r.start - address};
+                    return true;
+                }
+            }
     return false;
 }
-
-size_t pool_bytes() { return POOL_BYTES; }
-size_t pool_used() { return g_cursor; }
 
 }  // namespace guard

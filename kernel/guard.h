@@ -27,12 +27,16 @@ bool enabled();
 // before it, but within that page, is not caught). Panics when the pool is full.
 uint8_t* take(size_t bytes, const char* what, const char* name = nullptr);
 
-// Buffers taken after a mark are given back by release(mark) (the world's textures, per load).
-// An object of type T in a buffer of its own (zeroed, constructed).
+// A buffer kept only until release_transient(), taken from the other end of the pool (the 3D
+// scene's textures, made again on every load), guarded the same way.
+uint8_t* take_transient(size_t bytes, const char* what, const char* name = nullptr);
+void release_transient();
+
+// An object of type T in a buffer of its own (zeroed, constructed), kept for the boot.
 template <typename T>
-T* take_object(const char* what);
-size_t mark();
-void release(size_t mark);
+T* take_object(const char* what) {
+    return new (take(sizeof(T), what)) T;
+}
 
 // What a faulting address hit: the buffer whose guard page holds it, and how far past its end or
 // before its start; false when the address is in no guard page of the pool.
@@ -43,13 +47,5 @@ struct Hit {
     uint32_t offset;  // 1: the byte just past the last (or just before the first)
 };
 bool find(uint32_t address, Hit* hit);
-
-template <typename T>
-T* take_object(const char* what) {
-    return new (take(sizeof(T), what)) T;
-}
-
-size_t pool_bytes();
-size_t pool_used();
 
 }  // namespace guard

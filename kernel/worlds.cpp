@@ -16,7 +16,6 @@ namespace {
 raster::World& g_world = *guard::take_object<raster::World>("3D scene");
 raster::Frame& g_frame = *guard::take_object<raster::Frame>("frame");
 raster::TextureSet g_textures;
-size_t g_textures_mark = guard::mark();  // after the world and the frame: release() keeps them
 raster::FrameScratch g_scratch;
 bool g_loaded = false;
 bool g_overridden = false;
@@ -25,10 +24,10 @@ char g_name[raster::MAX_FILE_NAME];
 
 // Copies each texture of the world, and its bordered and aligned copies, to buffers of their own that
 // end against a guard page, and points the objects' textures at them (a texture's copies are shared
-// by the objects that use it). The last world's buffers are given back first.
+// by the objects that use it). The last world's buffers are given back first (transient: the
+// buffers kept for the boot are never touched).
 void place_textures() {
-    guard::release(g_textures_mark);
-    g_textures_mark = guard::mark();
+    guard::release_transient();
     raster::Texture placed[raster::MAX_WORLD_TEXTURES] = {};
     for (int32_t o = 0; o < g_world.object_count; ++o) {
         const int32_t i = g_world.objects[o].texture;
@@ -37,15 +36,15 @@ void place_textures() {
         if (!t.texels) {
             const char* name = g_world.textures[i].name;
             const size_t texels = size_t(built.width) * size_t(built.height), bordered = size_t(raster::bordered_bytes(built.width, built.height));
-            uint8_t* at = guard::take(texels, "world texture", name);
+            uint8_t* at = guard::take_transient(texels, "world texture", name);
             memcpy(at, built.texels, texels);
             t.texels = at;
             if (built.bordered) {
-                at = guard::take(bordered, "world texture (bordered copy)", name);
+                at = guard::take_transient(bordered, "world texture (bordered copy)", name);
                 memcpy(at, built.bordered, bordered);
                 t.bordered = at;
             }
-            if (built.aligned256) t.aligned256 = raster::make_aligned256(built, guard::take(raster::ALIGNED256_BYTES, "world texture (aligned copy)", name));
+            if (built.aligned256) t.aligned256 = raster::make_aligned256(built, guard::take_transient(raster::ALIGNED256_BYTES, "world texture (aligned copy)", name));
         }
         g_textures.objects[o].texels = t.texels;
         g_textures.objects[o].bordered = t.bordered;

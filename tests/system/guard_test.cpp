@@ -6,6 +6,7 @@
 
 #include "kernel/core/fuzz.h"
 #include "kernel/core/policy.h"
+#include "qemu/accuracy/measure.h"
 #include "tests/system/system.h"
 
 namespace {
@@ -82,6 +83,26 @@ TEST(Guard, TheKernelFuzzesEveryMapperAsTheHostDoes) {
         EXPECT_GT(want.pixels, 0u) << mapper.name;
     }
     EXPECT_EQ(s.ok("hello")["cmd"], "hello");
+}
+
+// The 3D scene's textures are taken again on every load, from the pool's other end: a later load
+// never reuses what the fuzz command (or anything else kept for the boot) took in between, so the
+// frame after loads and fuzz runs interleaved is still the host's.
+TEST(Guard, TexturesOfALaterLoadLeaveOtherBuffersAlone) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    s.ok("load cube.scene");
+    s.ok("fuzz 64 exact 1");
+    s.ok("load corridor.scene");  // larger textures than the cube's
+    s.ok("fuzz 256 exact 2");
+    s.ok("fuzz 256 fast-affine 3");
+    const json r = s.ok("frame 30 exact 0 linear");
+    LoadedWorld host = load_world_file("scenes/corridor.scene");
+    auto f = world_frame(host, 30);
+    const IndexImage want = render_world_frame(host, *f, *raster::find_mapper("exact"), raster::Axis::Rows);
+    const Comparison rb = compare(s.readback(0), want);
+    EXPECT_TRUE(rb.equal()) << rb.summary();
+    EXPECT_EQ(s.ok("fuzz 64 exact 1")["written_outside_clip"], 0);
 }
 
 }  // namespace

@@ -325,6 +325,7 @@ TEST(PolygonFuzz, EveryMapperKeepsToItsTextureAndItsClip) {
             if (f.by_status[s]) reasons += std::string(" ") + setup_status_name(SetupStatus(s)) + " " + std::to_string(f.by_status[s]);
         std::printf("%-20s %10u %10u %10u %12llu%s\n", mapper.name, f.tried, f.by_status[0], f.tried - f.by_status[0],
                     (unsigned long long)f.pixels, reasons.c_str());
+        std::fflush(stdout);  // a line a mapper as it comes (make fuzz: minutes a mapper)
         EXPECT_EQ(f.tried, uint32_t(per_mapper)) << mapper.name;
         EXPECT_EQ(f.written_outside, 0u) << mapper.name << ": bytes outside the clip rectangle written, first in batch " << f.first_bad_batch
                                          << " (seed " << seed << ")";
