@@ -123,7 +123,7 @@ FuzzStats fuzz_mapper(const Mapper& mapper, uint32_t seed, uint32_t count, const
     Random pick(seed);
     RenderStats stats;
     while (f.tried < count) {
-        if (watch && watch->stops(f.batches, f.batches + 1, &stats)) break;  // asked every 16th batch
+        if (watch && watch->stops(f.tried, count, &stats)) break;  // asked between batches (256: a multiple of 16)
         const Texture& tex = bank[usable[pick.below(uint32_t(usable_count))]];
         const Axis axis = axes[pick.below(uint32_t(axis_count))];
         const bool planar = ram_planar(mapper, axis);

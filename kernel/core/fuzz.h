@@ -77,7 +77,7 @@ using FuzzSurface = uint8_t* (*)(void* ctx, bool planar);
 // Draws `count` polygons with the mapper, in batches: each batch takes a texture from the bank
 // (FUZZ_TEXTURE_COUNT, as fuzz_texture_size and fuzz_texture_wrap say) that the mapper accepts, one
 // of its walkers, and the surface for it filled with FUZZ_FILL; after the batch, the bytes outside
-// FUZZ_CLIP are counted. With a watch, it may stop between batches.
+// FUZZ_CLIP are counted. With a watch, it may stop between batches (asked with the polygons done).
 FuzzStats fuzz_mapper(const Mapper& mapper, uint32_t seed, uint32_t count, const Texture* bank, FuzzSurface surface, void* ctx,
                       Variant variant = Variant::Twin, const Watch* watch = nullptr);
 

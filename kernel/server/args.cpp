@@ -2,6 +2,8 @@
 // that name the choices, listed from the same tables the parsers read so that they cannot drift.
 #include "drivers/vga.h"
 #include "drivers/serial.h"
+#include "drivers/timer.h"
+#include "kernel/idt.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
 #include "kernel/worlds.h"
@@ -63,6 +65,21 @@ void cannot_draw_through(const char* cmd, const raster::Mapper& mp, raster::Surf
 }  // namespace
 
 bool interrupted(uint32_t step) { return step > 0 && serial::byte_ready(); }
+
+raster::Watch Progress::watch() { return raster::Watch{keep_going, this, &idt::drawing_now()}; }
+
+bool Progress::keep_going(void* ctx, uint32_t done, uint32_t total) {
+    if (serial::byte_ready()) return false;
+    auto* p = static_cast<Progress*>(ctx);
+    const uint64_t now = timer::rdtsc();
+    if (p->interval && now >= p->next) {
+        lib::JsonLine(serial::sink()).str("event", "progress").str("cmd", p->cmd).u32("polygons", done).u32("of", total).end();
+        p->next = now + p->interval;
+    }
+    return true;
+}
+
+Progress progress(const char* cmd, const Context& ctx) { return Progress{cmd, ctx.tsc_hz, timer::rdtsc() + ctx.tsc_hz}; }
 
 void usage_error(const char* cmd) {
     const Command* c = find_command(StrView{cmd, lib::c_length(cmd)});

@@ -8,6 +8,7 @@
 #include "kernel/core/choice.h"
 #include "kernel/core/mapper.h"
 #include "kernel/core/policy.h"
+#include "kernel/core/render.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
 #include "kernel/lib/words.h"
@@ -70,6 +71,18 @@ void cmd_exit(Context& ctx, const StrView* args, size_t nargs);
 // COM1 (the next line, left for the reader), and at least one step is done. The reply then says
 // `interrupted` and how far it got.
 bool interrupted(uint32_t step);
+
+// A drawing watched (core/render.h): a line arriving on COM1 stops it between polygons, and where
+// `interval` is set (TSC ticks) a `progress` event goes out that often, so that a scene that takes
+// minutes shows it is alive. The watch also tells the page-fault handler what is drawn.
+struct Progress {
+    const char* cmd;
+    uint64_t interval, next;
+    raster::Watch watch();
+    static bool keep_going(void* ctx, uint32_t done, uint32_t total);
+};
+// A second's worth of ticks (tsc_hz: none where the CPU has no TSC, nor events then).
+Progress progress(const char* cmd, const Context& ctx);
 
 // "usage: " and the usage of the command's row.
 void usage_error(const char* cmd);

@@ -179,11 +179,9 @@ uint8_t* fuzz_surface(void*, bool) {
     return surface;
 }
 
-bool fuzz_keep_going(void*, uint32_t, uint32_t) { return !serial::byte_ready(); }
-
 }  // namespace
 
-void cmd_fuzz(Context&, const StrView* args, size_t nargs) {
+void cmd_fuzz(Context& ctx, const StrView* args, size_t nargs) {
     constexpr uint32_t MOST = 100000000;
     uint32_t count = 0, seed = 1;
     if (!lib::parse_u32(args[0], &count) || count == 0 || count > MOST || (nargs > 2 && !lib::parse_u32(args[2], &seed))) {
@@ -196,7 +194,8 @@ void cmd_fuzz(Context&, const StrView* args, size_t nargs) {
         return;
     }
     static FuzzBank bank;
-    const raster::Watch watch{fuzz_keep_going, nullptr, &idt::drawing_now()};
+    Progress p = progress("fuzz", ctx);
+    const raster::Watch watch = p.watch();
     const uint64_t t0 = timer::rdtsc();
     const raster::FuzzStats f = raster::fuzz_mapper(*mapper, seed, count, bank.textures, fuzz_surface, nullptr, raster::Variant::Asm, &watch);
     const uint64_t ticks = timer::rdtsc() - t0;

@@ -28,27 +28,6 @@ const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry",
 // Static: every field of every frame for the medians, 36 KB, more than half the 64 KiB kernel stack.
 uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
 
-// A drawing watched (core/render.h): a line arriving on COM1 stops it between polygons, and where
-// `interval` is set (TSC ticks) a `progress` event goes out that often, so that a scene that takes
-// minutes shows it is alive.
-struct Progress {
-    const char* cmd;
-    uint64_t interval, next;
-    raster::Watch watch() { return raster::Watch{keep_going, this, &idt::drawing_now()}; }
-    static bool keep_going(void* ctx, uint32_t done, uint32_t total) {
-        if (serial::byte_ready()) return false;
-        auto* p = static_cast<Progress*>(ctx);
-        const uint64_t now = timer::rdtsc();
-        if (p->interval && now >= p->next) {
-            lib::JsonLine(serial::sink()).str("event", "progress").str("cmd", p->cmd).u32("polygons", done).u32("of", total).end();
-            p->next = now + p->interval;
-        }
-        return true;
-    }
-};
-// A second's worth of ticks (tsc_hz: none where the CPU has no TSC, nor events then).
-Progress progress(const char* cmd, const Context& ctx) { return Progress{cmd, ctx.tsc_hz, timer::rdtsc() + ctx.tsc_hz}; }
-
 // The polygons and pixels each mapper drew (auto draws with several), summed over frames.
 struct MapperTally {
     uint64_t polygons[raster::MAPPER_LIMIT] = {}, pixels[raster::MAPPER_LIMIT] = {};
