@@ -121,9 +121,10 @@ FuzzStats fuzz_mapper(const Mapper& mapper, uint32_t seed, uint32_t count, const
         if (mapper_walks(mapper, Axis(a))) axes[axis_count++] = Axis(a);
     if (usable_count == 0 || axis_count == 0) return f;
     Random pick(seed);
-    RenderStats stats;
+    RenderStats watched;  // the watch's: whether it stopped the run
     while (f.tried < count) {
-        if (watch && watch->stops(f.tried, count, &stats)) break;  // asked between batches (256: a multiple of 16)
+        if (watch && watch->stops(f.tried, count, &watched)) break;  // asked between batches (256: a multiple of 16)
+        RenderStats stats;  // a batch's (its pixel count fits 32 bits; the run's need not)
         const Texture& tex = bank[usable[pick.below(uint32_t(usable_count))]];
         const Axis axis = axes[pick.below(uint32_t(axis_count))];
         const bool planar = ram_planar(mapper, axis);
@@ -143,6 +144,7 @@ FuzzStats fuzz_mapper(const Mapper& mapper, uint32_t seed, uint32_t count, const
         }
         f.tried += batch;
         ++f.batches;
+        f.pixels += stats.pixels;
         uint32_t outside = 0;
         for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
             for (int32_t x = 0; x < SCREEN_WIDTH; ++x) {
@@ -154,8 +156,7 @@ FuzzStats fuzz_mapper(const Mapper& mapper, uint32_t seed, uint32_t count, const
         f.written_outside += outside;
     }
     if (watch) watch->drawn();
-    f.pixels = stats.pixels;
-    f.interrupted = stats.interrupted;
+    f.interrupted = watched.interrupted;
     return f;
 }
 
