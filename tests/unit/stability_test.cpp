@@ -26,9 +26,9 @@ std::vector<std::vector<Vertex>> extreme_polygons(uint32_t seed, int32_t inside 
     auto any = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
     const double L = inside ? classic_limit() : MAX_COORD_PIXELS;
     std::vector<std::vector<Vertex>> out;
-    // 150 a call: every mapper, walker, wrap and texture size below; the random classes of
-    // kernel/core/fuzz.h go further in PolygonFuzz
-    for (int k = 0; k < 150; ++k) {
+    // 150 a call (under the sanitizers a quarter): every mapper, walker, wrap and texture size
+    // below; the random classes of kernel/core/fuzz.h go further in PolygonFuzz
+    for (int k = 0; k < 150 / SANITIZED_SHARE; ++k) {
         std::vector<Vertex> p;
         int n = k % 5 == 0 ? 3 + int(rng() % 6) : 3;
         for (int i = 0; i < n; ++i) {
@@ -104,7 +104,7 @@ TEST(Stability, NothingIsWrittenOutsideTheClipAndCoverageHolds) {
                     for (const auto& p : extreme_polygons(uint32_t(size), inside_only ? size : 0))
                         draw_polygon(p.data(), int(p.size()), tex, mapper, axis, surface.target, &stats);
                     EXPECT_EQ(surface.written_outside(), 0u) << mapper.name << " texture " << size;
-                    EXPECT_GT(stats.polygons, 40u) << mapper.name;
+                    EXPECT_GT(stats.polygons, uint32_t(40 / SANITIZED_SHARE)) << mapper.name;
                     EXPECT_GT(stats.pixels, uint32_t(SCREEN_PIXELS)) << mapper.name << ": the screen-sized triangle at least";
                 }
             }
