@@ -127,21 +127,14 @@ IndexImage Session::screenshot(const std::string& name, ScreenMode mode, const r
 }
 
 IndexImage Session::readback(int page) {
-    // A page is ~90 KB of base64 on one line. About once in twenty make test runs one has arrived
-    // damaged (bad base64; the cause is not found yet, docs/platform.md): the reply as received is
-    // kept in the run directory for that hunt, and the page (readback changes nothing) asked once more.
-    std::string first;
-    for (int attempt = 1;; ++attempt) {
-        json reply = ok("readback " + std::to_string(page));
-        try {
-            return decode_readback(reply);
-        } catch (const HarnessError& e) {
-            const std::string kept = run_dir() + "/readback-damaged-" + std::to_string(reply.value("seq", 0)) + ".json";
-            std::ofstream(kept) << reply.dump() << "\n";
-            if (attempt == 2) fail(first + "; asked again: " + e.what() + " (kept: " + kept + ")");
-            first = e.what();
-            std::fprintf(stderr, "harness: readback %d: %s (kept: %s); asking again\n", page, e.what(), kept.c_str());
-        }
+    json reply = ok("readback " + std::to_string(page));
+    try {
+        return decode_readback(reply);
+    } catch (const HarnessError& e) {
+        // kept as received: a damaged page is a transport defect to hunt (docs/platform.md)
+        const std::string kept = run_dir() + "/readback-damaged-" + std::to_string(reply.value("seq", 0)) + ".json";
+        std::ofstream(kept) << reply.dump() << "\n";
+        fail(std::string(e.what()) + " (kept: " + kept + ")");
     }
 }
 
