@@ -6,6 +6,7 @@
 #include "kernel/files.h"
 #include "kernel/guard.h"
 #include "kernel/lib/mem.h"
+#include "kernel/lib/words.h"
 
 namespace worlds {
 
@@ -60,9 +61,7 @@ bool load(const char* name, const uint8_t* text, size_t length, raster::ParseErr
     if (!raster::parse_world(reinterpret_cast<const char*>(text), length, files::resolver(), &g_world, error)) return false;
     raster::build_texture_set(g_world, &g_textures);
     place_textures();
-    size_t i = 0;
-    for (; name[i] && i + 1 < sizeof g_name; ++i) g_name[i] = name[i];
-    g_name[i] = 0;
+    lib::copy_c_string(g_name, sizeof g_name, name);
     g_loaded = true;
     if (vga::mode() != vga::Mode::Text) vga::load_palette(g_world.palette);
     return true;

@@ -123,7 +123,8 @@ FuzzStats fuzz_mapper(const Mapper& mapper, uint32_t seed, uint32_t count, const
     Random pick(seed);
     RenderStats watched;  // the watch's: whether it stopped the run
     while (f.tried < count) {
-        if (watch && watch->stops(f.tried, count, &watched)) break;  // asked between batches (256: a multiple of 16)
+        static_assert(FUZZ_BATCH % Watch::WATCH_EVERY == 0, "the watch is asked between batches");
+        if (watch && watch->stops(f.tried, count, &watched)) break;
         RenderStats stats;  // a batch's (its pixel count fits 32 bits; the run's need not)
         const Texture& tex = bank[usable[pick.below(uint32_t(usable_count))]];
         const Axis axis = axes[pick.below(uint32_t(axis_count))];

@@ -9,6 +9,12 @@ size_t c_length(const char* s) {
     return n;
 }
 
+void copy_c_string(char* dst, size_t size, const char* src) {
+    size_t i = 0;
+    for (; src[i] && i + 1 < size; ++i) dst[i] = src[i];
+    dst[i] = 0;
+}
+
 bool StrView::starts_with(const char* prefix) const {
     size_t n = c_length(prefix);
     if (n > size) return false;

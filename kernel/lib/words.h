@@ -18,6 +18,8 @@ struct StrView {
 };
 
 size_t c_length(const char* s);  // strlen, for code that also builds on the host
+// Copies `src` into dst[size] (size > 0), cut to size - 1 characters, always NUL-terminated.
+void copy_c_string(char* dst, size_t size, const char* src);
 
 // Splits `line` (NUL-terminated) on spaces and tabs into `words`; returns how many there were,
 // counting past `max_words` (only the first max_words are stored).

@@ -2,6 +2,7 @@
 #include "kernel/scene/scene_text.h"
 
 #include "kernel/lib/fmt.h"
+#include "kernel/lib/words.h"
 
 namespace raster::scene_text {
 
@@ -39,9 +40,7 @@ bool parse_int(lib::StrView w, int32_t lo, int32_t hi, int32_t* out) {
 
 bool fail(ParseError* error, int32_t line, const char* message) {
     error->line = line;
-    size_t i = 0;
-    for (; message[i] && i + 1 < sizeof error->message; ++i) error->message[i] = message[i];
-    error->message[i] = 0;
+    lib::copy_c_string(error->message, sizeof error->message, message);
     return false;
 }
 

@@ -10,6 +10,7 @@
 #include "kernel/core/selftest.h"
 #include "kernel/guard.h"
 #include "kernel/idt.h"
+#include "kernel/lib/words.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
 #include "kernel/vga_selftest.h"
@@ -163,7 +164,7 @@ struct FuzzBank {
             const raster::Wrap wrap = raster::fuzz_texture_wrap(i);
             lib::Fmt n;
             n.u(uint32_t(size.width)).s(" x ").u(uint32_t(size.height)).s(" ").s(raster::wrap_name(wrap));
-            for (size_t k = 0; k < sizeof names[i]; ++k) names[i][k] = k + 1 < sizeof names[i] ? n.c_str()[k] : 0;
+            lib::copy_c_string(names[i], sizeof names[i], n.c_str());
             uint8_t* texels = guard::take(size_t(size.width) * size_t(size.height), "fuzz texture", names[i]);
             raster::generate_texture(raster::TextureKind::Xor, size.width, size.height, texels);
             textures[i] = raster::Texture{texels, size.width, size.height, wrap};

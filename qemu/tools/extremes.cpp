@@ -20,6 +20,7 @@
 #include "kernel/core/fuzz.h"
 #include "kernel/core/policy.h"
 #include "kernel/scene/math3d.h"
+#include "qemu/accuracy/guarded_surface.h"
 #include "qemu/accuracy/measure.h"
 #include "qemu/lib/args.h"
 #include "qemu/lib/error.h"
@@ -32,9 +33,7 @@ using namespace raster;
 namespace {
 
 constexpr uint8_t POISON = 0xEE;  // around every texture copy: a pixel of it was read outside
-constexpr uint8_t FILL = 0xA5;    // the surface before a polygon
 constexpr size_t MARGIN = 65536 + 4096;
-constexpr int32_t G = 8;          // guard pixels around a linear surface
 constexpr double SLACK = 1e-6;    // the measure divides by the footprint as stored (a float)
 
 // A texture and its copies inside POISON, which no texel holds.
@@ -55,50 +54,12 @@ struct PoisonedTexture {
     }
 };
 
-// A 320 x 240 surface, linear or planar, with guard bytes around it and a clip rectangle inside.
-struct CheckedSurface {
-    bool planar;
-    int32_t pitch = SCREEN_WIDTH + 2 * G;
-    std::vector<uint8_t> bytes;
-    Target target;
-    CheckedSurface(bool is_planar) : planar(is_planar) {}
-    void reset() {
-        if (planar) {
-            bytes.assign(4 * size_t(PLANE_BYTES) + 2 * 256, FILL);
-            target = planar_target(bytes.data() + 256);
-        } else {
-            bytes.assign(size_t(pitch) * size_t(SCREEN_HEIGHT + 2 * G), FILL);
-            target = linear_target(bytes.data() + G * pitch + G, SCREEN_WIDTH, SCREEN_HEIGHT, pitch);
-        }
-        target.clip = FUZZ_CLIP;
-    }
-    uint8_t& at(int32_t x, int32_t y) {  // -G <= x, y < size + G on linear surfaces
-        if (planar) return bytes[256 + size_t(x & 3) * PLANE_BYTES + size_t(y) * PLANE_ROW_BYTES + size_t(x >> 2)];
-        return bytes[size_t(y + G) * size_t(pitch) + size_t(x + G)];
-    }
-    bool inside(int32_t x, int32_t y) const {
-        const ClipRect& c = target.clip;
-        return x >= c.x0 && x < c.x1 && y >= c.y0 && y < c.y1;
-    }
-    // bytes outside the clip changed, and pixels inside it that hold POISON
-    void check(uint64_t* written_outside, uint64_t* poison) {
-        if (planar) {
-            for (size_t i = 0; i < 256; ++i) *written_outside += (bytes[i] != FILL) + (bytes[bytes.size() - 1 - i] != FILL);
-            for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
-                for (int32_t x = 0; x < SCREEN_WIDTH; ++x) inside(x, y) ? *poison += at(x, y) == POISON : *written_outside += at(x, y) != FILL;
-            return;
-        }
-        for (int32_t y = -G; y < SCREEN_HEIGHT + G; ++y)
-            for (int32_t x = -G; x < SCREEN_WIDTH + G; ++x) inside(x, y) ? *poison += at(x, y) == POISON : *written_outside += at(x, y) != FILL;
-    }
-};
-
 // The measures of one mapper on one class.
 struct Measurer {
     const Mapper& mapper;
     Axis axis;
     PolygonMeter meter;
-    CheckedSurface surface;
+    GuardedSurface surface;
     ExtremeRow& row;
     Measurer(const Mapper& m, ExtremeRow& r) : mapper(m), axis(home_axis(m)), meter(m, home_axis(m)), surface(ram_planar(m, home_axis(m))), row(r) {}
 
@@ -108,8 +69,10 @@ struct Measurer {
         ++row.tried;
         surface.reset();
         RenderStats st;
-        const SetupStatus status = draw_polygon(v, n, tex, mapper, axis, surface.target, &st);
-        surface.check(&row.writes_outside, &row.reads_outside);
+        const SetupStatus status = draw_polygon(v, n, tex, mapper, axis, surface.target(), &st);
+        const GuardedSurface::Scan scan = surface.scan(POISON);
+        row.writes_outside += scan.written_outside;
+        row.reads_outside += scan.inside_marked;
         if (status != SetupStatus::Ok) {
             ++row.refused[int(status) < 7 ? int(status) : 6];
             return false;

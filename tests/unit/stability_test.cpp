@@ -7,6 +7,7 @@
 #include "kernel/core/fuzz.h"
 #include "kernel/core/policy.h"
 #include "kernel/mappers/classic.h"
+#include "qemu/accuracy/guarded_surface.h"
 #include "tests/unit/raster_helpers.h"
 
 namespace {
@@ -15,8 +16,7 @@ using namespace rastertest;
 
 double classic_limit() { return classic::MAX_COORD; }
 
-constexpr uint8_t GUARD = 0xA5;
-constexpr int32_t G = 8;  // guard pixels around the surface
+constexpr uint8_t GUARD = FUZZ_FILL;
 
 // Polygons at the limits. With `inside` set (mappers that cannot wrap), texture coordinates stay
 // within a texture of that size, so those mappers draw them rather than refuse them.
@@ -47,41 +47,6 @@ std::vector<std::vector<Vertex>> extreme_polygons(uint32_t seed, int32_t inside 
     return out;
 }
 
-// A surface with guard bytes around it, linear or planar as the mapper draws.
-struct GuardedSurface {
-    bool planar;
-    int32_t pitch = SCREEN_WIDTH + 2 * G;
-    std::vector<uint8_t> bytes;
-    Target target;
-    GuardedSurface(const Mapper& m, Axis axis) : planar(ram_planar(m, axis)) {
-        if (planar) {
-            bytes.assign(4 * size_t(PLANE_BYTES) + 2 * 256, GUARD);
-            target = planar_target(bytes.data() + 256);
-        } else {
-            bytes.assign(size_t(pitch) * size_t(SCREEN_HEIGHT + 2 * G), GUARD);
-            target = linear_target(bytes.data() + G * pitch + G, SCREEN_WIDTH, SCREEN_HEIGHT, pitch);
-        }
-        target.clip = ClipRect{1, 2, SCREEN_WIDTH - 3, SCREEN_HEIGHT - 4};  // inner clip: its border is guarded too
-    }
-    // Bytes outside the clip rectangle that are no longer GUARD.
-    size_t written_outside() const {
-        size_t n = 0;
-        const ClipRect& c = target.clip;
-        auto inside = [&](int32_t x, int32_t y) { return x >= c.x0 && x < c.x1 && y >= c.y0 && y < c.y1; };
-        if (planar) {
-            for (size_t i = 0; i < 256; ++i) n += (bytes[i] != GUARD) + (bytes[bytes.size() - 1 - i] != GUARD);
-            for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
-                for (int32_t x = 0; x < SCREEN_WIDTH; ++x)
-                    if (!inside(x, y)) n += bytes[256 + size_t(x & 3) * PLANE_BYTES + size_t(y) * PLANE_ROW_BYTES + size_t(x >> 2)] != GUARD;
-            return n;
-        }
-        for (int32_t y = 0; y < SCREEN_HEIGHT + 2 * G; ++y)
-            for (int32_t x = 0; x < pitch; ++x)
-                if (!inside(x - G, y - G)) n += bytes[size_t(y) * size_t(pitch) + size_t(x)] != GUARD;
-        return n;
-    }
-};
-
 TEST(Stability, NothingIsWrittenOutsideTheClipAndCoverageHolds) {
     for (int m = 0; m < MAPPER_COUNT; ++m) {
         const Mapper& mapper = MAPPERS[m];
@@ -99,11 +64,11 @@ TEST(Stability, NothingIsWrittenOutsideTheClipAndCoverageHolds) {
                     Texture tex{texels.data(), size, size, wrap};
                     prepare_texture(&tex, bordered.data(), aligned.data());
                     if (!mapper_accepts(mapper, tex)) continue;
-                    GuardedSurface surface(mapper, axis);
+                    harness::GuardedSurface surface(ram_planar(mapper, axis));
                     RenderStats stats;
                     for (const auto& p : extreme_polygons(uint32_t(size), inside_only ? size : 0))
-                        draw_polygon(p.data(), int(p.size()), tex, mapper, axis, surface.target, &stats);
-                    EXPECT_EQ(surface.written_outside(), 0u) << mapper.name << " texture " << size;
+                        draw_polygon(p.data(), int(p.size()), tex, mapper, axis, surface.target(), &stats);
+                    EXPECT_EQ(surface.scan(GUARD).written_outside, 0u) << mapper.name << " texture " << size;
                     EXPECT_GT(stats.polygons, uint32_t(40 / SANITIZED_SHARE)) << mapper.name;
                     EXPECT_GT(stats.pixels, uint32_t(SCREEN_PIXELS)) << mapper.name << ": the screen-sized triangle at least";
                 }

@@ -1,6 +1,7 @@
 // Command-line words: splitting and number parsing as the command server uses them.
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <string>
 
 #include "kernel/lib/fmt.h"
@@ -45,6 +46,17 @@ TEST(Words, ViewHelpers) {
     EXPECT_TRUE(v.drop(99).empty());
     EXPECT_TRUE(v.equals("interval=250"));
     EXPECT_FALSE(v.equals("interval=25"));
+}
+
+TEST(Words, CopyCStringCutsAndTerminates) {
+    char buf[6];
+    std::memset(buf, 'x', sizeof buf);
+    lib::copy_c_string(buf, sizeof buf, "corridor");
+    EXPECT_STREQ(buf, "corri") << "five characters and the NUL";
+    lib::copy_c_string(buf, sizeof buf, "ball");
+    EXPECT_STREQ(buf, "ball");
+    lib::copy_c_string(buf, 1, "ball");
+    EXPECT_STREQ(buf, "");
 }
 
 TEST(Fmt, FormatsAndTruncates) {
