@@ -21,6 +21,12 @@ PathKey on_path(const PathKey* keys, int32_t count, double time) {
     return keys[count - 1];
 }
 
+// A clip-space point on the 320 x 240 screen, snapped to the subpixel grid.
+void project(const ClipVertex& p, Fixed24_8* x, Fixed24_8* y) {
+    *x = snap(160.0 + 160.0 * (p.x / p.w));
+    *y = snap(120.0 - 120.0 * (p.y / p.w));
+}
+
 // Twice the signed area of a face in clip space, as seen from the eye: the sum over its fan of
 // det[A, B, C] with rows (x, y, w). Positive: the face's front (counter-clockwise in a right-handed
 // world) is toward the eye, for any w, so faces reaching behind the eye are culled correctly too.
@@ -164,6 +170,9 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             for (int plane = 0; plane < 6; ++plane) code |= uint8_t((distance(p, plane, near, far) < 0) << plane);
             scratch->positions[used + i] = p;
             scratch->outcodes[used + i] = code;
+            // projected once here rather than at every corner that shares it (faces inside every
+            // plane take their corners from here; a clipped face's corners are projected below)
+            if (code == 0) project(p, &scratch->screen_x[used + i], &scratch->screen_y[used + i]);
         }
         used += mesh.position_count;
         for (int32_t k = 0; k < mesh.face_count; ++k) {
@@ -201,18 +210,18 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         const Mesh& mesh = world.meshes[object.mesh];
         const WorldTexture& texture = world.textures[object.texture];
         const Face& face = world.faces[mesh.first_face + entry.face];
-        ClipVertex c[MAX_FACE_CORNERS], clipped[MAX_FACE_CORNERS + 6];
-        for (int32_t i = 0; i < face.count; ++i) {
-            const Corner& corner = world.corners[face.first_corner + i];
-            c[i] = scratch->positions[first_position[entry.object] + corner.position - mesh.first_position];
-            c[i].u = world.uvs[corner.uv].u * texture.width;
-            c[i].v = world.uvs[corner.uv].v * texture.height;
-        }
+        const int32_t base = first_position[entry.object] - mesh.first_position;
         int n = face.count;
-        const ClipVertex* corners = c;
+        ClipVertex clipped[MAX_FACE_CORNERS + 6];
         if (entry.cut) {  // (a face inside every plane is its own clipped polygon)
+            ClipVertex c[MAX_FACE_CORNERS];
+            for (int32_t i = 0; i < n; ++i) {
+                const Corner& corner = world.corners[face.first_corner + i];
+                c[i] = scratch->positions[base + corner.position];
+                c[i].u = world.uvs[corner.uv].u * texture.width;
+                c[i].v = world.uvs[corner.uv].v * texture.height;
+            }
             n = clip_polygon(c, face.count, near, far, clipped);
-            corners = clipped;
             if (n < 3) {
                 ++f.stats.outside;
                 continue;
@@ -223,10 +232,18 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             ++f.stats.overflow;
             continue;
         }
+        Vertex* corners = f.vertices + f.vertex_count;
         for (int i = 0; i < n; ++i) {
-            const ClipVertex& p = corners[i];
-            double x = 160.0 + 160.0 * (p.x / p.w), y = 120.0 - 120.0 * (p.y / p.w);
-            f.vertices[f.vertex_count + i] = Vertex{snap(x), snap(y), p.w, p.u, p.v};
+            if (entry.cut) {
+                const ClipVertex& p = clipped[i];
+                corners[i] = Vertex{{}, {}, p.w, p.u, p.v};
+                project(p, &corners[i].x, &corners[i].y);
+            } else {  // its corners as projected above
+                const Corner& corner = world.corners[face.first_corner + i];
+                const int32_t at = base + corner.position;
+                corners[i] = Vertex{scratch->screen_x[at], scratch->screen_y[at], scratch->positions[at].w,
+                                    world.uvs[corner.uv].u * texture.width, world.uvs[corner.uv].v * texture.height};
+            }
         }
         f.polygon_size[f.polygon_count] = uint8_t(n);
         f.polygon_object[f.polygon_count] = uint8_t(entry.object);

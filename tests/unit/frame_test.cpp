@@ -157,7 +157,7 @@ TEST(Frame, ClippingMatchesAnIndependentComputation) {
         for (int s = 0; s < 20; ++s) {
             double b1 = any(0, 1), b2 = any(0, 1);
             if (b1 + b2 > 1) b1 = 1 - b1, b2 = 1 - b2;
-            ClipVertex p;
+            ClipVertex p{};
             p.x = t[0].x + b1 * (t[1].x - t[0].x) + b2 * (t[2].x - t[0].x);
             p.y = t[0].y + b1 * (t[1].y - t[0].y) + b2 * (t[2].y - t[0].y);
             p.w = t[0].w + b1 * (t[1].w - t[0].w) + b2 * (t[2].w - t[0].w);
