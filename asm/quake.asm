@@ -1,6 +1,7 @@
 ; quake_span_loop_asm: Quake's span drawer with the x87 divide for the next segment's end started before
-; the current segment's pixels are drawn (as d_draw16.s does), the integer loop stepping one texel
-; pointer with a two-entry advance table (sbb/adc). Twin of quake_span_loop in kernel/mappers/quake.cpp,
+; the current segment's pixels are drawn (d_draw16.s overlaps it with the pixels too, starting it
+; after 8 of the 16), the integer loop stepping one texel pointer with a two-entry advance table
+; (sbb/adc). Twin of quake_span_loop in kernel/mappers/quake.cpp,
 ; whose arithmetic (d_scan.c's C) it follows operation for operation: the x87 runs at 53-bit
 ; precision and rounds to nearest, and only the float-to-int conversions chop.
 ;

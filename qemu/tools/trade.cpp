@@ -46,26 +46,33 @@ std::vector<const TradeRow*> drawing_rows_by_speed(const std::vector<TradeRow>& 
     return out;
 }
 
-// The classics' own published figures (cycles per pixel of the inner loop; fatmap's "ticks" are
-// his theoretical Pentium minimum). Sources in docs/mappers.md.
+// The classics' own published figures: cycles per pixel of the inner loop as their authors gave
+// them, and the instructions a pixel of the published listing, counted by hand in the steady state
+// (docs/mappers.md, "The published loops counted"), beside the same count for our reproduction.
+// A Pentium pairs two simple instructions a cycle, so its cycles and instructions do not divide.
 struct Published {
     const char* mapper;  // ours that is that loop, or "" when we did not build it
     const char* loop;
     const char* figure;
     const char* machine;
+    const char* listing;  // instructions a pixel of the published listing, counted
+    const char* ours;     // the same count for our NASM loop
 };
 const Published PUBLISHED[] = {
-    {"xsharp-row-out", "Abrash, Black Book listing 58.1 (57.2's loop, OUT per pixel)", "44", "486"},
-    {"", "Abrash, listing 58.2 (columns, 16-bit fractions, unrolled)", "22", "486"},
-    {"", "Abrash, packed fractions with ADC (no listing)", "10", "486"},
-    {"", "Abrash, listing 58.3 (16-bit, SS:BP texture pointer)", "9", "486"},
-    {"xsharp-column", "Abrash, listing 58.4 (32-bit)", "8", "486"},
-    {"xsharp-column", "Abrash, listing 58.4 (32-bit)", "5.5", "Pentium"},
-    {"quake-subdiv16", "id Software, d_draw16.s (Abrash's figure)", "7.5", "Pentium"},
-    {"fatmap-256", "Byggmastar, fatmap.txt 8-bit fraction loop", "5 (theoretical)", "Pentium"},
-    {"fatmap-256-16", "fatmap2.txt 8:16 loop", "4 (theoretical)", "Pentium"},
-    {"fatmap-lut", "Byggmastar, fatmap.txt table-lookup loop", "4 (theoretical)", "Pentium"},
-    {"hecker-steptable", "Hecker, Game Developer part V listing 2", "none given", ""},
+    {"xsharp-row-out", "Abrash, Black Book listing 58.1 (57.2's loop, OUT per pixel)", "44", "486", "17 (15-17 run), 1 OUT", "17 (15-17 run), 1 OUT"},
+    {"", "Abrash, listing 58.2 (columns, 16-bit fractions, unrolled)", "22", "486", "13 (11-13 run) + loop control / unroll", "-"},
+    {"", "Abrash, packed fractions with ADC (no listing)", "10", "486", "no listing", "-"},
+    {"", "Abrash, listing 58.3 (16-bit, SS:BP texture pointer)", "9", "486", "8 (6-8 run) + loop control / unroll", "-"},
+    {"xsharp-column", "Abrash, listing 58.4 (32-bit)", "8", "486", "8 (6-8 run) + loop control / unroll", "8 + 3/2 = 9.5 (unrolled x2)"},
+    {"xsharp-column", "Abrash, listing 58.4 (32-bit)", "5.5", "Pentium", "8 (6-8 run) + loop control / unroll", "8 + 3/2 = 9.5 (unrolled x2)"},
+    {"quake-subdiv16", "id Software, d_draw16.s (the cycles: Abrash's, not in the source)", "7.5", "Pentium",
+     "6 (unrolled x16); 6 + 68/16 = 10.25 with the segment", "9; 9 + 98/16 = 15.1 with the segment"},
+    {"quake-subdiv8", "id Software, d_draw.s", "none given", "", "6 (unrolled x8); 6 + 68/8 = 14.5 with the segment",
+     "9; 9 + 98/8 = 21.25 with the segment"},
+    {"fatmap-256", "Byggmastar, fatmap.txt 8-bit fraction loop (the text not found here)", "not verified", "", "not found", "9"},
+    {"fatmap-256-16", "Simmons's 8:16 loop, fatmap2.txt section 13", "4 (ticks)", "Pentium", "8", "8 (the same instructions)"},
+    {"fatmap-lut", "Byggmastar, fatmap.txt table-lookup loop (the text not found here)", "not verified", "", "not found", "7"},
+    {"hecker-steptable", "Hecker, Game Developer part V listing 2 (not found here)", "none given", "", "not found", "9"},
 };
 
 }  // namespace
@@ -248,11 +255,14 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
 
     // the classics' published cycles beside our instruction counts, on the scene each drew most of
     out << "\n## The classics' published figures beside ours\n\n"
-        << "Published: cycles per pixel of the inner loop on the machine named (fatmap's figures are his theoretical minimum). "
-           "Ours: guest instructions per pixel of the same loop under QEMU icount, on the scene where the mapper drew the most "
-           "pixels without refusing a polygon. Cycles and instructions are different units: the columns sit side by side, they do "
-           "not divide.\n\n"
-        << "| loop | published cycles/px | machine | ours | inner instr/px | scene |\n|---|--:|---|---|--:|---|\n";
+        << "Published: cycles per pixel of the inner loop on the machine named, as its author gave it. Listing: the instructions "
+           "a pixel of the published listing, counted by hand in the steady state (a carry branch taken or not: the range run); "
+           "ours counted: the same count for our NASM loop. Ours measured: guest instructions per pixel of our loop under QEMU "
+           "icount (with its per-span and per-segment work), on the scene where the mapper drew the most pixels without "
+           "refusing a polygon. A Pentium pairs two simple instructions a cycle: cycles and instructions sit side by side, "
+           "they do not divide (docs/mappers.md, \"The published loops counted\").\n\n"
+        << "| loop | published cycles/px | machine | listing instr/px | ours | ours counted | ours measured instr/px | scene |\n"
+           "|---|--:|---|---|---|---|--:|---|\n";
     auto best_row = [&](const std::string& mapper) -> const TradeRow* {
         const TradeRow* best = nullptr;
         for (const TradeRow& r : rows)
@@ -261,12 +271,12 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
     };
     for (const Published& p : PUBLISHED) {
         const TradeRow* r = *p.mapper ? best_row(p.mapper) : nullptr;
-        out << "| " << p.loop << " | " << p.figure << " | " << p.machine << " | " << (*p.mapper ? p.mapper : "not built") << " | "
-            << (r ? fixed(r->inner_per_pixel(), 1) : "-") << " | " << (r ? r->scene : "-") << " |\n";
+        out << "| " << p.loop << " | " << p.figure << " | " << p.machine << " | " << p.listing << " | " << (*p.mapper ? p.mapper : "not built")
+            << " | " << p.ours << " | " << (r ? fixed(r->inner_per_pixel(), 1) : "-") << " | " << (r ? r->scene : "-") << " |\n";
     }
     for (const char* ours : {"fast-affine", "fast-columns"}) {
         const TradeRow* r = best_row(ours);
-        out << "| ours: " << ours << " | - | - | " << ours << " | " << (r ? fixed(r->inner_per_pixel(), 1) : "-") << " | "
+        out << "| ours: " << ours << " | - | - | - | " << ours << " | - | " << (r ? fixed(r->inner_per_pixel(), 1) : "-") << " | "
             << (r ? r->scene : "-") << " |\n";
     }
     if (!info.wall_clock.empty()) out << "\n" << info.wall_clock;
