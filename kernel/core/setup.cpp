@@ -5,14 +5,12 @@ namespace raster {
 
 namespace {
 
-bool finite(double x) { return x == x && x - x == 0.0; }
-
+// Each test is written so that NaN fails it (every comparison with NaN is false), and infinities
+// lie outside every range: no separate finiteness test.
 bool in_range(const Vertex& v) {
     constexpr int32_t LIMIT = MAX_COORD_PIXELS << SUBPIXEL_BITS;
     if (v.x.raw > LIMIT || v.x.raw < -LIMIT || v.y.raw > LIMIT || v.y.raw < -LIMIT) return false;
-    if (!finite(v.w) || !finite(v.u) || !finite(v.v)) return false;
-    if (v.w < MIN_W || v.w > MAX_W) return false;
-    return v.u <= MAX_UV && v.u >= -MAX_UV && v.v <= MAX_UV && v.v >= -MAX_UV;
+    return v.w >= MIN_W && v.w <= MAX_W && v.u <= MAX_UV && v.u >= -MAX_UV && v.v <= MAX_UV && v.v >= -MAX_UV;
 }
 
 int64_t edge_function(const Edge& e, int64_t x, int64_t y) { return e.dx * (y - e.py) - e.dy * (x - e.px); }

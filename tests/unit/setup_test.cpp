@@ -76,6 +76,14 @@ TEST(Setup, RejectsWhatItCannotDraw) {
     EXPECT_EQ(setup(with(std::nan(""), 0, 10)), SetupStatus::OutOfRange);
     EXPECT_EQ(setup(with(1, std::nan(""), 10)), SetupStatus::OutOfRange);
     EXPECT_EQ(setup(with(1, std::numeric_limits<double>::infinity(), 10)), SetupStatus::OutOfRange);
+    EXPECT_EQ(setup(with(1, -std::numeric_limits<double>::infinity(), 10)), SetupStatus::OutOfRange);
+    EXPECT_EQ(setup(with(std::numeric_limits<double>::infinity(), 0, 10)), SetupStatus::OutOfRange);
+    EXPECT_EQ(setup(with(-std::numeric_limits<double>::infinity(), 0, 10)), SetupStatus::OutOfRange);
+    for (double bad_v : {std::nan(""), std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}) {
+        std::vector<Vertex> p = with(1, 0, 10);
+        p[1].v = bad_v;
+        EXPECT_EQ(setup(p), SetupStatus::OutOfRange) << bad_v;
+    }
     EXPECT_EQ(setup(with(1, 2 * MAX_UV, 10)), SetupStatus::OutOfRange);
     EXPECT_EQ(setup(with(1, 0, MAX_COORD_PIXELS + 1)), SetupStatus::OutOfRange);
     EXPECT_EQ(setup(with(MIN_W, MAX_UV, MAX_COORD_PIXELS)), SetupStatus::Ok);
