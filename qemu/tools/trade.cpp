@@ -211,6 +211,32 @@ void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
         << "|---|---|---|--:|--:|---|---|--:|--:|\n" << table;
 }
 
+// Per polygon drawn, what the outer loops cost beside the inner ones (issue 14's lean outer
+// loops): the frame's geometry (transform, cull, clip, project: the same for every mapper of a
+// scene), the setup, the edge walking and the inner loops, for exact and fast-affine where each
+// draws every polygon.
+void write_outer_loops(std::ostream& out, const std::vector<TradeRow>& rows) {
+    std::string table;
+    for (const std::string& scene : scenes_in_order(rows))
+        for (const char* mapper : {"exact", "fast-affine"})
+            for (const TradeRow& r : rows) {
+                if (r.scene != scene || r.mapper != mapper || !r.draws_everything() || r.polygons == 0 || r.frames == 0) continue;
+                const double n = double(r.polygons);
+                auto per = [&](uint64_t t) { return fixed(double(t) / n, 0); };
+                table += "| " + scene + " | " + mapper + " | " + fixed(n / r.frames, 0) + " | " + fixed(double(r.pixels) / n, 1) + " | " +
+                         per(r.geometry) + " | " + per(r.setup) + " | " + per(r.walk) + " | " + per(r.inner) + " | " +
+                         per(r.geometry + r.setup + r.walk) + " |\n";
+                break;
+            }
+    if (table.empty()) return;
+    out << "\n## The outer loops, per polygon drawn\n\n"
+        << "Instructions under QEMU icount per polygon drawn, summed over the benched frames: the frame's geometry (transform, "
+           "cull, clip, project; the same whatever the mapper), the setup, the edge walking and the inner loops; outer = "
+           "geometry + setup + walking.\n\n"
+        << "| scene | mapper | polygons a frame | pixels a polygon | geometry | setup | walking | inner | outer |\n"
+        << "|---|---|--:|--:|--:|--:|--:|--:|--:|\n" << table;
+}
+
 }  // namespace
 
 void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, const ReportInfo& info) {
@@ -252,6 +278,8 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
             out << ".\n";
         }
     }
+
+    write_outer_loops(out, rows);
 
     // the classics' published cycles beside our instruction counts, on the scene each drew most of
     out << "\n## The classics' published figures beside ours\n\n"

@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -103,6 +102,23 @@ TEST(Trade, TheCsvHasAUnitForEveryColumnAndAFieldForEveryColumn) {
                           line.find("9 + 98/16") != std::string::npos;
     }
     EXPECT_EQ(published_rows, 1);
+}
+
+// The outer loops per polygon drawn: each phase's ticks over the polygons, outer the sum of the
+// first three; only exact and fast-affine, only where they draw every polygon.
+TEST(Trade, TheOuterLoopsArePerPolygonDrawn) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "fast-affine", 3000, 1), row("a", "affine", 3000, 1)};
+    for (TradeRow& r : rows) r.frames = 2, r.polygons = 10, r.geometry = 1000, r.setup = 2000, r.walk = 500, r.inner = 70;
+    rows[1].rejected = 1;  // fast-affine refused one: no row
+    std::string dir = testing::TempDir() + "/trade_outer";
+    write_markdown(dir + "/trade.md", rows, ReportInfo{});
+    std::ifstream md(dir + "/trade.md");
+    std::stringstream text;
+    text << md.rdbuf();
+    EXPECT_NE(text.str().find("| a | exact | 5 | " + fixed(double(rows[0].pixels) / 10, 1) + " | 100 | 200 | 50 | 7 | 350 |"), std::string::npos)
+        << text.str();
+    EXPECT_EQ(text.str().find("| a | fast-affine |"), std::string::npos);
+    EXPECT_EQ(text.str().find("| a | affine | 5 |"), std::string::npos);
 }
 
 LoadedWorld demo(const char* name) { return load_world_file(std::string("scenes/") + name + ".scene"); }
