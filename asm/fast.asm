@@ -1,8 +1,11 @@
-; Our fastest affine loops: fatmap2's 8:16 core unrolled eight times and entered part-way (the
-; first block starts at pixel (-count) mod 8, the destination moved back to match), so no pixel pays
-; for a loop counter; one pointer to the 64 KiB-aligned texture whose bh:bl is the texel's v:u.
-;   fast_run_loop_asm (fast-affine):     a run of rows, the edge walking included (twin: fast_run_loop);
-;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop).
+; Our fastest affine loops: fatmap2's 8:16 core unrolled and entered part-way (the first block
+; starts part-way, the destination moved back to match), so no pixel pays for a loop counter; one
+; pointer to the 64 KiB-aligned texture whose bh:bl is the texel's v:u.
+;   fast_run_loop_asm (fast-affine):     a run of rows, the edge walking included (twin: fast_run_loop):
+;                                        pixels in pairs, al then ah, one word store a pair, eight
+;                                        pairs a block, an odd last pixel alone;
+;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop): eight pixels a
+;                                        block, each stored alone (they lie 80 bytes apart).
 ; The core's registers:
 ;   al: texel   eax 31..16: u fraction   ebx: texture | v whole (bh) | u whole (bl)
 ;   edx 31..16: v fraction, dh: dv whole, dl: du whole   esi 31..16: du fraction   ebp 31..16: dv fraction
@@ -35,6 +38,38 @@ bits 32
 .e6: PIXEL 6 * %1
 .e7: PIXEL 7 * %1
     add edi, 8 * %1
+    dec ecx
+    jnz .block
+%endmacro
+
+; Two neighbouring pixels, texels in al and ah (the fraction steps' low halves are 0, so adding them
+; to eax leaves ax alone), one word store; %1: the pair's offset within the block.
+%macro PAIR 1
+    mov al, [ebx]
+    add edx, ebp
+    adc bh, dh
+    add eax, esi
+    adc bl, dl
+    mov ah, [ebx]
+    add edx, ebp
+    adc bh, dh
+    add eax, esi
+    adc bl, dl
+    mov [edi + %1], ax
+%endmacro
+
+; Blocks of eight pairs, ecx of them, entered at .e0 to .e7 (the pair the first block starts at).
+%macro PAIR_BLOCKS 0
+.block:
+.e0: PAIR 0
+.e1: PAIR 2
+.e2: PAIR 4
+.e3: PAIR 6
+.e4: PAIR 8
+.e5: PAIR 10
+.e6: PAIR 12
+.e7: PAIR 14
+    add edi, 16
     dec ecx
     jnz .block
 %endmacro
@@ -88,7 +123,8 @@ L_U       equ 16
 L_V       equ 20
 L_TEXTURE equ 24
 L_STEPS   equ 28                        ; a word: du whole, dv whole
-L_FRAME   equ 32
+L_ODD     equ 32                        ; 1: the row's pixels are odd, the last drawn alone
+L_FRAME   equ 36
 
 ; steps bound [%1] one line: q += dq, r += dr, and one more on q when r reaches d. Clobbers ebx.
 %macro STEP_BOUND 1
@@ -158,23 +194,33 @@ fast_run_loop_asm:
     add edx, [esp + L_V]                ; v at the first pixel
     add eax, [esp + L_ROW]              ; its address
     mov ecx, edi
+    and edi, 1
+    mov [esp + L_ODD], edi              ; an odd pixel, drawn after the pairs
+    shr ecx, 1                          ; pairs
+    mov edi, ecx
     neg edi
-    and edi, 7                          ; the first block starts at pixel j = (-count) mod 8
-    sub eax, edi                        ; so that pixel j of that block is the first pixel
+    and edi, 7                          ; the first block starts at pair j = (-pairs) mod 8
+    sub eax, edi
+    sub eax, edi                        ; so that pair j of that block is the first pair
     mov edi, [run_entries + edi * 4]
     mov [esp + L_ENTRY], edi
     mov edi, eax
     add ecx, 7
-    shr ecx, 3                          ; blocks, the first one partial
-    mov eax, ebx
+    shr ecx, 3                          ; blocks, the first one partial; 0 (ZF): no pair, one pixel
+    mov eax, ebx                        ; (mov and ror leave ZF as shr set it)
     ror eax, 16                         ; u: fraction in the high half, whole in al
     ror edx, 16                         ; v: the same, whole in dl
     mov ebx, [esp + L_TEXTURE]
     mov bl, al
     mov bh, dl
     mov dx, [esp + L_STEPS]
+    jz .last
     jmp [esp + L_ENTRY]
-    BLOCKS 1
+    PAIR_BLOCKS
+.last:                                  ; edi: just past the pairs
+    cmp dword [esp + L_ODD], 0
+    je .next_row
+    PIXEL 0
 .next_row:
     mov ecx, [esp + L_ARGS]
     mov eax, [ecx + RUN_u_row_16_16]
