@@ -5,28 +5,28 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2525.9f, 571.01f, 39.059f}, // 6 scenes
-    {"exact", 2530.9f, 389.24f, 79.053f}, // 6 scenes
-    {"persp-subdiv-4", 2530.9f, 447.05f, 111.671f}, // 6 scenes
-    {"persp-subdiv-8", 2530.9f, 509.06f, 68.912f}, // 6 scenes
-    {"persp-subdiv-16", 2530.9f, 540.32f, 47.666f}, // 6 scenes
-    {"persp-subdiv-32", 2530.9f, 555.61f, 37.303f}, // 6 scenes
-    {"constant-depth", 2530.9f, 567.66f, 29.352f}, // 6 scenes
-    {"persp-adaptive-0.5", 2530.9f, 582.78f, 450.947f}, // 6 scenes
-    {"persp-adaptive-1", 2530.9f, 1171.25f, 50.735f}, // 6 scenes
-    {"persp-adaptive-2", 2530.9f, 1180.79f, 43.999f}, // 6 scenes
-    {"persp-adaptive-4", 2530.9f, 1186.29f, 40.359f}, // 6 scenes
-    {"fast-affine", 2457.7f, 279.30f, 4.087f}, // 4 scenes
-    {"fast-columns", 2452.2f, 325.69f, 5.026f}, // 4 scenes
-    {"xsharp-dda", 1696.1f, 552.71f, 33.750f}, // 5 scenes
-    {"xsharp-row-out", 1702.1f, 686.49f, 15.206f}, // 5 scenes
-    {"xsharp-column", 1702.9f, 621.68f, 8.810f}, // 5 scenes
-    {"hecker-steptable", 2900.1f, 0.00f, 423.716f}, // 5 scenes
-    {"fatmap-256", 1723.0f, 328.70f, 9.592f}, // 4 scenes
-    {"fatmap-256-16", 1723.0f, 333.70f, 8.592f}, // 4 scenes
-    {"fatmap-lut", 1761.9f, 335.77f, 2.949f}, // 3 scenes
-    {"quake-subdiv16", 2600.8f, 379.03f, 12.276f}, // 5 scenes
-    {"quake-subdiv8", 2600.8f, 369.90f, 18.490f}, // 5 scenes
+    {"affine", 2516.3f, 524.74f, 39.975f}, // 6 scenes
+    {"exact", 2521.3f, 342.94f, 79.969f}, // 6 scenes
+    {"persp-subdiv-4", 2521.3f, 385.08f, 112.897f}, // 6 scenes
+    {"persp-subdiv-8", 2521.3f, 457.64f, 69.939f}, // 6 scenes
+    {"persp-subdiv-16", 2521.3f, 503.89f, 48.405f}, // 6 scenes
+    {"persp-subdiv-32", 2521.3f, 526.91f, 37.891f}, // 6 scenes
+    {"constant-depth", 2521.3f, 545.34f, 29.793f}, // 6 scenes
+    {"persp-adaptive-0.5", 2521.3f, 738.02f, 460.879f}, // 6 scenes
+    {"persp-adaptive-1", 2521.3f, 1178.30f, 51.971f}, // 6 scenes
+    {"persp-adaptive-2", 2521.3f, 1192.98f, 44.828f}, // 6 scenes
+    {"persp-adaptive-4", 2521.3f, 1201.81f, 40.933f}, // 6 scenes
+    {"fast-affine", 2448.7f, 188.45f, 4.517f}, // 4 scenes
+    {"fast-columns", 2441.6f, 272.34f, 5.667f}, // 4 scenes
+    {"xsharp-dda", 1696.2f, 421.22f, 36.853f}, // 5 scenes
+    {"xsharp-row-out", 1702.2f, 556.18f, 18.279f}, // 5 scenes
+    {"xsharp-column", 1703.4f, 524.56f, 10.852f}, // 5 scenes
+    {"hecker-steptable", 2884.5f, 0.00f, 398.862f}, // 5 scenes
+    {"fatmap-256", 1746.7f, 203.46f, 12.193f}, // 4 scenes
+    {"fatmap-256-16", 1746.7f, 208.46f, 11.193f}, // 4 scenes
+    {"fatmap-lut", 1803.1f, 212.36f, 5.705f}, // 3 scenes
+    {"quake-subdiv16", 2591.6f, 327.63f, 13.523f}, // 5 scenes
+    {"quake-subdiv8", 2591.6f, 314.10f, 19.838f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
