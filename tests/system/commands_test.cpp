@@ -196,14 +196,7 @@ TEST(Commands, ALongRenderShowsProgressAndALineStopsIt) {
     std::string scene = "modexlab-scene 1\ntexture checker 64 64\n";
     for (int i = 0; i < 800; ++i) scene += "triangle -10 -10 1 0 0  700 -10 2 64 0  -10 500 3 0 64\n";
     ASSERT_TRUE(s.upload_scene(scene)["ok"].get<bool>());
-    json progress;
-    json r = s.command("render exact 0", [&](const json& e) {
-        if (progress.is_null()) s.send("hello\n");
-        progress = e;
-    });
-    EXPECT_EQ(progress.value("event", ""), "progress") << progress.dump();
-    EXPECT_EQ(progress.value("cmd", ""), "render");
-    EXPECT_EQ(progress.value("of", 0), 800);
+    json r = stopped_at_first_progress(s, "render exact 0", "render", 800);
     EXPECT_TRUE(r["ok"].get<bool>()) << r.dump();
     EXPECT_TRUE(r["interrupted"].get<bool>());
     EXPECT_GT(r["polygons"].get<int>(), 0);

@@ -83,14 +83,7 @@ TEST(Guard, TheKernelFuzzesEveryMapperAsTheHostDoes) {
         EXPECT_GT(want.pixels, 0u) << mapper.name;
     }
     // a long run shows progress once a second and a line stops it between batches
-    json progress;
-    const json r = s.command("fuzz 100000000 exact 9", [&](const json& e) {
-        if (progress.is_null()) s.send("hello\n");
-        progress = e;
-    });
-    EXPECT_EQ(progress.value("event", ""), "progress") << progress.dump();
-    EXPECT_EQ(progress.value("cmd", ""), "fuzz");
-    EXPECT_EQ(progress.value("of", 0), 100000000);
+    const json r = stopped_at_first_progress(s, "fuzz 100000000 exact 9", "fuzz", 100000000);
     EXPECT_TRUE(r["interrupted"].get<bool>()) << r.dump();
     EXPECT_GT(r["polygons"].get<int>(), 0);
     EXPECT_LT(r["polygons"].get<int>(), 100000000);

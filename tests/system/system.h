@@ -65,4 +65,19 @@ inline ToolRun run_command(const std::string& command) {
 
 inline const raster::Palette& default_palette() { return raster::palette(raster::PaletteId::Default); }
 
+// Runs a long `command` and, at its first event, sends a line (`hello`, whose reply comes after the
+// command's): a line stops long work. Returns the command's reply, checking that the last event it
+// sent was its progress event (`cmd` the command's name, `of` all the work it was asked).
+inline json stopped_at_first_progress(Session& s, const std::string& command, const std::string& cmd, int of) {
+    json progress;
+    json r = s.command(command, [&](const json& e) {
+        if (progress.is_null()) s.send("hello\n");
+        progress = e;
+    });
+    EXPECT_EQ(progress.value("event", ""), "progress") << progress.dump();
+    EXPECT_EQ(progress.value("cmd", ""), cmd);
+    EXPECT_EQ(progress.value("of", 0), of);
+    return r;
+}
+
 }  // namespace systest
