@@ -351,7 +351,7 @@ test-gallery: deps
 BOUND_POLYGONS ?= 100000
 bounds: deps
 	@$(MAKE) -s -j$(NPROC) $(TESTS)
-	MODEXLAB_BOUND_POLYGONS=$(BOUND_POLYGONS) $(TESTS) --gtest_filter='Bounds.*'
+	MODEXLAB_BOUND_POLYGONS=$(BOUND_POLYGONS) $(TESTS) --gtest_filter='Bounds.*:Envelope.*'
 
 # `make fuzz-protocol`: random and mutated commands and uploads to a booted kernel, a marker
 # answered after each (make test sends 300; docs/protocol.md).

@@ -263,9 +263,7 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
     o.footprint = o.footprint > 0 && o.q_min > 0 ? o.footprint / (o.q_max * o.q_max) * (1 - 1e-9) : 0.0;
 }
 
-double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double rounding, double budget) {
-    if (!(p.q_min > 0)) return NO_BOUND;
-    double d[2];
+void spread_planes_deviation(const PolygonSpread& p, double rounding, double d[2]) {
     for (int t = 0; t < 2; ++t) {
         // L - P/Q at a point of the polygon, with weights l_i of the vertices (sum 1) and
         // m_i = l_i Q_i / Q (also): sum l_i (L_i - t_i) + sum (l_i - m_i)(t_i - c), the first at
@@ -273,10 +271,67 @@ double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double round
         const double spread = (p.t_max[t] - p.t_min[t] + 2 * p.evaluation[t]) * (p.q_max - p.q_min) / (2 * p.q_min);
         d[t] = (p.residual[t] + 2 * p.evaluation[t] + spread) * (1 + 1e-9) + rounding + 2 * p.reference[t];
     }
+}
+
+double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double rounding, double budget) {
+    if (!(p.q_min > 0)) return NO_BOUND;
+    double d[2];
+    spread_planes_deviation(p, rounding, d);
     const double texels = footprint_error(d[0], d[1], 1);  // a bound already: max(1, F) is at least 1
     if (texels == 0 || (budget >= 0 && texels <= budget)) return texels;
     spread_steps(s, &p);
     return footprint_error(d[0], d[1], p.footprint);
+}
+
+bool envelope_guards(const PolygonSetup& s) {
+    if (s.edge_count != 3) return false;
+    const double w = double(s.max_x - s.min_x), h = double(s.max_y - s.min_y);
+    // the 16.16 steps within +-32766 texels (they saturate at +-2^31): the steps within 32767
+    constexpr uint32_t STEP = 32766u << 16;
+    auto fits = [](int32_t raw) { return uint32_t(raw) + STEP <= 2 * STEP; };
+    return w + h <= double(ENVELOPE_REACH * SUBPIXEL_ONE) && 4 * w * h <= ENVELOPE_CONDITION * double(s.area2) && fits(s.u_fx.dx) &&
+           fits(s.u_fx.dy) && fits(s.v_fx.dx) && fits(s.v_fx.dy);
+}
+
+EnvelopeBound envelope_bound(const TriangleEnvelope& e) {
+    EnvelopeBound b;
+    b.envelope = e;
+    envelope_deviation(e, b.deviation);
+    b.footprint = footprint_error(b.deviation[0], b.deviation[1], 1);
+    return b;
+}
+
+// The derivation, step by step, is docs/accuracy.md's ("The object's envelope"); each quantity
+// below bounds the one of polygon_spread named beside it, q ones in units of the least 1/w at a
+// corner (q_lo). A plane through three values of magnitude at most m and range at most r, on a
+// triangle that passes the guards (kappa = ENVELOPE_CONDITION): |gx| W + |gy| H <= kappa r; its
+// terms (terms()) are at most (m + kappa r)(1 + 8 eps), its value at a corner at most
+// eps (3 m + 8 kappa r) from the value given there.
+void envelope_deviation(const TriangleEnvelope& e, double d[2]) {
+    const double eps = EPSILON, kappa = ENVELOPE_CONDITION;
+    if (!(e.depth_ratio >= 0 && e.depth_ratio < 1)) {
+        d[0] = d[1] = NO_BOUND;
+        return;
+    }
+    auto scale = [&](double m, double r) { return (m + kappa * r) * (1 + 8 * eps); };
+    auto evaluated = [&](double m, double r) { return eps * (3 * m + 8 * kappa * r); };
+    const double rho = (1 + e.depth_ratio) * (1 + 3 * eps) - 1;  // of the rounded 1/w
+    const double q_eval = evaluated(1 + rho, rho), q_scale = scale(1 + rho, rho);
+    const double q_off = q_eval + 8.1 * eps * q_scale;                  // Q at a corner, widened by q_err
+    const double ratio = (rho + 2 * q_off) / (1 - q_off);              // (q_max - q_min) / q_min
+    const double reach = double(ENVELOPE_REACH) + 2, rounding = (1 + reach) * HALF_ULP_16_16;
+    for (int t = 0; t < 2; ++t) {
+        const double a = e.texel_abs[t], range = e.texel_range[t];
+        const double p_abs = a * (1 + rho) * (1 + 2 * eps), p_range = range * (1 + rho) + a * rho + 5 * eps * p_abs;  // u/w
+        const double p_eval = evaluated(p_abs, p_range), p_scale = scale(p_abs, p_range);
+        const double exact = (p_eval + 1.01 * a * q_eval) / (1 - q_eval) + 3.2 * eps * a;  // P/Q at a corner against u
+        const double t_abs = a + exact;
+        const double reference = 2 * (4 * eps * (p_scale + t_abs * q_scale) / (1 - q_off) + 2 * eps * t_abs);
+        const double evaluation = reference + 4 * eps * scale(a, range);
+        const double residual = (evaluated(a, range) + exact) * (1 + eps);
+        const double spread = (range + 2 * exact + 2 * evaluation) * ratio / 2;
+        d[t] = ((residual + 2 * evaluation + spread) * (1 + 1e-9) + rounding + 2 * reference) * (1 + 0x1p-30);
+    }
 }
 
 double spread_max_step(PolygonSpread& p, const PolygonSetup& s, int t, Axis axis) {

@@ -56,6 +56,38 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p);
 // With a budget (at or above 0), the planes' bound divides by the footprint only where the texels
 // alone are above it.
 double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double rounding, double budget);
+// Its texel deviations d[t] before the footprint (what spread_planes_bound divides).
+void spread_planes_deviation(const PolygonSpread& p, double rounding, double d[2]);
+
+// The object's envelope (docs/accuracy.md, "The object's envelope"): what holds for every uncut
+// triangle of an object in a frame, from the object (its mesh measured once, its nearest depth in
+// the frame), so that the planes' bound above needs no spread per triangle. With the guards below,
+// checked on the triangle's setup, every field of its spread is bounded a priori.
+struct TriangleEnvelope {
+    double texel_abs[2];    // A_t: the largest |u|, |v| (texels) at a corner, from above
+    double texel_range[2];  // T_t: the largest range of u, v over a triangle's corners, from above
+    double depth_ratio;     // rho: the largest w_max / w_min - 1 over a triangle's corners, from above
+};
+// The guards, on a triangle's setup (affine planes): its box of W x H subpixels and doubled area D
+// (subpixels squared) have W + H <= ENVELOPE_REACH pixels (how far its 16.16 planes step from
+// their anchor) and 4 W H <= ENVELOPE_CONDITION D (how badly its planes can be conditioned), and
+// its 16.16 steps are within 32766 texels a pixel (so that planes_fit_16_16 holds).
+constexpr double ENVELOPE_CONDITION = 65536;
+constexpr int32_t ENVELOPE_REACH = 1024;
+bool envelope_guards(const PolygonSetup& s);
+// Upper bounds on spread_planes_deviation's d[t] for a triangle within the envelope that passes
+// the guards, the planes' 16.16 rounding at the largest reach the guards allow included: the
+// deviations of fast-affine's and fast-columns' coordinates from the reference's (NO_BOUND where
+// rho is not finite and positive or at least 1).
+void envelope_deviation(const TriangleEnvelope& e, double d[2]);
+// What the envelope proves for an object in a frame: its deviations (envelope_deviation) and the
+// bound auto takes, in footprints at a footprint of 1 (NO_BOUND: none).
+struct EnvelopeBound {
+    TriangleEnvelope envelope;
+    double deviation[2];
+    double footprint = NO_BOUND;
+};
+EnvelopeBound envelope_bound(const TriangleEnvelope& e);
 double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, double h, double rounding);
 // The largest |t'| along the axis over the polygon, from above.
 double spread_max_step(PolygonSpread& p, const PolygonSetup& s, int t, Axis axis);
@@ -186,6 +218,14 @@ constexpr double HALF_ULP_16_16 = 1.0 / 131072.0;
 // our mappers do) and moves by `step` a pixel for `steps` pixels stays what it means: the step in
 // range, and the values in range or wrapping harmlessly (a repeating size that divides 65536).
 bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap);
+
+// Whether the polygon's affine planes' gradients hold in 16.16 (a step of 32768 texels a pixel or
+// more saturates), for a 256 x 256 repeating texture: the fast mappers' planes mean what they say.
+// (fits_16_16 with no travel, 256 dividing 65536: the step's magnitude alone.)
+inline bool planes_fit_16_16(const PolygonSetup& s) {
+    constexpr double LIMIT = 32767.0 / double(SUBPIXEL_ONE);
+    return magnitude(s.u.gx) < LIMIT && magnitude(s.u.gy) < LIMIT && magnitude(s.v.gx) < LIMIT && magnitude(s.v.gy) < LIMIT;
+}
 
 // For mappers whose error is not (yet) bounded: whether they may draw the polygon (they take the
 // texture), and no bound.

@@ -44,6 +44,11 @@ struct Candidates {
     // the least cost a span and a pixel of candidates k on: with the cost per polygon (which only
     // grows), what any of them costs at least
     double least_span[2 * MAPPER_LIMIT] = {}, least_pixel[2 * MAPPER_LIMIT] = {};
+    // the candidates an object's envelope proves (Mapper::enveloped), with their rows without a
+    // proof, and whether every other one costs at least as much in each part of its row
+    int enveloped_count = 0;
+    int enveloped[2 * MAPPER_LIMIT] = {};
+    bool envelope_cheapest = false;
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
@@ -68,6 +73,17 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
         const bool last = k == c.count - 1;
         c.least_span[k] = last || c.cost[k].span < c.least_span[k + 1] ? c.cost[k].span : c.least_span[k + 1];
         c.least_pixel[k] = last || c.cost[k].pixel < c.least_pixel[k + 1] ? c.cost[k].pixel : c.least_pixel[k + 1];
+    }
+    for (int k = 0; k < c.count; ++k)
+        if (MAPPERS[c.row[k]].enveloped) c.enveloped[c.enveloped_count++] = k;
+    c.envelope_cheapest = c.enveloped_count > 0;
+    for (int j = 0; j < c.enveloped_count; ++j) {
+        const CostRow own = cost_row(MAPPER_COSTS[c.row[c.enveloped[j]]]);  // proven for nothing
+        for (int k = 0; k < c.count; ++k) {
+            const CostRow& other = c.cost[k];
+            if (!MAPPERS[c.row[k]].enveloped && (other.polygon < own.polygon || other.span < own.span || other.pixel < own.pixel))
+                c.envelope_cheapest = false;
+        }
     }
     for (int k = 0; k < c.count && c.certain < 0; ++k) {
         const Mapper& m = MAPPERS[c.row[k]];
@@ -148,6 +164,14 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     for (int k; n > 0 && (k = cheapest(ceiling)) >= 0;)
         if (ask(k, false)) break;
     return choice;
+}
+
+const Mapper* enveloped_mapper(const Budget& budget, const Texture& tex, const Target& target, double footprint, Axis* axis) {
+    if (!budget_allows(budget, ErrorBound{true, true, footprint})) return nullptr;
+    const Candidates& list = candidates(tex, target, budget);
+    if (list.enveloped_count != 1 || !list.envelope_cheapest) return nullptr;
+    *axis = list.axis[list.enveloped[0]];
+    return &MAPPERS[list.row[list.enveloped[0]]];
 }
 
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count) {

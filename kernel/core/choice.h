@@ -20,6 +20,8 @@ struct Budget {
 // Scenes without a budget line: within one footprint, exact coverage.
 constexpr Budget DEFAULT_BUDGET{};
 
+// The largest footprint error the budget allows (any: larger than any bound).
+inline double budget_ceiling(const Budget& b) { return b.max_error < 0 ? 1e300 : b.max_error; }
 inline bool budget_allows(const Budget& b, const ErrorBound& e) {
     return e.draws && (e.exact_coverage || !b.exact_coverage) && (b.max_error < 0 || e.footprint <= b.max_error);
 }
@@ -104,6 +106,15 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
 // spans when walked).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
                      PreparedPolygon* prepared);
+
+// What an object's envelope proves for auto, once a frame per object (footprint: its envelope
+// bound, frame.h): the mapper the envelope proves (Mapper::enveloped) that auto draws the object's
+// uncut triangles with, and its walker (*axis), where that bound meets the budget and the mapper is
+// the one such candidate and costs no more a polygon, a span and a pixel, with no proof to pay,
+// than any other candidate does with its proof: the choice choose_mapper would make on every
+// triangle were that proof free. Else nullptr (choose_mapper decides, triangle by triangle). A
+// triangle is drawn so only where it passes the envelope's guards (draw_enveloped, render.h).
+const Mapper* enveloped_mapper(const Budget& budget, const Texture& tex, const Target& target, double footprint, Axis* axis);
 
 // auto's own bound: its choice's under the default budget.
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count);

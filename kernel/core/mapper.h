@@ -81,6 +81,7 @@ struct RenderStats {
     // by registry row: the polygons each mapper drew and their pixels (auto draws with several)
     uint32_t mapper_polygons[MAPPER_LIMIT] = {};
     uint32_t mapper_pixels[MAPPER_LIMIT] = {};
+    uint32_t enveloped = 0;  // auto: polygons proven by their object's envelope (choice.h), counted above too
 };
 
 // A mapper with its own setup and edge walking (the classics, our fast loops) draws whole polygons.
@@ -168,6 +169,9 @@ struct Mapper {
     BoundFn bound = nullptr;  // its error bound on a polygon (unbounded: none derived)
     bool chooses = false;     // auto: draws each polygon with a mapper it chooses (core/choice.h)
     SpanProof span_proof = SPANS_NOT_ASKED;  // whether auto asks its bound span by span (core/choice.h)
+    // Its bound is the 16.16 planes' (spread_planes_bound, planes_fit_16_16): an object's envelope
+    // proves it on the object's uncut triangles (choose_enveloped, core/choice.h).
+    bool enveloped = false;
 };
 
 extern const Mapper MAPPERS[];

@@ -6,23 +6,25 @@ namespace raster {
 namespace {
 
 // Draws the polygon with the mapper: its own driver, or setup, the walker (or the spans of the
-// polygon as auto prepared it) and its span function on each span. Counts the polygon.
+// polygon as auto walked it) and its span function on each span. Counts the polygon. `setup`: the
+// polygon set up already (every plane, for a mapper without its own driver), or nullptr; `walked`:
+// its spans along the axis when auto walked them (count below 0: not), or nullptr. `checked`: the
+// mapper known to walk the axis, take the texture and draw into the target.
 SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                      RenderStats* stats, Variant variant, const PreparedPolygon* prepared) {
+                      RenderStats* stats, Variant variant, const PolygonSetup* setup, const PreparedSpans* walked, bool checked = false) {
     Probe* probe = stats->probe;
     const uint32_t pixels_before = stats->pixels;
-    if (!mapper_walks(mapper, axis) || !mapper_accepts(mapper, tex) || !mapper_targets(mapper, target, axis)) {
+    if (!checked && (!mapper_walks(mapper, axis) || !mapper_accepts(mapper, tex) || !mapper_targets(mapper, target, axis))) {
         ++stats->rejected;
         return SetupStatus::Unsupported;
     }
     LoopFn loop = mapper_loop(mapper, variant, target);
     SetupStatus status;
     if (mapper.draw) {
-        const bool set_up = prepared && prepared->status == SetupStatus::Ok;
-        status = mapper.draw(DrawContext{tex, axis, target, stats, loop, set_up ? &prepared->setup : nullptr}, vertices, count);
+        status = mapper.draw(DrawContext{tex, axis, target, stats, loop, setup}, vertices, count);
     } else {
-        auto draw_spans = [&](const PolygonSetup& setup, auto&& next) {
-            const SpanContext context{setup, tex, axis, loop};
+        auto draw_spans = [&](const PolygonSetup& set_up, auto&& next) {
+            const SpanContext context{set_up, tex, axis, loop};
             probe_lap(probe, Phase::Setup);
             Span span;
             while (next(&span)) {
@@ -31,21 +33,20 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
                 emit(probe, stats, 1, uint32_t(span.count), [&] { mapper.span(context, span, dst, stride); });
             }
         };
-        if (prepared && prepared->status == SetupStatus::Ok) {  // set up with every plane (and maybe walked) already
-            status = prepared->status;
+        if (setup) {  // set up with every plane (and maybe walked) already
+            status = SetupStatus::Ok;
             int32_t i = 0;
-            const PreparedSpans& w = prepared->walked[int(axis)];
-            if (w.count >= 0) draw_spans(prepared->setup, [&](Span* s) { return i < w.count && (*s = w.spans[i++], true); });
+            if (walked && walked->count >= 0) draw_spans(*setup, [&](Span* s) { return i < walked->count && (*s = walked->spans[i++], true); });
             else {
-                EdgeWalker walker(prepared->setup, axis, target.clip);
-                draw_spans(prepared->setup, [&](Span* s) { return walker.next(s); });
+                EdgeWalker walker(*setup, axis, target.clip);
+                draw_spans(*setup, [&](Span* s) { return walker.next(s); });
             }
         } else {
-            PolygonSetup setup;
-            status = setup_polygon(vertices, count, &setup);
+            PolygonSetup own;
+            status = setup_polygon(vertices, count, &own);
             if (status == SetupStatus::Ok) {
-                EdgeWalker walker(setup, axis, target.clip);
-                draw_spans(setup, [&](Span* s) { return walker.next(s); });
+                EdgeWalker walker(own, axis, target.clip);
+                draw_spans(own, [&](Span* s) { return walker.next(s); });
             }
         }
     }
@@ -62,20 +63,44 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
 
 }  // namespace
 
-SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
-                         Target& target, RenderStats* stats, Variant variant, const Budget& budget) {
-    probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
-    if (!mapper.chooses) return draw_with(vertices, count, tex, mapper, axis, target, stats, variant, nullptr);
-    // auto: the mapper and the walker chosen (the choice counts as setup); where no mapper draws
-    // the polygon, exact's setup says why
-    PreparedPolygon prepared;
-    Choice c = choose_mapper(budget, vertices, count, tex, target, &prepared);
+namespace {
+
+// auto's choice for the polygon, into *prepared, and the drawing with it (the choice counts as
+// setup); where no mapper draws the polygon, exact's setup says why.
+SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& tex, Axis axis, Target& target, RenderStats* stats,
+                            Variant variant, const Budget& budget, PreparedPolygon* prepared) {
+    Choice c = choose_mapper(budget, vertices, count, tex, target, prepared);
     probe_lap(stats->probe, Phase::Setup);
     if (!c.mapper) {
         const Axis any = target_supports(target, axis) ? axis : Axis::Columns;  // a walker the target takes
-        return draw_with(vertices, count, tex, *find_mapper("exact"), any, target, stats, variant, nullptr);
+        return draw_with(vertices, count, tex, *find_mapper("exact"), any, target, stats, variant, nullptr, nullptr);
     }
-    return draw_with(vertices, count, tex, *c.mapper, c.axis, target, stats, variant, &prepared);
+    const bool set_up = prepared->status == SetupStatus::Ok;
+    return draw_with(vertices, count, tex, *c.mapper, c.axis, target, stats, variant, set_up ? &prepared->setup : nullptr, &prepared->walked[int(c.axis)]);
+}
+
+}  // namespace
+
+SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
+                         Target& target, RenderStats* stats, Variant variant, const Budget& budget) {
+    probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
+    if (!mapper.chooses) return draw_with(vertices, count, tex, mapper, axis, target, stats, variant, nullptr, nullptr);
+    PreparedPolygon prepared;
+    return choose_and_draw(vertices, count, tex, axis, target, stats, variant, budget, &prepared);
+}
+
+SetupStatus draw_enveloped(const Vertex* vertices, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
+                           RenderStats* stats, Variant variant, const Budget& budget) {
+    probe_lap(stats->probe, Phase::Walk);
+    {
+        PolygonSetup setup;
+        if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE) == SetupStatus::Ok && envelope_guards(setup)) {
+            ++stats->enveloped;  // (enveloped_mapper checked what draw_with would)
+            return draw_with(vertices, 3, tex, mapper, axis, target, stats, variant, &setup, nullptr, true);
+        }
+    }
+    PreparedPolygon prepared;
+    return choose_and_draw(vertices, 3, tex, axis, target, stats, variant, budget, &prepared);
 }
 
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,

@@ -98,6 +98,7 @@ SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupP
 
     PolygonSetup& s = *out;
     s.edge_count = n;
+    s.area2 = area2 < 0 ? -area2 : area2;
     for (int i = 0; i < n; ++i) {
         const Vertex& a = *v[i];
         const Vertex& b = *v[i + 1 < n ? i + 1 : 0];

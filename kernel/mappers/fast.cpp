@@ -113,24 +113,15 @@ SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count
 // of 32768 texels a pixel or more saturates: no bound then.
 ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
     if (!mapper_accepts(c.mapper, c.tex)) return ErrorBound{false, true, 0};
-    // the gradients in 16.16, whatever the span
-    auto gradients_fit = [](const PolygonSetup& s) {
-        const Plane* plane[2] = {&s.u, &s.v};
-        bool fit = true;
-        for (int t = 0; t < 2; ++t)
-            fit = fit && fits_16_16(0, plane[t]->gx * double(SUBPIXEL_ONE), 0, 256, Wrap::Repeat) &&
-                  fits_16_16(0, plane[t]->gy * double(SUBPIXEL_ONE), 0, 256, Wrap::Repeat);
-        return fit;
-    };
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
-        return gradients_fit(s) ? spread_planes_bound(p, s, (1 + p.reach) * HALF_ULP_16_16, c.budget) : NO_BOUND;
+        return planes_fit_16_16(s) ? spread_planes_bound(p, s, (1 + p.reach) * HALF_ULP_16_16, c.budget) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_ALL, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
         const double last = double(span.count - 1);
         double a[2], step[2];
         affine_lines(s, c.axis, span, a, step);
-        *fits = *fits && gradients_fit(s);
+        *fits = *fits && planes_fit_16_16(s);
         // |x - x0| + |y - y0| is convex along the span: largest at a piece's ends
         auto reach = [&](double k) {
             int32_t px = span.x + (c.axis == Axis::Rows ? int32_t(k) : 0), py = span.y + (c.axis == Axis::Rows ? 0 : int32_t(k));

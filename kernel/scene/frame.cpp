@@ -146,6 +146,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
     f.polygon_count = f.vertex_count = 0;
     f.stats = FrameStats{};
     f.budget = world.budget;
+    f.object_count = world.object_count;
     const double time = frame_time(frame_number);
     const View view = View::of(world.camera, time);
     const double near = world.camera.near, far = world.camera.far;
@@ -160,10 +161,12 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         if (used + mesh.position_count > MAX_FRAME_POSITIONS) {
             f.stats.overflow += uint32_t(mesh.face_count);
             first_position[o] = -1;
+            f.envelope[o] = EnvelopeBound{};
             continue;
         }
         first_position[o] = used;
         const Placement place = Placement::of(object, time);
+        double nearest = far;  // the least w of a position inside every plane (the corners of uncut faces)
         for (int32_t i = 0; i < mesh.position_count; ++i) {
             const ClipVertex p = view.clip(place.apply(world.positions[mesh.first_position + i]));
             uint8_t code = 0;
@@ -172,8 +175,12 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             scratch->outcodes[used + i] = code;
             // projected once here rather than at every corner that shares it (faces inside every
             // plane take their corners from here; a clipped face's corners are projected below)
-            if (code == 0) project(p, &scratch->screen_x[used + i], &scratch->screen_y[used + i]);
+            if (code == 0) {
+                project(p, &scratch->screen_x[used + i], &scratch->screen_y[used + i]);
+                nearest = p.w < nearest ? p.w : nearest;
+            }
         }
+        f.envelope[o] = envelope_bound(object_envelope(world, o, place, view, nearest));
         used += mesh.position_count;
         for (int32_t k = 0; k < mesh.face_count; ++k) {
             const Face& face = world.faces[mesh.first_face + k];
@@ -247,10 +254,31 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         }
         f.polygon_size[f.polygon_count] = uint8_t(n);
         f.polygon_object[f.polygon_count] = uint8_t(entry.object);
+        f.polygon_whole[f.polygon_count] = uint8_t(entry.cut ? 0 : 1);
         ++f.polygon_count;
         f.vertex_count += n;
         ++f.stats.polygons;
     }
+}
+
+TriangleEnvelope object_envelope(const World& world, int32_t o, const Placement& place, const View& view, double nearest) {
+    const Object& object = world.objects[o];
+    const Mesh& mesh = world.meshes[object.mesh];
+    const WorldTexture& texture = world.textures[object.texture];
+    // u = vt * size in double: each within a rounding of its product, so a range within two of its
+    // magnitude's; w within 2^-40 of the distances it is computed from (a dot product of a
+    // difference of sums: some ten roundings of 2^-53); edges no longer than the mesh's scaled, a
+    // rotation's length error of a few roundings aside
+    constexpr double R = 0x1p-40;
+    TriangleEnvelope e;
+    const double size[2] = {double(texture.width), double(texture.height)};
+    for (int t = 0; t < 2; ++t) {
+        e.texel_abs[t] = mesh.triangle_uv_abs[t] * size[t] * (1 + R);
+        e.texel_range[t] = (mesh.triangle_uv_range[t] + R * mesh.triangle_uv_abs[t]) * size[t] * (1 + R);
+    }
+    const double scale = magnitude(place.scale), w_error = R * (scale * mesh.radius + length(place.position) + length(view.eye));
+    e.depth_ratio = nearest > 0 ? (scale * mesh.triangle_edge * (1 + 0x1p-30) + 2 * w_error) / nearest : NO_BOUND;
+    return e;
 }
 
 void build_texture_set(const World& world, TextureSet* out) {
@@ -273,12 +301,22 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
                          Probe* probe, const Watch* watch) {
     RenderStats stats;
     stats.probe = probe;
+    // auto: what each object's envelope proves for its uncut triangles (choice.h), once a frame
+    const Mapper* enveloped[MAX_WORLD_OBJECTS] = {};
+    Axis enveloped_axis[MAX_WORLD_OBJECTS];
+    if (mapper.chooses)
+        for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o)
+            enveloped[o] = enveloped_mapper(frame.budget, textures.objects[o], target, frame.envelope[o].footprint, &enveloped_axis[o]);
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
         if (watch && watch->stops(uint32_t(i), uint32_t(frame.polygon_count), &stats)) break;
         if (watch) watch->drawing(mapper, uint32_t(i));
-        draw_polygon(v, frame.polygon_size[i], textures.objects[frame.polygon_object[i]], mapper, axis, target, &stats, variant,
-                     frame.budget);
+        const int object = frame.polygon_object[i];
+        const Texture& tex = textures.objects[object];
+        if (enveloped[object] && frame.polygon_whole[i] && frame.polygon_size[i] == 3)
+            draw_enveloped(v, tex, *enveloped[object], enveloped_axis[object], target, &stats, variant, frame.budget);
+        else
+            draw_polygon(v, frame.polygon_size[i], tex, mapper, axis, target, &stats, variant, frame.budget);
         v += frame.polygon_size[i];
     }
     if (watch) watch->drawn();

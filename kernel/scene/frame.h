@@ -29,10 +29,15 @@ struct FrameStats {
 struct Frame {
     int32_t number = 0;
     int32_t polygon_count = 0, vertex_count = 0;
+    int32_t object_count = 0;
     FrameStats stats;
     Budget budget;  // the world's: what auto draws to
     uint8_t polygon_size[MAX_FRAME_POLYGONS];
     uint8_t polygon_object[MAX_FRAME_POLYGONS];  // whose texture (and wrap) it takes
+    uint8_t polygon_whole[MAX_FRAME_POLYGONS];   // 1: a face inside every clip plane, as it is (not cut)
+    // per object: what its envelope proves on its uncut triangles (object_envelope), which auto
+    // takes as their proof (footprint NO_BOUND: none)
+    EnvelopeBound envelope[MAX_WORLD_OBJECTS];
     Vertex vertices[MAX_FRAME_VERTICES];
 };
 
@@ -74,6 +79,11 @@ struct Placement {
 };
 
 void build_frame(const World& world, int32_t frame, Frame* out, FrameScratch* scratch);
+
+// The object's envelope in a frame (TriangleEnvelope, docs/accuracy.md "The object's envelope"):
+// its mesh's measures at its placement, `nearest` the least w of its positions inside every clip
+// plane.
+TriangleEnvelope object_envelope(const World& world, int32_t object, const Placement& place, const View& view, double nearest);
 
 // Clips a convex polygon (in clip space) against the view volume: w >= near, w <= far,
 // |x| <= GUARD_BAND w, |y| <= GUARD_BAND w, one plane after the other (Sutherland-Hodgman,

@@ -252,11 +252,31 @@ bool camera_line(Parser& p, const StrView* w, size_t n) {
     return p.fail(Fmt().s("unknown line '").s(w[0]).s("' in the camera (position, target, up, fov, near, far, key, end)"));
 }
 
+// The mesh's measures for the envelope (Mesh): over its triangles, and its positions.
+void measure_mesh(const World& world, Mesh* m) {
+    for (int32_t i = 0; i < m->position_count; ++i) m->radius = larger(m->radius, length(world.positions[m->first_position + i]));
+    for (int32_t k = 0; k < m->face_count; ++k) {
+        const Face& face = world.faces[m->first_face + k];
+        if (face.count != 3) continue;
+        const Corner* c = world.corners + face.first_corner;
+        for (int i = 0; i < 3; ++i) {
+            const Corner &a = c[i], &b = c[i == 2 ? 0 : i + 1];
+            m->triangle_edge = larger(m->triangle_edge, length(world.positions[a.position] - world.positions[b.position]));
+            const TexCoord ta = world.uvs[a.uv], tb = world.uvs[b.uv];
+            m->triangle_uv_range[0] = larger(m->triangle_uv_range[0], magnitude(ta.u - tb.u));
+            m->triangle_uv_range[1] = larger(m->triangle_uv_range[1], magnitude(ta.v - tb.v));
+            m->triangle_uv_abs[0] = larger(m->triangle_uv_abs[0], magnitude(ta.u));
+            m->triangle_uv_abs[1] = larger(m->triangle_uv_abs[1], magnitude(ta.v));
+        }
+    }
+}
+
 // Checks a block once its 'end' is read.
 bool end_block(Parser& p) {
     World& world = *p.world;
     if (p.block == Block::Mesh) {
         if (world.meshes[world.mesh_count].face_count == 0) return p.fail(Fmt().s("mesh '").s(world.meshes[world.mesh_count].name).s("' has no faces"));
+        measure_mesh(world, &world.meshes[world.mesh_count]);
         ++world.mesh_count;
     } else if (p.block == Block::Object) {
         const Object& o = world.objects[world.object_count];

@@ -50,6 +50,12 @@ struct Mesh {
     int32_t first_position = 0, position_count = 0;
     int32_t first_uv = 0, uv_count = 0;
     int32_t first_face = 0, face_count = 0;
+    // Measured once it is read, over its triangles (the envelope, frame.h): the longest edge, the
+    // largest range and magnitude of u and v at their corners (texture sizes); and the largest
+    // |position| of the mesh.
+    double triangle_edge = 0;
+    double triangle_uv_range[2] = {0, 0}, triangle_uv_abs[2] = {0, 0};
+    double radius = 0;
 };
 
 // A convex planar face: `count` corners from `first_corner` on, counter-clockwise seen from its
