@@ -7,15 +7,21 @@ namespace raster {
 
 bool choosable(const Mapper& m) { return !m.chooses && m.bound && m.bound != unbounded; }
 
+namespace {
+
+// The box inside the clip, in pixels along x (a = 0) and y (a = 1), from its corners in subpixels.
+double box_inside(int64_t lo_raw, int64_t hi_raw, int32_t first, int32_t end) {
+    const double one = double(SUBPIXEL_ONE);
+    double lo = double(lo_raw) / one, hi = double(hi_raw) / one;
+    lo = lo < first ? first : lo, hi = hi > end ? end : hi;
+    return hi > lo ? hi - lo : 0.0;
+}
+
+}  // namespace
+
 void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size[2]) {
     const double one = double(SUBPIXEL_ONE);
-    // the box inside the clip, in pixels along x and y
-    auto inside = [](double lo, double hi, double first, double end) {
-        lo = lo < first ? first : lo, hi = hi > end ? end : hi;
-        return hi > lo ? hi - lo : 0.0;
-    };
-    const double w = inside(double(s.min_x) / one, double(s.max_x) / one, clip.x0, clip.x1);
-    const double h = inside(double(s.min_y) / one, double(s.max_y) / one, clip.y0, clip.y1);
+    const double w = box_inside(s.min_x, s.max_x, clip.x0, clip.x1), h = box_inside(s.min_y, s.max_y, clip.y0, clip.y1);
     double area2 = 0;  // twice the signed area, subpixels squared (the shoelace)
     for (int i = 0; i < s.edge_count; ++i) area2 += double(s.edges[i].px) * double(s.edges[i].dy) - double(s.edges[i].py) * double(s.edges[i].dx);
     const double area = magnitude(area2) / (2 * one * one), pixels = area < w * h ? area : w * h;
@@ -164,6 +170,34 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     for (int k; n > 0 && (k = cheapest(ceiling)) >= 0;)
         if (ask(k, false)) break;
     return choice;
+}
+
+const Mapper* sole_mapper(const Budget& budget, const Texture& tex, const Target& target, SoleChoice* out) {
+    const Candidates& list = candidates(tex, target, budget);
+    if (list.certain < 0) return nullptr;
+    const int row = list.row[list.certain];
+    *out = SoleChoice{};
+    for (int k = 0; k < list.count; ++k) {
+        if (list.row[k] != row) return nullptr;
+        out->axes[out->count++] = list.axis[k];
+    }
+    out->span_cost = list.cost[list.certain].span;
+    return &MAPPERS[row];
+}
+
+Axis sole_axis(const SoleChoice& sole, const Vertex* vertices, int count, const ClipRect& clip) {
+    if (sole.count == 1) return sole.axes[0];
+    int32_t x_lo = vertices[0].x.raw, x_hi = x_lo, y_lo = vertices[0].y.raw, y_hi = y_lo;
+    for (int i = 1; i < count; ++i) {
+        const int32_t x = vertices[i].x.raw, y = vertices[i].y.raw;
+        x_lo = x < x_lo ? x : x_lo, x_hi = x > x_hi ? x : x_hi, y_lo = y < y_lo ? y : y_lo, y_hi = y > y_hi ? y : y_hi;
+    }
+    // the lines along each (polygon_sizes), priced as the estimate prices them; ties: the first
+    double lines[2];
+    lines[int(Axis::Rows)] = box_inside(y_lo, y_hi, clip.y0, clip.y1);
+    lines[int(Axis::Columns)] = box_inside(x_lo, x_hi, clip.x0, clip.x1);
+    const double first = sole.span_cost * lines[int(sole.axes[0])], second = sole.span_cost * lines[int(sole.axes[1])];
+    return second < first ? sole.axes[1] : sole.axes[0];
 }
 
 const Mapper* enveloped_mapper(const Budget& budget, const Texture& tex, const Target& target, double footprint, Axis* axis) {

@@ -116,6 +116,22 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
 // triangle is drawn so only where it passes the envelope's guards (draw_enveloped, render.h).
 const Mapper* enveloped_mapper(const Budget& budget, const Texture& tex, const Target& target, double footprint, Axis* axis);
 
+// Where the budget leaves auto one mapper, the one that promises the reference itself (exact, at a
+// budget of 0: every other bound counts some rounding), on one walker or two: it, with its walkers
+// in the candidates' order and its cost a span (once a frame per object; render_frame). Else
+// nullptr.
+struct SoleChoice {
+    int count = 0;
+    Axis axes[2] = {Axis::Rows, Axis::Rows};
+    double span_cost = 0;
+};
+const Mapper* sole_mapper(const Budget& budget, const Texture& tex, const Target& target, SoleChoice* out);
+// The walker choose_mapper would take for the sole mapper on the polygon: its bound costs nothing
+// and its estimates differ only in the lines along each walker (polygon_sizes, from the corners'
+// box: the setup's), so the fewer (by its cost a span), the first on a tie. A degenerate or
+// refused polygon is the mapper's to report, as it would be auto's.
+Axis sole_axis(const SoleChoice& sole, const Vertex* vertices, int count, const ClipRect& clip);
+
 // auto's own bound: its choice's under the default budget.
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count);
 

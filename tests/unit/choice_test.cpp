@@ -119,6 +119,43 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     EXPECT_LT(by_spans, choices) << "and of the whole polygon";
 }
 
+// Where the budget leaves one mapper (0: exact), auto's shortcut takes the walker choose_mapper
+// takes, on random polygons, on either kind of target.
+TEST(Auto, TheSoleMappersWalkerIsTheOneTheChoiceTakes) {
+    TriangleGen gen(1124u);
+    std::vector<uint8_t> texels(64 * 64);
+    Texture tex{texels.data(), 64, 64, Wrap::Repeat};
+    int walkers[2] = {};
+    for (Surface surface : {Surface::Linear, Surface::Planar}) {
+        Target target = surface_kind(surface);
+        target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+        for (const Budget& b : BUDGETS) {
+            SoleChoice sole;
+            const Mapper* m = sole_mapper(b, tex, target, &sole);
+            if (b.max_error != 0) {
+                EXPECT_EQ(m, nullptr) << "budget " << b.max_error << " leaves more than one mapper";
+                continue;
+            }
+            ASSERT_EQ(m, find_mapper("exact"));
+            EXPECT_EQ(sole.count, surface == Surface::Linear ? 2 : 1);
+            for (int n = 0; n < 500; ++n) {
+                std::vector<Vertex> p = gen.triangle();
+                PreparedPolygon prepared;
+                Choice c = choose_mapper(b, p.data(), 3, tex, target, &prepared);
+                if (!c.mapper) continue;
+                const Axis axis = sole_axis(sole, p.data(), 3, target.clip);
+                EXPECT_EQ(c.mapper, m);
+                EXPECT_EQ(int(c.axis), int(axis)) << "polygon " << n;
+                ++walkers[int(axis)];
+                if (HasFailure()) return;
+            }
+        }
+    }
+    std::printf("  the sole mapper by rows %d, by columns %d\n", walkers[0], walkers[1]);
+    EXPECT_GT(walkers[0], 0);
+    EXPECT_GT(walkers[1], 0);
+}
+
 TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
     const Mapper& a = auto_mapper();
     for (const DemoScene& d : demo_scenes()) {
