@@ -5,28 +5,28 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2516.3f, 524.74f, 39.975f}, // 6 scenes
-    {"exact", 2521.3f, 342.94f, 79.969f}, // 6 scenes
-    {"persp-subdiv-4", 2521.3f, 385.08f, 112.897f}, // 6 scenes
-    {"persp-subdiv-8", 2521.3f, 457.64f, 69.939f}, // 6 scenes
-    {"persp-subdiv-16", 2521.3f, 503.89f, 48.405f}, // 6 scenes
-    {"persp-subdiv-32", 2521.3f, 526.91f, 37.891f}, // 6 scenes
-    {"constant-depth", 2521.3f, 545.34f, 29.793f}, // 6 scenes
-    {"persp-adaptive-0.5", 2521.3f, 738.02f, 460.879f}, // 6 scenes
-    {"persp-adaptive-1", 2521.3f, 1178.30f, 51.971f}, // 6 scenes
-    {"persp-adaptive-2", 2521.3f, 1192.98f, 44.828f}, // 6 scenes
-    {"persp-adaptive-4", 2521.3f, 1201.81f, 40.933f}, // 6 scenes
-    {"fast-affine", 2448.7f, 188.45f, 4.517f}, // 4 scenes
-    {"fast-columns", 2441.6f, 272.34f, 5.667f}, // 4 scenes
-    {"xsharp-dda", 1696.2f, 421.22f, 36.853f}, // 5 scenes
-    {"xsharp-row-out", 1702.2f, 556.18f, 18.279f}, // 5 scenes
-    {"xsharp-column", 1703.4f, 524.56f, 10.852f}, // 5 scenes
-    {"hecker-steptable", 2884.5f, 0.00f, 398.862f}, // 5 scenes
-    {"fatmap-256", 1746.7f, 203.46f, 12.193f}, // 4 scenes
-    {"fatmap-256-16", 1746.7f, 208.46f, 11.193f}, // 4 scenes
-    {"fatmap-lut", 1803.1f, 212.36f, 5.705f}, // 3 scenes
-    {"quake-subdiv16", 2591.6f, 327.63f, 13.523f}, // 5 scenes
-    {"quake-subdiv8", 2591.6f, 314.10f, 19.838f}, // 5 scenes
+    {"affine", 2497.6f, 524.70f, 39.979f}, // 6 scenes
+    {"exact", 2502.6f, 342.90f, 79.974f}, // 6 scenes
+    {"persp-subdiv-4", 2502.6f, 385.04f, 112.901f}, // 6 scenes
+    {"persp-subdiv-8", 2502.6f, 457.60f, 69.944f}, // 6 scenes
+    {"persp-subdiv-16", 2502.6f, 503.85f, 48.410f}, // 6 scenes
+    {"persp-subdiv-32", 2502.6f, 526.87f, 37.895f}, // 6 scenes
+    {"constant-depth", 2502.6f, 545.30f, 29.797f}, // 6 scenes
+    {"persp-adaptive-0.5", 2502.6f, 737.99f, 460.883f}, // 6 scenes
+    {"persp-adaptive-1", 2502.6f, 1178.26f, 51.976f}, // 6 scenes
+    {"persp-adaptive-2", 2502.6f, 1192.95f, 44.833f}, // 6 scenes
+    {"persp-adaptive-4", 2502.6f, 1201.78f, 40.937f}, // 6 scenes
+    {"fast-affine", 2427.8f, 190.77f, 4.607f}, // 4 scenes
+    {"fast-columns", 2419.7f, 275.49f, 5.746f}, // 4 scenes
+    {"xsharp-dda", 1696.2f, 424.20f, 36.868f}, // 5 scenes
+    {"xsharp-row-out", 1701.2f, 559.15f, 18.293f}, // 5 scenes
+    {"xsharp-column", 1702.4f, 527.16f, 10.883f}, // 5 scenes
+    {"hecker-steptable", 2876.6f, 0.00f, 399.114f}, // 5 scenes
+    {"fatmap-256", 1737.1f, 206.29f, 12.249f}, // 4 scenes
+    {"fatmap-256-16", 1737.1f, 211.29f, 11.249f}, // 4 scenes
+    {"fatmap-lut", 1793.4f, 215.07f, 5.810f}, // 3 scenes
+    {"quake-subdiv16", 2570.8f, 330.37f, 13.542f}, // 5 scenes
+    {"quake-subdiv8", 2570.8f, 316.85f, 19.858f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
