@@ -279,6 +279,14 @@ double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double round
     spread_planes_deviation(p, rounding, d);
     const double texels = footprint_error(d[0], d[1], 1);  // a bound already: max(1, F) is at least 1
     if (texels == 0 || (budget >= 0 && texels <= budget)) return texels;
+    // Within the budget only over a footprint of texels / budget everywhere; the least footprint
+    // spread_steps finds is at most the footprint at the reference vertex (|K| there at least the
+    // least |K|, Q there at most the largest). Where that one is below it, the bound is above the
+    // budget whatever the steps say: asked so, stop here (a value above the budget, as settled).
+    if (budget > 0) {
+        const double at_vertex = texel_footprint(s, 0, 0) * (1 + 1e-6) + 1e-9;
+        if (at_vertex < texels / budget) return texels / larger(1.0, at_vertex);
+    }
     spread_steps(s, &p);
     return footprint_error(d[0], d[1], p.footprint);
 }

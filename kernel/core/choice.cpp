@@ -172,40 +172,74 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     return choice;
 }
 
-const Mapper* sole_mapper(const Budget& budget, const Texture& tex, const Target& target, SoleChoice* out) {
+AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint) {
+    AutoPlan plan;
     const Candidates& list = candidates(tex, target, budget);
-    if (list.certain < 0) return nullptr;
-    const int row = list.row[list.certain];
-    *out = SoleChoice{};
-    for (int k = 0; k < list.count; ++k) {
-        if (list.row[k] != row) return nullptr;
-        out->axes[out->count++] = list.axis[k];
+    if (list.enveloped_count == 1 && list.envelope_cheapest && budget_allows(budget, ErrorBound{true, true, envelope_footprint})) {
+        plan.enveloped = &MAPPERS[list.row[list.enveloped[0]]];
+        plan.enveloped_axis = list.axis[list.enveloped[0]];
     }
-    out->span_cost = list.cost[list.certain].span;
-    return &MAPPERS[row];
+    if (list.certain < 0) return plan;
+    const int row = list.row[list.certain];
+    plan.certain = &MAPPERS[row];
+    plan.certain_row = list.cost[list.certain];
+    bool others = false;
+    for (int k = 0; k < list.count; ++k) {
+        const CostRow& c = list.cost[k];
+        if (list.row[k] == row) {
+            plan.certain_axes[plan.certain_walkers++] = list.axis[k];
+        } else if (!others) {
+            plan.others = c, others = true;
+        } else {
+            plan.others.polygon = c.polygon < plan.others.polygon ? c.polygon : plan.others.polygon;
+            plan.others.span = c.span < plan.others.span ? c.span : plan.others.span;
+            plan.others.pixel = c.pixel < plan.others.pixel ? c.pixel : plan.others.pixel;
+        }
+    }
+    plan.sole = !others;
+    return plan;
 }
 
-Axis sole_axis(const SoleChoice& sole, const Vertex* vertices, int count, const ClipRect& clip) {
-    if (sole.count == 1) return sole.axes[0];
+const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis) {
+    if (!plan.certain) return nullptr;
+    *axis = plan.certain_axes[0];
+    if (plan.sole && plan.certain_walkers == 1) return plan.certain;
+    // the box the setup would find, inside the clip (box_inside, in integers: the same values)
     int32_t x_lo = vertices[0].x.raw, x_hi = x_lo, y_lo = vertices[0].y.raw, y_hi = y_lo;
     for (int i = 1; i < count; ++i) {
         const int32_t x = vertices[i].x.raw, y = vertices[i].y.raw;
         x_lo = x < x_lo ? x : x_lo, x_hi = x > x_hi ? x : x_hi, y_lo = y < y_lo ? y : y_lo, y_hi = y > y_hi ? y : y_hi;
     }
-    // the lines along each (polygon_sizes), priced as the estimate prices them; ties: the first
+    auto inside = [](int32_t lo, int32_t hi, int32_t first, int32_t end) {
+        lo = lo < first * int32_t(SUBPIXEL_ONE) ? first * int32_t(SUBPIXEL_ONE) : lo;
+        hi = hi > end * int32_t(SUBPIXEL_ONE) ? end * int32_t(SUBPIXEL_ONE) : hi;
+        return hi > lo ? double(hi - lo) / double(SUBPIXEL_ONE) : 0.0;
+    };
     double lines[2];
-    lines[int(Axis::Rows)] = box_inside(y_lo, y_hi, clip.y0, clip.y1);
-    lines[int(Axis::Columns)] = box_inside(x_lo, x_hi, clip.x0, clip.x1);
-    const double first = sole.span_cost * lines[int(sole.axes[0])], second = sole.span_cost * lines[int(sole.axes[1])];
-    return second < first ? sole.axes[1] : sole.axes[0];
-}
-
-const Mapper* enveloped_mapper(const Budget& budget, const Texture& tex, const Target& target, double footprint, Axis* axis) {
-    if (!budget_allows(budget, ErrorBound{true, true, footprint})) return nullptr;
-    const Candidates& list = candidates(tex, target, budget);
-    if (list.enveloped_count != 1 || !list.envelope_cheapest) return nullptr;
-    *axis = list.axis[list.enveloped[0]];
-    return &MAPPERS[list.row[list.enveloped[0]]];
+    lines[int(Axis::Rows)] = inside(y_lo, y_hi, clip.y0, clip.y1);
+    lines[int(Axis::Columns)] = inside(x_lo, x_hi, clip.x0, clip.x1);
+    // its walker: the estimates on its walkers differ only in their lines
+    const double span = plan.certain_row.span;
+    if (plan.certain_walkers == 2 && span * lines[int(plan.certain_axes[1])] < span * lines[int(*axis)]) *axis = plan.certain_axes[1];
+    if (plan.sole) return plan.certain;
+    // twice the area the setup would find (the shoelace over the corners: repeated ones add nothing)
+    double area2 = 0;
+    if (count == 3) {
+        const Vertex &a = vertices[0], &b = vertices[1], &c = vertices[2];
+        area2 = double(b.x.raw - a.x.raw) * double(c.y.raw - a.y.raw) - double(c.x.raw - a.x.raw) * double(b.y.raw - a.y.raw);
+    } else {
+        for (int i = 0; i < count; ++i) {
+            const Vertex &a = vertices[i], &b = vertices[i + 1 < count ? i + 1 : 0];
+            area2 += double(a.x.raw) * double(b.y.raw) - double(b.x.raw) * double(a.y.raw);
+        }
+    }
+    const double one = double(SUBPIXEL_ONE), area = magnitude(area2) / (2 * one * one);
+    const double box = lines[0] * lines[1], pixels = area < box ? area : box;
+    const double best = plan.certain_row.polygon + span * lines[int(*axis)] + plan.certain_row.pixel * pixels;
+    const bool rows_fewer = lines[0] < lines[1];
+    const double others_lines = lines[(plan.others.span < 0) == rows_fewer ? 1 : 0];  // (a fitted cost below 0: where they are most)
+    const double least = plan.others.polygon + plan.others.span * others_lines + plan.others.pixel * pixels;
+    return best <= least + CHOICE_COST ? plan.certain : nullptr;
 }
 
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count) {

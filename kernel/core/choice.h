@@ -107,30 +107,41 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
                      PreparedPolygon* prepared);
 
-// What an object's envelope proves for auto, once a frame per object (footprint: its envelope
-// bound, frame.h): the mapper the envelope proves (Mapper::enveloped) that auto draws the object's
-// uncut triangles with, and its walker (*axis), where that bound meets the budget and the mapper is
-// the one such candidate and costs no more a polygon, a span and a pixel, with no proof to pay,
-// than any other candidate does with its proof: the choice choose_mapper would make on every
-// triangle were that proof free. Else nullptr (choose_mapper decides, triangle by triangle). A
-// triangle is drawn so only where it passes the envelope's guards (draw_enveloped, render.h).
-const Mapper* enveloped_mapper(const Budget& budget, const Texture& tex, const Target& target, double footprint, Axis* axis);
+// What choosing costs beyond the bounds it asks (the setup's extra planes, the polygon's sizes, the
+// pricing of the candidates): auto at a budget of 0 on the mesh, where exact is its only candidate
+// and exact's bound free, drew 39.7 instructions a pixel more than exact, 295 a triangle (make
+// bench, QEMU icount, 2026-11-24, before unchosen_mapper).
+constexpr double CHOICE_COST = 300;
 
-// Where the budget leaves auto one mapper, the one that promises the reference itself (exact, at a
-// budget of 0: every other bound counts some rounding), on one walker or two: it, with its walkers
-// in the candidates' order and its cost a span (once a frame per object; render_frame). Else
-// nullptr.
-struct SoleChoice {
-    int count = 0;
-    Axis axes[2] = {Axis::Rows, Axis::Rows};
-    double span_cost = 0;
+// What auto settles once a frame per object, before drawing its polygons (render_frame):
+// - the mapper the object's envelope proves on its uncut triangles (envelope_footprint: the
+//   object's envelope bound in the frame, frame.h), and its walker: where that bound meets the
+//   budget, exactly one candidate is enveloped (Mapper::enveloped), and it costs no more a
+//   polygon, a span and a pixel with no proof to pay than any other candidate with its proof: the
+//   choice choose_mapper would make on every such triangle were that proof free. A triangle is
+//   drawn so only where it passes the envelope's guards (draw_enveloped, render.h);
+// - the candidate proven for nothing (exact: it promises the reference itself), with its walkers
+//   and cost row, for unchosen_mapper; and whether it is the only one (a budget of 0: every other
+//   bound counts some rounding), and else the least cost a polygon, a span and a pixel of any
+//   other candidate with its first proof.
+struct AutoPlan {
+    const Mapper* enveloped = nullptr;
+    Axis enveloped_axis = Axis::Rows;
+    const Mapper* certain = nullptr;
+    int certain_walkers = 0;
+    Axis certain_axes[2] = {Axis::Rows, Axis::Rows};  // in the candidates' order
+    CostRow certain_row;
+    bool sole = false;
+    CostRow others;
 };
-const Mapper* sole_mapper(const Budget& budget, const Texture& tex, const Target& target, SoleChoice* out);
-// The walker choose_mapper would take for the sole mapper on the polygon: its bound costs nothing
-// and its estimates differ only in the lines along each walker (polygon_sizes, from the corners'
-// box: the setup's), so the fewer (by its cost a span), the first on a tie. A degenerate or
-// refused polygon is the mapper's to report, as it would be auto's.
-Axis sole_axis(const SoleChoice& sole, const Vertex* vertices, int count, const ClipRect& clip);
+AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint);
+
+// The certain mapper and its walker where choosing cannot pay on the polygon: where it is the only
+// candidate, or where its estimate on its cheaper walker is no more than the least any other
+// candidate could cost with its proof, plus CHOICE_COST. Its walker as choose_mapper would take it
+// (its estimates differ only in the lines along each). Sizes from the corners (the box and the
+// area the setup would find: polygon_sizes), before any setup. Else nullptr: choose_mapper decides.
+const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis);
 
 // auto's own bound: its choice's under the default budget.
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count);

@@ -5,28 +5,28 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2497.6f, 524.70f, 39.979f}, // 6 scenes
-    {"exact", 2502.6f, 342.90f, 79.974f}, // 6 scenes
-    {"persp-subdiv-4", 2502.6f, 385.04f, 112.901f}, // 6 scenes
-    {"persp-subdiv-8", 2502.6f, 457.60f, 69.944f}, // 6 scenes
-    {"persp-subdiv-16", 2502.6f, 503.85f, 48.410f}, // 6 scenes
-    {"persp-subdiv-32", 2502.6f, 526.87f, 37.895f}, // 6 scenes
-    {"constant-depth", 2502.6f, 545.30f, 29.797f}, // 6 scenes
-    {"persp-adaptive-0.5", 2502.6f, 737.99f, 460.883f}, // 6 scenes
-    {"persp-adaptive-1", 2502.6f, 1178.26f, 51.976f}, // 6 scenes
-    {"persp-adaptive-2", 2502.6f, 1192.95f, 44.833f}, // 6 scenes
-    {"persp-adaptive-4", 2502.6f, 1201.78f, 40.937f}, // 6 scenes
-    {"fast-affine", 2427.8f, 190.77f, 4.607f}, // 4 scenes
-    {"fast-columns", 2419.7f, 275.49f, 5.746f}, // 4 scenes
-    {"xsharp-dda", 1696.2f, 424.20f, 36.868f}, // 5 scenes
-    {"xsharp-row-out", 1701.2f, 559.15f, 18.293f}, // 5 scenes
-    {"xsharp-column", 1702.4f, 527.16f, 10.883f}, // 5 scenes
-    {"hecker-steptable", 2876.6f, 0.00f, 399.114f}, // 5 scenes
-    {"fatmap-256", 1737.1f, 206.29f, 12.249f}, // 4 scenes
-    {"fatmap-256-16", 1737.1f, 211.29f, 11.249f}, // 4 scenes
-    {"fatmap-lut", 1793.4f, 215.07f, 5.810f}, // 3 scenes
-    {"quake-subdiv16", 2570.8f, 330.37f, 13.542f}, // 5 scenes
-    {"quake-subdiv8", 2570.8f, 316.85f, 19.858f}, // 5 scenes
+    {"affine", 2497.6f, 524.11f, 39.998f}, // 6 scenes
+    {"exact", 2502.6f, 342.31f, 79.992f}, // 6 scenes
+    {"persp-subdiv-4", 2502.6f, 384.45f, 112.920f}, // 6 scenes
+    {"persp-subdiv-8", 2502.6f, 457.01f, 69.963f}, // 6 scenes
+    {"persp-subdiv-16", 2502.6f, 503.26f, 48.429f}, // 6 scenes
+    {"persp-subdiv-32", 2502.6f, 526.28f, 37.914f}, // 6 scenes
+    {"constant-depth", 2502.6f, 544.71f, 29.816f}, // 6 scenes
+    {"persp-adaptive-0.5", 2502.6f, 737.39f, 460.902f}, // 6 scenes
+    {"persp-adaptive-1", 2502.6f, 1177.67f, 51.994f}, // 6 scenes
+    {"persp-adaptive-2", 2502.6f, 1192.35f, 44.851f}, // 6 scenes
+    {"persp-adaptive-4", 2502.6f, 1201.18f, 40.956f}, // 6 scenes
+    {"fast-affine", 2427.8f, 190.15f, 4.636f}, // 4 scenes
+    {"fast-columns", 2419.7f, 274.89f, 5.775f}, // 4 scenes
+    {"xsharp-dda", 1696.2f, 423.53f, 36.894f}, // 5 scenes
+    {"xsharp-row-out", 1701.2f, 558.49f, 18.319f}, // 5 scenes
+    {"xsharp-column", 1702.4f, 526.58f, 10.906f}, // 5 scenes
+    {"hecker-steptable", 2876.6f, 0.00f, 399.081f}, // 5 scenes
+    {"fatmap-256", 1737.1f, 205.61f, 12.285f}, // 4 scenes
+    {"fatmap-256-16", 1737.1f, 210.61f, 11.285f}, // 4 scenes
+    {"fatmap-lut", 1793.4f, 214.35f, 5.857f}, // 3 scenes
+    {"quake-subdiv16", 2570.8f, 329.76f, 13.568f}, // 5 scenes
+    {"quake-subdiv8", 2570.8f, 316.24f, 19.883f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

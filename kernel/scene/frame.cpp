@@ -301,31 +301,29 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
                          Probe* probe, const Watch* watch) {
     RenderStats stats;
     stats.probe = probe;
-    // auto, once a frame per object (choice.h): the mapper its envelope proves for its uncut
-    // triangles, or the one mapper its budget leaves
-    const Mapper* enveloped[MAX_WORLD_OBJECTS] = {};
-    Axis enveloped_axis[MAX_WORLD_OBJECTS];
-    const Mapper* sole[MAX_WORLD_OBJECTS] = {};
-    SoleChoice sole_choice[MAX_WORLD_OBJECTS];
+    // auto: what it settles once a frame per object (choice.h, AutoPlan)
+    AutoPlan plans[MAX_WORLD_OBJECTS];
     if (mapper.chooses)
-        for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o) {
-            enveloped[o] = enveloped_mapper(frame.budget, textures.objects[o], target, frame.envelope[o].footprint, &enveloped_axis[o]);
-            sole[o] = sole_mapper(frame.budget, textures.objects[o], target, &sole_choice[o]);
-        }
+        for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o)
+            plans[o] = plan_auto(frame.budget, textures.objects[o], target, frame.envelope[o].footprint);
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
         if (watch && watch->stops(uint32_t(i), uint32_t(frame.polygon_count), &stats)) break;
         if (watch) watch->drawing(mapper, uint32_t(i));
-        const int object = frame.polygon_object[i];
+        const int object = frame.polygon_object[i], n = frame.polygon_size[i];
         const Texture& tex = textures.objects[object];
-        if (enveloped[object] && frame.polygon_whole[i] && frame.polygon_size[i] == 3)
-            draw_enveloped(v, tex, *enveloped[object], enveloped_axis[object], target, &stats, variant, frame.budget);
-        else if (sole[object])
-            draw_polygon(v, frame.polygon_size[i], tex, *sole[object], sole_axis(sole_choice[object], v, frame.polygon_size[i], target.clip),
-                         target, &stats, variant);
+        const AutoPlan& plan = plans[object];
+        Axis unchosen_axis;
+        const Mapper* unchosen = nullptr;
+        if (!mapper.chooses)
+            draw_polygon(v, n, tex, mapper, axis, target, &stats, variant);
+        else if (plan.enveloped && frame.polygon_whole[i] && n == 3)
+            draw_enveloped(v, tex, *plan.enveloped, plan.enveloped_axis, target, &stats, variant, frame.budget);
+        else if ((unchosen = unchosen_mapper(plan, v, n, target.clip, &unchosen_axis)))
+            draw_polygon(v, n, tex, *unchosen, unchosen_axis, target, &stats, variant);
         else
-            draw_polygon(v, frame.polygon_size[i], tex, mapper, axis, target, &stats, variant, frame.budget);
-        v += frame.polygon_size[i];
+            draw_polygon(v, n, tex, mapper, axis, target, &stats, variant, frame.budget);
+        v += n;
     }
     if (watch) watch->drawn();
     return stats;

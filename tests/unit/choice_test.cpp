@@ -119,41 +119,52 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     EXPECT_LT(by_spans, choices) << "and of the whole polygon";
 }
 
-// Where the budget leaves one mapper (0: exact), auto's shortcut takes the walker choose_mapper
-// takes, on random polygons, on either kind of target.
-TEST(Auto, TheSoleMappersWalkerIsTheOneTheChoiceTakes) {
+// Where choosing cannot pay (unchosen_mapper), auto draws exact unchosen: only where, by the cost
+// model, exact on that walker costs no more than CHOICE_COST plus what the choice would draw with
+// its proof; at a budget of 0, always, on the walker the choice takes. On random polygons at
+// every budget, on either kind of target.
+TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
     TriangleGen gen(1124u);
-    std::vector<uint8_t> texels(64 * 64);
-    Texture tex{texels.data(), 64, 64, Wrap::Repeat};
-    int walkers[2] = {};
+    std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
+    prepare_texture(&tex, bordered.data(), aligned.data());
+    int unchosen = 0, chosen = 0, walkers[2] = {};
     for (Surface surface : {Surface::Linear, Surface::Planar}) {
         Target target = surface_kind(surface);
         target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
         for (const Budget& b : BUDGETS) {
-            SoleChoice sole;
-            const Mapper* m = sole_mapper(b, tex, target, &sole);
-            if (b.max_error != 0) {
-                EXPECT_EQ(m, nullptr) << "budget " << b.max_error << " leaves more than one mapper";
-                continue;
-            }
-            ASSERT_EQ(m, find_mapper("exact"));
-            EXPECT_EQ(sole.count, surface == Surface::Linear ? 2 : 1);
-            for (int n = 0; n < 500; ++n) {
-                std::vector<Vertex> p = gen.triangle();
+            const AutoPlan plan = plan_auto(b, tex, target, NO_BOUND);
+            ASSERT_EQ(plan.certain, find_mapper("exact"));
+            EXPECT_EQ(plan.sole, b.max_error == 0) << "budget " << b.max_error;
+            for (int n = 0; n < 300; ++n) {
+                gen.depth_ratio = n % 2 ? 1.0001 : 20;
+                std::vector<Vertex> p = n % 3 ? gen.triangle() : std::vector<Vertex>{gen.random_vertex(), gen.random_vertex(), gen.random_vertex()};
                 PreparedPolygon prepared;
                 Choice c = choose_mapper(b, p.data(), 3, tex, target, &prepared);
-                if (!c.mapper) continue;
-                const Axis axis = sole_axis(sole, p.data(), 3, target.clip);
-                EXPECT_EQ(c.mapper, m);
-                EXPECT_EQ(int(c.axis), int(axis)) << "polygon " << n;
-                ++walkers[int(axis)];
+                Axis axis;
+                const Mapper* m = unchosen_mapper(plan, p.data(), 3, target.clip, &axis);
+                if (!m || !c.mapper) {
+                    chosen += !m;
+                    continue;
+                }
+                ++unchosen, ++walkers[int(axis)];
+                EXPECT_EQ(m, plan.certain);
+                PolygonSize size[2];
+                polygon_sizes(prepared.setup, target.clip, size);
+                const double drawn = estimate_cost(plan.certain_row, size[int(axis)]);
+                const double choice = estimate_cost(proven_cost(*c.mapper, cost_row(MAPPER_COSTS[c.mapper - MAPPERS])), size[int(c.axis)]);
+                EXPECT_LE(drawn, choice + CHOICE_COST + 1e-6) << "polygon " << n << ": choosing " << c.mapper->name << " would pay";
+                if (c.mapper == m) {
+                    EXPECT_EQ(int(c.axis), int(axis)) << "polygon " << n << ": exact on the walker the choice takes";
+                }
                 if (HasFailure()) return;
             }
         }
     }
-    std::printf("  the sole mapper by rows %d, by columns %d\n", walkers[0], walkers[1]);
+    std::printf("  unchosen %d (by rows %d, by columns %d), chosen %d\n", unchosen, walkers[0], walkers[1], chosen);
     EXPECT_GT(walkers[0], 0);
     EXPECT_GT(walkers[1], 0);
+    EXPECT_GT(chosen, 0);
 }
 
 TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
