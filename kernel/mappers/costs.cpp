@@ -5,28 +5,28 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2497.6f, 524.11f, 39.998f}, // 6 scenes
-    {"exact", 2502.6f, 342.31f, 79.992f}, // 6 scenes
-    {"persp-subdiv-4", 2502.6f, 384.45f, 112.920f}, // 6 scenes
-    {"persp-subdiv-8", 2502.6f, 457.01f, 69.963f}, // 6 scenes
-    {"persp-subdiv-16", 2502.6f, 503.26f, 48.429f}, // 6 scenes
-    {"persp-subdiv-32", 2502.6f, 526.28f, 37.914f}, // 6 scenes
-    {"constant-depth", 2502.6f, 544.71f, 29.816f}, // 6 scenes
-    {"persp-adaptive-0.5", 2502.6f, 737.39f, 460.902f}, // 6 scenes
-    {"persp-adaptive-1", 2502.6f, 1177.67f, 51.994f}, // 6 scenes
-    {"persp-adaptive-2", 2502.6f, 1192.35f, 44.851f}, // 6 scenes
-    {"persp-adaptive-4", 2502.6f, 1201.18f, 40.956f}, // 6 scenes
-    {"fast-affine", 2427.8f, 190.15f, 4.636f}, // 4 scenes
-    {"fast-columns", 2419.7f, 274.89f, 5.775f}, // 4 scenes
-    {"xsharp-dda", 1696.2f, 423.53f, 36.894f}, // 5 scenes
-    {"xsharp-row-out", 1701.2f, 558.49f, 18.319f}, // 5 scenes
-    {"xsharp-column", 1702.4f, 526.58f, 10.906f}, // 5 scenes
-    {"hecker-steptable", 2876.6f, 0.00f, 399.081f}, // 5 scenes
-    {"fatmap-256", 1737.1f, 205.61f, 12.285f}, // 4 scenes
-    {"fatmap-256-16", 1737.1f, 210.61f, 11.285f}, // 4 scenes
-    {"fatmap-lut", 1793.4f, 214.35f, 5.857f}, // 3 scenes
-    {"quake-subdiv16", 2570.8f, 329.76f, 13.568f}, // 5 scenes
-    {"quake-subdiv8", 2570.8f, 316.24f, 19.883f}, // 5 scenes
+    {"affine", 2462.9f, 497.09f, 39.986f}, // 6 scenes
+    {"exact", 2467.9f, 342.31f, 79.992f}, // 6 scenes
+    {"persp-subdiv-4", 2467.9f, 375.90f, 106.573f}, // 6 scenes
+    {"persp-subdiv-8", 2467.9f, 442.87f, 66.853f}, // 6 scenes
+    {"persp-subdiv-16", 2467.9f, 485.63f, 46.938f}, // 6 scenes
+    {"persp-subdiv-32", 2467.9f, 506.91f, 37.217f}, // 6 scenes
+    {"constant-depth", 2467.9f, 523.96f, 29.726f}, // 6 scenes
+    {"persp-adaptive-0.5", 2467.9f, 736.10f, 442.621f}, // 6 scenes
+    {"persp-adaptive-1", 2467.9f, 1158.19f, 51.331f}, // 6 scenes
+    {"persp-adaptive-2", 2467.9f, 1172.44f, 44.400f}, // 6 scenes
+    {"persp-adaptive-4", 2467.9f, 1181.01f, 40.621f}, // 6 scenes
+    {"fast-affine", 2393.2f, 190.15f, 4.636f}, // 4 scenes
+    {"fast-columns", 2388.8f, 274.89f, 5.775f}, // 4 scenes
+    {"xsharp-dda", 1685.7f, 423.36f, 36.916f}, // 5 scenes
+    {"xsharp-row-out", 1690.7f, 558.32f, 18.341f}, // 5 scenes
+    {"xsharp-column", 1691.9f, 526.42f, 10.927f}, // 5 scenes
+    {"hecker-steptable", 2816.8f, 0.00f, 399.089f}, // 5 scenes
+    {"fatmap-256", 1727.3f, 205.49f, 12.287f}, // 4 scenes
+    {"fatmap-256-16", 1727.3f, 210.49f, 11.287f}, // 4 scenes
+    {"fatmap-lut", 1783.7f, 214.24f, 5.859f}, // 3 scenes
+    {"quake-subdiv16", 2617.6f, 329.72f, 13.586f}, // 5 scenes
+    {"quake-subdiv8", 2617.6f, 316.20f, 19.902f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
