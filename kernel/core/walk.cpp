@@ -15,12 +15,21 @@ namespace raster {
 
 namespace {
 
-int64_t ceil_div_pos(int64_t n, int64_t d) { return -floor_div(-n, d); }
+// floor(n / d) for d > 0, in the width the walker computes in
+int64_t floor_div_in(int64_t n, int64_t d) { return floor_div(n, d); }
+int32_t floor_div_in(int32_t n, int32_t d) {
+    const int32_t q = n / d;  // d > 0: no INT32_MIN / -1
+    return n - q * d < 0 ? q - 1 : q;
+}
+template <typename I>
+I ceil_div_pos(I n, I d) { return -floor_div_in(I(-n), d); }
 
 // The first and last line whose centre lies in [lo, hi] (subpixels): ceil and floor of
 // (p - 128) / 256, as arithmetic shifts (which floor).
-int64_t first_line(int64_t lo) { return (lo - SUBPIXEL_HALF + SUBPIXEL_ONE - 1) >> SUBPIXEL_BITS; }
-int64_t last_line(int64_t hi) { return (hi - SUBPIXEL_HALF) >> SUBPIXEL_BITS; }
+template <typename I>
+I first_line(I lo) { return I((lo - I(SUBPIXEL_HALF) + I(SUBPIXEL_ONE) - 1) >> SUBPIXEL_BITS); }
+template <typename I>
+I last_line(I hi) { return I((hi - I(SUBPIXEL_HALF)) >> SUBPIXEL_BITS); }
 
 }  // namespace
 
@@ -35,12 +44,13 @@ void EdgeWalker::seal(Bound* list, int32_t count, int32_t never) {
     list[count] = Bound{INT32_MAX, INT32_MAX, never, 0, 0, 0, 1};
 }
 
-void EdgeBound::init(int64_t m, int64_t divisor, int64_t increment) {
+template <typename I>
+void EdgeBound::init(I m, I divisor, I increment) {
     // the remainders are below d <= 2^31: exact in 32-bit arithmetic
     d = uint32_t(divisor);
-    q = int32_t(floor_div(m, divisor));
+    q = int32_t(floor_div_in(m, divisor));
     r = uint32_t(m) - uint32_t(q) * d;
-    dq = int32_t(floor_div(increment, divisor));
+    dq = int32_t(floor_div_in(increment, divisor));
     dr = uint32_t(increment) - uint32_t(dq) * d;
 }
 
@@ -57,58 +67,80 @@ EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) :
     line_ = int32_t(first);
     last_line_ = int32_t(first) - 1;  // empty (and the bounds never looked at) until proven otherwise
     if (first > last) return;
+    // A polygon whose box is under 64 pixels a side is walked in 32 bits, its coordinates taken
+    // from the pixel corner at or below its box (every product and numerator below 2^30; on i686
+    // 64-bit products and divisions are several instructions or a libgcc call each). The bounds
+    // come out the same: moving the polygon and the pixel grid by whole pixels moves each bound's
+    // quotient by as many pixels and leaves its remainder.
+    constexpr int64_t SMALL = int64_t(64) << SUBPIXEL_BITS;
+    if (s.max_x - s.min_x < SMALL && s.max_y - s.min_y < SMALL)
+        build<int32_t>(s, int32_t(first), int32_t(last), floor_div(s.min_x, SUBPIXEL_ONE), floor_div(s.min_y, SUBPIXEL_ONE));
+    else
+        build<int64_t>(s, first, last, 0, 0);
+}
+
+template <typename I>
+void EdgeWalker::build(const PolygonSetup& s, I first, I last, int64_t origin_x, int64_t origin_y) {
+    const bool rows = axis_ == Axis::Rows;
+    // coordinates relative to the pixel corner (origin_x, origin_y); lines and the minor coordinate
+    // too, given back absolute in the bounds (line0, minor0)
+    const int64_t line0 = rows ? origin_y : origin_x, minor0 = rows ? origin_x : origin_y;
+    const int64_t ox = origin_x * SUBPIXEL_ONE, oy = origin_y * SUBPIXEL_ONE;
+    first = I(first - line0), last = I(last - line0);
 
     // E = dx*(Py - py) - dy*(Px - px) with P = (256*m + 128, centre) for rows, (centre, 256*m + 128)
     // for columns: A = -dy*256 and C = dx*256 for rows, A = dx*256 and C = -dy*256 for columns
     // (`sign` folds the two), B(L) as below.
-    const int64_t sign = rows ? 1 : -1;
-    auto b_at = [&](const Edge& e, int64_t line) {
-        const int64_t centre = line * SUBPIXEL_ONE + SUBPIXEL_HALF;
-        return rows ? e.dx * (centre - e.py) - e.dy * (SUBPIXEL_HALF - e.px)
-                    : e.dx * (SUBPIXEL_HALF - e.py) - e.dy * (centre - e.px);
+    const I sign = rows ? 1 : -1, one = I(SUBPIXEL_ONE), half = I(SUBPIXEL_HALF);
+    auto b_at = [&](I dx, I dy, I px, I py, I line) {
+        const I centre = I(line * one + half);
+        return rows ? I(dx * (centre - py) - dy * (half - px)) : I(dx * (half - py) - dy * (centre - px));
     };
 
     // edges along the lines (top and bottom for rows, left and right for columns) cut whole lines:
     // E(L) = B(L) = B(first) + (L - first) * C >= t, with C = +-(the edge's minor extent) * 256 != 0
-    const int64_t line0 = first;
+    const I base = first;
     for (int i = 0; i < s.edge_count; ++i) {
         const Edge& e = s.edges[i];
         if ((rows ? e.dy : e.dx) != 0) continue;
-        const int64_t b = b_at(e, line0), c = sign * (rows ? e.dx : e.dy) * SUBPIXEL_ONE, t = e.threshold;
+        const I dx = I(e.dx), dy = I(e.dy), px = I(e.px - ox), py = I(e.py - oy);
+        const I b = b_at(dx, dy, px, py, base), c = I(sign * (rows ? dx : dy) * one), t = I(e.threshold);
         if (c > 0) {
-            int64_t from = line0 + ceil_div_pos(t - b, c);
+            I from = I(base + ceil_div_pos(I(t - b), c));
             if (from > first) first = from;
         } else {
-            int64_t to = line0 + floor_div(b - t, -c);
+            I to = I(base + floor_div_in(I(b - t), I(-c)));
             if (to < last) last = to;
         }
     }
     if (first > last) return;
-    line_ = int32_t(first);
-    last_line_ = int32_t(last);
+    line_ = int32_t(first + line0);
+    last_line_ = int32_t(last + line0);
 
     int32_t lower_count = 0, upper_count = 0;
     for (int i = 0; i < s.edge_count; ++i) {
         const Edge& e = s.edges[i];
-        const int64_t p = rows ? e.py : e.px, dp = rows ? e.dy : e.dx;
+        const I dx = I(e.dx), dy = I(e.dy), px = I(e.px - ox), py = I(e.py - oy);
+        const I p = rows ? py : px, dp = rows ? dy : dx;
         if (dp == 0) continue;  // along the lines: done above
-        int64_t lo = first_line(dp < 0 ? p + dp : p), hi = last_line(dp < 0 ? p : p + dp);
+        I lo = first_line(I(dp < 0 ? p + dp : p)), hi = last_line(I(dp < 0 ? p : p + dp));
         if (lo < first) lo = first;
         if (hi > last) hi = last;
         if (lo > hi) continue;  // no line's centre within its extent
-        const int64_t a = -sign * dp * SUBPIXEL_ONE, b = b_at(e, lo), c = sign * (rows ? e.dx : e.dy) * SUBPIXEL_ONE;
+        const I a = I(-sign * dp * one), b = b_at(dx, dy, px, py, lo), c = I(sign * (rows ? dx : dy) * one);
         Bound* bound;
         if (a > 0) {
             // m >= ceil((t - B)/A) = floor((t - B + A - 1)/A); the numerator falls by C each line
             bound = &lower_[lower_count++];
-            bound->init(e.threshold - b + a - 1, a, -c);
+            bound->init(I(e.threshold - b + a - 1), a, I(-c));
         } else {
             // m <= floor((B - t)/-A); the numerator grows by C each line
             bound = &upper_[upper_count++];
-            bound->init(b - e.threshold, -a, c);
+            bound->init(I(b - e.threshold), I(-a), c);
         }
-        bound->first = int32_t(lo);
-        bound->last = int32_t(hi);
+        bound->q += int32_t(minor0);
+        bound->first = int32_t(lo + line0);
+        bound->last = int32_t(hi + line0);
     }
     seal(lower_, lower_count, INT32_MIN);
     seal(upper_, upper_count, INT32_MAX);

@@ -24,7 +24,8 @@ struct EdgeBound {
     int32_t first, last;
     int32_t q, dq;
     uint32_t r, dr, d;  // r < d, dr < d <= 2^31
-    void init(int64_t m, int64_t divisor, int64_t increment);
+    template <typename I>  // int32_t or int64_t: the walker's width
+    void init(I m, I divisor, I increment);
     void step() {
         q += dq;
         r += dr;  // r < d and dr < d, so no wrap below 2^32
@@ -88,6 +89,10 @@ private:
     using Bound = EdgeBound;
     // Sorts by first line, then seals the list with a sentinel that is never live and never binds.
     static void seal(Bound* list, int32_t count, int32_t never);
+    // The bounds of lines first..last (clipped), in integers of type I, coordinates taken relative
+    // to the pixel (origin_x, origin_y).
+    template <typename I>
+    void build(const PolygonSetup& s, I first, I last, int64_t origin_x, int64_t origin_y);
     // The tightest of `bound` and the chain's bounds live on `line`; steps those to the next line.
     // Every walked line's centre lies within some edge of each chain, so the cursor stops at a live
     // bound, never at the sentinel; a second one is live only where a vertex lies on the centre.

@@ -122,3 +122,69 @@ TEST(FillRule, PixelCentresExactlyOnSharedEdgesAndVertices) {
 }
 
 }  // namespace
+
+namespace {
+
+// The walker takes polygons under 64 pixels a side in 32 bits, relative to their box's pixel
+// corner, and larger ones in 64 bits: each walks exactly the pixels covers() accepts, by rows and
+// by columns, anywhere in the coordinate range (the clip moved to the polygon), with the run loop's
+// view of the bounds (run/skip, stepping them) the same as next()'s; polygons on either side of
+// the 64-pixel line, on and off the half-pixel grid.
+TEST(FillRule, BothWidthsOfTheWalkerCoverExactlyTheCoveredPixels) {
+    TriangleGen gen(20261124u);
+    int small = 0, large = 0;
+    for (int n = 0; n < 3000 / SANITIZED_SHARE; ++n) {
+        const double size = n % 2 ? gen.uniform(0.2, 63.9) : gen.uniform(60, 140);
+        const double cx = gen.uniform(-16000, 16000), cy = gen.uniform(-16000, 16000);
+        std::vector<Vertex> p;
+        for (int i = 0; i < 3 + int(n % 3 == 0); ++i) {
+            Vertex v = vertex(cx + gen.uniform(0, size), cy + gen.uniform(0, size));
+            if (n % 5 == 0) v = vertex_raw(v.x.raw & ~127, v.y.raw & ~127);
+            p.push_back(v);
+        }
+        PolygonSetup s;
+        if (setup_polygon(p.data(), int(p.size()), &s, PLANES_NONE) != SetupStatus::Ok) continue;
+        const bool is_small = s.max_x - s.min_x < (64 << SUBPIXEL_BITS) && s.max_y - s.min_y < (64 << SUBPIXEL_BITS);
+        (is_small ? small : large) += 1;
+        const int32_t x0 = int32_t(floor_div(s.min_x, SUBPIXEL_ONE)) - 1, y0 = int32_t(floor_div(s.min_y, SUBPIXEL_ONE)) - 1;
+        const int32_t x1 = int32_t(floor_div(s.max_x, SUBPIXEL_ONE)) + 2, y1 = int32_t(floor_div(s.max_y, SUBPIXEL_ONE)) + 2;
+        // a clip cutting a corner off now and then
+        const ClipRect clip = n % 7 == 0 ? ClipRect{x0 + (x1 - x0) / 3, y0, x1, y1 - (y1 - y0) / 4} : ClipRect{x0, y0, x1, y1};
+        for (Axis axis : {Axis::Rows, Axis::Columns}) {
+            std::vector<int> seen(size_t(x1 - x0) * size_t(y1 - y0), 0), stepped(seen.size(), 0);
+            auto mark = [&](std::vector<int>& v, int32_t x, int32_t y) { v[size_t(y - y0) * size_t(x1 - x0) + size_t(x - x0)] += 1; };
+            EdgeWalker w(s, axis, clip);
+            Span span;
+            while (w.next(&span))
+                for (int32_t k = 0; k < span.count; ++k) mark(seen, span.x + (axis == Axis::Rows ? k : 0), span.y + (axis == Axis::Rows ? 0 : k));
+            // the run loop's way: runs of lines between two bounds, stepped in place
+            EdgeWalker r(s, axis, clip);
+            for (;;) {
+                int32_t line;
+                EdgeBound *lo, *hi;
+                const int32_t lines = r.run(&line, &lo, &hi);
+                if (lines == 0) {
+                    if (!r.next(&span)) break;
+                    for (int32_t k = 0; k < span.count; ++k) mark(stepped, span.x + (axis == Axis::Rows ? k : 0), span.y + (axis == Axis::Rows ? 0 : k));
+                    continue;
+                }
+                for (int32_t l = 0; l < lines; ++l, lo->step(), hi->step()) {
+                    const int32_t a = std::max(lo->q, r.minor_lo()), b = std::min(hi->q, r.minor_hi());
+                    for (int32_t m = a; m <= b; ++m) mark(stepped, axis == Axis::Rows ? m : line + l, axis == Axis::Rows ? line + l : m);
+                }
+                r.skip(lines);
+            }
+            for (int32_t y = y0; y < y1; ++y)
+                for (int32_t x = x0; x < x1; ++x) {
+                    const bool inside = covers(s, x, y) && x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
+                    const size_t k = size_t(y - y0) * size_t(x1 - x0) + size_t(x - x0);
+                    ASSERT_EQ(seen[k], inside ? 1 : 0) << "polygon " << n << (axis == Axis::Rows ? " rows" : " columns") << " at " << x << "," << y;
+                    ASSERT_EQ(stepped[k], seen[k]) << "polygon " << n << " run loop at " << x << "," << y;
+                }
+        }
+    }
+    EXPECT_GT(small, 500 / SANITIZED_SHARE);
+    EXPECT_GT(large, 500 / SANITIZED_SHARE);
+}
+
+}  // namespace
