@@ -50,8 +50,8 @@ struct Candidates {
     // the least cost a span and a pixel of candidates k on: with the cost per polygon (which only
     // grows), what any of them costs at least
     double least_span[2 * MAPPER_LIMIT] = {}, least_pixel[2 * MAPPER_LIMIT] = {};
-    // the candidates an object's envelope proves (Mapper::enveloped), with their rows without a
-    // proof, and whether every other one costs at least as much in each part of its row
+    // the candidates an object's envelope proves (Mapper::enveloped), and whether every other one
+    // costs, with its proof, at least as much in each part of its row as each of them without
     int enveloped_count = 0;
     int enveloped[2 * MAPPER_LIMIT] = {};
     bool envelope_cheapest = false;

@@ -20,8 +20,6 @@ struct Budget {
 // Scenes without a budget line: within one footprint, exact coverage.
 constexpr Budget DEFAULT_BUDGET{};
 
-// The largest footprint error the budget allows (any: larger than any bound).
-inline double budget_ceiling(const Budget& b) { return b.max_error < 0 ? 1e300 : b.max_error; }
 inline bool budget_allows(const Budget& b, const ErrorBound& e) {
     return e.draws && (e.exact_coverage || !b.exact_coverage) && (b.max_error < 0 || e.footprint <= b.max_error);
 }

@@ -170,7 +170,7 @@ struct Mapper {
     bool chooses = false;     // auto: draws each polygon with a mapper it chooses (core/choice.h)
     SpanProof span_proof = SPANS_NOT_ASKED;  // whether auto asks its bound span by span (core/choice.h)
     // Its bound is the 16.16 planes' (spread_planes_bound, planes_fit_16_16): an object's envelope
-    // proves it on the object's uncut triangles (choose_enveloped, core/choice.h).
+    // proves it on the object's uncut triangles (plan_auto, core/choice.h).
     bool enveloped = false;
 };
 

@@ -61,10 +61,6 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
     return status;
 }
 
-}  // namespace
-
-namespace {
-
 // auto's choice for the polygon, into *prepared, and the drawing with it (the choice counts as
 // setup); where no mapper draws the polygon, exact's setup says why.
 SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& tex, Axis axis, Target& target, RenderStats* stats,
@@ -95,7 +91,7 @@ SetupStatus draw_enveloped(const Vertex* vertices, const Texture& tex, const Map
     {
         PolygonSetup setup;
         if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE) == SetupStatus::Ok && envelope_guards(setup)) {
-            ++stats->enveloped;  // (enveloped_mapper checked what draw_with would)
+            ++stats->enveloped;  // (plan_auto checked what draw_with would)
             return draw_with(vertices, 3, tex, mapper, axis, target, stats, variant, &setup, nullptr, true);
         }
     }

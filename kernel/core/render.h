@@ -16,7 +16,7 @@ namespace raster {
 // target (mapper_targets). `auto` draws it with the mapper choose_mapper picks for the budget.
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant = Variant::Twin, const Budget& budget = DEFAULT_BUDGET);
-// auto on an uncut triangle of an object whose envelope proves `mapper` (enveloped_mapper, choice.h):
+// auto on an uncut triangle of an object whose envelope proves `mapper` (plan_auto, choice.h):
 // the mapper's own setup (affine planes), the envelope's guards on it (envelope_guards), and the
 // mapper drawing from it; where a guard fails, auto's choice as in draw_polygon.
 SetupStatus draw_enveloped(const Vertex* vertices, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,

@@ -31,15 +31,19 @@ uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
 // The polygons and pixels each mapper drew (auto draws with several), summed over frames.
 struct MapperTally {
     uint64_t polygons[raster::MAPPER_LIMIT] = {}, pixels[raster::MAPPER_LIMIT] = {};
+    uint64_t enveloped = 0;
     void add(const raster::RenderStats& s) {
         for (int i = 0; i < raster::MAPPER_COUNT; ++i) polygons[i] += s.mapper_polygons[i], pixels[i] += s.mapper_pixels[i];
+        enveloped += s.enveloped;
     }
-    // "drawn_by": [{"mapper": NAME, "polygons": N, "pixels": N}, ...], the mappers that drew any
+    // "drawn_by": [{"mapper": NAME, "polygons": N, "pixels": N}, ...], the mappers that drew any;
+    // "enveloped": the polygons among them auto drew as their object's envelope proved (choice.h)
     void write(lib::JsonLine& r) const {
         r.begin_array("drawn_by");
         for (int i = 0; i < raster::MAPPER_COUNT; ++i)
             if (polygons[i]) r.begin_item_object().str("mapper", raster::MAPPERS[i].name).u64("polygons", polygons[i]).u64("pixels", pixels[i]).end_object();
         r.end_array();
+        r.u64("enveloped", enveloped);
     }
 };
 

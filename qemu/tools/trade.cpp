@@ -275,6 +275,7 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
             for (size_t i = 0; i < r.drawn_by.size(); ++i)
                 out << (i ? ";" : "") << " " << std::get<0>(r.drawn_by[i]) << " " << std::get<1>(r.drawn_by[i]) << " polygons, "
                     << fixed(100.0 * double(std::get<2>(r.drawn_by[i])) / double(r.pixels), 1) << "% of the pixels";
+            if (r.enveloped) out << "; " << r.enveloped << " of the polygons proven by their object's envelope";
             out << ".\n";
         }
     }

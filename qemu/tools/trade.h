@@ -41,6 +41,7 @@ struct TradeRow {
     // the kernel's polygons and pixels per mapper that drew them (auto draws with several), and the
     // scene's budget auto chose for, in words
     std::vector<std::tuple<std::string, uint64_t, uint64_t>> drawn_by;
+    uint64_t enveloped = 0;  // of those, the polygons auto drew as their object's envelope proved
     std::string budget;
     double budget_error = -1;   // the budget's footprint error (below 0: any), and whether it asks
     bool budget_exact = false;  // for exact coverage

@@ -239,6 +239,23 @@ TEST(Scenes3d, TheBudgetCommandSetsWhatAutoDrawsTo) {
     EXPECT_EQ(after["budget"]["max_error"], 1);
 }
 
+// The mesh at its budget: auto draws nearly every triangle as the torus's envelope proves (the
+// kernel says how many, as many as the host's drawing of the same frame), the picture the host's.
+TEST(Scenes3d, AutoDrawsTheMeshByItsEnvelopeAsTheHostDoes) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    s.ok("load mesh.scene");
+    LoadedWorld host = load_world_file(scene_path("mesh"));
+    json r = s.ok("frame 60 auto 1 linear");
+    auto f = world_frame(host, 60);
+    raster::RenderStats stats;
+    IndexImage want = render_world_frame(host, *f, *raster::find_mapper("auto"), raster::Axis::Rows, &stats);
+    EXPECT_EQ(r["enveloped"], stats.enveloped);
+    EXPECT_GT(r["enveloped"].get<uint64_t>(), r["polygons"].get<uint64_t>() * 9 / 10) << r.dump();
+    s.ok("flip 1");
+    expect_same_frame(s, want, host.world->palette, 1, "mesh-envelope");
+}
+
 TEST(Scenes3d, TheBootShowPlaysAScene) {
     SessionOptions o = options_for_this_test();
     o.append = "boot=demo scene=cube.scene mapper=exact";
