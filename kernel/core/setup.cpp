@@ -10,7 +10,8 @@ namespace {
 bool in_range(const Vertex& v) {
     constexpr int32_t LIMIT = MAX_COORD_PIXELS << SUBPIXEL_BITS;
     if (v.x.raw > LIMIT || v.x.raw < -LIMIT || v.y.raw > LIMIT || v.y.raw < -LIMIT) return false;
-    return v.w >= MIN_W && v.w <= MAX_W && v.u <= MAX_UV && v.u >= -MAX_UV && v.v <= MAX_UV && v.v >= -MAX_UV;
+    auto magnitude = [](double t) { return t < 0 ? -t : t; };  // (NaN stays NaN: it fails the test)
+    return v.w >= MIN_W && v.w <= MAX_W && magnitude(v.u) <= MAX_UV && magnitude(v.v) <= MAX_UV;
 }
 
 int64_t edge_function(const Edge& e, int64_t x, int64_t y) { return e.dx * (y - e.py) - e.dy * (x - e.px); }

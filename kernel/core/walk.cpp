@@ -34,8 +34,10 @@ I last_line(I hi) { return I((hi - I(SUBPIXEL_HALF)) >> SUBPIXEL_BITS); }
 }  // namespace
 
 void EdgeWalker::seal(Bound* list, int32_t count, int32_t never) {
-    // insertion sort: a handful of edges, nearly in order already
+    // insertion sort: a handful of edges, nearly in order already (a triangle's one or two a side:
+    // at most one swap, and none to copy when they are in order)
     for (int32_t i = 1; i < count; ++i) {
+        if (list[i - 1].first <= list[i].first) continue;
         Bound key = list[i];
         int32_t j = i - 1;
         for (; j >= 0 && list[j].first > key.first; --j) list[j + 1] = list[j];
