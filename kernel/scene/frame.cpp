@@ -277,7 +277,7 @@ TriangleEnvelope object_envelope(const World& world, int32_t o, const Placement&
         e.texel_range[t] = (mesh.triangle_uv_range[t] + R * mesh.triangle_uv_abs[t]) * size[t] * (1 + R);
     }
     const double scale = magnitude(place.scale), w_error = R * (scale * mesh.radius + length(place.position) + length(view.eye));
-    e.depth_ratio = nearest > 0 ? (scale * mesh.triangle_edge * (1 + 0x1p-30) + 2 * w_error) / nearest : NO_BOUND;
+    e.depth_ratio = nearest > 0 && mesh.measured ? (scale * mesh.triangle_edge * (1 + 0x1p-30) + 2 * w_error) / nearest : NO_BOUND;
     return e;
 }
 

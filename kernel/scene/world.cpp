@@ -254,6 +254,7 @@ bool camera_line(Parser& p, const StrView* w, size_t n) {
 
 // The mesh's measures for the envelope (Mesh): over its triangles, and its positions.
 void measure_mesh(const World& world, Mesh* m) {
+    m->measured = true;
     for (int32_t i = 0; i < m->position_count; ++i) m->radius = larger(m->radius, length(world.positions[m->first_position + i]));
     for (int32_t k = 0; k < m->face_count; ++k) {
         const Face& face = world.faces[m->first_face + k];

@@ -53,6 +53,7 @@ struct Mesh {
     // Measured once it is read, over its triangles (the envelope, frame.h): the longest edge, the
     // largest range and magnitude of u and v at their corners (texture sizes); and the largest
     // |position| of the mesh.
+    bool measured = false;  // (a mesh not measured has no envelope)
     double triangle_edge = 0;
     double triangle_uv_range[2] = {0, 0}, triangle_uv_abs[2] = {0, 0};
     double radius = 0;

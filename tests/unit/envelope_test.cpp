@@ -185,6 +185,14 @@ TEST(Envelope, HoldsOnEveryUncutTriangleOfTheDemoScenes) {
     }
 }
 
+// A mesh the parser did not measure (built some other way) has no envelope: nothing is proven.
+TEST(Envelope, NoneForAMeshNotMeasured) {
+    LoadedWorld w = load_world_file("scenes/mesh.scene");
+    EXPECT_LT(world_frame(w, 0)->envelope[0].footprint, NO_BOUND);
+    w.world->meshes[w.world->objects[0].mesh].measured = false;
+    EXPECT_GE(world_frame(w, 0)->envelope[0].footprint, NO_BOUND);
+}
+
 // On the mesh at a budget its envelope meets, auto draws every triangle that passes the guards with
 // the mapper the envelope proves, as that mapper draws alone; at a budget below the envelope's
 // bound, none so.
