@@ -14,8 +14,6 @@ namespace raster {
 // to the same few pixels, not the whole span.
 constexpr double BOUND_PIECE = 16;
 
-inline double magnitude(double t) { return t < 0 ? -t : t; }
-inline double larger(double a, double b) { return a > b ? a : b; }
 
 // No bound can be given (a classic's arithmetic, an overflow): larger than any budget.
 constexpr double NO_BOUND = 1e30;

@@ -9,12 +9,12 @@ bool choosable(const Mapper& m) { return !m.chooses && m.bound && m.bound != unb
 
 namespace {
 
-// The box inside the clip, in pixels along x (a = 0) and y (a = 1), from its corners in subpixels.
-double box_inside(int64_t lo_raw, int64_t hi_raw, int32_t first, int32_t end) {
-    const double one = double(SUBPIXEL_ONE);
-    double lo = double(lo_raw) / one, hi = double(hi_raw) / one;
-    lo = lo < first ? first : lo, hi = hi > end ? end : hi;
-    return hi > lo ? hi - lo : 0.0;
+// The extent inside the clip [first, end) (pixels) of a box's side from lo to hi (subpixels), in
+// pixels: clamped in integers, then one exact division.
+double box_inside(int64_t lo, int64_t hi, int32_t first, int32_t end) {
+    lo = lo < first * SUBPIXEL_ONE ? first * SUBPIXEL_ONE : lo;
+    hi = hi > end * SUBPIXEL_ONE ? end * SUBPIXEL_ONE : hi;
+    return hi > lo ? double(hi - lo) / double(SUBPIXEL_ONE) : 0.0;
 }
 
 }  // namespace
@@ -52,8 +52,7 @@ struct Candidates {
     double least_span[2 * MAPPER_LIMIT] = {}, least_pixel[2 * MAPPER_LIMIT] = {};
     // the candidates an object's envelope proves (Mapper::enveloped), and whether every other one
     // costs, with its proof, at least as much in each part of its row as each of them without
-    int enveloped_count = 0;
-    int enveloped[2 * MAPPER_LIMIT] = {};
+    int enveloped_count = 0, enveloped_first = -1;
     bool envelope_cheapest = false;
 };
 
@@ -80,11 +79,10 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
         c.least_span[k] = last || c.cost[k].span < c.least_span[k + 1] ? c.cost[k].span : c.least_span[k + 1];
         c.least_pixel[k] = last || c.cost[k].pixel < c.least_pixel[k + 1] ? c.cost[k].pixel : c.least_pixel[k + 1];
     }
-    for (int k = 0; k < c.count; ++k)
-        if (MAPPERS[c.row[k]].enveloped) c.enveloped[c.enveloped_count++] = k;
-    c.envelope_cheapest = c.enveloped_count > 0;
-    for (int j = 0; j < c.enveloped_count; ++j) {
-        const CostRow own = cost_row(MAPPER_COSTS[c.row[c.enveloped[j]]]);  // proven for nothing
+    for (int j = 0; j < c.count; ++j) {
+        if (!MAPPERS[c.row[j]].enveloped) continue;
+        if (c.enveloped_count++ == 0) c.enveloped_first = j, c.envelope_cheapest = true;
+        const CostRow own = cost_row(MAPPER_COSTS[c.row[j]]);  // proven for nothing
         for (int k = 0; k < c.count; ++k) {
             const CostRow& other = c.cost[k];
             if (!MAPPERS[c.row[k]].enveloped && (other.polygon < own.polygon || other.span < own.span || other.pixel < own.pixel))
@@ -176,8 +174,8 @@ AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& targe
     AutoPlan plan;
     const Candidates& list = candidates(tex, target, budget);
     if (list.enveloped_count == 1 && list.envelope_cheapest && budget_allows(budget, ErrorBound{true, true, envelope_footprint})) {
-        plan.enveloped = &MAPPERS[list.row[list.enveloped[0]]];
-        plan.enveloped_axis = list.axis[list.enveloped[0]];
+        plan.enveloped = &MAPPERS[list.row[list.enveloped_first]];
+        plan.enveloped_axis = list.axis[list.enveloped_first];
     }
     if (list.certain < 0) return plan;
     const int row = list.row[list.certain];
@@ -204,20 +202,15 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     if (!plan.certain) return nullptr;
     *axis = plan.certain_axes[0];
     if (plan.sole && plan.certain_walkers == 1) return plan.certain;
-    // the box the setup would find, inside the clip (box_inside, in integers: the same values)
+    // the box the setup would find, inside the clip
     int32_t x_lo = vertices[0].x.raw, x_hi = x_lo, y_lo = vertices[0].y.raw, y_hi = y_lo;
     for (int i = 1; i < count; ++i) {
         const int32_t x = vertices[i].x.raw, y = vertices[i].y.raw;
         x_lo = x < x_lo ? x : x_lo, x_hi = x > x_hi ? x : x_hi, y_lo = y < y_lo ? y : y_lo, y_hi = y > y_hi ? y : y_hi;
     }
-    auto inside = [](int32_t lo, int32_t hi, int32_t first, int32_t end) {
-        lo = lo < first * int32_t(SUBPIXEL_ONE) ? first * int32_t(SUBPIXEL_ONE) : lo;
-        hi = hi > end * int32_t(SUBPIXEL_ONE) ? end * int32_t(SUBPIXEL_ONE) : hi;
-        return hi > lo ? double(hi - lo) / double(SUBPIXEL_ONE) : 0.0;
-    };
     double lines[2];
-    lines[int(Axis::Rows)] = inside(y_lo, y_hi, clip.y0, clip.y1);
-    lines[int(Axis::Columns)] = inside(x_lo, x_hi, clip.x0, clip.x1);
+    lines[int(Axis::Rows)] = box_inside(y_lo, y_hi, clip.y0, clip.y1);
+    lines[int(Axis::Columns)] = box_inside(x_lo, x_hi, clip.x0, clip.x1);
     // its walker: the estimates on its walkers differ only in their lines
     const double span = plan.certain_row.span;
     if (plan.certain_walkers == 2 && span * lines[int(plan.certain_axes[1])] < span * lines[int(*axis)]) *axis = plan.certain_axes[1];

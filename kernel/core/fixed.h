@@ -6,6 +6,10 @@
 
 namespace raster {
 
+// |t| and the larger of two, without libm (NaN stays NaN through magnitude: it fails any test).
+inline double magnitude(double t) { return t < 0 ? -t : t; }
+inline double larger(double a, double b) { return a > b ? a : b; }
+
 // The integer nearest x by the FPU's rounding mode, whatever it is (one FIST or CVTSD2SI): within
 // 1 of x, |x| < 2^63. The floors below take it and step down where it lies above x, which gives
 // floor(x) exactly under any rounding mode (a truncating conversion changes the x87's rounding
@@ -31,6 +35,12 @@ inline int64_t floor_i64(double x) {
     return double(t) > x ? t - 1 : t;
 }
 
+// floor(n / d) for d > 0, in 32 bits.
+inline int32_t floor_div32(int32_t n, int32_t d) {
+    const int32_t q = n / d;  // d > 0: no INT32_MIN / -1
+    return n - q * d < 0 ? q - 1 : q;
+}
+
 // Floor division for a positive divisor: floor(n / d), d > 0. One division: on i686 (where a
 // 64-bit one is a libgcc call of some 50 instructions) one IDIV of n by a 32-bit d wherever the
 // quotient fits in 32 bits (checked first: beyond, IDIV faults); elsewhere in 32 bits when both
@@ -43,10 +53,7 @@ inline int64_t floor_div(int64_t n, int64_t d) {
         return r < 0 ? q - 1 : q;
     }
 #else
-    if (n == int64_t(int32_t(n)) && d == int64_t(int32_t(d))) {
-        int32_t n32 = int32_t(n), d32 = int32_t(d), q = n32 / d32;  // d > 0: no INT32_MIN / -1
-        return n32 - q * d32 < 0 ? q - 1 : q;
-    }
+    if (n == int64_t(int32_t(n)) && d == int64_t(int32_t(d))) return floor_div32(int32_t(n), int32_t(d));
 #endif
     int64_t q = n / d;
     return n - q * d < 0 ? q - 1 : q;

@@ -10,7 +10,6 @@ namespace {
 bool in_range(const Vertex& v) {
     constexpr int32_t LIMIT = MAX_COORD_PIXELS << SUBPIXEL_BITS;
     if (v.x.raw > LIMIT || v.x.raw < -LIMIT || v.y.raw > LIMIT || v.y.raw < -LIMIT) return false;
-    auto magnitude = [](double t) { return t < 0 ? -t : t; };  // (NaN stays NaN: it fails the test)
     return v.w >= MIN_W && v.w <= MAX_W && magnitude(v.u) <= MAX_UV && magnitude(v.v) <= MAX_UV;
 }
 

@@ -133,9 +133,8 @@ inline void perspective_texel(const PolygonSetup& s, double x, double y, int32_t
 inline double texel_footprint(const PolygonSetup& s, double x, double y) {
     double q = s.q.at(x, y), u = s.pu.at(x, y), v = s.pv.at(x, y);
     double per_pixel = double(SUBPIXEL_ONE) / (q * q);
-    auto mag = [](double t) { return t < 0 ? -t : t; };
-    double dudx = mag((s.pu.gx * q - u * s.q.gx) * per_pixel), dvdx = mag((s.pv.gx * q - v * s.q.gx) * per_pixel);
-    double dudy = mag((s.pu.gy * q - u * s.q.gy) * per_pixel), dvdy = mag((s.pv.gy * q - v * s.q.gy) * per_pixel);
+    double dudx = magnitude((s.pu.gx * q - u * s.q.gx) * per_pixel), dvdx = magnitude((s.pv.gx * q - v * s.q.gx) * per_pixel);
+    double dudy = magnitude((s.pu.gy * q - u * s.q.gy) * per_pixel), dvdy = magnitude((s.pv.gy * q - v * s.q.gy) * per_pixel);
     double across = dudx > dvdx ? dudx : dvdx, down = dudy > dvdy ? dudy : dvdy;
     return across > down ? across : down;
 }

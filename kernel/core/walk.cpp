@@ -17,10 +17,7 @@ namespace {
 
 // floor(n / d) for d > 0, in the width the walker computes in
 int64_t floor_div_in(int64_t n, int64_t d) { return floor_div(n, d); }
-int32_t floor_div_in(int32_t n, int32_t d) {
-    const int32_t q = n / d;  // d > 0: no INT32_MIN / -1
-    return n - q * d < 0 ? q - 1 : q;
-}
+int32_t floor_div_in(int32_t n, int32_t d) { return floor_div32(n, d); }
 template <typename I>
 I ceil_div_pos(I n, I d) { return -floor_div_in(I(-n), d); }
 
@@ -76,7 +73,7 @@ EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) :
     // quotient by as many pixels and leaves its remainder.
     constexpr int64_t SMALL = int64_t(64) << SUBPIXEL_BITS;
     if (s.max_x - s.min_x < SMALL && s.max_y - s.min_y < SMALL)
-        build<int32_t>(s, int32_t(first), int32_t(last), floor_div(s.min_x, SUBPIXEL_ONE), floor_div(s.min_y, SUBPIXEL_ONE));
+        build<int32_t>(s, int32_t(first), int32_t(last), s.min_x >> SUBPIXEL_BITS, s.min_y >> SUBPIXEL_BITS);  // (floors)
     else
         build<int64_t>(s, first, last, 0, 0);
 }
