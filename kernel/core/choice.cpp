@@ -54,6 +54,7 @@ struct Candidates {
     // costs, with its proof, at least as much in each part of its row as each of them without
     int enveloped_count = 0, enveloped_first = -1;
     bool envelope_cheapest = false;
+    AutoPlan plan{};  // plan_auto's but the envelope's part
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
@@ -92,6 +93,26 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
     for (int k = 0; k < c.count && c.certain < 0; ++k) {
         const Mapper& m = MAPPERS[c.row[k]];
         if (m.guarantee.max_error == 0 && m.guarantee.exact_coverage && whole_proof_cost(m) == 0 && !c.walks[k]) c.certain = k;
+    }
+    if (c.certain >= 0) {  // the plan's part that depends on the candidates alone (plan_auto)
+        AutoPlan& plan = c.plan;
+        const int row = c.row[c.certain];
+        plan.certain = &MAPPERS[row];
+        plan.certain_row = c.cost[c.certain];
+        bool others = false;
+        for (int k = 0; k < c.count; ++k) {
+            const CostRow& cost = c.cost[k];
+            if (c.row[k] == row) {
+                plan.certain_axes[plan.certain_walkers++] = c.axis[k];
+            } else if (!others) {
+                plan.others = cost, others = true;
+            } else {
+                plan.others.polygon = cost.polygon < plan.others.polygon ? cost.polygon : plan.others.polygon;
+                plan.others.span = cost.span < plan.others.span ? cost.span : plan.others.span;
+                plan.others.pixel = cost.pixel < plan.others.pixel ? cost.pixel : plan.others.pixel;
+            }
+        }
+        plan.sole = !others;
     }
     c.built = true;
     return c;
@@ -171,30 +192,12 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
 }
 
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint) {
-    AutoPlan plan;
     const Candidates& list = candidates(tex, target, budget);
+    AutoPlan plan = list.plan;
     if (list.enveloped_count == 1 && list.envelope_cheapest && budget_allows(budget, ErrorBound{true, true, envelope_footprint})) {
         plan.enveloped = &MAPPERS[list.row[list.enveloped_first]];
         plan.enveloped_axis = list.axis[list.enveloped_first];
     }
-    if (list.certain < 0) return plan;
-    const int row = list.row[list.certain];
-    plan.certain = &MAPPERS[row];
-    plan.certain_row = list.cost[list.certain];
-    bool others = false;
-    for (int k = 0; k < list.count; ++k) {
-        const CostRow& c = list.cost[k];
-        if (list.row[k] == row) {
-            plan.certain_axes[plan.certain_walkers++] = list.axis[k];
-        } else if (!others) {
-            plan.others = c, others = true;
-        } else {
-            plan.others.polygon = c.polygon < plan.others.polygon ? c.polygon : plan.others.polygon;
-            plan.others.span = c.span < plan.others.span ? c.span : plan.others.span;
-            plan.others.pixel = c.pixel < plan.others.pixel ? c.pixel : plan.others.pixel;
-        }
-    }
-    plan.sole = !others;
     return plan;
 }
 

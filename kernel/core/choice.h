@@ -44,7 +44,7 @@ void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size
 // A row of the model as the estimate computes with it: not measured (-1), dearer than any measured
 // mapper.
 struct CostRow {
-    double polygon = 0, span = 0, pixel = 0;
+    double polygon, span, pixel;  // (no initialisers: AutoPlan is kept a possible object)
 };
 inline CostRow cost_row(const MapperCost& c) { return c.polygon < 0 ? CostRow{1e30, 0, 0} : CostRow{c.polygon, c.span, c.pixel}; }
 inline double estimate_cost(const CostRow& c, const PolygonSize& s) { return c.polygon + c.span * s.spans + c.pixel * s.pixels; }
@@ -122,14 +122,16 @@ constexpr double CHOICE_COST = 300;
 //   and cost row, for unchosen_mapper; and whether it is the only one (a budget of 0: every other
 //   bound counts some rounding), and else the least cost a polygon, a span and a pixel of any
 //   other candidate with its first proof.
+// No default member initialisers: render_frame keeps one a possible object, and plan_auto sets
+// every field (from a value-initialised plan) of the ones it uses.
 struct AutoPlan {
-    const Mapper* enveloped = nullptr;
-    Axis enveloped_axis = Axis::Rows;
-    const Mapper* certain = nullptr;
-    int certain_walkers = 0;
-    Axis certain_axes[2] = {Axis::Rows, Axis::Rows};  // in the candidates' order
+    const Mapper* enveloped;
+    Axis enveloped_axis;
+    const Mapper* certain;
+    int certain_walkers;
+    Axis certain_axes[2];  // in the candidates' order
     CostRow certain_row;
-    bool sole = false;
+    bool sole;
     CostRow others;
 };
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint);
