@@ -6,73 +6,13 @@
 ;                                        pairs a block, an odd last pixel alone;
 ;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop): eight pixels a
 ;                                        block, each stored alone (they lie 80 bytes apart).
-; The core's registers:
-;   al: texel   eax 31..16: u fraction   ebx: texture | v whole (bh) | u whole (bl)
-;   edx 31..16: v fraction, dh: dv whole, dl: du whole   esi 31..16: du fraction   ebp 31..16: dv fraction
-;   edi: destination   ecx: blocks of 8 left   [esp]: the entry point
+;   The core, its registers and its blocks: asm/core816.inc; [esp]: the entry point.
 
 bits 32
 
 %include "fast.inc"
 %include "loop.inc"
-
-%macro PIXEL 1                          ; %1: the destination offset within the block
-    mov al, [ebx]
-    add edx, ebp                        ; v fraction (the low half of ebp is 0)
-    adc bh, dh                          ; v whole, plus the carry
-    add eax, esi                        ; u fraction
-    adc bl, dl                          ; u whole, plus the carry
-    mov [edi + %1], al
-%endmacro
-
-; The unrolled loop: blocks of eight pixels %1 bytes apart, ecx of them; the entry points .e0 to
-; .e7 (local to the function that expands it) start part-way into the first.
-%macro BLOCKS 1
-.block:
-.e0: PIXEL 0
-.e1: PIXEL %1
-.e2: PIXEL 2 * %1
-.e3: PIXEL 3 * %1
-.e4: PIXEL 4 * %1
-.e5: PIXEL 5 * %1
-.e6: PIXEL 6 * %1
-.e7: PIXEL 7 * %1
-    add edi, 8 * %1
-    dec ecx
-    jnz .block
-%endmacro
-
-; Two neighbouring pixels, texels in al and ah (the fraction steps' low halves are 0, so adding them
-; to eax leaves ax alone), one word store; %1: the pair's offset within the block.
-%macro PAIR 1
-    mov al, [ebx]
-    add edx, ebp
-    adc bh, dh
-    add eax, esi
-    adc bl, dl
-    mov ah, [ebx]
-    add edx, ebp
-    adc bh, dh
-    add eax, esi
-    adc bl, dl
-    mov [edi + %1], ax
-%endmacro
-
-; Blocks of eight pairs, ecx of them, entered at .e0 to .e7 (the pair the first block starts at).
-%macro PAIR_BLOCKS 0
-.block:
-.e0: PAIR 0
-.e1: PAIR 2
-.e2: PAIR 4
-.e3: PAIR 6
-.e4: PAIR 8
-.e5: PAIR 10
-.e6: PAIR 12
-.e7: PAIR 14
-    add edi, 16
-    dec ecx
-    jnz .block
-%endmacro
+%include "core816.inc"
 
 section .text
 
@@ -197,16 +137,8 @@ fast_run_loop_asm:
     and edi, 1
     mov [esp + L_ODD], edi              ; an odd pixel, drawn after the pairs
     shr ecx, 1                          ; pairs
-    mov edi, ecx
-    neg edi
-    and edi, 7                          ; the first block starts at pair j = (-pairs) mod 8
-    sub eax, edi
-    sub eax, edi                        ; so that pair j of that block is the first pair
-    mov edi, [run_entries + edi * 4]
-    mov [esp + L_ENTRY], edi
+    PAIR_ENTRY eax, edi, run_entries    ; blocks, the first one partial; 0 (ZF): no pair, one pixel
     mov edi, eax
-    add ecx, 7
-    shr ecx, 3                          ; blocks, the first one partial; 0 (ZF): no pair, one pixel
     mov eax, ebx                        ; (mov and ror leave ZF as shr set it)
     ror eax, 16                         ; u: fraction in the high half, whole in al
     ror edx, 16                         ; v: the same, whole in dl
@@ -214,13 +146,8 @@ fast_run_loop_asm:
     mov bl, al
     mov bh, dl
     mov dx, [esp + L_STEPS]
-    jz .last
-    jmp [esp + L_ENTRY]
-    PAIR_BLOCKS
-.last:                                  ; edi: just past the pairs
-    cmp dword [esp + L_ODD], 0
-    je .next_row
-    PIXEL 0
+    jz .odd_pixel
+    PAIRS_AND_ODD .next_row
 .next_row:
     mov ecx, [esp + L_ARGS]
     mov eax, [ecx + RUN_u_row_16_16]

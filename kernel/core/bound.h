@@ -218,7 +218,7 @@ constexpr double HALF_ULP_16_16 = 1.0 / 131072.0;
 bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap);
 
 // Whether the polygon's affine planes' gradients hold in 16.16 (a step of 32768 texels a pixel or
-// more saturates), for a 256 x 256 repeating texture: the fast mappers' planes mean what they say.
+// more saturates), for a repeating texture tiled over 256 x 256: the fast mappers' planes mean what they say.
 // (fits_16_16 with no travel, 256 dividing 65536: the step's magnitude alone.)
 inline bool planes_fit_16_16(const PolygonSetup& s) {
     constexpr double LIMIT = 32767.0 / double(SUBPIXEL_ONE);

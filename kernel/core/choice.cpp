@@ -58,10 +58,12 @@ struct Candidates {
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
-    constinit static Candidates cache[32];
-    const bool fast = tex.width == 256 && tex.height == 256 && tex.wrap == Wrap::Repeat && tex.aligned256;
+    constinit static Candidates cache[64];
+    const bool tiled = tiles256(tex.width, tex.height) && tex.wrap == Wrap::Repeat && tex.aligned256;  // (mapper_accepts' needs)
+    const bool whole256 = tiled && tex.width == 256 && tex.height == 256;
     const bool exact_coverage = budget.exact_coverage, no_error = budget.max_error == 0;
-    Candidates& c = cache[(tex.bordered ? 1 : 0) | (fast ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0) | (no_error ? 16 : 0)];
+    Candidates& c = cache[(tex.bordered ? 1 : 0) | (whole256 ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0) | (no_error ? 16 : 0) |
+                          (tiled ? 32 : 0)];
     if (c.built) return c;
     for (int a = 0; a < 2; ++a)
         for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {

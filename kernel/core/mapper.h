@@ -35,6 +35,7 @@ enum Need : uint32_t {
     NEED_PLANAR_TARGET = 1 << 2,  // writes Mode X planes itself (rows on a planar target)
     NEED_VGA_FOR_ASM = 1 << 3,    // the NASM loop programs the VGA: it runs on VGA pages only
     NEED_ALIGNED256 = 1 << 4,     // 256 x 256, repeat, with the 64 KiB-aligned copy (Texture::aligned256)
+    NEED_TILED256 = 1 << 5,       // sides powers of two up to 256, repeat, with the tiled 64 KiB-aligned copy
 };
 // Each need's name (the `mappers` reply) and its words (error messages), in one table.
 struct NeedName {
@@ -46,7 +47,7 @@ extern const NeedName NEED_NAMES[];
 extern const int NEED_NAME_COUNT;
 // The needs a scene can fail to meet (its textures, its coordinates); the texture copies are always
 // prepared (policy.h) and the target is the caller's choice.
-constexpr uint32_t SCENE_NEEDS = NEED_INSIDE | NEED_ALIGNED256;
+constexpr uint32_t SCENE_NEEDS = NEED_INSIDE | NEED_ALIGNED256 | NEED_TILED256;
 // The words of the needs in `needs`, comma-separated.
 void describe_needs(lib::Fmt& out, uint32_t needs);
 
@@ -182,6 +183,7 @@ inline const Mapper* find_mapper(const char* name) { return find_mapper(lib::Str
 inline bool mapper_accepts(const Mapper& m, const Texture& t) {
     if ((m.needs & NEED_BORDERED) && !t.bordered) return false;
     if ((m.needs & NEED_ALIGNED256) && (t.width != 256 || t.height != 256 || t.wrap != Wrap::Repeat || !t.aligned256)) return false;
+    if ((m.needs & NEED_TILED256) && (!tiles256(t.width, t.height) || t.wrap != Wrap::Repeat || !t.aligned256)) return false;
     return true;
 }
 

@@ -46,10 +46,11 @@ inline bool ram_planar(const Mapper& m, Axis axis) { return (m.needs & NEED_PLAN
 Target ram_target(uint8_t* pixels, bool planar);
 
 // The copies of a texture the mappers read besides its texels: the bordered copy (every texture:
-// the classics, which cannot wrap, read it) and, for 256 x 256 textures, the copy aligned to
-// 64 KiB (fatmap's loops and ours). prepare_texture builds them into the buffers given
-// (bordered_bytes(width, height) and ALIGNED256_BYTES) and points the texture at them.
-inline bool wants_aligned256(const Texture& t) { return t.width == 256 && t.height == 256; }
+// the classics, which cannot wrap, read it) and, for textures with power-of-two sides up to 256,
+// the tiled copy aligned to 64 KiB (fatmap's loops, 256 x 256 only, and ours). prepare_texture
+// builds them into the buffers given (bordered_bytes(width, height) and ALIGNED256_BYTES) and points
+// the texture at them.
+inline bool wants_aligned256(const Texture& t) { return tiles256(t.width, t.height); }
 void prepare_texture(Texture* t, uint8_t* bordered, uint8_t* aligned);
 
 }  // namespace raster

@@ -61,7 +61,11 @@ const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer) {
     constexpr int32_t GUARD = ALIGNED256_GUARD_ROWS * 256;
     uintptr_t address = (reinterpret_cast<uintptr_t>(buffer) + GUARD + 0xFFFF) & ~uintptr_t(0xFFFF);
     uint8_t* block = reinterpret_cast<uint8_t*>(address);
-    for (int32_t i = -GUARD; i < 65536 + GUARD; ++i) block[i] = t.texels[(i + 65536) & 0xFFFF];
+    const int32_t u_mask = t.width - 1, v_mask = t.height - 1;  // (tiles256: the sides divide 256)
+    for (int32_t i = -GUARD; i < 65536 + GUARD; ++i) {
+        const int32_t at = (i + 65536) & 0xFFFF;
+        block[i] = t.texels[((at >> 8) & v_mask) * t.width + (at & u_mask)];
+    }
     return block;
 }
 

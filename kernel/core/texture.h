@@ -21,16 +21,23 @@ struct Texture {
     // "so that if fixed-point imprecision causes the source pointer to wander just off the bitmap,
     // appropriate pixels will be found"). Null when not built.
     const uint8_t* bordered = nullptr;
-    // For 256 x 256 textures, the same texels at an address aligned to 64 KiB (fatmap's loops keep
-    // the texel's v:u in the low 16 bits of the pointer), with ALIGNED256_GUARD_ROWS more rows
-    // before and after that continue the texture as if it repeated: fatmap's table loop drifts up
-    // to a texel per 256 pixels of the triangle's longest scanline, past the texture's ends.
-    // Null when not built.
+    // For textures whose sides are powers of two up to 256, the texture tiled over 256 x 256 texels
+    // at an address aligned to 64 KiB (fatmap's loops and ours keep the texel's v:u in the low 16
+    // bits of the pointer; a 256 x 256 texture is its one tile): texel (u, v) of the repeating
+    // texture at block[(v & 255) * 256 + (u & 255)], since each side divides 256. With
+    // ALIGNED256_GUARD_ROWS more rows before and after that continue the tiling: fatmap's table loop
+    // drifts up to a texel per 256 pixels of the triangle's longest scanline, past the block's
+    // ends. Null when not built.
     const uint8_t* aligned256 = nullptr;
 };
 
 constexpr int32_t ALIGNED256_GUARD_ROWS = 96;
 constexpr int32_t ALIGNED256_BYTES = 3 * 65536;  // a buffer that holds the aligned block with its guard rows
+// Whether a texture's sides are powers of two up to 256 (it tiles the 64 KiB block).
+inline bool tiles256(int32_t width, int32_t height) {
+    auto pow2 = [](int32_t n) { return n > 0 && n <= 256 && (n & (n - 1)) == 0; };
+    return pow2(width) && pow2(height);
+}
 // Builds the aligned copy inside `buffer` (ALIGNED256_BYTES, any alignment) and returns the block.
 const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer);
 

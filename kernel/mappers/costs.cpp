@@ -5,28 +5,31 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2069.4f, 497.09f, 39.986f}, // 6 scenes
-    {"exact", 2074.4f, 342.31f, 79.992f}, // 6 scenes
-    {"persp-subdiv-4", 2074.4f, 375.90f, 106.573f}, // 6 scenes
-    {"persp-subdiv-8", 2074.4f, 442.87f, 66.853f}, // 6 scenes
-    {"persp-subdiv-16", 2074.4f, 485.63f, 46.938f}, // 6 scenes
-    {"persp-subdiv-32", 2074.4f, 506.91f, 37.217f}, // 6 scenes
-    {"constant-depth", 2074.4f, 523.96f, 29.726f}, // 6 scenes
-    {"persp-adaptive-0.5", 2074.4f, 736.10f, 442.621f}, // 6 scenes
-    {"persp-adaptive-1", 2074.4f, 1158.19f, 51.331f}, // 6 scenes
-    {"persp-adaptive-2", 2074.4f, 1172.44f, 44.400f}, // 6 scenes
-    {"persp-adaptive-4", 2074.4f, 1181.01f, 40.621f}, // 6 scenes
-    {"fast-affine", 1999.6f, 190.15f, 4.636f}, // 4 scenes
-    {"fast-columns", 2001.7f, 274.89f, 5.775f}, // 4 scenes
-    {"xsharp-dda", 1685.7f, 423.36f, 36.916f}, // 5 scenes
-    {"xsharp-row-out", 1690.7f, 558.32f, 18.341f}, // 5 scenes
-    {"xsharp-column", 1691.9f, 526.42f, 10.927f}, // 5 scenes
-    {"hecker-steptable", 2815.8f, 0.00f, 399.089f}, // 5 scenes
-    {"fatmap-256", 1726.3f, 205.48f, 12.287f}, // 4 scenes
-    {"fatmap-256-16", 1726.3f, 210.48f, 11.287f}, // 4 scenes
-    {"fatmap-lut", 1782.8f, 214.23f, 5.860f}, // 3 scenes
-    {"quake-subdiv16", 2234.1f, 329.72f, 13.586f}, // 5 scenes
-    {"quake-subdiv8", 2234.1f, 316.20f, 19.902f}, // 5 scenes
+    {"affine", 2045.3f, 496.40f, 39.951f}, // 6 scenes
+    {"exact", 2051.3f, 341.61f, 79.957f}, // 6 scenes
+    {"persp-subdiv-4", 2051.3f, 375.20f, 106.538f}, // 6 scenes
+    {"persp-subdiv-8", 2051.3f, 442.17f, 66.817f}, // 6 scenes
+    {"persp-subdiv-16", 2051.3f, 484.93f, 46.903f}, // 6 scenes
+    {"persp-subdiv-32", 2051.3f, 506.21f, 37.182f}, // 6 scenes
+    {"constant-depth", 2051.3f, 523.26f, 29.690f}, // 6 scenes
+    {"persp-adaptive-0.5", 2051.3f, 735.40f, 442.586f}, // 6 scenes
+    {"persp-adaptive-1", 2051.3f, 1157.50f, 51.296f}, // 6 scenes
+    {"persp-adaptive-2", 2051.3f, 1171.74f, 44.365f}, // 6 scenes
+    {"persp-adaptive-4", 2051.3f, 1180.31f, 40.586f}, // 6 scenes
+    {"fast-affine", 2043.3f, 190.82f, 3.661f}, // 6 scenes
+    {"fast-columns", 2047.6f, 275.25f, 5.087f}, // 6 scenes
+    {"fast-subdiv-8", 2076.3f, 356.92f, 15.652f}, // 6 scenes
+    {"fast-subdiv-16", 2076.3f, 369.50f, 9.805f}, // 6 scenes
+    {"fast-subdiv-32", 2076.3f, 375.55f, 7.042f}, // 6 scenes
+    {"xsharp-dda", 1689.7f, 422.73f, 36.847f}, // 5 scenes
+    {"xsharp-row-out", 1693.7f, 557.68f, 18.271f}, // 5 scenes
+    {"xsharp-column", 1695.9f, 525.87f, 10.854f}, // 5 scenes
+    {"hecker-steptable", 2820.8f, 0.00f, 398.982f}, // 5 scenes
+    {"fatmap-256", 1729.2f, 204.93f, 12.166f}, // 4 scenes
+    {"fatmap-256-16", 1729.2f, 209.93f, 11.166f}, // 4 scenes
+    {"fatmap-lut", 1785.7f, 213.83f, 5.677f}, // 3 scenes
+    {"quake-subdiv16", 2212.2f, 329.10f, 13.518f}, // 5 scenes
+    {"quake-subdiv8", 2212.2f, 315.57f, 19.834f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

@@ -1,5 +1,6 @@
-// fast-affine and fast-columns: our fastest affine mappers for 256 x 256 repeating textures, each its
-// own polygon driver (docs/mappers.md); the twins and the loops' checks.
+// fast-affine and fast-columns: our fastest affine mappers for repeating textures with power-of-two
+// sides up to 256 (read through the tiled 64 KiB block), each its own polygon driver
+// (docs/mappers.md); the twins and the loops' checks.
 #include "kernel/mappers/fast.h"
 
 #include "kernel/core/asm_offsets.h"

@@ -1,4 +1,4 @@
-// Our fastest affine mappers (256 x 256 repeating textures): the polygon drivers, the loops'
+// Our fastest affine mappers (repeating textures tiled over 256 x 256): the polygon drivers, the loops'
 // argument blocks, the twins and the NASM loops (asm/fast.asm).
 #pragma once
 
@@ -20,7 +20,7 @@ struct FastRunArgs {
     int32_t clip_lo, clip_hi;
     EdgeBound* lower;        // stepped in place, once a row
     EdgeBound* upper;
-    const uint8_t* texture;  // 256 x 256, aligned to 64 KiB
+    const uint8_t* texture;  // tiled over 256 x 256, aligned to 64 KiB
     uint32_t u_16_16, v_16_16;        // at pixel 0 of the first row
     uint32_t u_row_16_16, v_row_16_16;  // their change from row to row
     int32_t du_16_16, dv_16_16;       // per pixel

@@ -7,6 +7,7 @@
 #include "kernel/mappers/affine.h"
 #include "kernel/mappers/exact.h"
 #include "kernel/mappers/fast.h"
+#include "kernel/mappers/fastsubdiv.h"
 #include "kernel/mappers/fatmap.h"
 #include "kernel/mappers/hecker.h"
 #include "kernel/mappers/quake.h"
@@ -51,12 +52,24 @@ const Mapper MAPPERS[] = {
     {"persp-adaptive-4", "ours", "runs as long as the bound keeps within four footprints", "as persp-adaptive-0.5, within 4 footprints",
      EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, adaptive_span<16>, TWIN_AND_ASM(step_loop), nullptr, check_step, adaptive_bound<16>},
     {"fast-affine", "ours", "fatmap2's 8:16 core, unrolled with a computed entry, walking runs of rows in NASM",
-     "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; 256 x 256 repeating textures",
-     EXACT_COVERAGE_FLAT_ONE, NEED_ALIGNED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
+     "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; repeating textures with "
+     "power-of-two sides up to 256 (tiled over 256 x 256)",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-columns", "ours", "the same core down Mode X columns, the map mask set once a column",
      "as fast-affine, by columns into Mode X planes",
-     EXACT_COVERAGE_FLAT_ONE, NEED_ALIGNED256 | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_loop),
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256 | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_loop),
      fast::draw_columns, check_fast_column, fast::bound, false, SPANS_NOT_ASKED, true},
+    {"fast-subdiv-8", "ours", "exact every 8 pixels in x87, the fast 8:16 core between, one NASM loop a span",
+     "perspective-correct at every 8th pixel and the last; 16.16 steps from the ends' difference; exact coverage; repeating "
+     "textures with power-of-two sides up to 256 (tiled over 256 x 256)",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, fast_subdiv_span<8>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
+     fast_subdiv_bound<8>},
+    {"fast-subdiv-16", "ours", "exact every 16 pixels in x87, the fast 8:16 core between", "as fast-subdiv-8, every 16th pixel",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, fast_subdiv_span<16>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
+     fast_subdiv_bound<16>},
+    {"fast-subdiv-32", "ours", "exact every 32 pixels in x87, the fast 8:16 core between", "as fast-subdiv-8, every 32nd pixel",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, fast_subdiv_span<32>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
+     fast_subdiv_bound<32>},
     {"xsharp-dda", "classic", "Abrash, Black Book listing 57.1 (X-Sharp 21, C)",
      "affine; whole-pixel vertices, X-Sharp's fill convention; half-step prestep, rounds to the nearest texel; cannot wrap",
      NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, nullptr, nullptr, xsharp::draw_dda, nullptr, xsharp::bound_rows},
@@ -107,6 +120,7 @@ const NeedName NEED_NAMES[] = {
     {NEED_PLANAR_TARGET, "planar-target", "a Mode X target (surface planar or vga)"},
     {NEED_VGA_FOR_ASM, "vga-for-asm", "a VGA page for its NASM loop"},
     {NEED_ALIGNED256, "256x256-repeat", "a 256x256 repeating texture"},
+    {NEED_TILED256, "pow2-repeat", "a repeating texture with power-of-two sides up to 256"},
 };
 const int NEED_NAME_COUNT = sizeof(NEED_NAMES) / sizeof(NEED_NAMES[0]);
 

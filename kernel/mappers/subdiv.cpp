@@ -78,11 +78,11 @@ void runs_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride
 
 // Whether 16.16 holds chords of up to `steps` steps anywhere on the polygon (the whole-polygon
 // bounds): from the largest |t| (clamp; repeat reduces the start first) by the largest |t'|.
-bool chords_fit(const BoundContext& c, PolygonSpread& p, const PolygonSetup& s, double steps) {
+bool chords_fit(const BoundContext& c, PolygonSpread& p, const PolygonSetup& s, double steps, double chord) {
     const int32_t size[2] = {c.tex.width, c.tex.height};
     for (int t = 0; t < 2; ++t) {
-        const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t];
-        if (!fits_16_16(start, spread_max_step(p, s, t, c.axis), steps, size[t], c.tex.wrap)) return false;
+        const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t], step = spread_max_step(p, s, t, c.axis);
+        if (!fits_16_16(start, step, steps, size[t], c.tex.wrap) || !(step * (steps + 1) < chord)) return false;
     }
     return true;
 }
@@ -99,7 +99,7 @@ double run_bound(const SpanLine& l, const Texture& tex, const SegmentArithmetic&
         step[t] = end > from ? (t1 - t0) / (end - from) : 0.0;
         a[t] = t0 - step[t] * from;
         double start = tex.wrap == Wrap::Repeat ? 0.0 : t0;  // repeat: reduced into [0, size) first
-        *fits = *fits && (!arithmetic.wraps || fits_16_16(start, step[t], k1 - from, size[t], tex.wrap));
+        *fits = *fits && (!arithmetic.wraps || fits_16_16(start, step[t], k1 - from, size[t], tex.wrap)) && magnitude(t1 - t0) < arithmetic.chord;
     }
     return lines_bound(l, a, step, k0, k1, arithmetic.at(k1 - from));
 }
@@ -151,7 +151,7 @@ ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int cou
     const double length = N < BOUND_PIECE ? N : BOUND_PIECE;
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {  // the coarse bound below, over the polygon
         const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
-        return !a.wraps || chords_fit(c, p, s, steps) ? spread_chords_bound(p, s, c.axis, h, a.at(steps)) : NO_BOUND;
+        return !a.wraps || chords_fit(c, p, s, steps, a.chord) ? spread_chords_bound(p, s, c.axis, h, a.at(steps)) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
@@ -167,7 +167,8 @@ ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int cou
             const double from = segment(k0), reach = next_exact(k1), h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
             for (int t = 0; t < 2 && a.wraps; ++t) {
                 double start = c.tex.wrap == Wrap::Repeat ? 0.0 : larger(magnitude(span_exact(l, t, from)), magnitude(span_exact(l, t, reach)));
-                if (!fits_16_16(start, max_step_along(l, t, from, reach), steps, size[t], c.tex.wrap)) return NO_BOUND;
+                const double step = max_step_along(l, t, from, reach);
+                if (!fits_16_16(start, step, steps, size[t], c.tex.wrap) || !(step * (steps + 1) < a.chord)) return NO_BOUND;
             }
             return chords_bound(l, h, from, reach, a.at(steps));
         };
@@ -190,7 +191,7 @@ ErrorBound adaptive_bound(const BoundContext& c, const Vertex* vertices, int cou
     const double budget = QUARTERS / 4.0;
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
         const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, steps = ADAPTIVE_LONGEST - 1 < last ? ADAPTIVE_LONGEST - 1 : last;
-        return chords_fit(c, p, s, steps) ? larger(budget, spread_chords_bound(p, s, c.axis, 1, 2 * HALF_ULP_16_16)) : NO_BOUND;
+        return chords_fit(c, p, s, steps, 1e300) ? larger(budget, spread_chords_bound(p, s, c.axis, 1, 2 * HALF_ULP_16_16)) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         const SpanLine l = span_line(s, c.axis, span);

@@ -7,6 +7,7 @@
 #include <map>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "qemu/lib/error.h"
 
@@ -252,7 +253,9 @@ struct MeasureTextures {
 struct PolygonMeter::Parts {
     Picture ref{SCREEN_WIDTH, SCREEN_HEIGHT};  // one polygon at a time
     std::vector<HostSurface> scratch;
-    std::map<const uint8_t*, std::unique_ptr<MeasureTextures>> stand_ins;  // by texels
+    // by what they depend on, the texture's size and wrap (not its texels' address: a texture
+    // freed and another of another size allocated there would find the first one's stand-ins)
+    std::map<std::tuple<int32_t, int32_t, Wrap>, std::unique_ptr<MeasureTextures>> stand_ins;
 };
 
 PolygonMeter::PolygonMeter(const Mapper& mapper, Axis axis, const Budget& budget)
@@ -265,7 +268,7 @@ PolygonMeter::~PolygonMeter() = default;
 AccuracyMetrics PolygonMeter::measure(const Vertex* v, int n, const Texture& tex, bool* drawn_out, const PixelFn& pixel,
                                       RenderStats* stats) {
     Parts& p = *parts_;
-    auto& stand_in = p.stand_ins[tex.texels];
+    auto& stand_in = p.stand_ins[{tex.width, tex.height, tex.wrap}];
     if (!stand_in) stand_in = std::make_unique<MeasureTextures>(tex);
     reference_polygon(v, n, tex, p.ref.view);
     bool drawn = true;

@@ -106,9 +106,9 @@ TEST(RenderTool, BadInputGetsAClearError) {
     EXPECT_EQ(missing.status, 1);
     EXPECT_NE(missing.out.find("cannot open"), std::string::npos) << missing.out;
     // a mapper that cannot take the scene's texture says so rather than drawing nothing
-    ToolRun texture = run("scenes/screen/tunnel.scene --mapper fast-affine --out " + tmp("x.png"));
+    ToolRun texture = run("scenes/screen/odd-texture.scene --mapper fast-affine --out " + tmp("x.png"));
     EXPECT_EQ(texture.status, 1);
-    EXPECT_NE(texture.out.find("fast-affine cannot take this scene's texture (checker 64x64 repeat)"), std::string::npos) << texture.out;
+    EXPECT_NE(texture.out.find("fast-affine cannot take this scene's texture (gradient 37x300 repeat)"), std::string::npos) << texture.out;
 }
 
 // `modexlab run` (make run) with a mapper that refuses every polygon of the scene: a row with no

@@ -33,7 +33,7 @@ TEST(DemoScenes, EveryMapperDrawsTheirFrames) {
                 raster::RenderStats stats;
                 IndexImage img = render_world_frame(w, *frame, mapper, home_axis(mapper), &stats);
                 EXPECT_EQ(stats.polygons + stats.skipped + stats.rejected, uint32_t(frame->polygon_count)) << mapper.name;
-                if (std::string(mapper.family) == "ours" && !(mapper.needs & raster::NEED_ALIGNED256)) {
+                if (std::string(mapper.family) == "ours") {  // (the fast ones: every demo texture tiles 256 x 256)
                     EXPECT_EQ(stats.rejected, 0u) << mapper.name << " takes every texture";
                 }
             }

@@ -242,9 +242,9 @@ TEST(Frame, AnimationFollowsTheFrameNumber) {
 }
 
 TEST(Frame, TexturesPerObjectShareTheirCopies) {
-    std::string text = "modexlab-scene 2\ntexture big xor 256 256\ntexture small checker 64 64\n" + QUAD +
+    std::string text = "modexlab-scene 2\ntexture big xor 256 256\ntexture small checker 64 32\ntexture odd checker 48 32\n" + QUAD +
                        "object a\nmesh quad\ntexture big\nend\nobject b\nmesh quad\ntexture big\nwrap clamp\nend\n"
-                       "object c\nmesh quad\ntexture small\nend\ncamera\nend\n";
+                       "object c\nmesh quad\ntexture small\nend\nobject d\nmesh quad\ntexture odd\nend\ncamera\nend\n";
     auto b = build(text);
     auto set = std::make_unique<TextureSet>();
     build_texture_set(*b->world, set.get());
@@ -253,12 +253,22 @@ TEST(Frame, TexturesPerObjectShareTheirCopies) {
     EXPECT_EQ(set->objects[0].wrap, Wrap::Repeat);
     EXPECT_EQ(set->objects[1].wrap, Wrap::Clamp);
     EXPECT_NE(set->objects[0].aligned256, nullptr);
-    EXPECT_EQ(set->objects[2].aligned256, nullptr);
+    EXPECT_EQ(set->objects[0].aligned256, set->objects[1].aligned256);
     EXPECT_EQ(set->objects[2].width, 64);
+    EXPECT_EQ(set->objects[3].aligned256, nullptr) << "48 texels: not a power of two, no tiled block";
     // the bordered copy repeats the edge texels
     const Texture& s = set->objects[2];
     EXPECT_EQ(bordered_origin(s)[-1], s.texels[0]);
-    EXPECT_EQ(bordered_origin(s)[64 * bordered_pitch(s) + 64], s.texels[63 * 64 + 63]);
+    EXPECT_EQ(bordered_origin(s)[32 * bordered_pitch(s) + 64], s.texels[31 * 64 + 63]);
+    // the 64 x 32 texture tiled over the aligned 64 KiB block, its guard rows continuing the tiling
+    ASSERT_NE(s.aligned256, nullptr);
+    EXPECT_EQ(reinterpret_cast<uintptr_t>(s.aligned256) & 0xFFFF, 0u);
+    int wrong = 0;
+    for (int32_t i = -ALIGNED256_GUARD_ROWS * 256; i < 65536 + ALIGNED256_GUARD_ROWS * 256; ++i) {
+        const int32_t u = ((i % 256) + 256) % 256, v = (((i - u) / 256) % 256 + 256) % 256;
+        wrong += s.aligned256[i] != s.texels[(v % 32) * 64 + u % 64];
+    }
+    EXPECT_EQ(wrong, 0);
 }
 
 }  // namespace
