@@ -16,29 +16,30 @@ align 8
 subpixel_one: dq 256.0                  ; SUBPIXEL_ONE: a pixel in subpixels
 scale_16_16:  dq 65536.0
 
-L_ARGS   equ 0
-L_K      equ 4                          ; the segment's first pixel
-L_END    equ 8                          ; its next exact point
-L_LEN    equ 12                         ; its pixels
-L_D      equ 16                         ; the pixels between its exact points (the last segment's divisor)
-L_DST    equ 20                         ; its first pixel's address
-L_U0     equ 24                         ; 16.16 at its first pixel
-L_V0     equ 28
-L_U1     equ 32                         ; qword: 16.16 at its next exact point (the low dword kept)
-L_V1     equ 40                         ; qword
-L_DU     equ 48                         ; its steps
-L_DV     equ 52
-L_ODD    equ 56                         ; 1: an odd last pixel after the pairs
-L_ENTRY  equ 60
-L_FRAME  equ 64
+L_ARGS        equ 0
+L_LEFT        equ 4                     ; pixels from the segment's first to the span's end
+L_DST         equ 8                     ; the segment's first pixel's address
+L_U0          equ 12                    ; 16.16 at the segment's first pixel
+L_V0          equ 16
+L_U1          equ 20                    ; qword: 16.16 at its next exact point (the low dword kept)
+L_V1          equ 28                    ; qword
+L_TEXTURE     equ 36
+L_N           equ 40                    ; a full segment's pixels
+L_SHIFT       equ 44                    ; log2 of them
+L_FULL_ENTRY  equ 48                    ; a full segment's entry into the pairs
+L_FULL_BLOCKS equ 52                    ; and its blocks
+L_FULL_BACK   equ 56                    ; and how far its destination moves back (0 or less)
+L_ENTRY       equ 60                    ; the last segment's entry
+L_ODD         equ 64                    ; 1: an odd last pixel after the pairs (the last segment's)
+L_LAST        equ 68                    ; the span's last pixel, the last segment's exact point
+L_D           equ 72                    ; the last segment's divisor
+L_SEG_X       equ 76                    ; qword: a full segment in subpixels, n * 256
+L_FRAME       equ 84
 
 section .text
 
-; the exact point at pixel [esp + %1] into [esp + L_U1], [esp + L_V1]; ecx: the block
-%macro POINT 1
-    fild dword [esp + %1]
-    fmul qword [subpixel_one]
-    fadd qword [ecx + FSUB_x]           ; x = x0 + k * 256
+; the exact point at x (st0, kept) into [esp + L_U1], [esp + L_V1]; ecx: the block
+%macro POINT 0
     fld qword [ecx + FSUB_g]
     fmul st0, st1
     fadd qword [ecx + FSUB_c]           ; q = c0 + g0 x
@@ -55,57 +56,104 @@ section .text
     fmul qword [scale_16_16]
     fistp qword [esp + L_V1]
     fstp st0                            ; q
-    fstp st0                            ; x
 %endmacro
 
+; the core's registers (asm/core816.inc) from the steps du (eax) and dv (edx) and the segment's
+; start [esp + L_U0], [esp + L_V0]
+%macro CORE_LOAD 0
+    mov esi, eax
+    shl esi, 16                         ; du fraction
+    mov ebp, edx
+    shl ebp, 16                         ; dv fraction
+    shr eax, 16                         ; al: du whole
+    shr edx, 16
+    mov ah, dl                          ; ah: dv whole
+    mov ebx, [esp + L_TEXTURE]
+    mov bl, [esp + L_U0 + 2]            ; u whole
+    mov bh, [esp + L_V0 + 2]            ; v whole
+    mov edx, [esp + L_V0]
+    shl edx, 16                         ; v fraction
+    mov dx, ax                          ; dl: du whole, dh: dv whole
+    mov eax, [esp + L_U0]
+    shl eax, 16                         ; u fraction
+%endmacro
+
+; Full segments keep x (the next exact point's, in subpixels) on the x87 stack, one add of n * 256
+; a segment (exact: whole numbers below 2^53, as the twin's x0 + k * 256); their entry into the
+; pairs is the same every time, found once a span. The last segment (at most n pixels, its exact
+; point the span's last pixel) finds its own and divides.
 global fast_subdiv_loop_asm
 fast_subdiv_loop_asm:
     LOOP_ENTER L_FRAME
-    mov ecx, LOOP_ARG(L_FRAME)
-    cmp dword [ecx + FSUB_count], 0
+    mov edx, LOOP_ARG(L_FRAME)
+    mov eax, [edx + FSUB_count]
+    test eax, eax
     jle .done
-    mov [esp + L_ARGS], ecx
-    mov eax, [ecx + FSUB_dst]
+    mov [esp + L_ARGS], edx
+    mov [esp + L_LEFT], eax
+    dec eax
+    mov [esp + L_LAST], eax
+    mov eax, [edx + FSUB_dst]
     mov [esp + L_DST], eax
-    mov dword [esp + L_K], 0
-    POINT L_K
+    mov eax, [edx + FSUB_texture]
+    mov [esp + L_TEXTURE], eax
+    mov dword [esp + L_ODD], 0
+    mov ecx, [edx + FSUB_shift]
+    mov [esp + L_SHIFT], ecx
+    mov eax, 1
+    shl eax, cl
+    mov [esp + L_N], eax
+    shl eax, 8
+    mov [esp + L_D], eax
+    fild dword [esp + L_D]
+    fstp qword [esp + L_SEG_X]          ; n * 256, exact
+    mov ecx, [esp + L_N]
+    shr ecx, 1                          ; a full segment's pairs
+    xor edi, edi
+    PAIR_ENTRY edi, eax, entries
+    mov [esp + L_FULL_BACK], edi
+    mov [esp + L_FULL_BLOCKS], ecx
+    mov eax, [esp + L_ENTRY]
+    mov [esp + L_FULL_ENTRY], eax
+    mov ecx, edx
+    fldz
+    fadd qword [ecx + FSUB_x]           ; x at pixel 0 (0 + x0, as the twin's x0 + 0 * 256)
+    POINT
     mov eax, [esp + L_U1]
     mov [esp + L_U0], eax
     mov eax, [esp + L_V1]
     mov [esp + L_V0], eax
-.segment:
-    mov ecx, [esp + L_ARGS]
-    mov esi, ecx
-    mov ecx, [esi + FSUB_shift]
-    mov ebx, 1
-    shl ebx, cl                         ; n
-    mov eax, [esi + FSUB_count]
-    sub eax, [esp + L_K]                ; pixels left
-    cmp eax, ebx
+    mov eax, [esp + L_LEFT]
+    cmp eax, [esp + L_N]
     jle .last_segment
-    mov [esp + L_LEN], ebx              ; n pixels, to the exact point n on
-    add ebx, [esp + L_K]
-    mov [esp + L_END], ebx
-    mov ecx, esi
-    POINT L_END
-    mov ecx, [esi + FSUB_shift]
+.full_segment:                          ; more than n pixels left: n of them, to the exact point n on
+    fadd qword [esp + L_SEG_X]
+    mov ecx, [esp + L_ARGS]
+    POINT
+    mov ecx, [esp + L_SHIFT]
     mov eax, [esp + L_U1]
     sub eax, [esp + L_U0]
     sar eax, cl                         ; du
     mov edx, [esp + L_V1]
     sub edx, [esp + L_V0]
     sar edx, cl                         ; dv
-    jmp .draw
+    mov edi, [esp + L_DST]
+    add edi, [esp + L_FULL_BACK]
+    mov ecx, [esp + L_FULL_BLOCKS]
+    CORE_LOAD
+    jmp [esp + L_FULL_ENTRY]
 .last_segment:                          ; the pixels left, to the exact point at the last
-    mov [esp + L_LEN], eax
+    fstp st0                            ; (the full segments' x)
+    mov eax, [esp + L_LEFT]
     dec eax
     jz .one_pixel
     mov [esp + L_D], eax
-    mov ebx, [esi + FSUB_count]
-    dec ebx
-    mov [esp + L_END], ebx
-    mov ecx, esi
-    POINT L_END
+    mov ecx, [esp + L_ARGS]
+    fild dword [esp + L_LAST]
+    fmul qword [subpixel_one]
+    fadd qword [ecx + FSUB_x]           ; x = x0 + last * 256
+    POINT
+    fstp st0
     mov eax, [esp + L_U1]
     sub eax, [esp + L_U0]
     cdq
@@ -117,50 +165,36 @@ fast_subdiv_loop_asm:
     idiv dword [esp + L_D]
     mov edx, eax                        ; dv
     mov eax, ebx
-    jmp .draw
+    jmp .last_draw
 .one_pixel:
     xor eax, eax
     xor edx, edx
-.draw:                                  ; eax: du, edx: dv
-    mov [esp + L_DU], eax
-    mov [esp + L_DV], edx
-    mov ecx, [esp + L_LEN]
-    mov eax, ecx
-    and eax, 1
-    mov [esp + L_ODD], eax
+.last_draw:                             ; eax: du, edx: dv
+    mov ecx, [esp + L_LEFT]
+    mov ebx, ecx
+    and ebx, 1
+    mov [esp + L_ODD], ebx
     shr ecx, 1                          ; pairs
     mov edi, [esp + L_DST]
-    PAIR_ENTRY edi, edx, entries        ; blocks, the first one partial
-    mov esi, [esp + L_DU]
-    shl esi, 16                         ; du fraction
-    mov ebp, [esp + L_DV]
-    shl ebp, 16                         ; dv fraction
-    mov ebx, [esp + L_ARGS]
-    mov ebx, [ebx + FSUB_texture]
-    mov bl, [esp + L_U0 + 2]            ; u whole
-    mov bh, [esp + L_V0 + 2]            ; v whole
-    mov edx, [esp + L_V0]
-    shl edx, 16                         ; v fraction
-    mov dl, [esp + L_DU + 2]            ; du whole
-    mov dh, [esp + L_DV + 2]            ; dv whole
-    mov eax, [esp + L_U0]
-    shl eax, 16                         ; u fraction
+    PAIR_ENTRY edi, ebx, entries        ; blocks, the first one partial
+    CORE_LOAD                           ; (leaves ecx and edi)
     test ecx, ecx
     jz .odd_pixel                       ; no pair: one pixel
     PAIRS_AND_ODD .next
 .next:
-    mov eax, [esp + L_LEN]
+    mov eax, [esp + L_N]
+    mov ecx, [esp + L_LEFT]
+    sub ecx, eax
+    jle .done                           ; that was the last segment
     add [esp + L_DST], eax
-    add eax, [esp + L_K]
-    mov [esp + L_K], eax
-    mov ecx, [esp + L_ARGS]
-    cmp eax, [ecx + FSUB_count]
-    jge .done
-    mov eax, [esp + L_U1]
-    mov [esp + L_U0], eax
-    mov eax, [esp + L_V1]
-    mov [esp + L_V0], eax
-    jmp .segment
+    mov [esp + L_LEFT], ecx
+    mov edx, [esp + L_U1]
+    mov [esp + L_U0], edx
+    mov edx, [esp + L_V1]
+    mov [esp + L_V0], edx
+    cmp ecx, eax
+    jg .full_segment
+    jmp .last_segment
 .done:
     LOOP_LEAVE L_FRAME
 

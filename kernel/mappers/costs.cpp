@@ -18,9 +18,9 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-4", 2051.3f, 1180.31f, 40.586f}, // 6 scenes
     {"fast-affine", 2043.3f, 190.82f, 3.661f}, // 6 scenes
     {"fast-columns", 2047.6f, 275.25f, 5.087f}, // 6 scenes
-    {"fast-subdiv-8", 2076.3f, 356.92f, 15.652f}, // 6 scenes
-    {"fast-subdiv-16", 2076.3f, 369.50f, 9.805f}, // 6 scenes
-    {"fast-subdiv-32", 2076.3f, 375.55f, 7.042f}, // 6 scenes
+    {"fast-subdiv-8", 2076.3f, 384.27f, 11.951f}, // 6 scenes
+    {"fast-subdiv-16", 2076.3f, 392.61f, 8.083f}, // 6 scenes
+    {"fast-subdiv-32", 2076.3f, 396.55f, 6.283f}, // 6 scenes
     {"xsharp-dda", 1689.7f, 422.73f, 36.847f}, // 5 scenes
     {"xsharp-row-out", 1693.7f, 557.68f, 18.271f}, // 5 scenes
     {"xsharp-column", 1695.9f, 525.87f, 10.854f}, // 5 scenes
