@@ -5,31 +5,31 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2045.3f, 496.40f, 39.951f}, // 6 scenes
-    {"exact", 2051.3f, 341.61f, 79.957f}, // 6 scenes
-    {"persp-subdiv-4", 2051.3f, 375.20f, 106.538f}, // 6 scenes
-    {"persp-subdiv-8", 2051.3f, 442.17f, 66.817f}, // 6 scenes
-    {"persp-subdiv-16", 2051.3f, 484.93f, 46.903f}, // 6 scenes
-    {"persp-subdiv-32", 2051.3f, 506.21f, 37.182f}, // 6 scenes
-    {"constant-depth", 2051.3f, 523.26f, 29.690f}, // 6 scenes
-    {"persp-adaptive-0.5", 2051.3f, 735.40f, 442.586f}, // 6 scenes
-    {"persp-adaptive-1", 2051.3f, 1157.50f, 51.296f}, // 6 scenes
-    {"persp-adaptive-2", 2051.3f, 1171.74f, 44.365f}, // 6 scenes
-    {"persp-adaptive-4", 2051.3f, 1180.31f, 40.586f}, // 6 scenes
-    {"fast-affine", 2043.3f, 190.82f, 3.661f}, // 6 scenes
-    {"fast-columns", 2047.6f, 275.25f, 5.087f}, // 6 scenes
-    {"fast-subdiv-8", 2076.3f, 384.27f, 11.951f}, // 6 scenes
-    {"fast-subdiv-16", 2076.3f, 392.61f, 8.083f}, // 6 scenes
-    {"fast-subdiv-32", 2076.3f, 396.55f, 6.283f}, // 6 scenes
-    {"xsharp-dda", 1689.7f, 422.73f, 36.847f}, // 5 scenes
-    {"xsharp-row-out", 1693.7f, 557.68f, 18.271f}, // 5 scenes
-    {"xsharp-column", 1695.9f, 525.87f, 10.854f}, // 5 scenes
-    {"hecker-steptable", 2820.8f, 0.00f, 398.982f}, // 5 scenes
-    {"fatmap-256", 1729.2f, 204.93f, 12.166f}, // 4 scenes
-    {"fatmap-256-16", 1729.2f, 209.93f, 11.166f}, // 4 scenes
-    {"fatmap-lut", 1785.7f, 213.83f, 5.677f}, // 3 scenes
-    {"quake-subdiv16", 2212.2f, 329.10f, 13.518f}, // 5 scenes
-    {"quake-subdiv8", 2212.2f, 315.57f, 19.834f}, // 5 scenes
+    {"affine", 2049.2f, 477.47f, 40.319f}, // 6 scenes
+    {"exact", 2055.2f, 326.20f, 80.258f}, // 6 scenes
+    {"persp-subdiv-4", 2055.2f, 348.58f, 107.055f}, // 6 scenes
+    {"persp-subdiv-8", 2055.2f, 417.95f, 67.293f}, // 6 scenes
+    {"persp-subdiv-16", 2055.2f, 466.84f, 47.263f}, // 6 scenes
+    {"persp-subdiv-32", 2055.2f, 492.32f, 37.461f}, // 6 scenes
+    {"constant-depth", 2055.2f, 512.94f, 29.889f}, // 6 scenes
+    {"persp-adaptive-0.5", 2055.2f, 809.20f, 441.199f}, // 6 scenes
+    {"persp-adaptive-1", 2055.2f, 1154.76f, 51.359f}, // 6 scenes
+    {"persp-adaptive-2", 2055.2f, 1171.55f, 44.396f}, // 6 scenes
+    {"persp-adaptive-4", 2055.2f, 1181.89f, 40.577f}, // 6 scenes
+    {"fast-affine", 2047.2f, 163.28f, 4.199f}, // 6 scenes
+    {"fast-columns", 2053.9f, 257.26f, 5.465f}, // 6 scenes
+    {"fast-subdiv-8", 2080.2f, 369.26f, 12.245f}, // 6 scenes
+    {"fast-subdiv-16", 2080.2f, 378.84f, 8.353f}, // 6 scenes
+    {"fast-subdiv-32", 2080.2f, 383.56f, 6.538f}, // 6 scenes
+    {"xsharp-dda", 1687.3f, 387.56f, 37.675f}, // 5 scenes
+    {"xsharp-row-out", 1691.3f, 523.04f, 19.085f}, // 5 scenes
+    {"xsharp-column", 1693.2f, 494.35f, 11.511f}, // 5 scenes
+    {"hecker-steptable", 2829.6f, 0.00f, 376.978f}, // 5 scenes
+    {"fatmap-256", 1746.7f, 179.29f, 12.702f}, // 4 scenes
+    {"fatmap-256-16", 1746.7f, 184.29f, 11.702f}, // 4 scenes
+    {"fatmap-lut", 1818.1f, 189.94f, 6.210f}, // 3 scenes
+    {"quake-subdiv16", 2214.3f, 311.10f, 13.948f}, // 5 scenes
+    {"quake-subdiv8", 2214.3f, 295.70f, 20.306f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
