@@ -21,6 +21,7 @@ const MapperCost MAPPER_COSTS[] = {
     {"fast-subdiv-8", 2080.2f, 369.26f, 12.245f}, // 6 scenes
     {"fast-subdiv-16", 2080.2f, 378.84f, 8.353f}, // 6 scenes
     {"fast-subdiv-32", 2080.2f, 383.56f, 6.538f}, // 6 scenes
+    {"fast-constant-depth", 2080.2f, 387.39f, 5.132f}, // 6 scenes
     {"xsharp-dda", 1687.3f, 387.56f, 37.675f}, // 5 scenes
     {"xsharp-row-out", 1691.3f, 523.04f, 19.085f}, // 5 scenes
     {"xsharp-column", 1693.2f, 494.35f, 11.511f}, // 5 scenes

@@ -54,7 +54,7 @@ void fast_subdiv_loop(const void* raw) {
 
 template <int N>
 void fast_subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t) {
-    static_assert(N >= 2 && N <= 256 && (N & (N - 1)) == 0);
+    static_assert(N >= 2 && N <= 512 && (N & (N - 1)) == 0);
     const PolygonSetup& setup = c.setup;
     const double y = centre_y(setup, s.y);
     FastSubdivArgs a;
@@ -80,12 +80,12 @@ ErrorBound fast_subdiv_bound(const BoundContext& c, const Vertex* vertices, int 
 }
 
 // The loop's random cases (core/selftest.h): planes from real triangles and extremes (random_planes),
-// rows anywhere on and off the screen, segments of 2 to 256 pixels.
+// rows anywhere on and off the screen, segments of 2 to 512 pixels (512: one a span).
 LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<FastSubdivArgs>(m, other, seed, cases, buf, [&](Random& r, FastSubdivArgs& a) {
         a.count = random_count(r, 0, 3, 320);
         a.texture = check_aligned_texture(buf);
-        a.shift = r.below(4) ? r.range(3, 5) : r.range(1, 8);
+        a.shift = r.below(4) ? r.range(3, 5) : r.range(1, 9);
         CheckWindow window = place_span(buf, a, 1);
         double q[3], pu[3], pv[3];
         random_planes(r, q, pu, pv);
@@ -108,8 +108,10 @@ void fastsubdiv_offsets() {
 template void fast_subdiv_span<8>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template void fast_subdiv_span<16>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template void fast_subdiv_span<32>(const SpanContext&, const Span&, uint8_t*, int32_t);
+template void fast_subdiv_span<FAST_SPAN_LONG>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template ErrorBound fast_subdiv_bound<8>(const BoundContext&, const Vertex*, int);
 template ErrorBound fast_subdiv_bound<16>(const BoundContext&, const Vertex*, int);
 template ErrorBound fast_subdiv_bound<32>(const BoundContext&, const Vertex*, int);
+template ErrorBound fast_subdiv_bound<FAST_SPAN_LONG>(const BoundContext&, const Vertex*, int);
 
 }  // namespace raster

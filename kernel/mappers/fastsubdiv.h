@@ -19,12 +19,16 @@ struct FastSubdivArgs {
     uint8_t* dst;            // pixel 0; the next pixels follow it (rows of a linear target)
     int32_t count;           // pixels, 0 or more
     const uint8_t* texture;  // tiled over 256 x 256, aligned to 64 KiB (Texture::aligned256)
-    int32_t shift;           // segments of 1 << shift pixels, shift 1 to 8
+    int32_t shift;           // segments of 1 << shift pixels, shift 1 to 9
     double x;                // pixel 0's centre minus the reference vertex's x, subpixels
     double c[3], g[3];       // q, pu, pv on the span's row: a0 + gy y, and gx
 };
 
 void fast_subdiv_loop(const void* args);
+
+// Segments longer than any row (320 pixels): one a span, exact at its first and last pixels
+// (fast-constant-depth: constant-depth's rows on the fast core).
+constexpr int FAST_SPAN_LONG = 512;
 
 template <int N>
 void fast_subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);

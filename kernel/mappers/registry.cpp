@@ -70,6 +70,11 @@ const Mapper MAPPERS[] = {
     {"fast-subdiv-32", "ours", "exact every 32 pixels in x87, the fast 8:16 core between", "as fast-subdiv-8, every 32nd pixel",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, fast_subdiv_span<32>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
      fast_subdiv_bound<32>},
+    {"fast-constant-depth", "ours", "Doom's floors on the fast core: exact at both ends of each row in x87, the 8:16 core between",
+     "exact u, v at each row's first and last pixel centre, 16.16 steps between: exact up to rounding along rows of constant depth "
+     "(floors and ceilings), its bound says how far off elsewhere; rows only; exact coverage; textures as fast-affine",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, fast_subdiv_span<FAST_SPAN_LONG>, TWIN_AND_ASM(fast_subdiv_loop), nullptr,
+     check_fast_subdiv, fast_subdiv_bound<FAST_SPAN_LONG>, false, SPANS_ASKED},
     {"xsharp-dda", "classic", "Abrash, Black Book listing 57.1 (X-Sharp 21, C)",
      "affine; whole-pixel vertices, X-Sharp's fill convention; half-step prestep, rounds to the nearest texel; cannot wrap",
      NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, nullptr, nullptr, xsharp::draw_dda, nullptr, xsharp::bound_rows},
