@@ -59,8 +59,7 @@ struct Candidates {
 
 const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
     constinit static Candidates cache[64];
-    const bool tiled = tiles256(tex.width, tex.height) && tex.wrap == Wrap::Repeat && tex.aligned256;  // (mapper_accepts' needs)
-    const bool whole256 = tiled && tex.width == 256 && tex.height == 256;
+    const bool tiled = texture_tiled256(tex), whole256 = texture_aligned256(tex);  // (mapper_accepts' needs)
     const bool exact_coverage = budget.exact_coverage, no_error = budget.max_error == 0;
     Candidates& c = cache[(tex.bordered ? 1 : 0) | (whole256 ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0) | (no_error ? 16 : 0) |
                           (tiled ? 32 : 0)];

@@ -180,10 +180,14 @@ extern const int MAPPER_COUNT;
 const Mapper* find_mapper(lib::StrView name);
 inline const Mapper* find_mapper(const char* name) { return find_mapper(lib::StrView{name, lib::c_length(name)}); }
 
+// Whether the texture meets NEED_TILED256, and NEED_ALIGNED256 (its one tile 256 x 256).
+inline bool texture_tiled256(const Texture& t) { return tiles256(t.width, t.height) && t.wrap == Wrap::Repeat && t.aligned256; }
+inline bool texture_aligned256(const Texture& t) { return texture_tiled256(t) && t.width == 256 && t.height == 256; }
+
 inline bool mapper_accepts(const Mapper& m, const Texture& t) {
     if ((m.needs & NEED_BORDERED) && !t.bordered) return false;
-    if ((m.needs & NEED_ALIGNED256) && (t.width != 256 || t.height != 256 || t.wrap != Wrap::Repeat || !t.aligned256)) return false;
-    if ((m.needs & NEED_TILED256) && (!tiles256(t.width, t.height) || t.wrap != Wrap::Repeat || !t.aligned256)) return false;
+    if ((m.needs & NEED_ALIGNED256) && !texture_aligned256(t)) return false;
+    if ((m.needs & NEED_TILED256) && !texture_tiled256(t)) return false;
     return true;
 }
 

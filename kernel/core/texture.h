@@ -38,6 +38,9 @@ inline bool tiles256(int32_t width, int32_t height) {
     auto pow2 = [](int32_t n) { return n > 0 && n <= 256 && (n & (n - 1)) == 0; };
     return pow2(width) && pow2(height);
 }
+// The texel of the aligned block at 16.16 coordinates u, v (their wholes taken modulo 256): what
+// the 8:16 loops read through bh:bl.
+inline uint8_t texel256(const uint8_t* block, uint32_t u, uint32_t v) { return block[((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF)]; }
 // Builds the aligned copy inside `buffer` (ALIGNED256_BYTES, any alignment) and returns the block.
 const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer);
 

@@ -137,12 +137,6 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
 
 namespace raster {
 
-namespace {
-
-uint8_t texel256(const uint8_t* texture, uint32_t u, uint32_t v) { return texture[((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF)]; }
-
-}  // namespace
-
 void fast_run_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
     uint8_t* row = a.row;

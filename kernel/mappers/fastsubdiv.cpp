@@ -10,8 +10,6 @@ namespace raster {
 
 namespace {
 
-uint8_t texel256(const uint8_t* texture, uint32_t u, uint32_t v) { return texture[((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF)]; }
-
 // The exact point at pixel k in 16.16, the low 32 bits of the nearest 64-bit integer (|u| stays
 // far below 2^47 inside a polygon: MAX_UV).
 void exact_16_16(const FastSubdivArgs& a, int32_t k, uint32_t* u, uint32_t* v) {
