@@ -1,9 +1,10 @@
-; fast_subdiv_loop_asm (fast-subdiv-N): one row span, segment by segment; twin of
+; fast_subdiv_loop_asm (fast-subdiv-N): one span, segment by segment; twin of
 ; kernel/mappers/fastsubdiv.cpp (fast_subdiv_loop), which it matches bit for bit. Each exact point
 ; in x87 as the twin computes it (53-bit precision, the same operations in the same order, the
 ; 64-bit conversion rounding to nearest), the steps between two points by their 32-bit difference,
-; the pixels by the 8:16 core (asm/core816.inc) in pairs, entered part-way as fast_run_loop_asm
-; enters it.
+; the pixels by the 8:16 core (asm/core816.inc), entered part-way as fast_run_loop_asm enters it:
+; a row (stride 1) in pairs, one word store a pair; a column (any other stride) a pixel at a time,
+; the destination moved by the stride from the frame after each store.
 
 bits 32
 
@@ -34,7 +35,9 @@ L_ODD         equ 64                    ; 1: an odd last pixel after the pairs (
 L_LAST        equ 68                    ; the span's last pixel, the last segment's exact point
 L_D           equ 72                    ; the last segment's divisor
 L_SEG_X       equ 76                    ; qword: a full segment in subpixels, n * 256
-L_FRAME       equ 84
+L_STRIDE      equ 84                    ; bytes from a pixel to the next
+L_SEG_BYTES   equ 88                    ; bytes from a full segment's first pixel to the next's
+L_FRAME       equ 92
 
 section .text
 
@@ -78,12 +81,44 @@ section .text
     shl eax, 16                         ; u fraction
 %endmacro
 
-; Full segments keep x (the next exact point's, in subpixels) on the x87 stack, one add of n * 256
-; a segment (exact: whole numbers below 2^53, as the twin's x0 + k * 256); their entry into the
-; pairs is the same every time, found once a span. The last segment (at most n pixels, its exact
-; point the span's last pixel) finds its own and divides.
-global fast_subdiv_loop_asm
-fast_subdiv_loop_asm:
+; Columns: each pixel stored, then the destination moved on by the stride; blocks of eight
+; entered at .e0 to .e7 (the pixel the first block starts at: nothing to move back), ecx of them.
+%macro STRIDE_PIXEL 0
+    PIXEL 0
+    add edi, [esp + L_STRIDE]
+%endmacro
+%macro STRIDE_BLOCKS 0
+.block:
+.e0: STRIDE_PIXEL
+.e1: STRIDE_PIXEL
+.e2: STRIDE_PIXEL
+.e3: STRIDE_PIXEL
+.e4: STRIDE_PIXEL
+.e5: STRIDE_PIXEL
+.e6: STRIDE_PIXEL
+.e7: STRIDE_PIXEL
+    dec ecx
+    jnz .block
+%endmacro
+
+; The computed entry into STRIDE_BLOCKS for ecx pixels (in; out: the blocks): the first block
+; starts at pixel (-pixels) mod 8, [esp + L_ENTRY] takes that entry of the table %2; %1: scratch.
+%macro PIXEL_ENTRY 2
+    mov %1, ecx
+    neg %1
+    and %1, 7
+    mov %1, [%2 + %1 * 4]
+    mov [esp + L_ENTRY], %1
+    add ecx, 7
+    shr ecx, 3
+%endmacro
+
+; One span, rows (%1 = rows: stride 1, pairs) or columns (%1 = columns: the stride's); %2: the
+; entry table. Full segments keep x (the next exact point's, in subpixels) on the x87 stack, one
+; add of n * 256 a segment (exact: whole numbers below 2^53, as the twin's x0 + k * 256); their
+; entry into the blocks is the same every time, found once a span. The last segment (at most n
+; pixels, its exact point the span's last pixel) finds its own and divides.
+%macro SUBDIV_SPAN 2
     LOOP_ENTER L_FRAME
     mov edx, LOOP_ARG(L_FRAME)
     mov eax, [edx + FSUB_count]
@@ -100,6 +135,10 @@ fast_subdiv_loop_asm:
     mov dword [esp + L_ODD], 0
     mov ecx, [edx + FSUB_shift]
     mov [esp + L_SHIFT], ecx
+    mov eax, [edx + FSUB_stride]
+    mov [esp + L_STRIDE], eax
+    shl eax, cl
+    mov [esp + L_SEG_BYTES], eax        ; n * stride
     mov eax, 1
     shl eax, cl
     mov [esp + L_N], eax
@@ -108,9 +147,13 @@ fast_subdiv_loop_asm:
     fild dword [esp + L_D]
     fstp qword [esp + L_SEG_X]          ; n * 256, exact
     mov ecx, [esp + L_N]
-    shr ecx, 1                          ; a full segment's pairs
     xor edi, edi
-    PAIR_ENTRY edi, eax, entries
+%ifidn %1, rows
+    shr ecx, 1                          ; a full segment's pairs
+    PAIR_ENTRY edi, eax, %2
+%else
+    PIXEL_ENTRY eax, %2
+%endif
     mov [esp + L_FULL_BACK], edi
     mov [esp + L_FULL_BLOCKS], ecx
     mov eax, [esp + L_ENTRY]
@@ -171,22 +214,30 @@ fast_subdiv_loop_asm:
     xor edx, edx
 .last_draw:                             ; eax: du, edx: dv
     mov ecx, [esp + L_LEFT]
+    mov edi, [esp + L_DST]
+%ifidn %1, rows
     mov ebx, ecx
     and ebx, 1
     mov [esp + L_ODD], ebx
     shr ecx, 1                          ; pairs
-    mov edi, [esp + L_DST]
-    PAIR_ENTRY edi, ebx, entries        ; blocks, the first one partial
+    PAIR_ENTRY edi, ebx, %2             ; blocks, the first one partial
     CORE_LOAD                           ; (leaves ecx and edi)
     test ecx, ecx
     jz .odd_pixel                       ; no pair: one pixel
     PAIRS_AND_ODD .next
+%else
+    PIXEL_ENTRY ebx, %2                 ; blocks, the first one partial
+    CORE_LOAD
+    jmp [esp + L_ENTRY]
+    STRIDE_BLOCKS
+%endif
 .next:
     mov eax, [esp + L_N]
     mov ecx, [esp + L_LEFT]
     sub ecx, eax
     jle .done                           ; that was the last segment
-    add [esp + L_DST], eax
+    mov edx, [esp + L_SEG_BYTES]
+    add [esp + L_DST], edx
     mov [esp + L_LEFT], ecx
     mov edx, [esp + L_U1]
     mov [esp + L_U0], edx
@@ -197,9 +248,24 @@ fast_subdiv_loop_asm:
     jmp .last_segment
 .done:
     LOOP_LEAVE L_FRAME
+%endmacro
+
+; Rows go on here; any other stride to the column loop (the same frame and argument).
+global fast_subdiv_loop_asm
+fast_subdiv_loop_asm:
+    mov eax, [esp + 4]
+    cmp dword [eax + FSUB_stride], 1
+    jne fast_subdiv_column_asm
+    SUBDIV_SPAN rows, pair_entries
+
+fast_subdiv_column_asm:
+    SUBDIV_SPAN columns, column_entries
 
 section .rodata
 align 4
-entries:
+pair_entries:
     dd fast_subdiv_loop_asm.e0, fast_subdiv_loop_asm.e1, fast_subdiv_loop_asm.e2, fast_subdiv_loop_asm.e3
     dd fast_subdiv_loop_asm.e4, fast_subdiv_loop_asm.e5, fast_subdiv_loop_asm.e6, fast_subdiv_loop_asm.e7
+column_entries:
+    dd fast_subdiv_column_asm.e0, fast_subdiv_column_asm.e1, fast_subdiv_column_asm.e2, fast_subdiv_column_asm.e3
+    dd fast_subdiv_column_asm.e4, fast_subdiv_column_asm.e5, fast_subdiv_column_asm.e6, fast_subdiv_column_asm.e7

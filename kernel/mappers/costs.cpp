@@ -5,30 +5,30 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2049.2f, 477.47f, 40.319f}, // 6 scenes
-    {"exact", 2055.2f, 326.20f, 80.258f}, // 6 scenes
-    {"persp-subdiv-4", 2055.2f, 348.58f, 107.055f}, // 6 scenes
-    {"persp-subdiv-8", 2055.2f, 417.95f, 67.293f}, // 6 scenes
-    {"persp-subdiv-16", 2055.2f, 466.84f, 47.263f}, // 6 scenes
-    {"persp-subdiv-32", 2055.2f, 492.32f, 37.461f}, // 6 scenes
-    {"constant-depth", 2055.2f, 512.94f, 29.889f}, // 6 scenes
-    {"persp-adaptive-0.5", 2055.2f, 809.20f, 441.199f}, // 6 scenes
-    {"persp-adaptive-1", 2055.2f, 1154.76f, 51.359f}, // 6 scenes
-    {"persp-adaptive-2", 2055.2f, 1171.55f, 44.396f}, // 6 scenes
-    {"persp-adaptive-4", 2055.2f, 1181.89f, 40.577f}, // 6 scenes
-    {"fast-affine", 2047.2f, 163.28f, 4.199f}, // 6 scenes
-    {"fast-columns", 2053.9f, 257.26f, 5.465f}, // 6 scenes
-    {"fast-subdiv-8", 2080.2f, 369.26f, 12.245f}, // 6 scenes
-    {"fast-subdiv-16", 2080.2f, 378.84f, 8.353f}, // 6 scenes
-    {"fast-subdiv-32", 2080.2f, 383.56f, 6.538f}, // 6 scenes
-    {"fast-constant-depth", 2080.2f, 387.39f, 5.132f}, // 6 scenes
+    {"affine", 2049.2f, 477.65f, 40.316f}, // 6 scenes
+    {"exact", 2055.2f, 326.38f, 80.255f}, // 6 scenes
+    {"persp-subdiv-4", 2055.2f, 348.77f, 107.052f}, // 6 scenes
+    {"persp-subdiv-8", 2055.2f, 418.13f, 67.290f}, // 6 scenes
+    {"persp-subdiv-16", 2055.2f, 467.02f, 47.260f}, // 6 scenes
+    {"persp-subdiv-32", 2055.2f, 492.50f, 37.458f}, // 6 scenes
+    {"constant-depth", 2055.2f, 513.12f, 29.887f}, // 6 scenes
+    {"persp-adaptive-0.5", 2055.2f, 809.39f, 441.196f}, // 6 scenes
+    {"persp-adaptive-1", 2055.2f, 1154.94f, 51.356f}, // 6 scenes
+    {"persp-adaptive-2", 2055.2f, 1171.73f, 44.393f}, // 6 scenes
+    {"persp-adaptive-4", 2055.2f, 1182.08f, 40.574f}, // 6 scenes
+    {"fast-affine", 2044.2f, 163.28f, 4.199f}, // 6 scenes
+    {"fast-columns", 2051.9f, 257.26f, 5.465f}, // 6 scenes
+    {"fast-subdiv-8", 2077.2f, 394.13f, 12.363f}, // 6 scenes
+    {"fast-subdiv-16", 2077.2f, 403.87f, 8.406f}, // 6 scenes
+    {"fast-subdiv-32", 2077.2f, 408.67f, 6.560f}, // 6 scenes
+    {"fast-constant-depth", 2077.2f, 412.57f, 5.129f}, // 6 scenes
     {"xsharp-dda", 1687.3f, 387.56f, 37.675f}, // 5 scenes
-    {"xsharp-row-out", 1691.3f, 523.04f, 19.085f}, // 5 scenes
-    {"xsharp-column", 1693.2f, 494.35f, 11.511f}, // 5 scenes
+    {"xsharp-row-out", 1692.3f, 523.04f, 19.086f}, // 5 scenes
+    {"xsharp-column", 1694.2f, 494.35f, 11.512f}, // 5 scenes
     {"hecker-steptable", 2829.6f, 0.00f, 376.978f}, // 5 scenes
-    {"fatmap-256", 1746.7f, 179.29f, 12.702f}, // 4 scenes
-    {"fatmap-256-16", 1746.7f, 184.29f, 11.702f}, // 4 scenes
-    {"fatmap-lut", 1818.1f, 189.94f, 6.210f}, // 3 scenes
+    {"fatmap-256", 1764.4f, 179.38f, 12.704f}, // 4 scenes
+    {"fatmap-256-16", 1764.4f, 184.38f, 11.704f}, // 4 scenes
+    {"fatmap-lut", 1835.7f, 190.02f, 6.214f}, // 3 scenes
     {"quake-subdiv16", 2214.3f, 311.10f, 13.948f}, // 5 scenes
     {"quake-subdiv8", 2214.3f, 295.70f, 20.306f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},

@@ -41,7 +41,8 @@ void fast_subdiv_loop(const void* raw) {
         else if (d > 0) du = int32_t(u1 - u0) / d, dv = int32_t(v1 - v0) / d;
         uint32_t u = u0, v = v0;
         for (int32_t i = 0; i < len; ++i) {
-            *dst++ = texel256(a.texture, u, v);
+            *dst = texel256(a.texture, u, v);
+            dst += a.stride;
             u += uint32_t(du);
             v += uint32_t(dv);
         }
@@ -51,18 +52,24 @@ void fast_subdiv_loop(const void* raw) {
 }
 
 template <int N>
-void fast_subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t) {
+void fast_subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
     static_assert(N >= 2 && N <= 512 && (N & (N - 1)) == 0);
     const PolygonSetup& setup = c.setup;
-    const double y = centre_y(setup, s.y);
+    const double x = centre_x(setup, s.x), y = centre_y(setup, s.y);
+    const bool rows = c.axis == Axis::Rows;
     FastSubdivArgs a;
     a.dst = dst;
+    a.stride = stride;
     a.count = s.count;
     a.texture = c.tex.aligned256;
     a.shift = log2(N);
-    a.x = centre_x(setup, s.x);
+    a.x = rows ? x : y;
     const Plane* planes[3] = {&setup.q, &setup.pu, &setup.pv};
-    for (int i = 0; i < 3; ++i) a.c[i] = planes[i]->a0 + planes[i]->gy * y, a.g[i] = planes[i]->gx;
+    for (int i = 0; i < 3; ++i) {
+        const Plane& p = *planes[i];
+        a.c[i] = rows ? p.a0 + p.gy * y : p.a0 + p.gx * x;
+        a.g[i] = rows ? p.gx : p.gy;
+    }
     c.loop(&a);
 }
 
@@ -78,13 +85,15 @@ ErrorBound fast_subdiv_bound(const BoundContext& c, const Vertex* vertices, int 
 }
 
 // The loop's random cases (core/selftest.h): planes from real triangles and extremes (random_planes),
-// rows anywhere on and off the screen, segments of 2 to 512 pixels (512: one a span).
+// rows and columns (strides either way) anywhere on and off the screen, segments of 2 to 512 pixels
+// (512: one a span).
 LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<FastSubdivArgs>(m, other, seed, cases, buf, [&](Random& r, FastSubdivArgs& a) {
         a.count = random_count(r, 0, 3, 320);
         a.texture = check_aligned_texture(buf);
         a.shift = r.below(4) ? r.range(3, 5) : r.range(1, 9);
-        CheckWindow window = place_span(buf, a, 1);
+        a.stride = random_stride(r);
+        CheckWindow window = place_span(buf, a, a.stride);
         double q[3], pu[3], pv[3];
         random_planes(r, q, pu, pv);
         const double y = double(r.range(-90000, 90000)) + 128;
@@ -98,7 +107,7 @@ LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32
 #if defined(MODEXLAB_OFFSETS)
 // The block layout asm/fastsubdiv.asm reads (core/asm_offsets.h).
 void fastsubdiv_offsets() {
-    ASM_FIELDS(FSUB, FastSubdivArgs, dst, count, texture, shift, x, c, g)
+    ASM_FIELDS(FSUB, FastSubdivArgs, dst, stride, count, texture, shift, x, c, g)
     ASM_CONSTANT(SUBPIXEL_ONE, SUBPIXEL_ONE);
 }
 #endif

@@ -61,19 +61,20 @@ const Mapper MAPPERS[] = {
      fast::draw_columns, check_fast_column, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-subdiv-8", "ours", "exact every 8 pixels in x87, the fast 8:16 core between, one NASM loop a span",
      "perspective-correct at every 8th pixel and the last; 16.16 steps from the ends' difference; exact coverage; repeating "
-     "textures with power-of-two sides up to 256 (tiled over 256 x 256)",
-     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, fast_subdiv_span<8>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
+     "textures with power-of-two sides up to 256 (tiled over 256 x 256); rows in pairs, columns a pixel at a time",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_subdiv_span<8>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
      fast_subdiv_bound<8>},
     {"fast-subdiv-16", "ours", "exact every 16 pixels in x87, the fast 8:16 core between", "as fast-subdiv-8, every 16th pixel",
-     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, fast_subdiv_span<16>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_subdiv_span<16>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
      fast_subdiv_bound<16>},
     {"fast-subdiv-32", "ours", "exact every 32 pixels in x87, the fast 8:16 core between", "as fast-subdiv-8, every 32nd pixel",
-     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, fast_subdiv_span<32>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_subdiv_span<32>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
      fast_subdiv_bound<32>},
-    {"fast-constant-depth", "ours", "Doom's floors on the fast core: exact at both ends of each row in x87, the 8:16 core between",
-     "exact u, v at each row's first and last pixel centre, 16.16 steps between: exact up to rounding along rows of constant depth "
-     "(floors and ceilings), its bound says how far off elsewhere; rows only; exact coverage; textures as fast-affine",
-     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, fast_subdiv_span<FAST_SPAN_LONG>, TWIN_AND_ASM(fast_subdiv_loop), nullptr,
+    {"fast-constant-depth", "ours", "Doom's floors and walls on the fast core: exact at both ends of each row or column in x87, the 8:16 core between",
+     "exact u, v at each span's first and last pixel centre, 16.16 steps between: exact up to rounding along lines of constant "
+     "depth (floors and ceilings by rows, upright walls by columns), its bound says how far off elsewhere; exact coverage; textures "
+     "as fast-affine",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_subdiv_span<FAST_SPAN_LONG>, TWIN_AND_ASM(fast_subdiv_loop), nullptr,
      check_fast_subdiv, fast_subdiv_bound<FAST_SPAN_LONG>, false, SPANS_ASKED},
     {"xsharp-dda", "classic", "Abrash, Black Book listing 57.1 (X-Sharp 21, C)",
      "affine; whole-pixel vertices, X-Sharp's fill convention; half-step prestep, rounds to the nearest texel; cannot wrap",
