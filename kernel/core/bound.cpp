@@ -168,32 +168,78 @@ void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRec
     walk_polygon(out, axis, clip);
 }
 
-PolygonSpread& prepared_spread(PreparedPolygon* p) {
-    if (!p->spread_known) polygon_spread(p->setup, &p->spread);
+PolygonSpread& prepared_spread(PreparedPolygon* p, const ClipRect& clip) {
+    if (!p->spread_known) polygon_spread(p->setup, clip, &p->spread);
     p->spread_known = true;
     return p->spread;
 }
 
 namespace {
 
-// A vertex of the polygon (its edge i's start) relative to the reference vertex, where the planes
-// are evaluated.
+// A corner of the spread (PolygonSpread::corner_x, corner_y): relative to the reference vertex,
+// where the planes are evaluated.
 struct Corner {
     double x = 0, y = 0;
     Corner() = default;
-    Corner(const PolygonSetup& s, int i) : x(double(s.edges[i].px - s.ref_x)), y(double(s.edges[i].py - s.ref_y)) {}
+    Corner(const PolygonSpread& p, int i) : x(p.corner_x[i]), y(p.corner_y[i]) {}
 };
 double terms(const Plane& p, const Corner& c) { return magnitude(p.a0) + magnitude(p.gy * c.y) + magnitude(p.gx * c.x); }
+// How much a plane may change over `slack` subpixels in any direction.
+double drift(const Plane& p, double slack) { return (magnitude(p.gx) + magnitude(p.gy)) * slack; }
+
+// Keeps the part of the polygon (n corners in x, y) on one side of the line x = at (axis 0) or
+// y = at (axis 1): where side > 0, the part at or above it. The cut corners by one division each.
+int cut(double* x, double* y, int n, int axis, double at, double side) {
+    double* a = axis ? y : x;
+    double* b = axis ? x : y;
+    double ka[MAX_POLYGON_VERTICES + 4], kb[MAX_POLYGON_VERTICES + 4];
+    int kept = 0;
+    for (int i = 0; i < n; ++i) {
+        const int j = i + 1 < n ? i + 1 : 0;
+        const bool in_i = (a[i] - at) * side >= 0, in_j = (a[j] - at) * side >= 0;
+        if (in_i) ka[kept] = a[i], kb[kept++] = b[i];
+        if (in_i != in_j) ka[kept] = at, kb[kept++] = b[i] + (at - a[i]) * (b[j] - b[i]) / (a[j] - a[i]);
+    }
+    for (int i = 0; i < kept; ++i) a[i] = ka[i], b[i] = kb[i];
+    return kept;
+}
+
+// The spread's corners: the polygon's vertices where its box lies inside the clip widened by half
+// a pixel (the pixel centres drawn lie at least half a pixel inside that), else the polygon cut by
+// it. A cut corner is rounded: each cut moves it along its edge by a rounding of the division, at
+// most a few units in the last place of the larger coordinate, and a later cut of an edge through
+// it keeps it within that of the edge; so every pixel centre drawn lies in the cut polygon or
+// within `slack` of it (a pixel centre near a cut corner lies half a pixel inside the cut line).
+void spread_corners(const PolygonSetup& s, const ClipRect& clip, PolygonSpread* o) {
+    const int64_t lo[2] = {int64_t(clip.x0) * SUBPIXEL_ONE, int64_t(clip.y0) * SUBPIXEL_ONE};
+    const int64_t hi[2] = {int64_t(clip.x1) * SUBPIXEL_ONE, int64_t(clip.y1) * SUBPIXEL_ONE};
+    o->corners = s.edge_count;
+    o->slack = 0;
+    for (int i = 0; i < s.edge_count; ++i) o->corner_x[i] = double(s.edges[i].px - s.ref_x), o->corner_y[i] = double(s.edges[i].py - s.ref_y);
+    if (s.min_x >= lo[0] && s.max_x <= hi[0] && s.min_y >= lo[1] && s.max_y <= hi[1]) return;
+    const double ref[2] = {double(s.ref_x), double(s.ref_y)};
+    for (int axis = 0; axis < 2 && o->corners > 0; ++axis) {
+        o->corners = cut(o->corner_x, o->corner_y, o->corners, axis, double(lo[axis]) - ref[axis], 1);
+        o->corners = cut(o->corner_x, o->corner_y, o->corners, axis, double(hi[axis]) - ref[axis], -1);
+    }
+    double far = 0;
+    for (int i = 0; i < o->corners; ++i) far = larger(far, magnitude(o->corner_x[i]) + magnitude(o->corner_y[i]));
+    for (int i = 0; i < s.edge_count; ++i) far = larger(far, magnitude(double(s.edges[i].px - s.ref_x)) + magnitude(double(s.edges[i].py - s.ref_y)));
+    o->slack = 64 * EPSILON * far;
+}
 
 }  // namespace
 
-void polygon_spread(const PolygonSetup& s, PolygonSpread* out) {
+void polygon_spread(const PolygonSetup& s, const ClipRect& clip, PolygonSpread* out) {
     PolygonSpread& o = *out;
+    spread_corners(s, clip, &o);
     const Plane* exact[2] = {&s.pu, &s.pv};
     const Plane* affine[2] = {&s.u, &s.v};
-    Corner far;  // the largest |x| and |y| of the vertices: each plane's terms at most |a0| + |gx| |x| + |gy| |y| there
-    for (int i = 0; i < s.edge_count; ++i) {
-        const Corner c(s, i);
+    Corner far;  // the largest |x| and |y| of the corners: each plane's terms at most |a0| + |gx| |x| + |gy| |y| there
+    o.q_min = o.q_max = 0;  // (no corner: nothing drawn, and no bound from the spread)
+    for (int t = 0; t < 2; ++t) o.t_min[t] = o.t_max[t] = o.residual[t] = o.affine_abs[t] = 0;
+    for (int i = 0; i < o.corners; ++i) {
+        const Corner c(o, i);
         const double q = s.q.at(c.x, c.y);
         o.q_min = i ? (q < o.q_min ? q : o.q_min) : q;
         o.q_max = i ? larger(q, o.q_max) : q;
@@ -209,20 +255,34 @@ void polygon_spread(const PolygonSetup& s, PolygonSpread* out) {
     const double scale_q = terms(s.q, far), scale_p[2] = {terms(s.pu, far), terms(s.pv, far)}, scale_l[2] = {terms(s.u, far), terms(s.v, far)};
     // Q's extremes widened by its rounding (a Q_min at or below 0 after that: no bound from the
     // spread); each vertex value within the reference's rounding of itself, and L within its terms'
-    const double q_err = 8 * EPSILON * scale_q;
+    // (and by what the corners' slack may do to it)
+    const double q_err = 8 * EPSILON * scale_q + drift(s.q, o.slack);
     o.q_min -= q_err, o.q_max += q_err;
     for (int t = 0; t < 2; ++t) {
+        double moved = 0, l_moved = 0;  // what the slack may do to t and L (nothing: the polygon uncut)
+        if (o.slack > 0) {
+            moved = (drift(*exact[t], o.slack) + larger(magnitude(o.t_min[t]), magnitude(o.t_max[t])) * drift(s.q, o.slack)) / o.q_min;
+            l_moved = drift(*affine[t], o.slack);
+            o.t_min[t] -= moved, o.t_max[t] += moved;
+            o.affine_abs[t] += l_moved;
+        }
         o.t_abs[t] = larger(magnitude(o.t_min[t]), magnitude(o.t_max[t]));
         o.reference[t] = 2 * (4 * EPSILON * (scale_p[t] + o.t_abs[t] * scale_q) / o.q_min + 2 * EPSILON * o.t_abs[t]);
-        o.evaluation[t] = o.reference[t] + 4 * EPSILON * scale_l[t];
+        o.evaluation[t] = o.reference[t] + 4 * EPSILON * scale_l[t] + moved + l_moved;
     }
-    // pixels whose centres lie in the box: at most its extent plus one along each axis, each
-    // between the floors of the box's ends
+    // pixels whose centres lie in the box (the polygon's, inside the clip's): at most its extent
+    // plus one along each axis, each between the floors of the box's ends
     const double one = double(SUBPIXEL_ONE);
-    o.lines[0] = double(s.max_x - s.min_x) / one + 1;
-    o.lines[1] = double(s.max_y - s.min_y) / one + 1;
-    const double x_lo = double(floor_div(s.min_x, SUBPIXEL_ONE)), x_hi = double(floor_div(s.max_x, SUBPIXEL_ONE));
-    const double y_lo = double(floor_div(s.min_y, SUBPIXEL_ONE)), y_hi = double(floor_div(s.max_y, SUBPIXEL_ONE));
+    auto inside = [](int64_t v, int32_t lo, int32_t hi) {
+        const int64_t l = int64_t(lo) * SUBPIXEL_ONE, h = int64_t(hi) * SUBPIXEL_ONE;
+        return v < l ? l : v > h ? h : v;
+    };
+    const int64_t min_x = inside(s.min_x, clip.x0, clip.x1), max_x = inside(s.max_x, clip.x0, clip.x1);
+    const int64_t min_y = inside(s.min_y, clip.y0, clip.y1), max_y = inside(s.max_y, clip.y0, clip.y1);
+    o.lines[0] = double(max_x - min_x) / one + 1;
+    o.lines[1] = double(max_y - min_y) / one + 1;
+    const double x_lo = double(floor_div(min_x, SUBPIXEL_ONE)), x_hi = double(floor_div(max_x, SUBPIXEL_ONE));
+    const double y_lo = double(floor_div(min_y, SUBPIXEL_ONE)), y_hi = double(floor_div(max_y, SUBPIXEL_ONE));
     const double ax = s.u_fx.x0, ay = s.u_fx.y0;
     o.reach = larger(magnitude(x_lo - ax), magnitude(x_hi - ax)) + larger(magnitude(y_lo - ay), magnitude(y_hi - ay));
     o.steps_known = false;
@@ -238,8 +298,9 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
     // rounding and what P's and Q's do to it (|P_a| and |Q_a| times their terms); Q, P and their
     // terms at a vertex once for both t and both axes a
     double lo[2][2] = {}, hi[2][2] = {}, err[2][2] = {};
-    for (int i = 0; i < s.edge_count; ++i) {
-        const Corner c(s, i);
+    const double moved_q = drift(s.q, o.slack), moved_p[2] = {drift(s.pu, o.slack), drift(s.pv, o.slack)};  // (the slack's)
+    for (int i = 0; i < o.corners; ++i) {
+        const Corner c(o, i);
         const double q = s.q.at(c.x, c.y), q_terms = terms(s.q, c);
         for (int t = 0; t < 2; ++t) {
             const double pt = exact[t]->at(c.x, c.y), p_terms = terms(*exact[t], c);
@@ -248,7 +309,8 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
                 const double k = (pa * q - pt * qa) * one;
                 lo[t][a] = i ? (k < lo[t][a] ? k : lo[t][a]) : k, hi[t][a] = i ? larger(k, hi[t][a]) : k;
                 err[t][a] = larger(err[t][a], (magnitude(pa * q) + magnitude(pt * qa) + magnitude(pa) * q_terms + magnitude(qa) * p_terms) *
-                                                  4 * EPSILON * one);
+                                                      4 * EPSILON * one +
+                                                  (magnitude(pa) * moved_q + magnitude(qa) * moved_p[t]) * one);
             }
         }
     }
@@ -281,9 +343,10 @@ double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double round
     if (texels == 0 || (budget >= 0 && texels <= budget)) return texels;
     // Within the budget only over a footprint of texels / budget everywhere; the least footprint
     // spread_steps finds is at most the footprint at the reference vertex (|K| there at least the
-    // least |K|, Q there at most the largest). Where that one is below it, the bound is above the
-    // budget whatever the steps say: asked so, stop here (a value above the budget, as settled).
-    if (budget > 0) {
+    // least |K|, Q there at most the largest), where that is one of the spread's corners (the
+    // polygon uncut: no slack). Where that one is below it, the bound is above the budget whatever
+    // the steps say: asked so, stop here (a value above the budget, as settled).
+    if (budget > 0 && p.slack == 0) {
         const double at_vertex = texel_footprint(s, 0, 0) * (1 + 1e-6) + 1e-9;
         if (at_vertex < texels / budget) return texels / larger(1.0, at_vertex);
     }

@@ -29,8 +29,10 @@ struct ErrorBound {
 // The whole polygon at once (docs/accuracy.md §4b, "The whole polygon"): the extremes over it of
 // what the span bounds take span by span. Linear functions (Q, the affine planes, K below), P/Q
 // (monotone along any line where Q > 0) and sums of magnitudes of linear terms take their extremes
-// over a convex polygon at its vertices, so all of it comes from the vertices. Looser than span by
-// span, and cheap: auto asks it first and walks only the polygons it does not settle.
+// over a convex polygon at its vertices, so all of it comes from the vertices: the polygon's own,
+// or, where it reaches outside the clip, those of its part that holds every pixel drawn (a polygon
+// far larger than the screen says nothing useful from its own). Looser than span by span, and
+// cheap: auto asks it first and walks only the polygons it does not settle.
 struct PolygonSpread {
     double q_min, q_max;                 // Q
     double t_min[2], t_max[2], t_abs[2]; // the exact u and v (t = 0, 1): least, largest, largest magnitude
@@ -40,12 +42,18 @@ struct PolygonSpread {
     double reference[2];                 // the reference's own rounding at any pixel (exact_rounding)
     double lines[2];                     // the most pixels a row (a = 0) or a column (a = 1) can have
     double reach;                        // the most |x - x0| + |y - y0| of a pixel from the 16.16 anchor
+    // the corners all this is taken over (relative to the reference vertex, subpixels): the
+    // polygon's, or, where it reaches outside the clip, those of its part inside the clip widened
+    // by half a pixel, the cut ones within `slack` subpixels of where they should be (0: uncut)
+    double corner_x[MAX_POLYGON_VERTICES + 4], corner_y[MAX_POLYGON_VERTICES + 4];
+    int corners;
+    double slack;
     // the steps, when a bound first needs them (spread_steps)
     bool steps_known = false;
     double k_max[2][2];                  // |K| = |P_a Q - P Q_a| per pixel, for t along axis a (0: x, 1: y)
     double footprint;                    // the smallest footprint over the polygon, from below
 };
-void polygon_spread(const PolygonSetup& s, PolygonSpread* out);
+void polygon_spread(const PolygonSetup& s, const ClipRect& clip, PolygonSpread* out);
 void spread_steps(const PolygonSetup& s, PolygonSpread* p);
 
 // The deviation bound over the polygon of a mapper whose u and v follow the affine planes to within
@@ -116,8 +124,8 @@ void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out);
 void walk_polygon(PreparedPolygon* p, Axis axis, const ClipRect& clip);
 // Both.
 void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out);
-// Its spread, computed once.
-PolygonSpread& prepared_spread(PreparedPolygon* p);
+// Its spread inside the clip, computed once (the clip is the same for every bound asked of it).
+PolygonSpread& prepared_spread(PreparedPolygon* p, const ClipRect& clip);
 
 struct BoundContext {
     const Mapper& mapper;
@@ -268,10 +276,10 @@ bool whole_within(const BoundContext& c, const Vertex* vertices, int count, W&& 
     PolygonSpread* spread = &own_spread;
     if (c.prepared) {
         if (c.prepared->status != SetupStatus::Ok) return false;  // the walk says why
-        s = &c.prepared->setup, spread = &prepared_spread(c.prepared);
+        s = &c.prepared->setup, spread = &prepared_spread(c.prepared, c.clip);
     } else {
         if (setup_polygon(vertices, count, &own_setup, PLANES_ALL) != SetupStatus::Ok) return false;
-        polygon_spread(own_setup, &own_spread);
+        polygon_spread(own_setup, c.clip, &own_spread);
     }
     double footprint = whole(*spread, *s);
     if (!(footprint <= c.budget)) return false;

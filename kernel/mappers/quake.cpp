@@ -135,7 +135,7 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
     BoundContext with = c;
     if (!with.prepared) set_up_polygon(vertices, count, &own), with.prepared = &own;
     if (with.prepared->status != SetupStatus::Ok) return b;
-    const SegmentArithmetic a = arithmetic(c, with.prepared->setup, prepared_spread(with.prepared), shift, 1 << SHIFT);
+    const SegmentArithmetic a = arithmetic(c, with.prepared->setup, prepared_spread(with.prepared, c.clip), shift, 1 << SHIFT);
     if (a.fixed < NO_BOUND) return segments_bound(with, vertices, count, 1 << SHIFT, a);
     b.draws = b.exact_coverage = true;
     b.footprint = NO_BOUND;

@@ -77,12 +77,16 @@ void runs_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride
 }
 
 // Whether 16.16 holds chords of up to `steps` steps anywhere on the polygon (the whole-polygon
-// bounds): from the largest |t| (clamp; repeat reduces the start first) by the largest |t'|.
+// bounds): from the largest |t| (clamp; repeat reduces the start first) by the largest |t'|; a
+// chord's ends, two exact values at pixels drawn, at most the spread's range of t apart (each
+// within the reference's rounding of the exact value, the range's ends within their evaluation's).
 bool chords_fit(const BoundContext& c, PolygonSpread& p, const PolygonSetup& s, double steps, double chord) {
     const int32_t size[2] = {c.tex.width, c.tex.height};
     for (int t = 0; t < 2; ++t) {
         const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t], step = spread_max_step(p, s, t, c.axis);
-        if (!fits_16_16(start, step, steps, size[t], c.tex.wrap) || !(step * (steps + 1) < chord)) return false;
+        const double range = (p.t_max[t] - p.t_min[t] + 2 * (p.evaluation[t] + p.reference[t])) * (1 + 1e-9);
+        const double reach = step * (steps + 1) < range ? step * (steps + 1) : range;
+        if (!fits_16_16(start, step, steps, size[t], c.tex.wrap) || !(reach < chord)) return false;
     }
     return true;
 }

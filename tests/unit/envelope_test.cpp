@@ -33,7 +33,8 @@ bool spread_deviation(const Vertex* t, double d[2]) {
     if (setup_polygon(t, 3, &s, PLANES_ALL) != SetupStatus::Ok || !envelope_guards(s)) return false;
     EXPECT_TRUE(planes_fit_16_16(s)) << "the guards hold the steps in 16.16";
     PolygonSpread p;
-    polygon_spread(s, &p);
+    constexpr ClipRect EVERYWHERE{-(1 << 24), -(1 << 24), 1 << 24, 1 << 24};  // the whole triangle, uncut
+    polygon_spread(s, EVERYWHERE, &p);
     EXPECT_GT(p.q_min, 0);
     spread_planes_deviation(p, (1 + p.reach) * HALF_ULP_16_16, d);
     return true;
