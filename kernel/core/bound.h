@@ -52,6 +52,7 @@ struct PolygonSpread {
     bool steps_known = false;
     double k_max[2][2];                  // |K| = |P_a Q - P Q_a| per pixel, for t along axis a (0: x, 1: y)
     double footprint;                    // the smallest footprint over the polygon, from below
+    double least_k;                      // its numerator: the largest least |K| (footprint = least_k / Q_max^2)
 };
 void polygon_spread(const PolygonSetup& s, const ClipRect& clip, PolygonSpread* out);
 void spread_steps(const PolygonSetup& s, PolygonSpread* p);
@@ -94,7 +95,9 @@ struct EnvelopeBound {
     double footprint = NO_BOUND;
 };
 EnvelopeBound envelope_bound(const TriangleEnvelope& e);
-double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, double h, double rounding);
+// With a budget (at or above 0) the chords' bound goes by bands of Q only where the whole polygon's
+// is above it.
+double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, double h, double rounding, double budget);
 // The largest |t'| along the axis over the polygon, from above.
 double spread_max_step(PolygonSpread& p, const PolygonSetup& s, int t, Axis axis);
 

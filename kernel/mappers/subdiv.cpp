@@ -155,7 +155,7 @@ ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int cou
     const double length = N < BOUND_PIECE ? N : BOUND_PIECE;
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {  // the coarse bound below, over the polygon
         const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
-        return !a.wraps || chords_fit(c, p, s, steps, a.chord) ? spread_chords_bound(p, s, c.axis, h, a.at(steps)) : NO_BOUND;
+        return !a.wraps || chords_fit(c, p, s, steps, a.chord) ? spread_chords_bound(p, s, c.axis, h, a.at(steps), c.budget) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
@@ -195,7 +195,7 @@ ErrorBound adaptive_bound(const BoundContext& c, const Vertex* vertices, int cou
     const double budget = QUARTERS / 4.0;
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
         const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, steps = ADAPTIVE_LONGEST - 1 < last ? ADAPTIVE_LONGEST - 1 : last;
-        return chords_fit(c, p, s, steps, 1e300) ? larger(budget, spread_chords_bound(p, s, c.axis, 1, 2 * HALF_ULP_16_16)) : NO_BOUND;
+        return chords_fit(c, p, s, steps, 1e300) ? larger(budget, spread_chords_bound(p, s, c.axis, 1, 2 * HALF_ULP_16_16, c.budget)) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         const SpanLine l = span_line(s, c.axis, span);
