@@ -189,14 +189,18 @@ double drift(const Plane& p, double slack) { return (magnitude(p.gx) + magnitude
 
 // Keeps the part of the polygon (n corners in x, y) on one side of the line x = at (axis 0) or
 // y = at (axis 1): where side > 0, the part at or above it. The cut corners by one division each.
+// A convex polygon gains at most one corner a cut; -1 where the corners would not fit (a polygon
+// the rounding of earlier cuts made crossed more than twice: the caller keeps the vertices).
 int cut(double* x, double* y, int n, int axis, double at, double side) {
+    constexpr int ROOM = PolygonSpread::CORNERS;
     double* a = axis ? y : x;
     double* b = axis ? x : y;
-    double ka[MAX_POLYGON_VERTICES + 4], kb[MAX_POLYGON_VERTICES + 4];
+    double ka[ROOM], kb[ROOM];
     int kept = 0;
     for (int i = 0; i < n; ++i) {
         const int j = i + 1 < n ? i + 1 : 0;
         const bool in_i = (a[i] - at) * side >= 0, in_j = (a[j] - at) * side >= 0;
+        if (kept + 2 > ROOM) return -1;
         if (in_i) ka[kept] = a[i], kb[kept++] = b[i];
         if (in_i != in_j) ka[kept] = at, kb[kept++] = b[i] + (at - a[i]) * (b[j] - b[i]) / (a[j] - a[i]);
     }
@@ -213,15 +217,19 @@ int cut(double* x, double* y, int n, int axis, double at, double side) {
 void spread_corners(const PolygonSetup& s, const ClipRect& clip, PolygonSpread* o) {
     const int64_t lo[2] = {int64_t(clip.x0) * SUBPIXEL_ONE, int64_t(clip.y0) * SUBPIXEL_ONE};
     const int64_t hi[2] = {int64_t(clip.x1) * SUBPIXEL_ONE, int64_t(clip.y1) * SUBPIXEL_ONE};
-    o->corners = s.edge_count;
-    o->slack = 0;
-    for (int i = 0; i < s.edge_count; ++i) o->corner_x[i] = double(s.edges[i].px - s.ref_x), o->corner_y[i] = double(s.edges[i].py - s.ref_y);
+    auto vertices = [&] {
+        o->corners = s.edge_count;
+        o->slack = 0;
+        for (int i = 0; i < s.edge_count; ++i) o->corner_x[i] = double(s.edges[i].px - s.ref_x), o->corner_y[i] = double(s.edges[i].py - s.ref_y);
+    };
+    vertices();
     if (s.min_x >= lo[0] && s.max_x <= hi[0] && s.min_y >= lo[1] && s.max_y <= hi[1]) return;
     const double ref[2] = {double(s.ref_x), double(s.ref_y)};
-    for (int axis = 0; axis < 2 && o->corners > 0; ++axis) {
-        o->corners = cut(o->corner_x, o->corner_y, o->corners, axis, double(lo[axis]) - ref[axis], 1);
-        o->corners = cut(o->corner_x, o->corner_y, o->corners, axis, double(hi[axis]) - ref[axis], -1);
-    }
+    for (int axis = 0; axis < 2 && o->corners > 0; ++axis)
+        for (int end = 0; end < 2 && o->corners > 0; ++end) {
+            o->corners = cut(o->corner_x, o->corner_y, o->corners, axis, double(end ? hi[axis] : lo[axis]) - ref[axis], end ? -1 : 1);
+            if (o->corners < 0) return vertices();
+        }
     double far = 0;
     for (int i = 0; i < o->corners; ++i) far = larger(far, magnitude(o->corner_x[i]) + magnitude(o->corner_y[i]));
     for (int i = 0; i < s.edge_count; ++i) far = larger(far, magnitude(double(s.edges[i].px - s.ref_x)) + magnitude(double(s.edges[i].py - s.ref_y)));

@@ -45,7 +45,8 @@ struct PolygonSpread {
     // the corners all this is taken over (relative to the reference vertex, subpixels): the
     // polygon's, or, where it reaches outside the clip, those of its part inside the clip widened
     // by half a pixel, the cut ones within `slack` subpixels of where they should be (0: uncut)
-    double corner_x[MAX_POLYGON_VERTICES + 4], corner_y[MAX_POLYGON_VERTICES + 4];
+    static constexpr int CORNERS = MAX_POLYGON_VERTICES + 4;  // (four cuts of a convex polygon)
+    double corner_x[CORNERS], corner_y[CORNERS];
     int corners;
     double slack;
     // the steps, when a bound first needs them (spread_steps)

@@ -150,17 +150,21 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         cost[list.certain] = ceiling0, live = list.certain + 1;
     }
     const bool* walks = list.walks;
-    bool asked[2 * MAPPER_LIMIT];
-    for (int k = 0; k < live; ++k) asked[k] = false;
-    // the cheapest candidate not yet asked whose cost is below `ceiling` (ties: the earlier), or -1
-    auto cheapest = [&](double ceiling) {
+    // the costs as whole instructions for the search below (integer compares: it scans the
+    // candidates once for each one it asks); NOT_LIVE: asked already, or unpriced
+    constexpr int32_t NOT_LIVE = 0x7FFFFFFF;
+    auto price_of = [](double c) { return c < 2e9 ? int32_t(c) : NOT_LIVE; };
+    int32_t price[2 * MAPPER_LIMIT];
+    for (int k = 0; k < live; ++k) price[k] = price_of(cost[k]);
+    // the cheapest candidate not yet asked whose price is below `ceiling` (ties: the earlier), or -1
+    auto cheapest = [&](int32_t ceiling) {
         int best = -1;
         for (int k = 0; k < live; ++k)
-            if (!asked[k] && cost[k] < ceiling && (best < 0 || cost[k] < cost[best])) best = k;
+            if (price[k] < ceiling) best = k, ceiling = price[k];
         return best;
     };
     auto ask = [&](int k, bool whole_only) {
-        asked[k] = true;
+        price[k] = NOT_LIVE;
         const Mapper& m = MAPPERS[list.row[k]];
         BoundContext c{m, tex, list.axis[k], target.clip, budget.max_error < 0 ? NO_BOUND : budget.max_error, prepared, whole_only};
         ErrorBound b = m.bound(c, vertices, count);
@@ -172,20 +176,19 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     // then the cheaper ones proven span by span, by their cost with the proof's, as long as that is
     // below the first's
     int before[2 * MAPPER_LIMIT], n = 0;
-    double ceiling = 1e300;
-    for (int k = cheapest(1e300); k >= 0; k = cheapest(1e300)) {
+    int32_t ceiling = NOT_LIVE;
+    for (int k = cheapest(NOT_LIVE); k >= 0; k = cheapest(NOT_LIVE)) {
         if (walks[k]) {
-            asked[k] = true;
+            price[k] = NOT_LIVE;
         } else if (ask(k, true)) {
-            ceiling = cost[k];
+            ceiling = price_of(cost[k]);
             break;
         }
         if (list.spans[k]) before[n++] = k;
     }
     for (int i = 0; i < n; ++i) {
         const int k = before[i];
-        asked[k] = false;
-        if (!walks[k]) cost[k] += BOUND_SPAN_COST * size[int(list.axis[k])].spans;
+        price[k] = price_of(walks[k] ? cost[k] : cost[k] + BOUND_SPAN_COST * size[int(list.axis[k])].spans);
     }
     for (int k; n > 0 && (k = cheapest(ceiling)) >= 0;)
         if (ask(k, false)) break;
