@@ -94,6 +94,10 @@ SegmentArithmetic arithmetic(const BoundContext& c, const PolygonSetup& s, const
     a.wraps = false;
     a.per_step = UNIT;
     a.fixed = NO_BOUND;
+    if (p.corners == 0) {  // nothing of the polygon inside the clip: no pixel to bound
+        a.fixed = 0;
+        return a;
+    }
     if (!(p.q_min > 0)) return a;
     // every term summed into s/z, t/z and 1/z at a pixel of the clip: the plane at pixel (0, 0)
     // (two products, two sums), the rows down and the pixels across (two each), the segments' steps
