@@ -153,7 +153,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     // the costs as whole instructions for the search below (integer compares: it scans the
     // candidates once for each one it asks); NOT_LIVE: asked already, or unpriced
     constexpr int32_t NOT_LIVE = 0x7FFFFFFF;
-    auto price_of = [](double c) { return c < 2e9 ? int32_t(c) : NOT_LIVE; };
+    auto price_of = [](double c) { return c < 2e9 ? (c > -2e9 ? int32_t(c) : -NOT_LIVE) : NOT_LIVE; };
     int32_t price[2 * MAPPER_LIMIT];
     for (int k = 0; k < live; ++k) price[k] = price_of(cost[k]);
     // the cheapest candidate not yet asked whose price is below `ceiling` (ties: the earlier), or -1
