@@ -186,6 +186,10 @@ struct Corner {
 double terms(const Plane& p, const Corner& c) { return magnitude(p.a0) + magnitude(p.gy * c.y) + magnitude(p.gx * c.x); }
 // How much a plane may change over `slack` subpixels in any direction.
 double drift(const Plane& p, double slack) { return (magnitude(p.gx) + magnitude(p.gy)) * slack; }
+// From the spread's steps (spread_steps): the largest |t'| along axis a where Q is at least q, from
+// above, and the smallest footprint where Q is at most q, from below.
+double max_step_at(const PolygonSpread& p, int t, int a, double q) { return p.k_max[t][a] / (q * q) * (1 + 1e-9); }
+double footprint_at(const PolygonSpread& p, double q) { return p.least_k > 0 ? p.least_k / (q * q) * (1 - 1e-9) : 0.0; }
 
 // Keeps the part of the polygon (n corners in x, y) on one side of the line x = at (axis 0) or
 // y = at (axis 1): where side > 0, the part at or above it. The cut corners by one division each.
@@ -331,7 +335,7 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
             o.footprint = larger(o.footprint, (least - err[t][a]) * (1 - 1e-9));
         }
     o.least_k = o.footprint > 0 && o.q_min > 0 ? o.footprint : 0.0;
-    o.footprint = o.least_k > 0 ? o.least_k / (o.q_max * o.q_max) * (1 - 1e-9) : 0.0;
+    o.footprint = footprint_at(o, o.q_max);
 }
 
 void spread_planes_deviation(const PolygonSpread& p, double rounding, double d[2]) {
@@ -416,7 +420,7 @@ void envelope_deviation(const TriangleEnvelope& e, double d[2]) {
 
 double spread_max_step(PolygonSpread& p, const PolygonSetup& s, int t, Axis axis) {
     spread_steps(s, &p);
-    return p.k_max[t][axis == Axis::Rows ? 0 : 1] / (p.q_min * p.q_min) * (1 + 1e-9);
+    return max_step_at(p, t, axis == Axis::Rows ? 0 : 1, p.q_min);
 }
 
 double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, double h, double rounding, double budget) {
@@ -428,10 +432,10 @@ double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, d
     auto over = [&](double q_lo, double q_hi) {
         double d[2];
         for (int t = 0; t < 2; ++t) {
-            const double curvature = p.k_max[t][a] / (q_lo * q_lo) * (1 + 1e-9) * 2 * qa / q_lo;
+            const double curvature = max_step_at(p, t, a, q_lo) * 2 * qa / q_lo;
             d[t] = h * h / 8 * curvature * (1 + 1e-9) + rounding + 2 * p.reference[t];
         }
-        return footprint_error(d[0], d[1], p.least_k / (q_hi * q_hi) * (1 - 1e-9));
+        return footprint_error(d[0], d[1], footprint_at(p, q_hi));
     };
     spread_steps(s, &p);
     const double whole = over(p.q_min, p.q_max);

@@ -28,8 +28,8 @@ struct FastSubdivArgs {
 
 void fast_subdiv_loop(const void* args);
 
-// Segments longer than any row (320 pixels): one a span, exact at its first and last pixels
-// (fast-constant-depth: constant-depth's rows on the fast core).
+// Segments longer than any row or column (320 pixels at most): one a span, exact at its first and
+// last pixels (fast-constant-depth: constant-depth on the fast core).
 constexpr int FAST_SPAN_LONG = 512;
 
 template <int N>
