@@ -306,24 +306,31 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
     o.steps_known = true;
     const double one = double(SUBPIXEL_ONE);
     const Plane* exact[2] = {&s.pu, &s.pv};
-    // K = (P_a Q - P Q_a) per pixel is linear: its extremes at the vertices too, each within its own
-    // rounding and what P's and Q's do to it (|P_a| and |Q_a| times their terms); Q, P and their
-    // terms at a vertex once for both t and both axes a
+    // K = (P_a Q - P Q_a) per pixel is linear, and K_x does not change with x nor K_y with y:
+    // K_x = (p_x q_0 - p_0 q_x) + (p_x q_y - p_y q_x) y, K_y = (p_y q_0 - p_0 q_y) + (p_y q_x - p_x q_y) x,
+    // so its extremes over the polygon are at the corners' least and largest y (x). Each evaluated
+    // so within 2 eps of its terms' magnitudes at the farthest corner (two products and their
+    // difference twice, a product and a sum: at most 4 units of 2^-53 of them; counted 4 eps), and
+    // within what the slack may do to P and Q (|P_a| and |Q_a| times their drift)
+    double lo_c[2] = {0, 0}, hi_c[2] = {0, 0}, far[2] = {0, 0};  // [0]: x, [1]: y
+    for (int i = 0; i < o.corners; ++i) {
+        const double c[2] = {o.corner_x[i], o.corner_y[i]};
+        for (int d = 0; d < 2; ++d) {
+            lo_c[d] = i ? (c[d] < lo_c[d] ? c[d] : lo_c[d]) : c[d], hi_c[d] = i ? larger(c[d], hi_c[d]) : c[d];
+            far[d] = larger(far[d], magnitude(c[d]));
+        }
+    }
     double lo[2][2] = {}, hi[2][2] = {}, err[2][2] = {};
     const double moved_q = drift(s.q, o.slack), moved_p[2] = {drift(s.pu, o.slack), drift(s.pv, o.slack)};  // (the slack's)
-    for (int i = 0; i < o.corners; ++i) {
-        const Corner c(o, i);
-        const double q = s.q.at(c.x, c.y), q_terms = terms(s.q, c);
-        for (int t = 0; t < 2; ++t) {
-            const double pt = exact[t]->at(c.x, c.y), p_terms = terms(*exact[t], c);
-            for (int a = 0; a < 2; ++a) {
-                const double pa = a ? exact[t]->gy : exact[t]->gx, qa = a ? s.q.gy : s.q.gx;
-                const double k = (pa * q - pt * qa) * one;
-                lo[t][a] = i ? (k < lo[t][a] ? k : lo[t][a]) : k, hi[t][a] = i ? larger(k, hi[t][a]) : k;
-                err[t][a] = larger(err[t][a], (magnitude(pa * q) + magnitude(pt * qa) + magnitude(pa) * q_terms + magnitude(qa) * p_terms) *
-                                                      4 * EPSILON * one +
-                                                  (magnitude(pa) * moved_q + magnitude(qa) * moved_p[t]) * one);
-            }
+    for (int t = 0; t < 2; ++t) {
+        const Plane& pt = *exact[t];
+        for (int a = 0; a < 2; ++a) {
+            const double pa = a ? pt.gy : pt.gx, qa = a ? s.q.gy : s.q.gx, pb = a ? pt.gx : pt.gy, qb = a ? s.q.gx : s.q.gy;
+            const double c0 = pa * s.q.a0 - pt.a0 * qa, c1 = pa * qb - pb * qa;  // K_a = c0 + c1 (y for a = x, x for a = y)
+            const double k0 = (c0 + c1 * lo_c[1 - a]) * one, k1 = (c0 + c1 * hi_c[1 - a]) * one;
+            lo[t][a] = k0 < k1 ? k0 : k1, hi[t][a] = larger(k0, k1);
+            err[t][a] = (magnitude(pa * s.q.a0) + magnitude(pt.a0 * qa) + (magnitude(pa * qb) + magnitude(pb * qa)) * far[1 - a]) * 4 * EPSILON * one +
+                        (magnitude(pa) * moved_q + magnitude(qa) * moved_p[t]) * one;
         }
     }
     o.footprint = 0;
@@ -423,10 +430,22 @@ double spread_max_step(PolygonSpread& p, const PolygonSetup& s, int t, Axis axis
     return max_step_at(p, t, axis == Axis::Rows ? 0 : 1, p.q_min);
 }
 
+double relative_chords_bound(double x, double r) {
+    if (!(x >= 0 && r >= 0 && x + r < 1e15)) return NO_BOUND;
+    x *= 1 + 1e-9, r *= 1 + 1e-9;  // (the margins: this bound's own rounding)
+    const double n0 = footprint_error(x + r * (1 + 1e-15), 0, 1);  // ceil(X + r): at a footprint up to 1
+    // above a footprint of 1, a whole texel more comes only at F > (n0 - r) / X
+    return x > 0 ? larger(n0, (n0 + 1) * x / (n0 - r) * (1 + 1e-9)) : n0;
+}
+
 double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, double h, double rounding, double budget) {
     if (!(p.q_min > 0)) return NO_BOUND;
     const double qa = magnitude(axis == Axis::Rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
     const int a = axis == Axis::Rows ? 0 : 1;
+    // each pixel's deviation within X times its own step along the axis, plus the rounding: no
+    // steps to compute
+    const double relative = relative_chords_bound(h * h * qa / (4 * p.q_min), rounding + 2 * larger(p.reference[0], p.reference[1]));
+    if (budget >= 0 && relative <= budget) return relative;
     // the chords' texel deviations where Q is at least q_lo (h^2 / 8 of the largest |t''| =
     // 2 |K| |Q_a| / Q^3), over the footprint where Q is at most q_hi
     auto over = [&](double q_lo, double q_hi) {
@@ -439,7 +458,7 @@ double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, d
     };
     spread_steps(s, &p);
     const double whole = over(p.q_min, p.q_max);
-    if ((budget >= 0 && whole <= budget) || p.q_max <= 2 * p.q_min) return whole;  // (one band: the whole)
+    if ((budget >= 0 && whole <= budget) || p.q_max <= 2 * p.q_min) return whole < relative ? whole : relative;  // (one band: the whole)
     // By bands of Q (each twice the last): a pixel where Q lies in [q_i, q_i+1] is on a chord whose
     // ends are drawn pixels at most h away along the axis, so Q along the chord is at least
     // max(Q_min, q_i - h |Q_a|); its footprint at least the least |K| over q_i+1^2. The largest over
@@ -451,7 +470,8 @@ double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, d
         worst = larger(worst, over(reach > p.q_min ? reach : p.q_min, next));
         q_i = next;
     }
-    return worst < whole ? worst : whole;
+    worst = worst < whole ? worst : whole;
+    return worst < relative ? worst : relative;
 }
 
 void affine_lines(const PolygonSetup& s, Axis axis, const Span& span, double* a, double* step) {

@@ -96,8 +96,14 @@ struct EnvelopeBound {
     double footprint = NO_BOUND;
 };
 EnvelopeBound envelope_bound(const TriangleEnvelope& e);
-// With a budget (at or above 0) the chords' bound goes by bands of Q only where the whole polygon's
-// is above it.
+// The chords' bound relative to each pixel's own step (docs/accuracy.md, "Chords"): where every
+// pixel's deviation from the exact mapping is within X times its own texel step along the axis plus
+// r texels, its footprint error is at most max(n0, (n0 + 1) X / (n0 - r)), n0 = ceil(X + r),
+// whatever its footprint. NO_BOUND where X or r is not finite and at least 0.
+double relative_chords_bound(double x, double r);
+// The least of that (X = h^2 |Q_a| / (4 Q_min)), which needs no steps and settles it alone where
+// within a budget (at or above 0), and of the bound from the steps, which goes by bands of Q only
+// where the whole polygon's is above the budget.
 double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, double h, double rounding, double budget);
 // The largest |t'| along the axis over the polygon, from above.
 double spread_max_step(PolygonSpread& p, const PolygonSetup& s, int t, Axis axis);

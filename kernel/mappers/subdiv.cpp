@@ -83,8 +83,12 @@ void runs_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride
 bool chords_fit(const BoundContext& c, PolygonSpread& p, const PolygonSetup& s, double steps, double chord) {
     const int32_t size[2] = {c.tex.width, c.tex.height};
     for (int t = 0; t < 2; ++t) {
-        const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t], step = spread_max_step(p, s, t, c.axis);
+        const double start = c.tex.wrap == Wrap::Repeat ? 0.0 : p.t_abs[t];
         const double range = (p.t_max[t] - p.t_min[t] + 2 * (p.evaluation[t] + p.reference[t])) * (1 + 1e-9);
+        // a chord's step is its ends' difference over at least one pixel, and it travels at most
+        // that difference: within the range (no steps to compute where that fits)
+        if (fits_16_16(start, range, 1, size[t], c.tex.wrap) && range < chord) continue;
+        const double step = spread_max_step(p, s, t, c.axis);
         const double reach = step * (steps + 1) < range ? step * (steps + 1) : range;
         if (!fits_16_16(start, step, steps, size[t], c.tex.wrap) || !(reach < chord)) return false;
     }

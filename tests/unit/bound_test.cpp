@@ -8,11 +8,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
 #include "kernel/core/bound.h"
 #include "kernel/core/policy.h"
+#include "kernel/core/random.h"
 #include "qemu/tools/demo_scenes.h"
 #include "tests/unit/raster_helpers.h"
 
@@ -245,3 +247,44 @@ TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
 }
 
 }  // namespace
+
+// The chords' bound relative to the step (docs/accuracy.md, "Chords, relative to the step"): where
+// a pixel's deviation is at most X times its step plus r and its step at most its footprint F, its
+// footprint error is ceil(X F + r) / max(1, F) at most; the bound must cover that for every F and
+// reach it (as F comes down to where a texel more first appears).
+TEST(Bounds, RelativeChordsBoundCoversEveryFootprint) {
+    raster::Random rng(4242u);
+    auto error_at = [](double x, double r, double f) { return footprint_error(x * f + r, 0, f); };
+    for (int n = 0; n < 2000; ++n) {
+        const double x = n % 10 == 0 ? 0.0 : rng.unit() * (n % 3 ? 1.0 : 8.0), r = rng.unit() * (n % 2 ? 1e-3 : 0.999);
+        const double bound = relative_chords_bound(x, r);
+        double worst = std::max(error_at(x, r, 0), error_at(x, r, 1));
+        for (double f = 1.0 / 1024; f < 64; f *= 1.01) worst = std::max(worst, error_at(x, r, f));
+        for (int k = 0; k < 64 && x > 0; ++k) {  // just past each whole texel more, n0 + k
+            const double jump = (std::ceil(x + r) + k - r) / x;
+            if (jump > 1) worst = std::max(worst, error_at(x, r, jump * (1 + 1e-12)));
+        }
+        EXPECT_GE(bound, worst) << "X " << x << " r " << r;
+        EXPECT_LE(bound, worst * (1 + 1e-6)) << "X " << x << " r " << r << ": as tight as its derivation says";
+    }
+    EXPECT_EQ(relative_chords_bound(0, 0), 0);
+    EXPECT_GE(relative_chords_bound(-1, 0), NO_BOUND);
+}
+
+// A wall drawn by columns (1/w constant down each column): its chords lie on the exact mapping,
+// and the relative bound settles it within a budget of 1 without the steps; by rows it does not
+// (Q changes along them), and the bound from the steps is asked.
+TEST(Bounds, RelativeChordsBoundSettlesConstantDepthLinesAlone) {
+    const std::vector<Vertex> wall = {{snap(40), snap(20), 1, 0, 0}, {snap(200), snap(50), 4, 1024, 0},
+                                      {snap(200), snap(150), 4, 1024, 256}, {snap(40), snap(180), 1, 0, 256}};
+    PolygonSetup s;
+    ASSERT_EQ(setup_polygon(wall.data(), int(wall.size()), &s, PLANES_ALL), SetupStatus::Ok);
+    const ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    PolygonSpread columns, rows;
+    polygon_spread(s, clip, &columns);
+    polygon_spread(s, clip, &rows);
+    EXPECT_EQ(spread_chords_bound(columns, s, Axis::Columns, 160, 3 * HALF_ULP_16_16, 1), 1);
+    EXPECT_FALSE(columns.steps_known) << "settled without the steps";
+    EXPECT_GT(spread_chords_bound(rows, s, Axis::Rows, 160, 3 * HALF_ULP_16_16, 1), 1);
+    EXPECT_TRUE(rows.steps_known);
+}
