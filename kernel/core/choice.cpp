@@ -35,9 +35,10 @@ namespace {
 // is a few bits (the texture's copies and shape, the target's kind, whether the budget asks for
 // exact coverage, which only some mappers promise, and whether it asks for no error at all, which
 // only the reference itself promises: every other bound counts some rounding), so each set is
-// built once, in the order of their cost per polygon (setup and first proof), so that the
-// candidates that cannot cost less than the certain one (exact, proven for nothing) on the polygon
-// are never priced.
+// built once, in the order of their cost per pixel (the term that dominates on all but the smallest
+// polygons), so that a polygon prices them lazily: only while one not yet priced could cost less
+// than the cheapest priced and not yet asked (of some 25 candidates, the ten or so dearest per
+// pixel are mostly never priced).
 struct Candidates {
     bool built = false;
     int count = 0;
@@ -47,9 +48,8 @@ struct Candidates {
     CostRow cost[2 * MAPPER_LIMIT] = {};  // the cost model's row with the first proof (proven_cost)
     bool walks[2 * MAPPER_LIMIT] = {};    // bound_walks: proven span by span only
     bool spans[2 * MAPPER_LIMIT] = {};    // proven_by_spans: asked span by span (after the whole polygon)
-    // the least cost a span and a pixel of candidates k on: with the cost per polygon (which only
-    // grows), what any of them costs at least
-    double least_span[2 * MAPPER_LIMIT] = {}, least_pixel[2 * MAPPER_LIMIT] = {};
+    // the least cost a polygon, a span and a pixel of candidates k on: what any of them costs at least
+    double least_polygon[2 * MAPPER_LIMIT] = {}, least_span[2 * MAPPER_LIMIT] = {}, least_pixel[2 * MAPPER_LIMIT] = {};
     // the candidates an object's envelope proves (Mapper::enveloped), and whether every other one
     // costs, with its proof, at least as much in each part of its row as each of them without
     int enveloped_count = 0, enveloped_first = -1;
@@ -69,15 +69,18 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
             const Mapper& m = MAPPERS[i];
             if (!choosable(m) || !mapper_walks(m, Axis(a)) || !mapper_accepts(m, tex) || !mapper_targets(m, target, Axis(a))) continue;
             if ((exact_coverage && !m.guarantee.exact_coverage) || (no_error && m.guarantee.max_error != 0)) continue;
-            // insertion by the cost per polygon (stable: ties keep rows first, registry order)
+            // insertion by the cost per pixel, rows not measured last (stable: ties keep rows first,
+            // registry order)
             const CostRow cost = proven_cost(m, cost_row(MAPPER_COSTS[i]));
+            auto key = [](const CostRow& r) { return r.polygon < 1e29 ? r.pixel : 1e300; };
             int k = c.count++;
-            for (; k > 0 && c.cost[k - 1].polygon > cost.polygon; --k)
+            for (; k > 0 && key(c.cost[k - 1]) > key(cost); --k)
                 c.row[k] = c.row[k - 1], c.axis[k] = c.axis[k - 1], c.cost[k] = c.cost[k - 1], c.walks[k] = c.walks[k - 1], c.spans[k] = c.spans[k - 1];
             c.row[k] = int16_t(i), c.axis[k] = Axis(a), c.cost[k] = cost, c.walks[k] = bound_walks(m), c.spans[k] = proven_by_spans(m);
         }
     for (int k = c.count - 1; k >= 0; --k) {
         const bool last = k == c.count - 1;
+        c.least_polygon[k] = last || c.cost[k].polygon < c.least_polygon[k + 1] ? c.cost[k].polygon : c.least_polygon[k + 1];
         c.least_span[k] = last || c.cost[k].span < c.least_span[k + 1] ? c.cost[k].span : c.least_span[k + 1];
         c.least_pixel[k] = last || c.cost[k].pixel < c.least_pixel[k + 1] ? c.cost[k].pixel : c.least_pixel[k + 1];
     }
@@ -133,25 +136,9 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     if (prepared->status != SetupStatus::Ok) return choice;
     PolygonSize size[2];
     polygon_sizes(prepared->setup, target.clip, size);
-    // the estimates with the first proofs (a mapper whose bound walks: span by span already), of
-    // the candidates up to the first from which on none can cost less than the certain one
-    double cost[2 * MAPPER_LIMIT];
-    const double ceiling0 = list.certain >= 0 ? estimate_cost(list.cost[list.certain], size[int(list.axis[list.certain])]) : 1e300;
-    const bool rows_fewer = size[0].spans < size[1].spans;
-    const double fewest_spans = size[rows_fewer ? 0 : 1].spans, most_spans = size[rows_fewer ? 1 : 0].spans, pixels = size[0].pixels;
-    auto least_cost = [&](int k) {  // (a fitted cost below 0 a span: least where the spans are most)
-        const double a_span = list.least_span[k];
-        return list.cost[k].polygon + a_span * (a_span < 0 ? most_spans : fewest_spans) + list.least_pixel[k] * pixels;
-    };
-    int live = 0;
-    for (; live < list.count && least_cost(live) < ceiling0; ++live) cost[live] = estimate_cost(list.cost[live], size[int(list.axis[live])]);
-    if (list.certain >= live) {  // the certain one, after dearer ones left unpriced
-        for (int k = live; k < list.certain; ++k) cost[k] = 1e300;
-        cost[list.certain] = ceiling0, live = list.certain + 1;
-    }
-    const bool* walks = list.walks;
-    // the costs as whole instructions for the search below (integer compares: it scans the
-    // candidates once for each one it asks); NOT_LIVE: asked already, or unpriced
+    // the estimates with the first proofs (a mapper whose bound walks: span by span already), as
+    // whole instructions for the search below (integer compares: it scans the candidates once for
+    // each one it asks); NOT_LIVE: asked already, or not priced
     constexpr int32_t NOT_LIVE = 0x7FFFFFFF;
     // (to the nearest whole number by adding 1.5 * 2^52, which leaves it in the sum's low bits:
     // int32_t() on the x87 switches the rounding mode twice, about 15 instructions more a candidate)
@@ -163,14 +150,49 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         __builtin_memcpy(&bits, &shifted, sizeof bits);
         return int32_t(uint32_t(bits));
     };
+    double cost[2 * MAPPER_LIMIT];
     int32_t price[2 * MAPPER_LIMIT];
-    for (int k = 0; k < live; ++k) price[k] = price_of(cost[k]);
-    // the cheapest candidate not yet asked whose price is below `ceiling` (ties: the earlier), or -1
+    for (int k = 0; k < list.count; ++k) price[k] = NOT_LIVE;
+    const bool rows_fewer = size[0].spans < size[1].spans;
+    const double fewest_spans = size[rows_fewer ? 0 : 1].spans, most_spans = size[rows_fewer ? 1 : 0].spans, pixels = size[0].pixels;
+    auto least_cost = [&](int k) {  // what candidates k on cost at least (a fitted cost below 0 a span: least where the spans are most)
+        const double a_span = list.least_span[k];
+        return list.least_polygon[k] + a_span * (a_span < 0 ? most_spans : fewest_spans) + list.least_pixel[k] * pixels;
+    };
+    // the certain one at once (it always holds: no candidate dearer than it is ever asked), the
+    // others in the list's order as the search needs them: candidates 0..priced-1, and the least
+    // any of the rest could cost (next_least)
+    int priced = 0;
+    const int certain = list.certain;
+    if (certain >= 0) {
+        cost[certain] = estimate_cost(list.cost[certain], size[int(list.axis[certain])]);
+        price[certain] = price_of(cost[certain]);
+    }
+    double next_least = least_cost(0);
+    const bool* walks = list.walks;
+    // the cheapest candidate priced and not yet asked whose price is below `ceiling` (ties: the
+    // earlier), or -1
     auto cheapest = [&](int32_t ceiling) {
         int best = -1;
-        for (int k = 0; k < live; ++k)
+        for (int k = 0; k < priced; ++k)
             if (price[k] < ceiling) best = k, ceiling = price[k];
+        if (certain >= priced && price[certain] < ceiling) best = certain;
         return best;
+    };
+    // the cheapest not yet asked of all: priced further while one not yet priced could cost less
+    auto next = [&]() {
+        int k = cheapest(NOT_LIVE);
+        double best = k >= 0 ? double(price[k]) + 1 : 1e300;
+        while (priced < list.count && next_least < best) {
+            if (priced != certain) {
+                cost[priced] = estimate_cost(list.cost[priced], size[int(list.axis[priced])]);
+                price[priced] = price_of(cost[priced]);
+                if (price[priced] < (k >= 0 ? price[k] : NOT_LIVE)) k = priced, best = double(price[k]) + 1;
+            }
+            ++priced;
+            next_least = priced < list.count ? least_cost(priced) : 1e300;
+        }
+        return k;
     };
     auto ask = [&](int k, bool whole_only) {
         price[k] = NOT_LIVE;
@@ -186,7 +208,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     // below the first's
     int before[2 * MAPPER_LIMIT], n = 0;
     int32_t ceiling = NOT_LIVE;
-    for (int k = cheapest(NOT_LIVE); k >= 0; k = cheapest(NOT_LIVE)) {
+    for (int k = next(); k >= 0; k = next()) {
         if (walks[k]) {
             price[k] = NOT_LIVE;
         } else if (ask(k, true)) {

@@ -97,9 +97,11 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
 // (PolygonSpread, from the vertices), so one proven that way costs its estimate plus
 // whole_proof_cost, one proven span by span (proven_by_spans) that plus BOUND_SPAN_COST a span; one
 // whose bound walks is asked span by span only, at its own price; the choice is the least of these (ties: the
-// one cheaper per polygon, then rows first, in registry order): where the reference costs less
-// than proving anything cheaper, exact, unasked. Candidates that cannot cost less than exact (by
-// their cost per polygon and the least per span and pixel of any dearer per polygon) are not priced. The polygon is set up once, into *prepared, and walked along a
+// one cheaper per pixel, then rows first, in registry order): where the reference costs less
+// than proving anything cheaper, exact, unasked. Candidates are priced only as the search needs
+// them: in the order of their cost per pixel, while the least any of the rest could cost (the least
+// per polygon, span and pixel among them) is below the cheapest priced and not yet asked; so none
+// that cannot cost less than exact is priced. The polygon is set up once, into *prepared, and walked along a
 // walker only when a bound needs its spans (the chosen mapper draws from its setup, and from its
 // spans when walked).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
