@@ -226,9 +226,35 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     return choice;
 }
 
+double corner_footprint(const Vertex* v) {
+    const double xb = double(v[1].x.raw - v[0].x.raw), yb = double(v[1].y.raw - v[0].y.raw);
+    const double xc = double(v[2].x.raw - v[0].x.raw), yc = double(v[2].y.raw - v[0].y.raw);
+    const double d = xb * yc - xc * yb;
+    if (d == 0) return 1e300;
+    const double q[3] = {1 / v[0].w, 1 / v[1].w, 1 / v[2].w};
+    // the gradient (per subpixel) of the plane through the three values f at the corners
+    auto gradient = [&](double fa, double fb, double fc, double* gx, double* gy) {
+        fb -= fa, fc -= fa;
+        *gx = (fb * yc - fc * yb) / d, *gy = (fc * xb - fb * xc) / d;
+    };
+    double qx, qy, ux, uy, vx, vy;
+    gradient(q[0], q[1], q[2], &qx, &qy);
+    gradient(v[0].u * q[0], v[1].u * q[1], v[2].u * q[2], &ux, &uy);
+    gradient(v[0].v * q[0], v[1].v * q[1], v[2].v * q[2], &vx, &vy);
+    // t' = (P_a - t Q_a) / Q at the corner, where P = t Q
+    const double per_pixel = double(SUBPIXEL_ONE) / q[0];
+    const double steps[4] = {ux - v[0].u * qx, vx - v[0].v * qx, uy - v[0].u * qy, vy - v[0].v * qy};
+    double f = 0;
+    for (double t : steps) f = larger(f, magnitude(t) * per_pixel);
+    return f;
+}
+
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint) {
     const Candidates& list = candidates(tex, target, budget);
     AutoPlan plan = list.plan;
+    // below a budget of 1, every bound but the certain one's is at least 1 / max(1, F) (a rounding
+    // of some texel, over the footprint F where it is least): within it only where F >= 1 / budget
+    plan.exact_below = budget.max_error > 0 && budget.max_error < 1 ? 1 / budget.max_error : 0;
     if (list.enveloped_count == 1 && list.envelope_cheapest && budget_allows(budget, ErrorBound{true, true, envelope_footprint})) {
         plan.enveloped = &MAPPERS[list.row[list.enveloped_first]];
         plan.enveloped_axis = list.axis[list.enveloped_first];
@@ -270,7 +296,8 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     const bool rows_fewer = lines[0] < lines[1];
     const double others_lines = lines[(plan.others.span < 0) == rows_fewer ? 1 : 0];  // (a fitted cost below 0: where they are most)
     const double least = plan.others.polygon + plan.others.span * others_lines + plan.others.pixel * pixels;
-    return best <= least + CHOICE_COST ? plan.certain : nullptr;
+    if (best <= least + CHOICE_COST) return plan.certain;
+    return plan.exact_below > 0 && corner_footprint(vertices) < plan.exact_below ? plan.certain : nullptr;
 }
 
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count) {

@@ -135,12 +135,19 @@ struct AutoPlan {
     CostRow certain_row;
     bool sole;
     CostRow others;
+    double exact_below;  // a budget below 1: the footprint (corner_footprint) below which only the certain one can meet it; else 0
 };
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint);
 
+// The footprint (texel_footprint) at a polygon's first corner, from the planes through its first
+// three (1e300 where they are collinear): cheap, before any setup.
+double corner_footprint(const Vertex* vertices);
 // The certain mapper and its walker where choosing cannot pay on the polygon: where it is the only
-// candidate, or where its estimate on its cheaper walker is no more than the least any other
-// candidate could cost with its proof, plus CHOICE_COST. Its walker as choose_mapper would take it
+// candidate; where the budget is below 1 and the footprint at the first corner below 1 / budget
+// (every other bound is at least 1 / max(1, F) where F is least, so none can meet the budget near
+// that corner: a judgement of cost, not of accuracy, since the certain one meets every budget); or
+// where its estimate on its cheaper walker is no more than the least any other candidate could cost
+// with its proof, plus CHOICE_COST. Its walker as choose_mapper would take it
 // (its estimates differ only in the lines along each). Sizes from the corners (the box and the
 // area the setup would find: polygon_sizes), before any setup. Else nullptr: choose_mapper decides.
 const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis);

@@ -128,7 +128,7 @@ TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
     std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};
     prepare_texture(&tex, bordered.data(), aligned.data());
-    int unchosen = 0, chosen = 0, walkers[2] = {};
+    int unchosen = 0, chosen = 0, walkers[2] = {}, by_footprint = 0, missed = 0;
     for (Surface surface : {Surface::Linear, Surface::Planar}) {
         Target target = surface_kind(surface);
         target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
@@ -153,7 +153,16 @@ TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
                 polygon_sizes(prepared.setup, target.clip, size);
                 const double drawn = estimate_cost(plan.certain_row, size[int(axis)]);
                 const double choice = estimate_cost(proven_cost(*c.mapper, cost_row(MAPPER_COSTS[c.mapper - MAPPERS])), size[int(c.axis)]);
-                EXPECT_LE(drawn, choice + CHOICE_COST + 1e-6) << "polygon " << n << ": choosing " << c.mapper->name << " would pay";
+                // below a budget of 1: also where the first corner's footprint is below 1 / budget
+                const bool small_footprint = plan.exact_below > 0 && corner_footprint(p.data()) < plan.exact_below;
+                by_footprint += small_footprint;
+                if (small_footprint) {
+                    EXPECT_GT(b.max_error, 0);
+                    EXPECT_LT(b.max_error, 1);
+                    missed += c.mapper != m;
+                } else {
+                    EXPECT_LE(drawn, choice + CHOICE_COST + 1e-6) << "polygon " << n << ": choosing " << c.mapper->name << " would pay";
+                }
                 if (c.mapper == m) {
                     EXPECT_EQ(int(c.axis), int(axis)) << "polygon " << n << ": exact on the walker the choice takes";
                 }
@@ -161,7 +170,11 @@ TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
             }
         }
     }
-    std::printf("  unchosen %d (by rows %d, by columns %d), chosen %d\n", unchosen, walkers[0], walkers[1], chosen);
+    std::printf("  unchosen %d (by rows %d, by columns %d; %d by the footprint below 1 / budget, of which choosing would have found a "
+                "cheaper mapper on %d), chosen %d\n",
+                unchosen, walkers[0], walkers[1], by_footprint, missed, chosen);
+    EXPECT_GT(by_footprint, 0);
+    EXPECT_LE(missed * 20, by_footprint) << "the corner's footprint misjudges one polygon in 20 or more";
     EXPECT_GT(walkers[0], 0);
     EXPECT_GT(walkers[1], 0);
     EXPECT_GT(chosen, 0);
@@ -209,3 +222,20 @@ TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
 }
 
 }  // namespace
+
+// The footprint at the first corner before any setup is the setup's own there (texel_footprint),
+// on random triangles either way round.
+TEST(Auto, CornerFootprintIsTheSetupsAtThatCorner) {
+    TriangleGen gen(1125u);
+    int compared = 0;
+    for (int n = 0; n < 500; ++n) {
+        gen.depth_ratio = n % 3 == 0 ? 1.0001 : n % 3 == 1 ? 4 : 50;
+        const std::vector<Vertex> p = gen.triangle();
+        PolygonSetup s;
+        if (setup_polygon(p.data(), 3, &s) != SetupStatus::Ok) continue;
+        const double at = texel_footprint(s, double(p[0].x.raw - s.ref_x), double(p[0].y.raw - s.ref_y));
+        EXPECT_NEAR(corner_footprint(p.data()), at, at * 1e-6 + 1e-9) << "triangle " << n;
+        ++compared;
+    }
+    EXPECT_GT(compared, 400);
+}
