@@ -297,7 +297,11 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     const double others_lines = lines[(plan.others.span < 0) == rows_fewer ? 1 : 0];  // (a fitted cost below 0: where they are most)
     const double least = plan.others.polygon + plan.others.span * others_lines + plan.others.pixel * pixels;
     if (best <= least + CHOICE_COST) return plan.certain;
-    return plan.exact_below > 0 && corner_footprint(vertices) < plan.exact_below ? plan.certain : nullptr;
+    // (only where the polygon lies inside the clip: its first corner is then among the pixels
+    // drawn, not off the screen where a wall comes nearest)
+    const int64_t one_px = SUBPIXEL_ONE;
+    const bool inside = x_lo >= clip.x0 * one_px && x_hi <= clip.x1 * one_px && y_lo >= clip.y0 * one_px && y_hi <= clip.y1 * one_px;
+    return inside && plan.exact_below > 0 && corner_footprint(vertices) < plan.exact_below ? plan.certain : nullptr;
 }
 
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count) {

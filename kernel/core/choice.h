@@ -143,7 +143,8 @@ AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& targe
 // three (1e300 where they are collinear): cheap, before any setup.
 double corner_footprint(const Vertex* vertices);
 // The certain mapper and its walker where choosing cannot pay on the polygon: where it is the only
-// candidate; where the budget is below 1 and the footprint at the first corner below 1 / budget
+// candidate; where the budget is below 1, the polygon inside the clip and the footprint at its
+// first corner below 1 / budget
 // (every other bound is at least 1 / max(1, F) where F is least, so none can meet the budget near
 // that corner: a judgement of cost, not of accuracy, since the certain one meets every budget); or
 // where its estimate on its cheaper walker is no more than the least any other candidate could cost

@@ -5,32 +5,32 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2049.2f, 477.65f, 40.316f}, // 6 scenes
-    {"exact", 2055.2f, 326.38f, 80.255f}, // 6 scenes
-    {"persp-subdiv-4", 2055.2f, 348.77f, 107.052f}, // 6 scenes
-    {"persp-subdiv-8", 2055.2f, 418.13f, 67.290f}, // 6 scenes
-    {"persp-subdiv-16", 2055.2f, 467.02f, 47.260f}, // 6 scenes
-    {"persp-subdiv-32", 2055.2f, 492.50f, 37.458f}, // 6 scenes
-    {"constant-depth", 2055.2f, 513.12f, 29.887f}, // 6 scenes
-    {"persp-adaptive-0.5", 2055.2f, 809.39f, 441.196f}, // 6 scenes
-    {"persp-adaptive-1", 2055.2f, 1154.94f, 51.356f}, // 6 scenes
-    {"persp-adaptive-2", 2055.2f, 1171.73f, 44.393f}, // 6 scenes
-    {"persp-adaptive-4", 2055.2f, 1182.08f, 40.574f}, // 6 scenes
-    {"fast-affine", 2044.2f, 163.28f, 4.199f}, // 6 scenes
-    {"fast-columns", 2051.9f, 257.26f, 5.465f}, // 6 scenes
-    {"fast-subdiv-8", 2077.2f, 394.13f, 12.363f}, // 6 scenes
-    {"fast-subdiv-16", 2077.2f, 403.87f, 8.406f}, // 6 scenes
-    {"fast-subdiv-32", 2077.2f, 408.67f, 6.560f}, // 6 scenes
-    {"fast-constant-depth", 2077.2f, 412.57f, 5.129f}, // 6 scenes
-    {"xsharp-dda", 1687.3f, 387.56f, 37.675f}, // 5 scenes
-    {"xsharp-row-out", 1692.3f, 523.04f, 19.086f}, // 5 scenes
-    {"xsharp-column", 1694.2f, 494.35f, 11.512f}, // 5 scenes
-    {"hecker-steptable", 2829.6f, 0.00f, 376.978f}, // 5 scenes
-    {"fatmap-256", 1764.4f, 179.38f, 12.704f}, // 4 scenes
-    {"fatmap-256-16", 1764.4f, 184.38f, 11.704f}, // 4 scenes
-    {"fatmap-lut", 1835.7f, 190.02f, 6.214f}, // 3 scenes
-    {"quake-subdiv16", 2214.3f, 311.10f, 13.948f}, // 5 scenes
-    {"quake-subdiv8", 2214.3f, 295.70f, 20.306f}, // 5 scenes
+    {"affine", 2049.2f, 477.88f, 40.312f}, // 6 scenes
+    {"exact", 2055.2f, 326.61f, 80.251f}, // 6 scenes
+    {"persp-subdiv-4", 2055.2f, 349.00f, 107.048f}, // 6 scenes
+    {"persp-subdiv-8", 2055.2f, 418.37f, 67.286f}, // 6 scenes
+    {"persp-subdiv-16", 2055.2f, 467.25f, 47.257f}, // 6 scenes
+    {"persp-subdiv-32", 2055.2f, 492.74f, 37.454f}, // 6 scenes
+    {"constant-depth", 2055.2f, 513.35f, 29.883f}, // 6 scenes
+    {"persp-adaptive-0.5", 2055.2f, 809.62f, 441.192f}, // 6 scenes
+    {"persp-adaptive-1", 2055.2f, 1155.17f, 51.352f}, // 6 scenes
+    {"persp-adaptive-2", 2055.2f, 1171.96f, 44.389f}, // 6 scenes
+    {"persp-adaptive-4", 2055.2f, 1182.31f, 40.570f}, // 6 scenes
+    {"fast-affine", 2044.2f, 163.51f, 4.196f}, // 6 scenes
+    {"fast-columns", 2051.9f, 257.48f, 5.461f}, // 6 scenes
+    {"fast-subdiv-8", 2077.2f, 394.37f, 12.359f}, // 6 scenes
+    {"fast-subdiv-16", 2077.2f, 404.10f, 8.402f}, // 6 scenes
+    {"fast-subdiv-32", 2077.2f, 408.91f, 6.556f}, // 6 scenes
+    {"fast-constant-depth", 2077.2f, 412.80f, 5.125f}, // 6 scenes
+    {"xsharp-dda", 1687.3f, 387.81f, 37.671f}, // 5 scenes
+    {"xsharp-row-out", 1692.3f, 523.30f, 19.081f}, // 5 scenes
+    {"xsharp-column", 1694.2f, 494.57f, 11.509f}, // 5 scenes
+    {"hecker-steptable", 2829.6f, 0.00f, 376.998f}, // 5 scenes
+    {"fatmap-256", 1764.4f, 179.63f, 12.699f}, // 4 scenes
+    {"fatmap-256-16", 1764.4f, 184.63f, 11.699f}, // 4 scenes
+    {"fatmap-lut", 1835.7f, 190.28f, 6.209f}, // 3 scenes
+    {"quake-subdiv16", 2214.3f, 311.33f, 13.944f}, // 5 scenes
+    {"quake-subdiv8", 2214.3f, 295.93f, 20.303f}, // 5 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
