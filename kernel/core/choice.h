@@ -108,10 +108,13 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
                      PreparedPolygon* prepared);
 
 // What choosing costs beyond the bounds it asks (the setup's extra planes, the polygon's sizes, the
-// pricing of the candidates): auto at a budget of 0 on the mesh, where exact is its only candidate
-// and exact's bound free, drew 39.7 instructions a pixel more than exact, 295 a triangle (make
-// bench, QEMU icount, 2026-11-24, before unchosen_mapper).
-constexpr double CHOICE_COST = 300;
+// pricing of the candidates): at a budget of 0, where exact is the only candidate, 295 a triangle
+// (the mesh, make bench, QEMU icount, before unchosen_mapper); above it, with some ten candidates
+// priced, about 1800 a polygon (the ball at 1, callgrind on the 32-bit host build: the search's own
+// work 1280, the sizes and the candidates 260, the affine planes' setup about 300). At 300 the mesh
+// at budget 0.5 chose on triangles of 20 pixels or so, and drew at 0.95 times exact's speed; at
+// 1800, 0.98 (4 bench frames, QEMU icount).
+constexpr double CHOICE_COST = 1800;
 
 // What auto settles once a frame per object, before drawing its polygons (render_frame):
 // - the mapper the object's envelope proves on its uncut triangles (envelope_footprint: the
