@@ -231,22 +231,12 @@ double corner_footprint(const Vertex* v) {
     const double xc = double(v[2].x.raw - v[0].x.raw), yc = double(v[2].y.raw - v[0].y.raw);
     const double d = xb * yc - xc * yb;
     if (d == 0) return 1e300;
-    const double q[3] = {1 / v[0].w, 1 / v[1].w, 1 / v[2].w};
-    // the gradient (per subpixel) of the plane through the three values f at the corners
-    auto gradient = [&](double fa, double fb, double fc, double* gx, double* gy) {
-        fb -= fa, fc -= fa;
-        *gx = (fb * yc - fc * yb) / d, *gy = (fc * xb - fb * xc) / d;
-    };
-    double qx, qy, ux, uy, vx, vy;
-    gradient(q[0], q[1], q[2], &qx, &qy);
-    gradient(v[0].u * q[0], v[1].u * q[1], v[2].u * q[2], &ux, &uy);
-    gradient(v[0].v * q[0], v[1].v * q[1], v[2].v * q[2], &vx, &vy);
-    // t' = (P_a - t Q_a) / Q at the corner, where P = t Q
-    const double per_pixel = double(SUBPIXEL_ONE) / q[0];
-    const double steps[4] = {ux - v[0].u * qx, vx - v[0].v * qx, uy - v[0].u * qy, vy - v[0].v * qy};
-    double f = 0;
-    for (double t : steps) f = larger(f, magnitude(t) * per_pixel);
-    return f;
+    // the planes as setup_polygon puts them through these three corners
+    auto plane = [&](double a, double b, double c) { return plane_through(a, b, c, xb, yb, xc, yc, d); };
+    const Plane q = plane(1 / v[0].w, 1 / v[1].w, 1 / v[2].w);
+    const Plane pu = plane(v[0].u / v[0].w, v[1].u / v[1].w, v[2].u / v[2].w);
+    const Plane pv = plane(v[0].v / v[0].w, v[1].v / v[1].w, v[2].v / v[2].w);
+    return texel_footprint(q, pu, pv, 0, 0);
 }
 
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint) {

@@ -37,7 +37,8 @@ int direction_changes(const PolygonSetup& s, bool along_y) {
     return changes;
 }
 
-// The plane through three (X, Y, value) points, X and Y relative to the first; d = Xb*Yc - Xc*Yb != 0.
+}  // namespace
+
 Plane plane_through(double ra, double rb, double rc, double xb, double yb, double xc, double yc, double d) {
     Plane p;
     p.a0 = ra;
@@ -45,8 +46,6 @@ Plane plane_through(double ra, double rb, double rc, double xb, double yb, doubl
     p.gy = ((rc - ra) * xb - (rb - ra) * xc) / d;
     return p;
 }
-
-}  // namespace
 
 const char* setup_status_name(SetupStatus s) {
     switch (s) {

@@ -61,6 +61,8 @@ struct Plane {
     double a0, gx, gy;
     double at(double x, double y) const { return (a0 + gy * y) + gx * x; }
 };
+// The plane through three (X, Y, value) points, X and Y relative to the first; d = Xb*Yc - Xc*Yb != 0.
+Plane plane_through(double ra, double rb, double rc, double xb, double yb, double xc, double yc, double d);
 
 enum class SetupStatus : uint8_t {
     Ok,
@@ -130,13 +132,14 @@ inline void perspective_texel(const PolygonSetup& s, double x, double y, int32_t
 // larger of its u and v parts), at the pixel centre (X, Y as above). By the quotient rule,
 // d(p/q)/dx = (p_x q - p q_x) / q^2 per subpixel, times 256 per pixel. Not clamped: the footprint
 // error divides by max(1, footprint).
-inline double texel_footprint(const PolygonSetup& s, double x, double y) {
-    double q = s.q.at(x, y), u = s.pu.at(x, y), v = s.pv.at(x, y);
+inline double texel_footprint(const Plane& pq, const Plane& pu, const Plane& pv, double x, double y) {
+    double q = pq.at(x, y), u = pu.at(x, y), v = pv.at(x, y);
     double per_pixel = double(SUBPIXEL_ONE) / (q * q);
-    double dudx = magnitude((s.pu.gx * q - u * s.q.gx) * per_pixel), dvdx = magnitude((s.pv.gx * q - v * s.q.gx) * per_pixel);
-    double dudy = magnitude((s.pu.gy * q - u * s.q.gy) * per_pixel), dvdy = magnitude((s.pv.gy * q - v * s.q.gy) * per_pixel);
+    double dudx = magnitude((pu.gx * q - u * pq.gx) * per_pixel), dvdx = magnitude((pv.gx * q - v * pq.gx) * per_pixel);
+    double dudy = magnitude((pu.gy * q - u * pq.gy) * per_pixel), dvdy = magnitude((pv.gy * q - v * pq.gy) * per_pixel);
     double across = dudx > dvdx ? dudx : dvdx, down = dudy > dvdy ? dudy : dvdy;
     return across > down ? across : down;
 }
+inline double texel_footprint(const PolygonSetup& s, double x, double y) { return texel_footprint(s.q, s.pu, s.pv, x, y); }
 
 }  // namespace raster
