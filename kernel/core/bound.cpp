@@ -333,15 +333,15 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
                         (magnitude(pa) * moved_q + magnitude(qa) * moved_p[t]) * one;
         }
     }
-    o.footprint = 0;
+    double least_k = 0;  // the largest over t and a of the least |K| over the polygon, from below
     for (int t = 0; t < 2; ++t)
         for (int a = 0; a < 2; ++a) {
             o.k_max[t][a] = (larger(magnitude(lo[t][a]), magnitude(hi[t][a])) + err[t][a]) * (1 + 1e-9);
             // the least |K| over the polygon: 0 where K changes sign (or may, within its rounding)
             const double least = lo[t][a] > 0 ? lo[t][a] : hi[t][a] < 0 ? -hi[t][a] : 0.0;
-            o.footprint = larger(o.footprint, (least - err[t][a]) * (1 - 1e-9));
+            least_k = larger(least_k, (least - err[t][a]) * (1 - 1e-9));
         }
-    o.least_k = o.footprint > 0 && o.q_min > 0 ? o.footprint : 0.0;
+    o.least_k = least_k > 0 && o.q_min > 0 ? least_k : 0.0;
     o.footprint = footprint_at(o, o.q_max);
 }
 
