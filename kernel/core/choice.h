@@ -42,11 +42,12 @@ struct PolygonSize {
 };
 void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size[2]);  // [Axis]
 // A row of the model as the estimate computes with it: not measured (-1), dearer than any measured
-// mapper.
+// mapper in every part (so the least any candidate costs a span or a pixel, and the envelope's
+// comparisons, are the measured ones').
 struct CostRow {
     double polygon, span, pixel;  // (no initialisers: AutoPlan is kept a possible object)
 };
-inline CostRow cost_row(const MapperCost& c) { return c.polygon < 0 ? CostRow{1e30, 0, 0} : CostRow{c.polygon, c.span, c.pixel}; }
+inline CostRow cost_row(const MapperCost& c) { return c.polygon < 0 ? CostRow{1e30, 1e30, 1e30} : CostRow{c.polygon, c.span, c.pixel}; }
 inline double estimate_cost(const CostRow& c, const PolygonSize& s) { return c.polygon + c.span * s.spans + c.pixel * s.pixels; }
 inline double estimate_cost(const MapperCost& c, const PolygonSize& s) { return estimate_cost(cost_row(c), s); }
 

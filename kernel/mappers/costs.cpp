@@ -18,10 +18,12 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-4", 2055.2f, 1182.31f, 40.570f}, // 6 scenes
     {"fast-affine", 2044.2f, 163.51f, 4.196f}, // 6 scenes
     {"fast-columns", 2051.9f, 257.48f, 5.461f}, // 6 scenes
-    {"fast-subdiv-8", 2077.2f, 394.37f, 12.359f}, // 6 scenes
-    {"fast-subdiv-16", 2077.2f, 404.10f, 8.402f}, // 6 scenes
-    {"fast-subdiv-32", 2077.2f, 408.91f, 6.556f}, // 6 scenes
-    {"fast-constant-depth", 2077.2f, 412.80f, 5.125f}, // 6 scenes
+    {"fast-subdiv-8", 2077.2f, 383.37f, 12.359f}, // 6 scenes
+    {"fast-subdiv-16", 2077.2f, 393.10f, 8.402f}, // 6 scenes
+    {"fast-subdiv-32", 2077.2f, 397.91f, 6.556f}, // 6 scenes
+    {"fast-constant-depth", 2077.2f, 401.80f, 5.125f}, // 6 scenes
+    {"fast-adaptive-1", 2077.2f, 435.28f, 8.071f}, // 6 scenes
+    {"fast-adaptive-2", 2077.2f, 438.68f, 6.746f}, // 6 scenes
     {"xsharp-dda", 1687.3f, 387.81f, 37.671f}, // 5 scenes
     {"xsharp-row-out", 1692.3f, 523.30f, 19.081f}, // 5 scenes
     {"xsharp-column", 1694.2f, 494.57f, 11.509f}, // 5 scenes

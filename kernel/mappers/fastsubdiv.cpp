@@ -51,25 +51,57 @@ void fast_subdiv_loop(const void* raw) {
     }
 }
 
-template <int N>
-void fast_subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
-    static_assert(N >= 2 && N <= 512 && (N & (N - 1)) == 0);
-    const PolygonSetup& setup = c.setup;
+namespace {
+
+// The loop's block for span s (all but the segments' shift): each plane along the span's line.
+// (Inlined: called once a span, and a copy of the block costs some twenty instructions.)
+[[gnu::always_inline]] inline void span_args(const PolygonSetup& setup, Axis axis, const Span& s, const Texture& tex, uint8_t* dst,
+                                             int32_t stride, FastSubdivArgs* out) {
+    FastSubdivArgs& a = *out;
     const double x = centre_x(setup, s.x), y = centre_y(setup, s.y);
-    const bool rows = c.axis == Axis::Rows;
-    FastSubdivArgs a;
+    const bool rows = axis == Axis::Rows;
     a.dst = dst;
     a.stride = stride;
     a.count = s.count;
-    a.texture = c.tex.aligned256;
+    a.texture = tex.aligned256;
+    // (the walker tested once, the planes unrolled)
+    auto along = [&](double across, double at, double Plane::*line, double Plane::*step) {
+        a.x = at;
+        a.c[0] = setup.q.a0 + setup.q.*line * across, a.g[0] = setup.q.*step;
+        a.c[1] = setup.pu.a0 + setup.pu.*line * across, a.g[1] = setup.pu.*step;
+        a.c[2] = setup.pv.a0 + setup.pv.*line * across, a.g[2] = setup.pv.*step;
+    };
+    if (rows) along(y, x, &Plane::gy, &Plane::gx);
+    else along(x, y, &Plane::gx, &Plane::gy);
+}
+
+// fast-adaptive's shift for the block's span (the drawing and the bound's span path alike)
+[[gnu::always_inline]] inline int32_t adaptive_shift(const FastSubdivArgs& a, double room) {
+    const double last = a.x + double(a.count > 0 ? a.count - 1 : 0) * double(SUBPIXEL_ONE);
+    return fast_adaptive_shift(a.c[0] + a.g[0] * a.x, a.c[0] + a.g[0] * last, magnitude(a.g[0]) * double(SUBPIXEL_ONE), room);
+}
+
+// fast-subdiv's arithmetic (fast_subdiv_bound)
+constexpr SegmentArithmetic FAST_ARITHMETIC{true, HALF_ULP_16_16, 3 * HALF_ULP_16_16, 32767};
+
+}  // namespace
+
+template <int N>
+void fast_subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
+    static_assert(N >= 2 && N <= 512 && (N & (N - 1)) == 0);
+    FastSubdivArgs a;
+    span_args(c.setup, c.axis, s, c.tex, dst, stride, &a);
     a.shift = log2(N);
-    a.x = rows ? x : y;
-    const Plane* planes[3] = {&setup.q, &setup.pu, &setup.pv};
-    for (int i = 0; i < 3; ++i) {
-        const Plane& p = *planes[i];
-        a.c[i] = rows ? p.a0 + p.gy * y : p.a0 + p.gx * x;
-        a.g[i] = rows ? p.gx : p.gy;
-    }
+    c.loop(&a);
+}
+
+template <int QUARTERS>
+void fast_adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
+    static_assert(QUARTERS >= 4, "below one footprint no chord of two pixels is within (relative_chords_bound)");
+    FastSubdivArgs a;
+    span_args(c.setup, c.axis, s, c.tex, dst, stride, &a);
+    constexpr double room = fast_adaptive_room(QUARTERS / 4.0);
+    a.shift = adaptive_shift(a, room);
     c.loop(&a);
 }
 
@@ -81,7 +113,47 @@ void fast_subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t
 template <int N>
 ErrorBound fast_subdiv_bound(const BoundContext& c, const Vertex* vertices, int count) {
     if (!mapper_accepts(c.mapper, c.tex)) return ErrorBound{false, true, 0};
-    return segments_bound(c, vertices, count, N, SegmentArithmetic{true, HALF_ULP_16_16, 3 * HALF_ULP_16_16, 32767});
+    return segments_bound(c, vertices, count, N, FAST_ARITHMETIC);
+}
+
+// fast-adaptive-B's bound (docs/accuracy.md, "fast-adaptive"). The whole polygon: where 16.16 holds
+// chords of 511 steps and the rounding (FAST_ARITHMETIC's after 511 steps, and twice the reference's)
+// is within FAST_ADAPTIVE_ROUNDING, every span whose shift found chords within room is within B,
+// and a span left at 2 pixels within the polygon's chords bound for 2 pixels: the larger of the
+// two; else the chords bound for 512 (no chord is longer). The rule trusts Q as the span evaluates
+// it: where Q's terms at a corner are at most 2^26 times its least, its relative rounding (a few
+// 2^-52 of the terms) is far inside the room's 10^-6. A span: its chords as drawn (segments_span_bound),
+// or the relative chords bound at its own Q, whichever is less.
+template <int QUARTERS>
+ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, int count) {
+    if (!mapper_accepts(c.mapper, c.tex)) return ErrorBound{false, true, 0};
+    constexpr double budget = QUARTERS / 4.0, room = fast_adaptive_room(budget);
+    const bool rows = c.axis == Axis::Rows;
+    auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
+        const double last = p.lines[rows ? 0 : 1] - 1, steps = FAST_SPAN_LONG - 1 < last ? FAST_SPAN_LONG - 1 : last;
+        if (!chords_fit(c, p, s, steps, FAST_ARITHMETIC.chord)) return NO_BOUND;
+        const double rounding = FAST_ARITHMETIC.at(steps) + 2 * larger(p.reference[0], p.reference[1]);
+        double terms = 0;  // Q's terms at the corners (relative to the reference vertex, as the planes)
+        for (int i = 0; i < p.corners; ++i)
+            terms = larger(terms, magnitude(s.q.a0) + magnitude(s.q.gx * p.corner_x[i]) + magnitude(s.q.gy * p.corner_y[i]));
+        if (!(rounding <= FAST_ADAPTIVE_ROUNDING) || !(terms <= p.q_min * 67108864.0))
+            return spread_chords_bound(p, s, c.axis, FAST_SPAN_LONG < last ? FAST_SPAN_LONG : last, FAST_ARITHMETIC.at(steps), c.budget);
+        return larger(budget, spread_chords_bound(p, s, c.axis, 2 < last ? 2 : last, FAST_ARITHMETIC.at(1 < last ? 1 : last), c.budget));
+    };
+    return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
+        FastSubdivArgs a;
+        span_args(s, c.axis, span, c.tex, nullptr, 1, &a);
+        const double n = double(int32_t(1) << adaptive_shift(a, room));
+        const double drawn = segments_span_bound(c, span, s, fits, n, FAST_ARITHMETIC);
+        const SpanLine l = span_line(s, c.axis, span);
+        const double last = double(span.count - 1), h = n < last ? n : last;
+        const double q_lo = larger(0.0, l.q0 < l.q0 + l.qm * last ? l.q0 : l.q0 + l.qm * last);
+        const ChordTerms terms = chord_terms(l);
+        const double relative = q_lo > 0 ? relative_chords_bound(h * h * magnitude(l.qm) / (4 * q_lo),
+                                                                 FAST_ARITHMETIC.at(h) + larger(terms.reference[0], terms.reference[1]))
+                                         : NO_BOUND;
+        return drawn < relative ? drawn : relative;
+    });
 }
 
 // The loop's random cases (core/selftest.h): planes from real triangles and extremes (random_planes),
@@ -120,5 +192,9 @@ template ErrorBound fast_subdiv_bound<8>(const BoundContext&, const Vertex*, int
 template ErrorBound fast_subdiv_bound<16>(const BoundContext&, const Vertex*, int);
 template ErrorBound fast_subdiv_bound<32>(const BoundContext&, const Vertex*, int);
 template ErrorBound fast_subdiv_bound<FAST_SPAN_LONG>(const BoundContext&, const Vertex*, int);
+template void fast_adaptive_span<4>(const SpanContext&, const Span&, uint8_t*, int32_t);
+template void fast_adaptive_span<8>(const SpanContext&, const Span&, uint8_t*, int32_t);
+template ErrorBound fast_adaptive_bound<4>(const BoundContext&, const Vertex*, int);
+template ErrorBound fast_adaptive_bound<8>(const BoundContext&, const Vertex*, int);
 
 }  // namespace raster

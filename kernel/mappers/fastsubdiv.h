@@ -4,6 +4,7 @@
 
 #include <stdint.h>
 
+#include "kernel/core/bound.h"
 #include "kernel/core/mapper.h"
 
 namespace raster {
@@ -36,6 +37,42 @@ template <int N>
 void fast_subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
 template <int N>
 ErrorBound fast_subdiv_bound(const BoundContext& c, const Vertex* vertices, int count);
+
+// fast-adaptive-B (B = QUARTERS / 4 footprints, 1 or more): the same loop, its segments as long as
+// the relative chords bound allows, span by span: the longest power of two from 2 to 512 pixels
+// whose chords keep every pixel within B footprints (docs/accuracy.md, "fast-adaptive"). Along a
+// span Q is linear: a chord of h pixels deviates at each pixel by at most X = h^2 |Q'| / (4 Q_lo)
+// times that pixel's own step (Q' a pixel along the span, Q_lo the least of Q at the span's ends),
+// and relative_chords_bound(X, r) <= B where X <= fast_adaptive_room(B) and the rounding r (16.16
+// over up to 511 steps, and the reference's) is at most FAST_ADAPTIVE_ROUNDING texels.
+constexpr double FAST_ADAPTIVE_ROUNDING = 1.0 / 32;
+// relative_chords_bound(X, r) = max(n0, (n0 + 1) X / (n0 - r)), n0 = ceil(X + r): within B
+// (n0 = floor(B) >= 1) up to X = B (n0 - r) / (n0 + 1), where X + r <= n0 holds too; 0 below 1.
+constexpr double fast_adaptive_room(double budget) {
+    const double n0 = double(int64_t(budget));
+    return n0 >= 1 ? budget * (n0 - FAST_ADAPTIVE_ROUNDING) / (n0 + 1) * (1 - 1e-6) : 0;
+}
+// The segments' log2 for a span from Q at its first and last pixel and |Q'| a pixel: the largest s
+// in 1..9 with 4^s |Q'| <= 4 Q_lo room; 1 where none is (2 pixels: the bound then says how far).
+// (Inline: once a span, where a call and its arguments cost as much again.)
+[[gnu::always_inline]] inline int32_t fast_adaptive_shift(double q_first, double q_last, double q_pixel, double room) {
+    const double q_lo = q_first < q_last ? q_first : q_last;
+    // h = 2^s within where h^2 <= ratio: s = floor(log2(ratio) / 2), from the exponent's bits,
+    // clamped to 1..9 (512^2 = 2^18). A ratio not above 0 (its sign bit: Q_lo not above 0) or below
+    // 4 takes 1; +inf (Q constant along the span, the gradient 0 or -0) takes 9.
+    const double ratio = 4 * room * q_lo / __builtin_fabs(q_pixel);
+    uint64_t bits;
+    __builtin_memcpy(&bits, &ratio, sizeof bits);
+    const uint32_t high = uint32_t(bits >> 32);
+    if (int32_t(high) < 0) return 1;
+    const int32_t s = (int32_t(high >> 20) - 1023) >> 1;
+    return s < 1 ? 1 : s > 9 ? 9 : s;
+}
+template <int QUARTERS>
+void fast_adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
+template <int QUARTERS>
+ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, int count);
+
 LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
 }  // namespace raster

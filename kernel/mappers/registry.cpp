@@ -76,6 +76,16 @@ const Mapper MAPPERS[] = {
      "as fast-affine",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_subdiv_span<FAST_SPAN_LONG>, TWIN_AND_ASM(fast_subdiv_loop), nullptr,
      check_fast_subdiv, fast_subdiv_bound<FAST_SPAN_LONG>, false, SPANS_ASKED},
+    {"fast-adaptive-1", "ours", "fast-subdiv's loop, its segments span by span as long as the bound keeps within one footprint",
+     "exact u, v every 2^s pixels and at the last, the fast 8:16 core between, s for each span the largest (to 512 pixels) whose "
+     "chords the relative chords bound keeps within 1 footprint (long where 1/w barely changes along the span); exact coverage; "
+     "textures as fast-affine",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_adaptive_span<4>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
+     fast_adaptive_bound<4>},
+    {"fast-adaptive-2", "ours", "fast-subdiv's loop, its segments span by span as long as the bound keeps within two footprints",
+     "as fast-adaptive-1, within 2 footprints",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_adaptive_span<8>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
+     fast_adaptive_bound<8>},
     {"xsharp-dda", "classic", "Abrash, Black Book listing 57.1 (X-Sharp 21, C)",
      "affine; whole-pixel vertices, X-Sharp's fill convention; half-step prestep, rounds to the nearest texel; cannot wrap",
      NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, nullptr, nullptr, xsharp::draw_dda, nullptr, xsharp::bound_rows},

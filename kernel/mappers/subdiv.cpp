@@ -76,6 +76,8 @@ void runs_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride
     }
 }
 
+}  // namespace
+
 // Whether 16.16 holds chords of up to `steps` steps anywhere on the polygon (the whole-polygon
 // bounds): from the largest |t| (clamp; repeat reduces the start first) by the largest |t'|; a
 // chord's ends, two exact values at pixels drawn, at most the spread's range of t apart (each
@@ -94,6 +96,8 @@ bool chords_fit(const BoundContext& c, PolygonSpread& p, const PolygonSetup& s, 
     }
     return true;
 }
+
+namespace {
 
 // The bound over pixels k0..k1 of the run whose chord goes from exact point `from` to `end`: the
 // chord's deviation (lines_bound), within the arithmetic's rounding after k1 - from steps; clears
@@ -154,35 +158,38 @@ void adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t st
 // first pixel along the chord to the exact value at the next exact point, to within the
 // arithmetic's rounding; the chord's deviation from the exact mapping is measured piece by piece (a
 // segment, or BOUND_PIECE pixels of a longer one), each over its own smallest footprint.
-ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int count, double N, const SegmentArithmetic& a) {
+double segments_span_bound(const BoundContext& c, const Span& span, const PolygonSetup& s, bool* fits, double N, const SegmentArithmetic& a) {
     const int32_t size[2] = {c.tex.width, c.tex.height};
     const double length = N < BOUND_PIECE ? N : BOUND_PIECE;
+    SpanLine l = span_line(s, c.axis, span);
+    const double last = double(span.count - 1);
+    auto segment = [&](double k) { return double(int64_t(k / N)) * N; };  // the first pixel of k's segment
+    auto next_exact = [&](double k) { return segment(k) + N < last ? segment(k) + N : last; };
+    // coarse, over pixels k0..k1: the chords through them run from the start of k0's segment
+    // to the exact point after k1, and everything is taken over that whole stretch (a chord's
+    // error depends on t'' all along it): every chord at most N pixels and the span long, its
+    // steps at most the largest |t'|, its start (clamp) at most the larger end (t is monotonic
+    // along a span); where that may not fit 16.16, no coarse bound: the pieces one by one
+    auto coarse = [&](double k0, double k1) {
+        const double from = segment(k0), reach = next_exact(k1), h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
+        for (int t = 0; t < 2 && a.wraps; ++t) {
+            double start = c.tex.wrap == Wrap::Repeat ? 0.0 : larger(magnitude(span_exact(l, t, from)), magnitude(span_exact(l, t, reach)));
+            const double step = max_step_along(l, t, from, reach);
+            if (!fits_16_16(start, step, steps, size[t], c.tex.wrap) || !(step * (steps + 1) < a.chord)) return NO_BOUND;
+        }
+        return chords_bound(l, h, from, reach, a.at(steps));
+    };
+    auto piece = [&](double k0, double k1) { return run_bound(l, c.tex, a, segment(k0), next_exact(k0), k0, k1, fits); };  // on its chord
+    return span_bound(c, 0, last, length, coarse, piece);
+}
+
+ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int count, double N, const SegmentArithmetic& a) {
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {  // the coarse bound below, over the polygon
         const double last = p.lines[c.axis == Axis::Rows ? 0 : 1] - 1, h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
         return !a.wraps || chords_fit(c, p, s, steps, a.chord) ? spread_chords_bound(p, s, c.axis, h, a.at(steps), c.budget) : NO_BOUND;
     };
-    return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
-        SpanLine l = span_line(s, c.axis, span);
-        const double last = double(span.count - 1);
-        auto segment = [&](double k) { return double(int64_t(k / N)) * N; };  // the first pixel of k's segment
-        auto next_exact = [&](double k) { return segment(k) + N < last ? segment(k) + N : last; };
-        // coarse, over pixels k0..k1: the chords through them run from the start of k0's segment
-        // to the exact point after k1, and everything is taken over that whole stretch (a chord's
-        // error depends on t'' all along it): every chord at most N pixels and the span long, its
-        // steps at most the largest |t'|, its start (clamp) at most the larger end (t is monotonic
-        // along a span); where that may not fit 16.16, no coarse bound: the pieces one by one
-        auto coarse = [&](double k0, double k1) {
-            const double from = segment(k0), reach = next_exact(k1), h = N < last ? N : last, steps = N - 1 < last ? N - 1 : last;
-            for (int t = 0; t < 2 && a.wraps; ++t) {
-                double start = c.tex.wrap == Wrap::Repeat ? 0.0 : larger(magnitude(span_exact(l, t, from)), magnitude(span_exact(l, t, reach)));
-                const double step = max_step_along(l, t, from, reach);
-                if (!fits_16_16(start, step, steps, size[t], c.tex.wrap) || !(step * (steps + 1) < a.chord)) return NO_BOUND;
-            }
-            return chords_bound(l, h, from, reach, a.at(steps));
-        };
-        auto piece = [&](double k0, double k1) { return run_bound(l, c.tex, a, segment(k0), next_exact(k0), k0, k1, fits); };  // on its chord
-        return span_bound(c, 0, last, length, coarse, piece);
-    });
+    return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole,
+                          [&](const Span& span, const PolygonSetup& s, bool* fits) { return segments_span_bound(c, span, s, fits, N, a); });
 }
 
 template <int N>

@@ -5,7 +5,12 @@
 // bound is in bound_test.cpp (every mapper of the registry).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <random>
+
 #include "kernel/core/bound.h"
+#include "kernel/mappers/fastsubdiv.h"
 #include "kernel/mappers/subdiv.h"
 #include "tests/unit/raster_helpers.h"
 
@@ -83,6 +88,73 @@ TEST(Adaptive, ASpanOfConstantDepthIsOneRun) {
         ++checked;
     }
     EXPECT_GT(checked, 100);
+}
+
+// fast-adaptive-B: the room it allows a chord (X, in each pixel's own steps) keeps the relative
+// chords bound within B at its rounding allowance, and no more room would.
+TEST(FastAdaptive, TheRoomKeepsTheRelativeChordsBoundWithinTheBudget) {
+    for (double budget : {1.0, 1.25, 1.5, 2.0, 3.0, 4.0, 7.75}) {
+        const double room = fast_adaptive_room(budget);
+        EXPECT_LE(relative_chords_bound(room, FAST_ADAPTIVE_ROUNDING), budget) << budget;
+        EXPECT_GT(relative_chords_bound(room * 1.001, FAST_ADAPTIVE_ROUNDING), budget) << budget << ": room left unused";
+    }
+    EXPECT_EQ(fast_adaptive_room(0.75), 0) << "below one footprint no chord of two pixels is within";
+}
+
+// Each span's segments: the longest power of two from 2 to 512 pixels whose relative chords bound
+// (h^2 |Q'| / (4 Q_lo)) stays within the room; 2 where none does; 512 where Q is constant.
+TEST(FastAdaptive, EachSpanTakesTheLongestSegmentsWithinTheRoom) {
+    std::mt19937 rng(909u);
+    auto log_uniform = [&](double lo, double hi) { return std::exp(std::uniform_real_distribution<double>(std::log(lo), std::log(hi))(rng)); };
+    int seen[10] = {};
+    for (int n = 0; n < 200000; ++n) {
+        const double room = fast_adaptive_room(n % 2 ? 1.0 : 2.0);
+        const double q_first = log_uniform(1e-6, 10), q_last = q_first * log_uniform(0.1, 10), q_pixel = log_uniform(1e-12, 10);
+        const int32_t s = fast_adaptive_shift(q_first, q_last, q_pixel, room);
+        ASSERT_GE(s, 1);
+        ASSERT_LE(s, 9);
+        ++seen[s];
+        const double q_lo = std::min(q_first, q_last);
+        auto within = [&](int32_t shift) { return std::ldexp(1.0, 2 * shift) * q_pixel / (4 * q_lo) <= room; };
+        if (s > 1) {
+            EXPECT_TRUE(within(s)) << q_first << " " << q_last << " " << q_pixel << ": 2^" << s << " is not within";
+        }
+        if (s < 9) {
+            EXPECT_FALSE(within(s + 1)) << q_first << " " << q_last << " " << q_pixel << ": 2^" << s + 1 << " is within too";
+        }
+        if (HasFailure()) return;
+    }
+    for (int s = 1; s <= 9; ++s) EXPECT_GT(seen[s], 1000) << "shift " << s << " never taken";
+    EXPECT_EQ(fast_adaptive_shift(1, 2, 0.0, fast_adaptive_room(1)), 9);
+    EXPECT_EQ(fast_adaptive_shift(1, 2, -0.0, fast_adaptive_room(1)), 9) << "a gradient of -0 is constant Q too";
+    EXPECT_EQ(fast_adaptive_shift(0, 2, 1e-9, fast_adaptive_room(1)), 1);
+    EXPECT_EQ(fast_adaptive_shift(1, 1, 1e-300, fast_adaptive_room(1)), 9);
+}
+
+// Under strong perspective the segments follow the depth: over random triangles (depth ratios to
+// 1000), the spans of one polygon take segments of different lengths.
+TEST(FastAdaptive, SegmentsDifferFromSpanToSpanUnderPerspective) {
+    TriangleGen gen(5151u);
+    gen.depth_ratio = 1000;
+    int polygons = 0, varied = 0;
+    for (int n = 0; n < 300; ++n) {
+        std::vector<Vertex> p = gen.triangle();
+        PolygonSetup s;
+        if (setup_polygon(p.data(), 3, &s) != SetupStatus::Ok) continue;
+        EdgeWalker walker(s, Axis::Rows, ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT});
+        Span span;
+        int lo = 10, hi = 0, spans = 0;
+        while (walker.next(&span)) {
+            const SpanLine l = span_line(s, Axis::Rows, span);
+            const int32_t shift = fast_adaptive_shift(l.q0, l.q0 + l.qm * (l.count - 1), std::fabs(l.qm), fast_adaptive_room(1));
+            if (span.count > 2) lo = std::min(lo, shift), hi = std::max(hi, shift), ++spans;
+        }
+        if (spans < 10) continue;
+        ++polygons;
+        varied += lo < hi;
+    }
+    EXPECT_GT(polygons, 50);
+    EXPECT_GT(varied, polygons / 4) << "segments of one length a polygon: the rule does not follow the depth";
 }
 
 }  // namespace
