@@ -146,6 +146,23 @@ void affine_piece(const DrawContext& c, uint8_t* row, int64_t x0, int64_t n, int
     u = int32_t(uint32_t(u) + skip * uint32_t(du));
     v = int32_t(uint32_t(v) + skip * uint32_t(dv));
     const int32_t pitch = bordered_pitch(c.tex);
+    // His loop reads wherever the piece points: texel floor((u + k du) / 65536) along u (the
+    // fractions' carries make it exactly that), likewise v, monotonic in k. Where the piece's first
+    // or last pixel would read outside the bordered copy (-1 .. size: his truncated 28.4 vertices
+    // and rounding modifier extrapolated over a steep gradient; the fuzzer found one), the memory
+    // he would have read is not ours: each pixel takes the nearest texel of the copy instead, and
+    // his bound has none there (within_border).
+    const int64_t last = hi - lo - 1;
+    auto index = [](int32_t t, int32_t dt, int64_t k) { return (int64_t(t) + k * dt) >> 16; };
+    auto inside = [&](int64_t i, int32_t size) { return i >= -1 && i <= size; };
+    if (!inside(index(u, du, 0), c.tex.width) || !inside(index(u, du, last), c.tex.width) || !inside(index(v, dv, 0), c.tex.height) ||
+        !inside(index(v, dv, last), c.tex.height)) {
+        auto clamp = [](int64_t i, int32_t size) { return i < -1 ? -1 : i > size ? size : i; };
+        for (int64_t k = 0; k <= last; ++k)
+            row[lo + k] = bordered_origin(c.tex)[clamp(index(u, du, k), c.tex.width) + clamp(index(v, dv, k), c.tex.height) * pitch];
+        tally(c.stats, 1, uint32_t(last + 1));
+        return;
+    }
     HeckerArgs a;
     a.dst = row + lo;
     a.count = int32_t(hi - lo);
