@@ -77,8 +77,11 @@ namespace {
 
 // fast-adaptive's shift for the block's span (the drawing and the bound's span path alike)
 [[gnu::always_inline]] inline int32_t adaptive_shift(const FastSubdivArgs& a, double room) {
-    const double last = a.x + double(a.count > 0 ? a.count - 1 : 0) * double(SUBPIXEL_ONE);
-    return fast_adaptive_shift(a.c[0] + a.g[0] * a.x, a.c[0] + a.g[0] * last, magnitude(a.g[0]) * double(SUBPIXEL_ONE), room);
+    // Q at the end it falls toward: the last pixel's where it falls along the span, else the first's
+    // (rounding is monotonic, so that is the lesser of the two as computed: one evaluation, not two)
+    const double g = a.g[0];
+    const double q_lo = g < 0 ? a.c[0] + g * (a.x + double(a.count > 0 ? a.count - 1 : 0) * double(SUBPIXEL_ONE)) : a.c[0] + g * a.x;
+    return fast_adaptive_shift(q_lo, q_lo, __builtin_fabs(g) * double(SUBPIXEL_ONE), room);
 }
 
 // fast-subdiv's arithmetic (fast_subdiv_bound)
