@@ -34,14 +34,56 @@ P3 sub(P3 a, P3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 P3 cross3(P3 a, P3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
 double dot3(P3 a, P3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 
+using FaceCorners = std::vector<std::pair<P3, std::pair<double, double>>>;
+
+// A planar face with texture coordinates affine over it, cut along the lines where u or v (axis 0,
+// 1) is a whole number of periods: pieces each within one period along both, as the tools of the
+// classics cut their surfaces (Quake's qbsp into pieces of at most 240 texels), so that a loop that
+// cannot wrap draws every piece after a whole-period shift. Cut points are interpolated along the
+// edges and take the whole number exactly.
+std::vector<FaceCorners> cut_by_periods(const FaceCorners& face, int axis = 0) {
+    if (axis == 2) return {face};
+    auto t = [&](const std::pair<P3, std::pair<double, double>>& c) { return axis == 0 ? c.second.first : c.second.second; };
+    double lo = t(face[0]), hi = lo;
+    for (const auto& c : face) lo = std::min(lo, t(c)), hi = std::max(hi, t(c));
+    const double k = std::floor(lo) + 1;  // the first whole number above the least
+    if (!(k < hi - 1e-9)) return cut_by_periods(face, axis + 1);
+    FaceCorners below, above;
+    for (size_t i = 0; i < face.size(); ++i) {
+        const auto& a = face[i];
+        const auto& b = face[(i + 1) % face.size()];
+        if (t(a) <= k) below.push_back(a);
+        if (t(a) >= k) above.push_back(a);  // (a corner on the line belongs to both)
+        if ((t(a) < k && t(b) > k) || (t(a) > k && t(b) < k)) {
+            const double f = (k - t(a)) / (t(b) - t(a));
+            auto mix = [&](double x, double y) { return x + (y - x) * f; };
+            std::pair<P3, std::pair<double, double>> c{{mix(a.first.x, b.first.x), mix(a.first.y, b.first.y), mix(a.first.z, b.first.z)},
+                                                        {mix(a.second.first, b.second.first), mix(a.second.second, b.second.second)}};
+            (axis == 0 ? c.second.first : c.second.second) = k;
+            below.push_back(c);
+            above.push_back(c);
+        }
+    }
+    std::vector<FaceCorners> out = cut_by_periods(below, axis + 1);
+    for (FaceCorners& piece : cut_by_periods(above, axis)) out.push_back(std::move(piece));
+    return out;
+}
+
 // A mesh being made: positions and texture coordinates shared by value, faces as corner lists.
 class MeshMaker {
 public:
-    explicit MeshMaker(std::string name) : name_(std::move(name)) {}
+    // cut: every face cut along its texture's period lines (cut_by_periods)
+    explicit MeshMaker(std::string name, bool cut = false) : name_(std::move(name)), cut_(cut) {}
     int position(P3 p) { return index(positions_, {num(p.x), num(p.y), num(p.z)}); }
     int uv(double u, double v) { return index(uvs_, {num(u), num(v)}); }
     // Adds a face given in any winding; `outward` is a direction its front must face.
-    void face(std::vector<std::pair<P3, std::pair<double, double>>> corners, P3 outward) {
+    void face(FaceCorners corners, P3 outward) {
+        if (cut_) {
+            cut_ = false;
+            for (FaceCorners& piece : cut_by_periods(corners)) face(std::move(piece), outward);
+            cut_ = true;
+            return;
+        }
         P3 n = cross3(sub(corners[1].first, corners[0].first), sub(corners[2].first, corners[0].first));
         if (dot3(n, outward) < 0) std::reverse(corners.begin(), corners.end());
         std::vector<std::pair<int, int>> f;
@@ -77,6 +119,7 @@ private:
         return out;
     }
     std::string name_;
+    bool cut_;
     std::map<Key, int> positions_, uvs_;
     std::vector<std::vector<std::pair<int, int>>> faces_;
 };
@@ -131,7 +174,7 @@ const char* CORRIDOR_CAMERA =
     "end\n"
     "frames 360\n";
 
-std::string ball() {
+std::string ball_scene(bool all256) {
     // latitude bands of 30 degrees, 12 facets of 30 degrees around: one copy of the texture spans
     // two neighbouring facets (u 0..0.5 on one, 0.5..1 on the next) and one band
     MeshMaker m("ball");
@@ -151,10 +194,13 @@ std::string ball() {
             else if (a == bands - 1) m.face({{p00, {u0, 0}}, {p01, {u1, 0}}, {p10, {(u0 + u1) / 2, 1}}}, mid);
             else m.face({{p00, {u0, 0}}, {p01, {u1, 0}}, {p11, {u1, 1}}, {p10, {u0, 1}}}, mid);
         }
-    return "modexlab-scene 2\n"
-           "# X-Sharp's demo: a spinning polyhedral ball; each copy of the texture spans two\n"
-           "# neighbouring facets, so a mapper's seams and edges show where facets meet.\n"
-           "texture cells numbered 128 64\n" +
+    return std::string("modexlab-scene 2\n") +
+           (all256 ? "# The ball with its texture at 256 x 256 (the same layout), so that fatmap's loops, which take\n"
+                     "# only that size, draw it too: every mapper draws all of it.\n"
+                     "texture cells numbered 256 256\n"
+                   : "# X-Sharp's demo: a spinning polyhedral ball; each copy of the texture spans two\n"
+                     "# neighbouring facets, so a mapper's seams and edges show where facets meet.\n"
+                     "texture cells numbered 128 64\n") +
            m.text() +
            "object ball\n  mesh ball\n  texture cells\n  wrap repeat\n  spin 0.3 1 0.2 40\n  rotate 1 0 0 20\nend\n"
            "camera\n  position 0 0 3.2\n  target 0 0 0\n  fov 60\nend\n"
@@ -162,15 +208,19 @@ std::string ball() {
            "frames 270\n";
 }
 
-std::string corridor() {
-    MeshMaker floor("floor"), ceiling("ceiling");
-    std::vector<MeshMaker> walls = {MeshMaker("walls")};
+std::string corridor_scene(bool cut) {
+    MeshMaker floor("floor", cut), ceiling("ceiling", cut);
+    std::vector<MeshMaker> walls = {MeshMaker("walls", cut)};
     room(floor, ceiling, walls, {-2, 0, -60}, {2, 3, 60}, 1, 0.5, 0.5);
-    return "modexlab-scene 2\n"
-           "# A corridor 120 units deep: floor, ceiling and walls each one polygon receding from the\n"
-           "# eye to the far end (the perspective stress case: depth ratios in the thousands, and the\n"
-           "# near plane cutting every face). Its textures are 256 x 256, so the mappers that need that\n"
-           "# size can draw it too.\n"
+    return std::string("modexlab-scene 2\n") +
+           (cut ? "# The corridor with every face cut along its texture's period lines (each piece within one\n"
+                  "# 256-texel period along u and v, as the classics' tools cut surfaces), so that every mapper,\n"
+                  "# the classics that cannot wrap included, draws all of it: the same picture as corridor.scene\n"
+                  "# from some 500 polygons instead of 6.\n"
+                : "# A corridor 120 units deep: floor, ceiling and walls each one polygon receding from the\n"
+                  "# eye to the far end (the perspective stress case: depth ratios in the thousands, and the\n"
+                  "# near plane cutting every face). Its textures are 256 x 256, so the mappers that need that\n"
+                  "# size can draw it too.\n") +
            "texture tiles checker 256 256\ntexture panels grid 256 256\ntexture plates numbered 256 256\n" +
            floor.text() + ceiling.text() + walls[0].text() +
            "object floor\n  mesh floor\n  texture tiles\nend\n"
@@ -178,6 +228,9 @@ std::string corridor() {
            "object walls\n  mesh walls\n  texture plates\nend\n" +
            CORRIDOR_CAMERA + "budget max-error 1 coverage exact\n";
 }
+
+std::string corridor() { return corridor_scene(false); }
+std::string corridor_cut() { return corridor_scene(true); }
 
 std::string rotozoom() {
     MeshMaker m("quad");
@@ -235,14 +288,19 @@ std::string mesh() {
            "frames 360\n";
 }
 
-std::string cube() {
+std::string cube_scene(bool all256) {
     const char* textures[6] = {"checks", "grid", "cells", "bits", "shades", "big"};
     std::string out =
-        "modexlab-scene 2\n"
-        "# A cube, six faces, six textures of six sizes and kinds (two of them 256 x 256, for the\n"
-        "# mappers that need it), spinning about a tilted axis.\n"
-        "texture checks checker 32 32\ntexture grid grid 64 64\ntexture cells numbered 128 128\n"
-        "texture bits xor 256 256\ntexture shades gradient 128 64\ntexture big checker 256 256\n";
+        all256 ? "modexlab-scene 2\n"
+                 "# The cube with its six textures all 256 x 256 (the same kinds), so that fatmap's loops, which\n"
+                 "# take only that size, draw every face: every mapper draws all of it.\n"
+                 "texture checks checker 256 256\ntexture grid grid 256 256\ntexture cells numbered 256 256\n"
+                 "texture bits xor 256 256\ntexture shades gradient 256 256\ntexture big checker 256 256\n"
+               : "modexlab-scene 2\n"
+                 "# A cube, six faces, six textures of six sizes and kinds (two of them 256 x 256, for the\n"
+                 "# mappers that need it), spinning about a tilted axis.\n"
+                 "texture checks checker 32 32\ntexture grid grid 64 64\ntexture cells numbered 128 128\n"
+                 "texture bits xor 256 256\ntexture shades gradient 128 64\ntexture big checker 256 256\n";
     const P3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     for (int f = 0; f < 6; ++f) {
         MeshMaker m(std::string("face") + char('1' + f));
@@ -283,15 +341,23 @@ std::string freedoom() {
            CORRIDOR_CAMERA + "budget max-error 1 coverage exact\n";
 }
 
+std::string ball() { return ball_scene(false); }
+std::string ball_256() { return ball_scene(true); }
+std::string cube() { return cube_scene(false); }
+std::string cube_256() { return cube_scene(true); }
+
 }  // namespace
 
 const std::vector<DemoScene>& demo_scenes() {
     static const std::vector<DemoScene> scenes = {
         {"ball", "X-Sharp's demo: a spinning polyhedral ball, a texture across two facets", ball},
+        {"ball-256", "the ball with its texture at 256 x 256: every mapper draws all of it", ball_256},
         {"corridor", "floor, ceiling and walls receding 120 units: the perspective stress case, near-plane clipping", corridor},
+        {"corridor-cut", "the corridor cut along its textures' period lines: every mapper draws all of it", corridor_cut},
         {"rotozoom", "one quad through every angle, from heavy minification to heavy magnification", rotozoom},
         {"mesh", "a closed torus of 4096 triangles, spans of 2 pixels on average: the setup-bound case", mesh},
         {"cube", "six faces, six textures of different kinds and sizes", cube},
+        {"cube-256", "the cube with its six textures at 256 x 256: every mapper draws all of it", cube_256},
         {"freedoom", "the corridor in Freedoom's textures and palette (image files, a scene palette)", freedoom},
     };
     return scenes;

@@ -237,6 +237,42 @@ void write_outer_loops(std::ostream& out, const std::vector<TradeRow>& rows) {
         << "|---|---|--:|--:|--:|--:|--:|--:|--:|\n" << table;
 }
 
+// The scenes every single mapper draws whole (issue 14, goal 1: the same pictures and polygons for
+// all), each mapper's figures side by side; the scenes left out, with how many mappers refuse some
+// or all of their polygons.
+void write_whole_scenes(std::ostream& out, const std::vector<TradeRow>& rows) {
+    std::string tables, left_out;
+    for (const std::string& scene : scenes_in_order(rows)) {
+        int partial = 0, singles = 0;
+        for (const TradeRow& r : rows) {
+            const raster::Mapper* m = raster::find_mapper(r.mapper.c_str());
+            if (r.scene != scene || !m || m->chooses) continue;
+            ++singles;
+            partial += !r.draws_everything();
+        }
+        if (singles == 0) continue;
+        if (partial) {
+            left_out += (left_out.empty() ? "" : ", ") + scene + " (" + std::to_string(partial) + " of " + std::to_string(singles) + ")";
+            continue;
+        }
+        tables += "\n### " + scene + "\n\n| mapper | inner instr/px | draw instr/px | setup instr/polygon | walk instr/span | footprint err max / mean |\n"
+                  "|---|--:|--:|--:|--:|--:|\n";
+        for (const TradeRow* r : drawing_rows_by_speed(rows, scene)) {
+            const raster::Mapper* m = raster::find_mapper(r->mapper.c_str());
+            if (!m || m->chooses) continue;
+            tables += "| " + r->mapper + " | " + fixed(r->inner_per_pixel(), 1) + " | " + fixed(r->draw_per_pixel(), 1) + " | " +
+                      fixed(r->setup_per_polygon(), 0) + " | " + fixed(r->walk_per_span(), 1) + " | " + fixed(r->accuracy.max_footprint_error, 2) +
+                      " / " + fixed(r->accuracy.mean_footprint_error, 3) + " |\n";
+        }
+    }
+    out << "\n## Every mapper on the same work\n\n"
+        << "Only the scenes where every single mapper draws every polygon (none refused for its texture or its coordinates), "
+           "so that each row below is the same pictures from the same polygons; sorted by draw instructions a pixel.\n";
+    if (tables.empty()) out << "\nNo scene of this run is drawn whole by every mapper.\n";
+    out << tables;
+    if (!left_out.empty()) out << "\nLeft out (mappers that refuse some or all of the polygons, of the single mappers): " << left_out << ".\n";
+}
+
 }  // namespace
 
 void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, const ReportInfo& info) {
@@ -280,6 +316,7 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
         }
     }
 
+    write_whole_scenes(out, rows);
     write_outer_loops(out, rows);
 
     // the classics' published cycles beside our instruction counts, on the scene each drew most of

@@ -121,6 +121,31 @@ TEST(Trade, TheOuterLoopsArePerPolygonDrawn) {
     EXPECT_EQ(text.str().find("| a | affine | 5 |"), std::string::npos);
 }
 
+// "Every mapper on the same work": only scenes no single mapper refuses a polygon of (auto does not
+// count), each mapper's row; the others named with how many single mappers refuse some.
+TEST(Trade, EveryMapperOnTheSameWorkListsOnlyScenesNoMapperRefuses) {
+    std::vector<TradeRow> rows = {row("whole", "exact", 9000, 0),   row("whole", "fast-affine", 3000, 1), row("whole", "auto", 2000, 1),
+                                  row("split", "exact", 9000, 0),   row("split", "fast-affine", 3000, 1), row("split", "affine", 3000, 1),
+                                  row("split", "auto", 2000, 1)};
+    rows[4].rejected = 1;  // fast-affine refused one polygon of "split"
+    rows[2].rejected = 1;  // auto's refusals do not count (it is not a single mapper)
+    std::string dir = testing::TempDir() + "/trade_whole";
+    write_markdown(dir + "/trade.md", rows, ReportInfo{});
+    std::ifstream md(dir + "/trade.md");
+    std::stringstream text;
+    text << md.rdbuf();
+    const std::string t = text.str();
+    const size_t at = t.find("## Every mapper on the same work");
+    ASSERT_NE(at, std::string::npos) << t;
+    const std::string section = t.substr(at, t.find("\n## ", at + 1) - at);
+    EXPECT_NE(section.find("### whole"), std::string::npos) << section;
+    EXPECT_NE(section.find("| fast-affine | "), std::string::npos) << section;
+    EXPECT_EQ(section.find("| auto | "), std::string::npos) << section;
+    EXPECT_EQ(section.find("### split"), std::string::npos) << section;
+    EXPECT_NE(section.find("Left out (mappers that refuse some or all of the polygons, of the single mappers): split (1 of 3)"), std::string::npos)
+        << section;
+}
+
 LoadedWorld demo(const char* name) { return load_world_file(std::string("scenes/") + name + ".scene"); }
 
 
