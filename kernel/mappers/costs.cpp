@@ -5,34 +5,34 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2049.2f, 477.88f, 40.312f}, // 6 scenes
-    {"exact", 2055.2f, 326.61f, 80.251f}, // 6 scenes
-    {"persp-subdiv-4", 2055.2f, 349.00f, 107.048f}, // 6 scenes
-    {"persp-subdiv-8", 2055.2f, 418.37f, 67.286f}, // 6 scenes
-    {"persp-subdiv-16", 2055.2f, 467.25f, 47.257f}, // 6 scenes
-    {"persp-subdiv-32", 2055.2f, 492.74f, 37.454f}, // 6 scenes
-    {"constant-depth", 2055.2f, 513.35f, 29.883f}, // 6 scenes
-    {"persp-adaptive-0.5", 2055.2f, 809.62f, 441.192f}, // 6 scenes
-    {"persp-adaptive-1", 2055.2f, 1155.17f, 51.352f}, // 6 scenes
-    {"persp-adaptive-2", 2055.2f, 1171.96f, 44.389f}, // 6 scenes
-    {"persp-adaptive-4", 2055.2f, 1182.31f, 40.570f}, // 6 scenes
-    {"fast-affine", 2044.2f, 163.51f, 4.196f}, // 6 scenes
-    {"fast-columns", 2051.9f, 257.48f, 5.461f}, // 6 scenes
-    {"fast-subdiv-8", 2077.2f, 383.37f, 12.359f}, // 6 scenes
-    {"fast-subdiv-16", 2077.2f, 393.10f, 8.402f}, // 6 scenes
-    {"fast-subdiv-32", 2077.2f, 397.91f, 6.556f}, // 6 scenes
-    {"fast-constant-depth", 2077.2f, 401.80f, 5.125f}, // 6 scenes
-    {"fast-adaptive-1", 2077.2f, 435.28f, 8.071f}, // 6 scenes
-    {"fast-adaptive-2", 2077.2f, 438.68f, 6.746f}, // 6 scenes
-    {"xsharp-dda", 1687.3f, 387.81f, 37.671f}, // 5 scenes
-    {"xsharp-row-out", 1692.3f, 523.30f, 19.081f}, // 5 scenes
-    {"xsharp-column", 1694.2f, 494.57f, 11.509f}, // 5 scenes
-    {"hecker-steptable", 2829.6f, 0.00f, 376.998f}, // 5 scenes
-    {"fatmap-256", 1764.4f, 179.63f, 12.699f}, // 4 scenes
-    {"fatmap-256-16", 1764.4f, 184.63f, 11.699f}, // 4 scenes
-    {"fatmap-lut", 1835.7f, 190.28f, 6.209f}, // 3 scenes
-    {"quake-subdiv16", 2214.3f, 311.33f, 13.944f}, // 5 scenes
-    {"quake-subdiv8", 2214.3f, 295.93f, 20.303f}, // 5 scenes
+    {"affine", 2238.2f, 477.88f, 40.242f}, // 9 scenes
+    {"exact", 2244.2f, 326.59f, 80.171f}, // 9 scenes
+    {"persp-subdiv-4", 2244.2f, 349.02f, 106.930f}, // 9 scenes
+    {"persp-subdiv-8", 2244.2f, 418.59f, 66.998f}, // 9 scenes
+    {"persp-subdiv-16", 2244.2f, 467.59f, 46.871f}, // 9 scenes
+    {"persp-subdiv-32", 2244.2f, 493.11f, 37.062f}, // 9 scenes
+    {"constant-depth", 2244.2f, 513.19f, 29.941f}, // 9 scenes
+    {"persp-adaptive-0.5", 2244.2f, 1043.09f, 323.928f}, // 9 scenes
+    {"persp-adaptive-1", 2244.2f, 1151.25f, 52.278f}, // 9 scenes
+    {"persp-adaptive-2", 2244.2f, 1170.11f, 44.350f}, // 9 scenes
+    {"persp-adaptive-4", 2244.2f, 1182.30f, 40.079f}, // 9 scenes
+    {"fast-affine", 2233.2f, 163.77f, 3.910f}, // 9 scenes
+    {"fast-columns", 2242.9f, 257.49f, 5.390f}, // 9 scenes
+    {"fast-subdiv-8", 2266.2f, 383.38f, 12.250f}, // 9 scenes
+    {"fast-subdiv-16", 2266.2f, 393.13f, 8.279f}, // 9 scenes
+    {"fast-subdiv-32", 2266.2f, 397.94f, 6.432f}, // 9 scenes
+    {"fast-constant-depth", 2266.2f, 401.73f, 5.088f}, // 9 scenes
+    {"fast-adaptive-1", 2266.2f, 425.70f, 7.957f}, // 9 scenes
+    {"fast-adaptive-2", 2266.2f, 429.24f, 6.578f}, // 9 scenes
+    {"xsharp-dda", 1711.2f, 388.21f, 37.221f}, // 8 scenes
+    {"xsharp-row-out", 1716.2f, 523.42f, 18.755f}, // 8 scenes
+    {"xsharp-column", 1717.9f, 493.36f, 12.153f}, // 8 scenes
+    {"hecker-steptable", 5119.9f, 0.00f, 546.965f}, // 8 scenes
+    {"fatmap-256", 2140.4f, 180.27f, 11.838f}, // 7 scenes
+    {"fatmap-256-16", 2140.4f, 185.27f, 10.838f}, // 7 scenes
+    {"fatmap-lut", 2518.7f, 186.30f, 7.515f}, // 6 scenes
+    {"quake-subdiv16", 2422.0f, 311.79f, 13.612f}, // 8 scenes
+    {"quake-subdiv8", 2422.0f, 296.38f, 19.987f}, // 8 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
