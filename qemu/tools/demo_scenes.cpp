@@ -215,8 +215,8 @@ std::string corridor_scene(bool cut) {
     return std::string("modexlab-scene 2\n") +
            (cut ? "# The corridor with every face cut along its texture's period lines (each piece within one\n"
                   "# 256-texel period along u and v, as the classics' tools cut surfaces), so that every mapper,\n"
-                  "# the classics that cannot wrap included, draws all of it: the same picture as corridor.scene\n"
-                  "# from some 500 polygons instead of 6.\n"
+                  "# the classics that cannot wrap included, draws all of it: corridor.scene's camera and\n"
+                  "# textures, from 488 faces instead of 6.\n"
                 : "# A corridor 120 units deep: floor, ceiling and walls each one polygon receding from the\n"
                   "# eye to the far end (the perspective stress case: depth ratios in the thousands, and the\n"
                   "# near plane cutting every face). Its textures are 256 x 256, so the mappers that need that\n"
