@@ -133,7 +133,7 @@ int play_scenes(Args& a, Session& s) {
     const bool progress = isatty(1);  // frame counts on a terminal, not in logs
     std::printf("\nscenes, %d frames each (%.1f s of animation), drawn with %s; ticks are TSC ticks%s\n", a.frames,
                 double(a.frames) / raster::FRAMES_PER_SECOND, a.mapper.c_str(), a.session.icount ? " (icount: instructions)" : " (QEMU TCG, not a real PC)");
-    std::printf("%-9s %6s %9s %11s %12s %10s  %-28s %s\n", "scene", "frames", "polygons", "pixels", "ticks/frame", "ticks/px", "screenshot", "vs host");
+    std::printf("%-12s %6s %9s %11s %12s %10s  %-28s %s\n", "scene", "frames", "polygons", "pixels", "ticks/frame", "ticks/px", "screenshot", "vs host");
     for (size_t i = 0; i < scenes.size(); ++i) {
         const DemoScene& d = *scenes[i];
         s.ok(std::string("load ") + d.name + ".scene");
@@ -154,7 +154,7 @@ int play_scenes(Args& a, Session& s) {
         bool same = dump.rgb == screendump_of(want, host.world->palette).rgb && compare(s.readback(last["page"].get<int>()), want).equal();
         std::filesystem::copy_file(s.run_dir() + "/" + stem + ".png", a.out + "/" + stem + ".png", std::filesystem::copy_options::overwrite_existing);
         uint64_t pixels = r["pixels"].get<uint64_t>();
-        std::printf("%-9s %6d %9d %11llu %12llu %10.1f  %-28s %s\n", d.name, a.frames, last["polygons"].get<int>(), (unsigned long long)pixels,
+        std::printf("%-12s %6d %9d %11llu %12llu %10.1f  %-28s %s\n", d.name, a.frames, last["polygons"].get<int>(), (unsigned long long)pixels,
                     (unsigned long long)r["ticks_median"].get<uint64_t>(), pixels ? double(r["ticks"].get<uint64_t>()) / double(pixels) : 0.0,
                     (a.out + "/" + stem + ".png").c_str(), same ? "equal" : "DIFFERS");
         const json& drawn_by = r["drawn_by"];  // the mappers that drew: several when auto chose
