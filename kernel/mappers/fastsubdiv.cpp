@@ -119,14 +119,15 @@ ErrorBound fast_subdiv_bound(const BoundContext& c, const Vertex* vertices, int 
     return segments_bound(c, vertices, count, N, FAST_ARITHMETIC);
 }
 
-// fast-adaptive-B's bound (docs/accuracy.md, "fast-adaptive"). The whole polygon: where 16.16 holds
-// chords of 511 steps and the rounding (FAST_ARITHMETIC's after 511 steps, and twice the reference's)
-// is within FAST_ADAPTIVE_ROUNDING, every span whose shift found chords within room is within B,
-// and a span left at 2 pixels within the polygon's chords bound for 2 pixels: the larger of the
-// two; else the chords bound for 512 (no chord is longer). The rule trusts Q as the span evaluates
-// it: where Q's terms at a corner are at most 2^26 times its least, its relative rounding (a few
-// 2^-52 of the terms) is far inside the room's 10^-6. A span: its chords as drawn (segments_span_bound),
-// or the relative chords bound at its own Q, whichever is less.
+// fast-adaptive-B's bound (docs/accuracy.md, "Adaptive segments on the fast core"). The whole
+// polygon: where 16.16 holds chords of 511 steps and the rounding (FAST_ARITHMETIC's after 511
+// steps, and twice the reference's) is within FAST_ADAPTIVE_ROUNDING, every span whose shift found
+// chords within room is within B, and a span left at 2 pixels within the polygon's chords bound for
+// 2 pixels: the larger of the two; else the chords bound for 512 (no chord is longer). The rule
+// trusts Q as the span evaluates it: where Q's terms at a corner are at most 2^26 times its least,
+// its relative rounding (a few 2^-52 of the terms) is far inside the room's 10^-6. A span: its
+// chords as drawn (segments_span_bound), or the relative chords bound at its own Q, whichever is
+// less.
 template <int QUARTERS>
 ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, int count) {
     if (!mapper_accepts(c.mapper, c.tex)) return ErrorBound{false, true, 0};
@@ -147,8 +148,8 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
         FastSubdivArgs a;
         span_args(s, c.axis, span, c.tex, nullptr, 1, &a);
         const double n = double(int32_t(1) << adaptive_shift(a, room));
-        const double drawn = segments_span_bound(c, span, s, fits, n, FAST_ARITHMETIC);
         const SpanLine l = span_line(s, c.axis, span);
+        const double drawn = segments_span_bound(c, l, fits, n, FAST_ARITHMETIC);
         const double last = double(span.count - 1), h = n < last ? n : last;
         const double q_lo = larger(0.0, l.q0 < l.q0 + l.qm * last ? l.q0 : l.q0 + l.qm * last);
         const ChordTerms terms = chord_terms(l);

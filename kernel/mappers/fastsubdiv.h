@@ -40,11 +40,12 @@ ErrorBound fast_subdiv_bound(const BoundContext& c, const Vertex* vertices, int 
 
 // fast-adaptive-B (B = QUARTERS / 4 footprints, 1 or more): the same loop, its segments as long as
 // the relative chords bound allows, span by span: the longest power of two from 2 to 512 pixels
-// whose chords keep every pixel within B footprints (docs/accuracy.md, "fast-adaptive"). Along a
-// span Q is linear: a chord of h pixels deviates at each pixel by at most X = h^2 |Q'| / (4 Q_lo)
-// times that pixel's own step (Q' a pixel along the span, Q_lo the least of Q at the span's ends),
-// and relative_chords_bound(X, r) <= B where X <= fast_adaptive_room(B) and the rounding r (16.16
-// over up to 511 steps, and the reference's) is at most FAST_ADAPTIVE_ROUNDING texels.
+// whose chords keep every pixel within B footprints (docs/accuracy.md, "Adaptive segments on the
+// fast core"). Along a span Q is linear: a chord of h pixels deviates at each pixel by at most
+// X = h^2 |Q'| / (4 Q_lo) times that pixel's own step (Q' a pixel along the span, Q_lo the least
+// of Q at the span's ends), and relative_chords_bound(X, r) <= B where X <= fast_adaptive_room(B)
+// and the rounding r (16.16 over up to 511 steps, and the reference's) is at most
+// FAST_ADAPTIVE_ROUNDING texels.
 constexpr double FAST_ADAPTIVE_ROUNDING = 1.0 / 32;
 // relative_chords_bound(X, r) = max(n0, (n0 + 1) X / (n0 - r)), n0 = ceil(X + r): within B
 // (n0 = floor(B) >= 1) up to X = B (n0 - r) / (n0 + 1), where X + r <= n0 holds too; 0 below 1.

@@ -158,11 +158,10 @@ void adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t st
 // first pixel along the chord to the exact value at the next exact point, to within the
 // arithmetic's rounding; the chord's deviation from the exact mapping is measured piece by piece (a
 // segment, or BOUND_PIECE pixels of a longer one), each over its own smallest footprint.
-double segments_span_bound(const BoundContext& c, const Span& span, const PolygonSetup& s, bool* fits, double N, const SegmentArithmetic& a) {
+double segments_span_bound(const BoundContext& c, const SpanLine& l, bool* fits, double N, const SegmentArithmetic& a) {
     const int32_t size[2] = {c.tex.width, c.tex.height};
     const double length = N < BOUND_PIECE ? N : BOUND_PIECE;
-    SpanLine l = span_line(s, c.axis, span);
-    const double last = double(span.count - 1);
+    const double last = double(l.count - 1);
     auto segment = [&](double k) { return double(int64_t(k / N)) * N; };  // the first pixel of k's segment
     auto next_exact = [&](double k) { return segment(k) + N < last ? segment(k) + N : last; };
     // coarse, over pixels k0..k1: the chords through them run from the start of k0's segment
@@ -189,7 +188,7 @@ ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int cou
         return !a.wraps || chords_fit(c, p, s, steps, a.chord) ? spread_chords_bound(p, s, c.axis, h, a.at(steps), c.budget) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_PERSPECTIVE, whole,
-                          [&](const Span& span, const PolygonSetup& s, bool* fits) { return segments_span_bound(c, span, s, fits, N, a); });
+                          [&](const Span& span, const PolygonSetup& s, bool* fits) { return segments_span_bound(c, span_line(s, c.axis, span), fits, N, a); });
 }
 
 template <int N>

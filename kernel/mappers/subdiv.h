@@ -47,9 +47,9 @@ struct SegmentArithmetic {
     double at(double steps) const { return fixed + steps * per_step; }
 };
 ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int count, double N, const SegmentArithmetic& arithmetic);
-// Its bound on one span (bound_by_spans' span_bound_of): clears *fits where 16.16 may not hold it.
-double segments_span_bound(const BoundContext& c, const Span& span, const PolygonSetup& s, bool* fits, double N,
-                           const SegmentArithmetic& arithmetic);
+// Its bound on one span, from the span's line (bound_by_spans' span_bound_of): clears *fits where
+// 16.16 may not hold it.
+double segments_span_bound(const BoundContext& c, const SpanLine& line, bool* fits, double N, const SegmentArithmetic& arithmetic);
 // Whether 16.16 holds chords of up to `steps` steps, each of less than `chord` texels between its
 // exact ends, anywhere on the polygon (the whole-polygon bounds).
 bool chords_fit(const BoundContext& c, PolygonSpread& p, const PolygonSetup& s, double steps, double chord);

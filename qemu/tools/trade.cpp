@@ -186,6 +186,13 @@ bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage) {
 }
 
 // auto against the fastest single mapper that meets the same budget on the whole scene.
+// Whether the row is a single mapper's (a registry row that does not choose; auto's rows are
+// "auto" and "auto@BUDGET").
+bool single_mapper(const TradeRow& r) {
+    const raster::Mapper* m = raster::find_mapper(r.mapper.c_str());
+    return m && !m->chooses;
+}
+
 void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
     std::string table;
     for (const TradeRow& a : rows) {
@@ -193,8 +200,7 @@ void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
         if (!m || !m->chooses || !a.pixels) continue;
         const TradeRow* best = nullptr;
         for (const TradeRow& r : rows) {
-            const raster::Mapper* single = raster::find_mapper(r.mapper.c_str());
-            if (r.scene != a.scene || !single || single->chooses || !meets_budget(r, a.budget_error, a.budget_exact)) continue;
+            if (r.scene != a.scene || !single_mapper(r) || !meets_budget(r, a.budget_error, a.budget_exact)) continue;
             if (!best || r.draw_per_pixel() < best->draw_per_pixel()) best = &r;
         }
         table += "| " + a.scene + " | " + a.mapper + " | " + a.budget + " | " + fixed(a.draw_per_pixel(), 1) + " | " +
@@ -245,8 +251,7 @@ void write_whole_scenes(std::ostream& out, const std::vector<TradeRow>& rows) {
     for (const std::string& scene : scenes_in_order(rows)) {
         int partial = 0, singles = 0;
         for (const TradeRow& r : rows) {
-            const raster::Mapper* m = raster::find_mapper(r.mapper.c_str());
-            if (r.scene != scene || !m || m->chooses) continue;
+            if (r.scene != scene || !single_mapper(r)) continue;
             ++singles;
             partial += !r.draws_everything();
         }
@@ -258,8 +263,7 @@ void write_whole_scenes(std::ostream& out, const std::vector<TradeRow>& rows) {
         tables += "\n### " + scene + "\n\n| mapper | inner instr/px | draw instr/px | setup instr/polygon | walk instr/span | footprint err max / mean |\n"
                   "|---|--:|--:|--:|--:|--:|\n";
         for (const TradeRow* r : drawing_rows_by_speed(rows, scene)) {
-            const raster::Mapper* m = raster::find_mapper(r->mapper.c_str());
-            if (!m || m->chooses) continue;
+            if (!single_mapper(*r)) continue;
             tables += "| " + r->mapper + " | " + fixed(r->inner_per_pixel(), 1) + " | " + fixed(r->draw_per_pixel(), 1) + " | " +
                       fixed(r->setup_per_polygon(), 0) + " | " + fixed(r->walk_per_span(), 1) + " | " + fixed(r->accuracy.max_footprint_error, 2) +
                       " / " + fixed(r->accuracy.mean_footprint_error, 3) + " |\n";

@@ -262,6 +262,17 @@ struct FuzzTexture {
         prepare_texture(&tex, bordered.data(), aligned.data());
     }
 };
+// The fuzzer's bank: texture i as fuzz_texture_size(i) and fuzz_texture_wrap(i) say.
+struct FuzzBank {
+    std::vector<std::unique_ptr<FuzzTexture>> textures;
+    Texture bank[FUZZ_TEXTURE_COUNT];
+    FuzzBank() {
+        for (int i = 0; i < FUZZ_TEXTURE_COUNT; ++i) {
+            textures.push_back(std::make_unique<FuzzTexture>(fuzz_texture_size(i).width, fuzz_texture_size(i).height, fuzz_texture_wrap(i)));
+            bank[i] = textures.back()->tex;
+        }
+    }
+};
 
 uint64_t env_count(const char* name, uint64_t fallback) {
     const char* s = std::getenv(name);
@@ -273,12 +284,8 @@ TEST(PolygonFuzz, EveryMapperKeepsToItsTextureAndItsClip) {
     // checks; ~4 s there); make fuzz: MODEXLAB_FUZZ_POLYGONS
     const uint64_t per_mapper = env_count("MODEXLAB_FUZZ_POLYGONS", 5000);
     const uint32_t seed = uint32_t(env_count("MODEXLAB_FUZZ_SEED", 2026));
-    std::vector<std::unique_ptr<FuzzTexture>> textures;
-    Texture bank[FUZZ_TEXTURE_COUNT];
-    for (int i = 0; i < FUZZ_TEXTURE_COUNT; ++i) {
-        textures.push_back(std::make_unique<FuzzTexture>(fuzz_texture_size(i).width, fuzz_texture_size(i).height, fuzz_texture_wrap(i)));
-        bank[i] = textures.back()->tex;
-    }
+    const FuzzBank textures;
+    const Texture* bank = textures.bank;
     std::vector<uint8_t> surface(SCREEN_PIXELS);  // exactly the surface: ASan sees a write past it
     auto give_surface = [](void* ctx, bool) { return static_cast<std::vector<uint8_t>*>(ctx)->data(); };
     std::printf("%-20s %10s %10s %10s %12s %s\n", "mapper", "polygons", "drawn", "refused", "pixels", "refusals by reason");
@@ -304,8 +311,10 @@ TEST(PolygonFuzz, EveryMapperKeepsToItsTextureAndItsClip) {
 // driver with a loop that walks each piece's texel pointer as his does and counts the reads that
 // fall outside every copy of the bank (reading nothing): seeds of make test's fuzz run (registry
 // rows 14, 22, 30, 38; without the guard each reads outside a copy, row 22's found by the fuzzer
-// under AddressSanitizer once fast-adaptive moved hecker-steptable there). The pixels the driver draws itself (the nearest texel, where his would have left the
-// copy) must occur, or the test would not reach the case.
+// under AddressSanitizer once fast-adaptive moved hecker-steptable there). The pixels the driver
+// draws itself (the nearest texel, where his would have left the copy) must occur, or the test
+// would not reach the case. (The batches are fuzz_mapper's, written out here to call his driver
+// with this loop; were they to drift apart, the last check fails.)
 struct HeckerReads {
     const Texture* bank;
     uint64_t outside, pixels;
@@ -331,14 +340,11 @@ void counting_hecker_loop(const void* raw) {
 
 TEST(PolygonFuzz, HeckersPiecesStayInsideTheBorderedCopy) {
     const Mapper& hecker = *find_mapper("hecker-steptable");
-    std::vector<std::unique_ptr<FuzzTexture>> textures;
-    Texture bank[FUZZ_TEXTURE_COUNT];
+    const FuzzBank textures;
+    const Texture* bank = textures.bank;
     int usable[FUZZ_TEXTURE_COUNT], usable_count = 0;
-    for (int i = 0; i < FUZZ_TEXTURE_COUNT; ++i) {
-        textures.push_back(std::make_unique<FuzzTexture>(fuzz_texture_size(i).width, fuzz_texture_size(i).height, fuzz_texture_wrap(i)));
-        bank[i] = textures.back()->tex;
+    for (int i = 0; i < FUZZ_TEXTURE_COUNT; ++i)
         if (mapper_accepts(hecker, bank[i])) usable[usable_count++] = i;
-    }
     ASSERT_GT(usable_count, 0);
     std::vector<uint8_t> surface(SCREEN_PIXELS);
     uint64_t drawn = 0, looped = 0;
