@@ -345,12 +345,22 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
     o.footprint = footprint_at(o, o.q_max);
 }
 
+double perspective_share(double q_lo, double q_hi) {
+    // sum (l_i - m_i) t_i with sum (l_i - m_i) = 0 is at most (t_max - t_min) times the sum of
+    // its positive weights, half of sum |l_i - m_i| = sum l_i |Q - Q_i| / Q: half the mean absolute
+    // deviation of a distribution on [a, b] with mean Q, over Q. (x - Q)+ is convex, so below its
+    // chord over [a, b]: the mean deviation is at most 2 (Q - a)(b - Q) / (b - a), and
+    // (Q - a)(b - Q) / Q is largest at Q = sqrt(ab), where it is (sqrt(b) - sqrt(a))^2. So the share
+    // is at most (b - a) / (sqrt(a) + sqrt(b))^2, and (sqrt(a) + sqrt(b))^2 >= 3a + b.
+    return (q_hi - q_lo) / (3 * q_lo + q_hi);
+}
+
 void spread_planes_deviation(const PolygonSpread& p, double rounding, double d[2]) {
     for (int t = 0; t < 2; ++t) {
         // L - P/Q at a point of the polygon, with weights l_i of the vertices (sum 1) and
-        // m_i = l_i Q_i / Q (also): sum l_i (L_i - t_i) + sum (l_i - m_i)(t_i - c), the first at
-        // most the largest residual, the second at most (t_max - t_min) / 2 * (Q_max - Q_min) / Q_min
-        const double spread = (p.t_max[t] - p.t_min[t] + 2 * p.evaluation[t]) * (p.q_max - p.q_min) / (2 * p.q_min);
+        // m_i = l_i Q_i / Q (also): sum l_i (L_i - t_i) + sum (l_i - m_i) t_i, the first at most
+        // the largest residual, the second at most (t_max - t_min) times perspective_share
+        const double spread = (p.t_max[t] - p.t_min[t] + 2 * p.evaluation[t]) * perspective_share(p.q_min, p.q_max);
         d[t] = (p.residual[t] + 2 * p.evaluation[t] + spread) * (1 + 1e-9) + rounding + 2 * p.reference[t];
     }
 }
@@ -420,7 +430,7 @@ void envelope_deviation(const TriangleEnvelope& e, double d[2]) {
         const double reference = 2 * (4 * eps * (p_scale + t_abs * q_scale) / (1 - q_off) + 2 * eps * t_abs);
         const double evaluation = reference + 4 * eps * scale(a, range);
         const double residual = (evaluated(a, range) + exact) * (1 + eps);
-        const double spread = (range + 2 * exact + 2 * evaluation) * ratio / 2;
+        const double spread = (range + 2 * exact + 2 * evaluation) * perspective_share(1, 1 + ratio);
         d[t] = ((residual + 2 * evaluation + spread) * (1 + 1e-9) + rounding + 2 * reference) * (1 + 0x1p-30);
     }
 }

@@ -64,6 +64,10 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p);
 // With a budget (at or above 0), the planes' bound divides by the footprint only where the texels
 // alone are above it.
 double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double rounding, double budget);
+// How far the exact mapping can leave a plane through its values at the corners, as a share of
+// their range, over a polygon where Q lies in [q_lo, q_hi] (0 < q_lo <= q_hi): (q_hi - q_lo) /
+// (3 q_lo + q_hi), about a quarter of the relative change of Q (docs/accuracy.md, "Planes").
+double perspective_share(double q_lo, double q_hi);
 // Its texel deviations d[t] before the footprint (what spread_planes_bound divides).
 void spread_planes_deviation(const PolygonSpread& p, double rounding, double d[2]);
 
