@@ -3,6 +3,7 @@
 
 #include "drivers/timer.h"
 #include "drivers/vga.h"
+#include "kernel/core/choice.h"
 #include "kernel/guard.h"
 #include "kernel/lib/mem.h"
 
@@ -44,6 +45,7 @@ bool load(const char* text, size_t length, raster::ParseError* error) {
     g_texture = raster::Texture{at, sc.texture_width, sc.texture_height, sc.wrap};
     raster::prepare_texture(&g_texture, b.bordered + BORDERED_BYTES - size_t(raster::bordered_bytes(sc.texture_width, sc.texture_height)),
                             b.aligned);
+    raster::prepare_choice(raster::DEFAULT_BUDGET, g_texture);  // auto's candidates, before any render
     g_loaded = true;
     return true;
 }

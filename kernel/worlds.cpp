@@ -4,6 +4,7 @@
 #include "drivers/timer.h"
 #include "drivers/vga.h"
 #include "kernel/files.h"
+#include "kernel/core/choice.h"
 #include "kernel/guard.h"
 #include "kernel/lib/mem.h"
 #include "kernel/lib/words.h"
@@ -53,6 +54,12 @@ void place_textures() {
     }
 }
 
+// auto's candidate lists for the objects' textures at the budget in force, built before any frame
+// (choice.h, prepare_choice).
+void prepare_choices() {
+    for (int32_t o = 0; o < g_world.object_count; ++o) raster::prepare_choice(budget(), g_textures.objects[o]);
+}
+
 }  // namespace
 
 bool load(const char* name, const uint8_t* text, size_t length, raster::ParseError* error) {
@@ -61,6 +68,7 @@ bool load(const char* name, const uint8_t* text, size_t length, raster::ParseErr
     if (!raster::parse_world(reinterpret_cast<const char*>(text), length, files::resolver(), &g_world, error)) return false;
     raster::build_texture_set(g_world, &g_textures);
     place_textures();
+    prepare_choices();
     lib::copy_c_string(g_name, sizeof g_name, name);
     g_loaded = true;
     if (vga::mode() != vga::Mode::Text) vga::load_palette(g_world.palette);
@@ -72,6 +80,7 @@ bool loaded() { return g_loaded; }
 void set_budget(const raster::Budget* override) {
     g_overridden = override != nullptr;
     if (override) g_override = *override;
+    prepare_choices();
 }
 raster::Budget budget() { return g_overridden ? g_override : g_world.budget; }
 bool budget_overridden() { return g_overridden; }

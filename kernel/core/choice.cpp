@@ -124,6 +124,11 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
 
 }  // namespace
 
+void prepare_choice(const Budget& budget, const Texture& tex) {
+    candidates(tex, surface_kind(Surface::Linear), budget);
+    candidates(tex, surface_kind(Surface::Planar), budget);
+}
+
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
                      PreparedPolygon* prepared) {
     Choice choice;

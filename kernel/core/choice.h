@@ -108,6 +108,13 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
                      PreparedPolygon* prepared);
 
+// Builds the candidate lists choose_mapper and plan_auto take for a texture at a budget, for
+// either kind of target (linear, planar), where they are not built yet: a scene's load and a change
+// of budget call it, so that the first polygon drawn does not pay for them (about 36000
+// instructions a list in the kernel, QEMU icount: the first frame of a bench row had counted it
+// as drawing).
+void prepare_choice(const Budget& budget, const Texture& tex);
+
 // What choosing costs beyond the bounds it asks (the setup's extra planes, the polygon's sizes, the
 // pricing of the candidates): at a budget of 0, where exact is the only candidate, 295 a triangle
 // (the mesh, make bench, QEMU icount, before unchosen_mapper); above it, with some ten candidates
