@@ -92,11 +92,24 @@ int32_t find_mesh(const World& w, StrView name) {
     return -1;
 }
 
-// texture NAME KIND W H | texture NAME file PATH
+// Repeats the image of w x h texels at `texels` across `width` x `height` (whole multiples of w and
+// h), in place: row y of the result is row y mod h of the image. From the last texel back, so that
+// every texel of the image is read before anything is written over it (a result row y lies at or
+// after image row y, and only the image's rows below y are still to be read).
+void tile_in_place(uint8_t* texels, int32_t w, int32_t h, int32_t width, int32_t height) {
+    for (int32_t y = height - 1; y >= 0; --y) {
+        const uint8_t* row = texels + size_t(y % h) * size_t(w);
+        uint8_t* out = texels + size_t(y) * size_t(width);
+        for (int32_t x = width - 1; x >= 0; --x) out[x] = row[x % w];
+    }
+}
+
+// texture NAME KIND W H | texture NAME file PATH [tile W H]
 bool texture_line(Parser& p, const StrView* w, size_t n) {
     World& world = *p.world;
-    if (n < 3 || (w[2].equals("file") ? n != 4 : n != 5))
-        return p.fail(Fmt().s("usage: texture NAME checker|grid|numbered|xor|gradient WIDTH HEIGHT, or texture NAME file PATH"));
+    const bool file = n >= 3 && w[2].equals("file"), tiled = file && n == 7 && w[4].equals("tile");
+    if (n < 3 || (file ? n != 4 && !tiled : n != 5))
+        return p.fail(Fmt().s("usage: texture NAME checker|grid|numbered|xor|gradient WIDTH HEIGHT, or texture NAME file PATH [tile WIDTH HEIGHT]"));
     if (!check_name(p, w[1], "texture")) return false;
     if (find_texture(world, w[1]) >= 0) return p.fail(Fmt().s("a second texture named '").s(w[1]).s("'"));
     if (world.texture_count == MAX_WORLD_TEXTURES) return p.fail(Fmt().s("too many textures (at most 16)"));
@@ -119,6 +132,17 @@ bool texture_line(Parser& p, const StrView* w, size_t n) {
         if (!decode_indexed_image(data, size, &image, world.texels + t.offset, room, &why))
             return p.fail(Fmt().s("texture '").s(w[1]).s("' (").s(w[3]).s("): ").s(why.c_str()));
         t.width = image.width, t.height = image.height;
+        if (tiled) {
+            int32_t width, height;
+            if (!parse_int(w[5], 1, MAX_TEXTURE_SIZE, &width) || !parse_int(w[6], 1, MAX_TEXTURE_SIZE, &height))
+                return p.fail(Fmt().s("tile size '").s(w[5]).s(" ").s(w[6]).s("' out of range: width and height 1..1024"));
+            if (width % t.width != 0 || height % t.height != 0)
+                return p.fail(Fmt().s("texture '").s(w[1]).s("': tile ").u(uint32_t(width)).s(" x ").u(uint32_t(height)).s(" is not whole copies of its ")
+                                  .u(uint32_t(t.width)).s(" x ").u(uint32_t(t.height)).s(" image"));
+            if (size_t(width) * size_t(height) > room) return p.fail(Fmt().s("textures too large together (at most 4194304 texels)"));
+            tile_in_place(world.texels + t.offset, t.width, t.height, width, height);
+            t.width = width, t.height = height;
+        }
         for (int i = 0; i < 256; ++i)
             source.entry[i] = Rgb6{uint8_t(image.palette[i][0] >> 2), uint8_t(image.palette[i][1] >> 2), uint8_t(image.palette[i][2] >> 2)};
     } else {

@@ -318,21 +318,23 @@ std::string cube_scene(bool all256) {
     return out + "camera\n  position 0 0 5\n  target 0 0 0\n  fov 60\nend\nbudget max-error 1 coverage exact\nframes 240\n";
 }
 
-std::string freedoom() {
-    MeshMaker floor("floor"), ceiling("ceiling");
-    std::vector<MeshMaker> walls = {MeshMaker("walls1"), MeshMaker("walls2"), MeshMaker("walls3")};
-    // 32 texels a unit: the flats 64 x 64 (2 units), the walls 128 high over 4 units
-    room(floor, ceiling, walls, {-2, 0, -60}, {2, 3, 60}, 15, 0.5, 0.25);
-    return "modexlab-scene 2\n"
-           "# The corridor with Freedoom's textures (BSD-licensed; made at build time from Debian's\n"
-           "# freedoom package by modexlab-wad, not committed) in Freedoom's own palette.\n"
-           "texture floor file freedoom/floor0_1.bmp\n"
-           "texture ceiling file freedoom/ceil3_5.bmp\n"
-           "texture stone file freedoom/startan3.bmp\n"
-           "texture computers file freedoom/comptall.bmp\n"
-           "texture brown file freedoom/brown1.bmp\n"
-           "palette floor\n" +
-           floor.text() + ceiling.text() + walls[0].text() + walls[1].text() + walls[2].text() +
+std::string freedoom_scene(bool all256) {
+    MeshMaker floor("floor", all256), ceiling("ceiling", all256);
+    std::vector<MeshMaker> walls = {MeshMaker("walls1", all256), MeshMaker("walls2", all256), MeshMaker("walls3", all256)};
+    // 32 texels a unit: the flats 64 x 64 (2 units), the walls 128 high over 4 units; tiled to 256 x 256,
+    // a texture is 8 units
+    room(floor, ceiling, walls, {-2, 0, -60}, {2, 3, 60}, 15, all256 ? 0.125 : 0.5, all256 ? 0.125 : 0.25);
+    const char* names[5][2] = {{"floor", "floor0_1"}, {"ceiling", "ceil3_5"}, {"stone", "startan3"}, {"computers", "comptall"}, {"brown", "brown1"}};
+    std::string textures;
+    for (const auto& [name, file] : names)
+        textures += std::string("texture ") + name + " file freedoom/" + file + ".bmp" + (all256 ? " tile 256 256" : "") + "\n";
+    return std::string("modexlab-scene 2\n") +
+           (all256 ? "# The Freedoom corridor with its textures tiled to 256 x 256 (each repeats as the original does)\n"
+                     "# and its faces cut along their period lines, so that every mapper, fatmap's and the ones that\n"
+                     "# cannot wrap included, draws all of it: freedoom.scene's camera, pictures and palette.\n"
+                   : "# The corridor with Freedoom's textures (BSD-licensed; made at build time from Debian's\n"
+                     "# freedoom package by modexlab-wad, not committed) in Freedoom's own palette.\n") +
+           textures + "palette floor\n" + floor.text() + ceiling.text() + walls[0].text() + walls[1].text() + walls[2].text() +
            "object floor\n  mesh floor\n  texture floor\nend\n"
            "object ceiling\n  mesh ceiling\n  texture ceiling\nend\n"
            "object walls1\n  mesh walls1\n  texture stone\nend\n"
@@ -345,6 +347,8 @@ std::string ball() { return ball_scene(false); }
 std::string ball_256() { return ball_scene(true); }
 std::string cube() { return cube_scene(false); }
 std::string cube_256() { return cube_scene(true); }
+std::string freedoom() { return freedoom_scene(false); }
+std::string freedoom_256() { return freedoom_scene(true); }
 
 }  // namespace
 
@@ -359,6 +363,7 @@ const std::vector<DemoScene>& demo_scenes() {
         {"cube", "six faces, six textures of different kinds and sizes", cube},
         {"cube-256", "the cube with its six textures at 256 x 256: every mapper draws all of it", cube_256},
         {"freedoom", "the corridor in Freedoom's textures and palette (image files, a scene palette)", freedoom},
+        {"freedoom-256", "the Freedoom corridor, textures tiled to 256 x 256, faces cut at their periods: every mapper draws all of it", freedoom_256},
     };
     return scenes;
 }

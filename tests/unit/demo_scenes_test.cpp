@@ -14,18 +14,20 @@ namespace {
 using namespace harness;
 
 TEST(DemoScenes, TheCommittedFilesAreTheGeneratorsOutput) {
-    ASSERT_EQ(demo_scenes().size(), 9u);
+    ASSERT_EQ(demo_scenes().size(), 10u);
     for (const DemoScene& d : demo_scenes())
         EXPECT_EQ(read_whole_file(std::string("scenes/") + d.name + ".scene"), d.make())
             << d.name << ": regenerate with build/host/modexlab-scene make all scenes";
 }
 
 // The variants every mapper draws whole (issue 14, goal 1): corridor-cut (the corridor's faces cut
-// along their textures' period lines), ball-256 and cube-256 (their textures at 256 x 256). At 8
+// along their textures' period lines), ball-256 and cube-256 (their textures at 256 x 256),
+// freedoom-256 (its pictures tiled to 256 x 256, its faces cut at their periods). At 8
 // frames spread over each, no mapper refuses a polygon, the classics that cannot wrap or take only
 // 256 x 256 included, while on the original some mappers refuse some or all.
 TEST(DemoScenes, EveryMapperDrawsTheVariantsWhole) {
-    const std::pair<const char*, const char*> variants[] = {{"corridor-cut", "corridor"}, {"ball-256", "ball"}, {"cube-256", "cube"}};
+    const std::pair<const char*, const char*> variants[] = {{"corridor-cut", "corridor"}, {"ball-256", "ball"}, {"cube-256", "cube"},
+                                                                 {"freedoom-256", "freedoom"}};
     for (const auto& [variant, original] : variants) {
         SCOPED_TRACE(variant);
         LoadedWorld cut = load_world_file(std::string("scenes/") + variant + ".scene");

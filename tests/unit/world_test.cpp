@@ -124,6 +124,32 @@ TEST(World, ParsesEveryPart) {
     }
 }
 
+// An image tiled to a larger size (the classics' 256 x 256 from a 64 x 64 flat): whole copies of it,
+// row y of the result row y mod h of the image, in the image's own palette mapping.
+TEST(World, AnImageTilesToAWholeMultipleOfItsSize) {
+    Files files;
+    texfiles::Picture pic = texfiles::random_picture(8, 4, 5);
+    files.files["small.bmp"] = texfiles::encode_bmp(pic, texfiles::BmpKind::Plain);
+    Parsed once = parse("modexlab-scene 2\ntexture s file small.bmp\n" + QUAD_MESH + "object a\nmesh quad\ntexture s\nend\n" + CAMERA, files);
+    Parsed tiled = parse("modexlab-scene 2\ntexture c checker 4 4\ntexture s file small.bmp tile 32 12\n" + QUAD_MESH +
+                             "object a\nmesh quad\ntexture s\nend\n" + CAMERA,
+                         files);
+    ASSERT_TRUE(once.ok) << once.error.message;
+    ASSERT_TRUE(tiled.ok) << tiled.error.message;
+    const WorldTexture& t = tiled.world->textures[1];
+    EXPECT_EQ(t.width, 32);
+    EXPECT_EQ(t.height, 12);
+    EXPECT_EQ(t.offset, 16u);
+    EXPECT_EQ(tiled.world->texel_count, 16u + 32u * 12u);
+    const uint8_t* image = once.world->texels;
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 32; ++x) ASSERT_EQ(tiled.world->texels[16 + y * 32 + x], image[(y % 4) * 8 + x % 8]) << x << ", " << y;
+    // the procedural texture before it is untouched
+    std::vector<uint8_t> checker(16);
+    generate_texture(TextureKind::Checker, 4, 4, checker.data());
+    EXPECT_TRUE(std::equal(checker.begin(), checker.end(), tiled.world->texels));
+}
+
 TEST(World, ThePaletteCanComeFromAnImage) {
     Files files;
     texfiles::Picture pic = texfiles::random_picture(8, 8, 2);
@@ -182,6 +208,10 @@ TEST(World, EveryErrorNamesItsLine) {
         {H + "texture f file ../up.bmp\n", {2, "bad file name '../up.bmp'"}},
         {H + "texture f file /abs.bmp\n", {2, "bad file name '/abs.bmp'"}},
         {H + "texture f file bad.bmp\n", {2, "texture 'f' (bad.bmp): byte"}},
+        {H + "texture f file ok.bmp tile 6 8\n", {2, "texture 'f': tile 6 x 8 is not whole copies of its 4 x 4 image"}},
+        {H + "texture f file ok.bmp tile 8 2048\n", {2, "tile size '8 2048' out of range"}},
+        {H + "texture f file ok.bmp tiles 8 8\n", {2, "usage: texture NAME"}},
+        {H + "texture f file ok.bmp tile 8\n", {2, "usage: texture NAME"}},
         {H + "texture a checker 1024 1024\ntexture b checker 1024 1024\ntexture c checker 1024 1024\ntexture d checker 1024 1024\ntexture e checker 8 8\n",
          {6, "textures too large together"}},
         {T + "palette t\n", {3, "is procedural"}},
