@@ -5,34 +5,34 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2238.2f, 477.88f, 40.242f}, // 9 scenes
-    {"exact", 2244.2f, 326.59f, 80.171f}, // 9 scenes
-    {"persp-subdiv-4", 2244.2f, 349.02f, 106.930f}, // 9 scenes
-    {"persp-subdiv-8", 2244.2f, 418.59f, 66.998f}, // 9 scenes
-    {"persp-subdiv-16", 2244.2f, 467.59f, 46.871f}, // 9 scenes
-    {"persp-subdiv-32", 2244.2f, 493.11f, 37.062f}, // 9 scenes
-    {"constant-depth", 2244.2f, 513.19f, 29.941f}, // 9 scenes
-    {"persp-adaptive-0.5", 2244.2f, 1043.09f, 323.928f}, // 9 scenes
-    {"persp-adaptive-1", 2244.2f, 1151.25f, 52.278f}, // 9 scenes
-    {"persp-adaptive-2", 2244.2f, 1170.11f, 44.350f}, // 9 scenes
-    {"persp-adaptive-4", 2244.2f, 1182.30f, 40.079f}, // 9 scenes
-    {"fast-affine", 2233.2f, 163.77f, 3.910f}, // 9 scenes
-    {"fast-columns", 2242.9f, 257.49f, 5.390f}, // 9 scenes
-    {"fast-subdiv-8", 2266.2f, 383.38f, 12.250f}, // 9 scenes
-    {"fast-subdiv-16", 2266.2f, 393.13f, 8.279f}, // 9 scenes
-    {"fast-subdiv-32", 2266.2f, 397.94f, 6.432f}, // 9 scenes
-    {"fast-constant-depth", 2266.2f, 401.73f, 5.088f}, // 9 scenes
-    {"fast-adaptive-1", 2266.2f, 425.70f, 7.957f}, // 9 scenes
-    {"fast-adaptive-2", 2266.2f, 429.24f, 6.578f}, // 9 scenes
-    {"xsharp-dda", 1711.2f, 388.21f, 37.221f}, // 8 scenes
-    {"xsharp-row-out", 1716.2f, 523.42f, 18.755f}, // 8 scenes
-    {"xsharp-column", 1717.9f, 493.36f, 12.153f}, // 8 scenes
-    {"hecker-steptable", 5119.9f, 0.00f, 546.965f}, // 8 scenes
-    {"fatmap-256", 2140.4f, 180.27f, 11.838f}, // 7 scenes
-    {"fatmap-256-16", 2140.4f, 185.27f, 10.838f}, // 7 scenes
-    {"fatmap-lut", 2518.7f, 186.30f, 7.515f}, // 6 scenes
-    {"quake-subdiv16", 2422.0f, 311.79f, 13.612f}, // 8 scenes
-    {"quake-subdiv8", 2422.0f, 296.38f, 19.987f}, // 8 scenes
+    {"affine", 2262.3f, 477.79f, 40.268f}, // 10 scenes
+    {"exact", 2268.3f, 326.48f, 80.207f}, // 10 scenes
+    {"persp-subdiv-4", 2268.3f, 349.21f, 106.868f}, // 10 scenes
+    {"persp-subdiv-8", 2268.3f, 418.47f, 67.037f}, // 10 scenes
+    {"persp-subdiv-16", 2268.3f, 467.31f, 46.960f}, // 10 scenes
+    {"persp-subdiv-32", 2268.3f, 492.83f, 37.151f}, // 10 scenes
+    {"constant-depth", 2268.3f, 513.22f, 29.932f}, // 10 scenes
+    {"persp-adaptive-0.5", 2268.3f, 962.55f, 349.737f}, // 10 scenes
+    {"persp-adaptive-1", 2268.3f, 1149.52f, 52.835f}, // 10 scenes
+    {"persp-adaptive-2", 2268.3f, 1167.70f, 45.122f}, // 10 scenes
+    {"persp-adaptive-4", 2268.3f, 1180.59f, 40.627f}, // 10 scenes
+    {"fast-affine", 2257.3f, 163.51f, 3.995f}, // 10 scenes
+    {"fast-columns", 2267.8f, 257.43f, 5.413f}, // 10 scenes
+    {"fast-subdiv-8", 2290.3f, 383.23f, 12.296f}, // 10 scenes
+    {"fast-subdiv-16", 2290.3f, 392.98f, 8.328f}, // 10 scenes
+    {"fast-subdiv-32", 2290.3f, 397.79f, 6.479f}, // 10 scenes
+    {"fast-constant-depth", 2290.3f, 401.65f, 5.113f}, // 10 scenes
+    {"fast-adaptive-1", 2290.3f, 425.23f, 8.106f}, // 10 scenes
+    {"fast-adaptive-2", 2290.3f, 428.88f, 6.693f}, // 10 scenes
+    {"xsharp-dda", 1715.4f, 385.88f, 37.891f}, // 9 scenes
+    {"xsharp-row-out", 1720.4f, 521.21f, 19.391f}, // 9 scenes
+    {"xsharp-column", 1722.0f, 490.59f, 13.147f}, // 9 scenes
+    {"hecker-steptable", 5815.1f, 0.00f, 636.625f}, // 9 scenes
+    {"fatmap-256", 2181.8f, 175.07f, 13.395f}, // 8 scenes
+    {"fatmap-256-16", 2181.8f, 180.07f, 12.395f}, // 8 scenes
+    {"fatmap-lut", 2797.8f, 178.57f, 9.796f}, // 7 scenes
+    {"quake-subdiv16", 2448.2f, 311.56f, 13.685f}, // 9 scenes
+    {"quake-subdiv8", 2448.2f, 296.19f, 20.045f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
