@@ -94,8 +94,9 @@ int32_t find_mesh(const World& w, StrView name) {
 
 // Repeats the image of w x h texels at `texels` across `width` x `height` (whole multiples of w and
 // h), in place: row y of the result is row y mod h of the image. From the last texel back, so that
-// every texel of the image is read before anything is written over it (a result row y lies at or
-// after image row y, and only the image's rows below y are still to be read).
+// no image texel is overwritten before it is read: result row y starts at or after image row y
+// (past its end unless y = 0 or width = w, where it copies the row onto itself), and the result
+// rows still to come, those above y, read only image rows above y.
 void tile_in_place(uint8_t* texels, int32_t w, int32_t h, int32_t width, int32_t height) {
     for (int32_t y = height - 1; y >= 0; --y) {
         const uint8_t* row = texels + size_t(y % h) * size_t(w);
@@ -137,8 +138,8 @@ bool texture_line(Parser& p, const StrView* w, size_t n) {
             if (!parse_int(w[5], 1, MAX_TEXTURE_SIZE, &width) || !parse_int(w[6], 1, MAX_TEXTURE_SIZE, &height))
                 return p.fail(Fmt().s("tile size '").s(w[5]).s(" ").s(w[6]).s("' out of range: width and height 1..1024"));
             if (width % t.width != 0 || height % t.height != 0)
-                return p.fail(Fmt().s("texture '").s(w[1]).s("': tile ").u(uint32_t(width)).s(" x ").u(uint32_t(height)).s(" is not whole copies of its ")
-                                  .u(uint32_t(t.width)).s(" x ").u(uint32_t(t.height)).s(" image"));
+                return p.fail(Fmt().s("texture '").s(w[1]).s("': tile ").u(uint32_t(width)).s(" x ").u(uint32_t(height))
+                                  .s(" is not whole copies of its ").u(uint32_t(t.width)).s(" x ").u(uint32_t(t.height)).s(" image"));
             if (size_t(width) * size_t(height) > room) return p.fail(Fmt().s("textures too large together (at most 4194304 texels)"));
             tile_in_place(world.texels + t.offset, t.width, t.height, width, height);
             t.width = width, t.height = height;
