@@ -30,10 +30,10 @@ void project(const ClipVertex& p, Fixed24_8* x, Fixed24_8* y) {
 // Twice the signed area of a face in clip space, as seen from the eye: the sum over its fan of
 // det[A, B, C] with rows (x, y, w). Positive: the face's front (counter-clockwise in a right-handed
 // world) is toward the eye, for any w, so faces reaching behind the eye are culled correctly too.
-double facing(const ClipVertex* c, int n) {
+double facing(const ClipVertex* const* c, int n) {
     double sum = 0;
     for (int k = 1; k + 1 < n; ++k) {
-        const ClipVertex &a = c[0], &b = c[k], &d = c[k + 1];
+        const ClipVertex &a = *c[0], &b = *c[k], &d = *c[k + 1];
         sum += (a.x * (b.y * d.w - b.w * d.y) - a.y * (b.x * d.w - b.w * d.x)) + a.w * (b.x * d.y - b.y * d.x);
     }
     return sum;
@@ -51,33 +51,16 @@ double distance(const ClipVertex& p, int plane, double near, double far) {
     }
 }
 
+// The outcode of a point: bit k set where it lies outside clip plane k (distance() below 0), all six
+// at once (the same expressions, the guard band's product taken once).
+uint8_t outcode(const ClipVertex& p, double near, double far) {
+    const double band = GUARD_BAND * p.w;
+    return uint8_t(int(p.w - near < 0) | int(far - p.w < 0) << 1 | int(band + p.x < 0) << 2 | int(band - p.x < 0) << 3 |
+                   int(band + p.y < 0) << 4 | int(band - p.y < 0) << 5);
+}
+
 ClipVertex between(const ClipVertex& a, const ClipVertex& b, double t) {
     return ClipVertex{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y), a.w + t * (b.w - a.w), a.u + t * (b.u - a.u), a.v + t * (b.v - a.v)};
-}
-
-// Far before near; equal depths by object, then face: a total order, the same everywhere.
-bool before(const FrameScratch::Entry& a, const FrameScratch::Entry& b) {
-    if (a.depth != b.depth) return a.depth > b.depth;
-    if (a.object != b.object) return a.object < b.object;
-    return a.face < b.face;
-}
-
-// Bottom-up merge sort of entries[0..n) (through `sorted`); the result in entries.
-void sort_entries(FrameScratch::Entry* entries, FrameScratch::Entry* tmp, int32_t n) {
-    FrameScratch::Entry *from = entries, *to = tmp;
-    for (int32_t width = 1; width < n; width *= 2) {
-        for (int32_t lo = 0; lo < n; lo += 2 * width) {
-            int32_t mid = lo + width < n ? lo + width : n, hi = lo + 2 * width < n ? lo + 2 * width : n;
-            int32_t i = lo, j = mid, k = lo;
-            while (i < mid && j < hi) to[k++] = before(from[j], from[i]) ? from[j++] : from[i++];
-            while (i < mid) to[k++] = from[i++];
-            while (j < hi) to[k++] = from[j++];
-        }
-        FrameScratch::Entry* t = from;
-        from = to, to = t;
-    }
-    if (from != entries)
-        for (int32_t i = 0; i < n; ++i) entries[i] = from[i];
 }
 
 }  // namespace
@@ -140,6 +123,82 @@ int clip_polygon(const ClipVertex* in, int count, double near, double far, ClipV
     return n;
 }
 
+namespace {
+
+// One stable counting pass over places [b, e) by the byte of `key` at `shift`, from (key, other, at)
+// into the same places of (key_to, other_to, at_to); false, and nothing written, where every key has
+// the same byte there.
+bool byte_pass(const uint32_t* key, const uint32_t* other, const int32_t* at, uint32_t* key_to, uint32_t* other_to, int32_t* at_to,
+               int32_t b, int32_t e, int shift) {
+    int32_t start[256] = {};
+    for (int32_t i = b; i < e; ++i) ++start[(key[i] >> shift) & 255];
+    if (start[(key[b] >> shift) & 255] == e - b) return false;
+    for (int32_t k = 0, sum = b; k < 256; ++k) {
+        const int32_t count = start[k];
+        start[k] = sum, sum += count;
+    }
+    for (int32_t i = b; i < e; ++i) {
+        const int32_t k = start[(key[i] >> shift) & 255]++;
+        key_to[k] = key[i], other_to[k] = other[i], at_to[k] = at[i];
+    }
+    return true;
+}
+
+}  // namespace
+
+const int32_t* painter_order(FrameScratch* scratch, int32_t n) {
+    uint32_t *lo = scratch->key_lo[0], *hi = scratch->key_hi[0], *lo_to = scratch->key_lo[1], *hi_to = scratch->key_hi[1];
+    int32_t *at = scratch->order[0], *at_to = scratch->order[1];
+    for (int32_t i = 0; i < n; ++i) {
+        // the depth's bits as an unsigned key that grows with it (-0 first made +0: equal depths,
+        // equal keys), then inverted: the far ones first
+        const double depth = scratch->entries[i].depth + 0.0;
+        uint64_t bits;
+        __builtin_memcpy(&bits, &depth, sizeof bits);
+        bits = ~(bits >> 63 ? ~bits : bits | (uint64_t(1) << 63));
+        lo[i] = uint32_t(bits), hi[i] = uint32_t(bits >> 32), at[i] = i;
+    }
+    auto swap_buffers = [&] {
+        uint32_t* t = lo;
+        lo = lo_to, lo_to = t;
+        t = hi, hi = hi_to, hi_to = t;
+        int32_t* a = at;
+        at = at_to, at_to = a;
+    };
+    // By the high word (sign, exponent, the top 20 bits of the mantissa): a frame's depths rarely
+    // share one, so the low word is looked at only within runs that do
+    for (int shift = 0; shift < 32 && n > 0; shift += 8)
+        if (byte_pass(hi, lo, at, hi_to, lo_to, at_to, 0, n, shift)) swap_buffers();
+    for (int32_t b = 0, e; b < n; b = e) {
+        for (e = b + 1; e < n && hi[e] == hi[b]; ++e) {
+        }
+        if (e - b <= 16) {  // by insertion, stable: moved only past larger keys
+            for (int32_t i = b + 1; i < e; ++i) {
+                const uint32_t key = lo[i];
+                const int32_t index = at[i];
+                int32_t j = i;
+                for (; j > b && lo[j - 1] > key; --j) lo[j] = lo[j - 1], at[j] = at[j - 1];
+                lo[j] = key, at[j] = index;
+            }
+            continue;
+        }
+        // a long run: by the low word's bytes, in the other buffer's places, then back
+        uint32_t *k_from = lo, *k_to = lo_to, *h_from = hi, *h_to = hi_to;
+        int32_t *a_from = at, *a_to = at_to;
+        for (int shift = 0; shift < 32; shift += 8)
+            if (byte_pass(k_from, h_from, a_from, k_to, h_to, a_to, b, e, shift)) {
+                uint32_t* t = k_from;
+                k_from = k_to, k_to = t;
+                t = h_from, h_from = h_to, h_to = t;
+                int32_t* a = a_from;
+                a_from = a_to, a_to = a;
+            }
+        if (k_from != lo)
+            for (int32_t i = b; i < e; ++i) lo[i] = k_from[i], at[i] = a_from[i];
+    }
+    return at;
+}
+
 void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScratch* scratch) {
     Frame& f = *out;
     f.number = frame_number;
@@ -169,8 +228,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         double nearest = far;  // the least w of a position inside every plane (the corners of uncut faces)
         for (int32_t i = 0; i < mesh.position_count; ++i) {
             const ClipVertex p = view.clip(place.apply(world.positions[mesh.first_position + i]));
-            uint8_t code = 0;
-            for (int plane = 0; plane < 6; ++plane) code |= uint8_t((distance(p, plane, near, far) < 0) << plane);
+            const uint8_t code = outcode(p, near, far);
             scratch->positions[used + i] = p;
             scratch->outcodes[used + i] = code;
             // projected once here rather than at every corner that shares it (faces inside every
@@ -184,13 +242,13 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         used += mesh.position_count;
         for (int32_t k = 0; k < mesh.face_count; ++k) {
             const Face& face = world.faces[mesh.first_face + k];
-            ClipVertex c[MAX_FACE_CORNERS];
+            const ClipVertex* c[MAX_FACE_CORNERS];  // (pointers: a copy of each corner cost 40 instructions)
             uint8_t all = 0x3F, any = 0;  // planes every corner is outside; planes some corner is
             double depth = 0;
             for (int32_t i = 0; i < face.count; ++i) {
                 int32_t at = first_position[o] + world.corners[face.first_corner + i].position - mesh.first_position;
-                c[i] = scratch->positions[at];
-                depth += c[i].w;
+                c[i] = &scratch->positions[at];
+                depth += c[i]->w;
                 all &= scratch->outcodes[at];
                 any |= scratch->outcodes[at];
             }
@@ -209,10 +267,10 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             scratch->entries[entries++] = FrameScratch::Entry{depth / face.count, o, k, any != 0};
         }
     }
-    sort_entries(scratch->entries, scratch->sorted, entries);
+    const int32_t* order = painter_order(scratch, entries);
 
     for (int32_t e = 0; e < entries; ++e) {
-        const FrameScratch::Entry& entry = scratch->entries[e];
+        const FrameScratch::Entry& entry = scratch->entries[order[e]];
         const Object& object = world.objects[entry.object];
         const Mesh& mesh = world.meshes[object.mesh];
         const WorldTexture& texture = world.textures[object.texture];

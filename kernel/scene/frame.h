@@ -55,11 +55,21 @@ struct FrameScratch {
     uint8_t outcodes[MAX_FRAME_POSITIONS];  // bit k: outside clip plane k
     Fixed24_8 screen_x[MAX_FRAME_POSITIONS], screen_y[MAX_FRAME_POSITIONS];  // projected, where the outcode is 0
     struct Entry {
-        double depth;  // mean w of the face's corners
+        double depth;  // mean w of the face's corners (finite)
         int32_t object, face;
         bool cut;      // some corner outside some plane: to be clipped
-    } entries[MAX_FRAME_POLYGONS], sorted[MAX_FRAME_POLYGONS];
+    } entries[MAX_FRAME_POLYGONS];
+    // painter_order's two buffers: each entry's key (its depth's bits, in halves) and index
+    uint32_t key_lo[2][MAX_FRAME_POLYGONS], key_hi[2][MAX_FRAME_POLYGONS];
+    int32_t order[2][MAX_FRAME_POLYGONS];
 };
+
+// The painter's order of scratch->entries[0..n): far before near (the larger depth first), equal
+// depths in the order they come in (build_frame makes them by object, then face: the same total
+// order everywhere). A stable radix sort on the depth's bits, a byte a pass (a pass where every key
+// has the same byte is skipped: a frame's depths share their exponent); returns the indices in
+// order (one of scratch->order's buffers).
+const int32_t* painter_order(FrameScratch* scratch, int32_t n);
 
 // The camera and projection of a frame: clip-space coordinates of world points.
 struct View {

@@ -3,6 +3,7 @@
 // vertex that reaches the setup keeps.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -96,6 +97,31 @@ TEST(Frame, FarPolygonsComeFirst) {
     EXPECT_EQ(b->frame->polygon_object[0], 1);
     EXPECT_EQ(b->frame->polygon_object[1], 2);
     EXPECT_EQ(b->frame->polygon_object[2], 0);
+}
+
+// The painter's order against a plain stable sort by (depth descending, then the order given):
+// random depths over wide and narrow ranges, many of them equal, negative ones, +0 and -0 (equal),
+// so that byte passes are both taken and skipped, and runs of one high word short and long.
+TEST(Frame, PainterOrderIsAStableSortFarFirst) {
+    auto scratch = std::make_unique<FrameScratch>();
+    std::mt19937 rng(4711u);
+    for (int round = 0; round < 200; ++round) {
+        const int32_t n = round == 0 ? 0 : round == 1 ? 1 : int32_t(rng() % 3000);
+        const int kind = round % 4;
+        for (int32_t i = 0; i < n; ++i) {
+            double d;
+            if (kind == 0) d = std::uniform_real_distribution<double>(-1e6, 1e6)(rng);
+            else if (kind == 1) d = 2.5 + std::uniform_real_distribution<double>(0, 1e-9)(rng);   // one high word: a long run
+            else if (kind == 2) d = double(rng() % 7) - 3;                                        // ties
+            else d = rng() % 5 == 0 ? (rng() % 2 ? 0.0 : -0.0) : double(1 + rng() % 500) + double(rng() % 4) * 0x1p-40;  // short runs
+            scratch->entries[i] = FrameScratch::Entry{d, int32_t(i / 100), int32_t(i % 100), false};
+        }
+        std::vector<int32_t> want(size_t(n), 0);
+        for (int32_t i = 0; i < n; ++i) want[size_t(i)] = i;
+        std::stable_sort(want.begin(), want.end(), [&](int32_t a, int32_t b) { return scratch->entries[a].depth > scratch->entries[b].depth; });
+        const int32_t* got = painter_order(scratch.get(), n);
+        for (int32_t i = 0; i < n; ++i) ASSERT_EQ(got[i], want[size_t(i)]) << "round " << round << ", place " << i;
+    }
 }
 
 // The clipper against an independent computation. For random triangles in clip space (many
