@@ -41,8 +41,12 @@ L_FRAME       equ 92
 
 section .text
 
-; the exact point at x (st0, kept) into [esp + L_U1], [esp + L_V1]; ecx: the block
+; the exact point at x (st0, kept) into [esp + L_U1], [esp + L_V1] (or the two offsets given);
+; ecx: the block
 %macro POINT 0
+    POINT_AT L_U1, L_V1
+%endmacro
+%macro POINT_AT 2
     fld qword [ecx + FSUB_g]
     fmul st0, st1
     fadd qword [ecx + FSUB_c]           ; q = c0 + g0 x
@@ -51,13 +55,13 @@ section .text
     fadd qword [ecx + FSUB_c + 8]       ; pu
     fdiv st0, st1
     fmul qword [scale_16_16]
-    fistp qword [esp + L_U1]            ; u in 16.16, nearest
+    fistp qword [esp + %1]              ; u in 16.16, nearest
     fld qword [ecx + FSUB_g + 16]
     fmul st0, st2
     fadd qword [ecx + FSUB_c + 16]      ; pv
     fdiv st0, st1
     fmul qword [scale_16_16]
-    fistp qword [esp + L_V1]
+    fistp qword [esp + %2]
     fstp st0                            ; q
 %endmacro
 
@@ -132,18 +136,20 @@ section .text
     mov [esp + L_DST], eax
     mov eax, [edx + FSUB_texture]
     mov [esp + L_TEXTURE], eax
-    mov dword [esp + L_ODD], 0
     mov ecx, [edx + FSUB_shift]
     mov [esp + L_SHIFT], ecx
     mov eax, [edx + FSUB_stride]
     mov [esp + L_STRIDE], eax
+    mov ebx, 1
+    shl ebx, cl
+    mov [esp + L_N], ebx
+    cmp [esp + L_LEFT], ebx
+    jle .first_point                    ; one segment: none of a full segment's set-up
+    mov dword [esp + L_ODD], 0          ; (a full segment's pixels are pairs)
     shl eax, cl
     mov [esp + L_SEG_BYTES], eax        ; n * stride
-    mov eax, 1
-    shl eax, cl
-    mov [esp + L_N], eax
-    shl eax, 8
-    mov [esp + L_D], eax
+    shl ebx, 8
+    mov [esp + L_D], ebx
     fild dword [esp + L_D]
     fstp qword [esp + L_SEG_X]          ; n * 256, exact
     mov ecx, [esp + L_N]
@@ -161,14 +167,16 @@ section .text
     mov ecx, edx
     fldz
     fadd qword [ecx + FSUB_x]           ; x at pixel 0 (0 + x0, as the twin's x0 + 0 * 256)
-    POINT
-    mov eax, [esp + L_U1]
-    mov [esp + L_U0], eax
-    mov eax, [esp + L_V1]
-    mov [esp + L_V0], eax
-    mov eax, [esp + L_LEFT]
-    cmp eax, [esp + L_N]
-    jle .last_segment
+    POINT_AT L_U0, L_V0                 ; (qword stores, u's first: its high dword is then
+                                        ; overwritten by v's low one, and v's high one lands in
+                                        ; U1, written again before it is read)
+    jmp .full_segment
+.first_point:                           ; one segment: its first point, then the last
+    mov ecx, edx
+    fldz
+    fadd qword [ecx + FSUB_x]
+    POINT_AT L_U0, L_V0
+    jmp .last_segment
 .full_segment:                          ; more than n pixels left: n of them, to the exact point n on
     fadd qword [esp + L_SEG_X]
     mov ecx, [esp + L_ARGS]
