@@ -173,6 +173,9 @@ struct Mapper {
     // Its bound is the 16.16 planes' (spread_planes_bound, planes_fit_16_16): an object's envelope
     // proves it on the object's uncut triangles (plan_auto, core/choice.h).
     bool enveloped = false;
+    // The planes its span routine reads, all draw_with sets up for it (the perspective ones, but
+    // for affine's: the affine planes and their 16.16 form cost some 400 instructions a polygon).
+    SetupPlanes span_planes = PLANES_PERSPECTIVE;
 };
 
 extern const Mapper MAPPERS[];

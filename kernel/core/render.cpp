@@ -43,7 +43,7 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
             }
         } else {
             PolygonSetup own;
-            status = setup_polygon(vertices, count, &own);
+            status = setup_polygon(vertices, count, &own, mapper.span_planes);
             if (status == SetupStatus::Ok) {
                 EdgeWalker walker(own, axis, target.clip);
                 draw_spans(own, [&](Span* s) { return walker.next(s); });

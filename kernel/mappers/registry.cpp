@@ -24,7 +24,8 @@ namespace raster {
 const Mapper MAPPERS[] = {
     {"affine", "ours", "textbook affine interpolation",
      "exact coverage; u, v affine in screen space (16.16 steps): error grows with depth variation",
-     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, affine_span, nullptr, nullptr, nullptr, nullptr, affine_bound},
+     EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, affine_span, nullptr, nullptr, nullptr, nullptr, affine_bound, false, SPANS_NOT_ASKED,
+     false, PLANES_AFFINE},
     {"exact", "ours", "the reference's definition, per pixel",
      "equal to the reference: per-pixel perspective divide in double precision",
      EQUALS_REFERENCE, NEED_NOTHING, AXIS_BOTH, exact_span, TWIN_AND_ASM(exact_loop), nullptr, check_exact, exact_bound},
