@@ -155,9 +155,10 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         __builtin_memcpy(&bits, &shifted, sizeof bits);
         return int32_t(uint32_t(bits));
     };
+    // (written as each is priced, the certain one first: nothing reads a candidate not yet priced,
+    // so no fill of the whole list, some 150 instructions a polygon)
     double cost[2 * MAPPER_LIMIT];
     int32_t price[2 * MAPPER_LIMIT];
-    for (int k = 0; k < list.count; ++k) price[k] = NOT_LIVE;
     const bool rows_fewer = size[0].spans < size[1].spans;
     const double fewest_spans = size[rows_fewer ? 0 : 1].spans, most_spans = size[rows_fewer ? 1 : 0].spans, pixels = size[0].pixels;
     auto least_cost = [&](int k) {  // what candidates k on cost at least (a fitted cost below 0 a span: least where the spans are most)
