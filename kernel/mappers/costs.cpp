@@ -5,25 +5,25 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2262.3f, 477.79f, 40.268f}, // 10 scenes
-    {"exact", 2268.3f, 326.48f, 80.207f}, // 10 scenes
-    {"persp-subdiv-4", 2268.3f, 349.21f, 106.868f}, // 10 scenes
-    {"persp-subdiv-8", 2268.3f, 418.47f, 67.037f}, // 10 scenes
-    {"persp-subdiv-16", 2268.3f, 467.31f, 46.960f}, // 10 scenes
-    {"persp-subdiv-32", 2268.3f, 492.83f, 37.151f}, // 10 scenes
-    {"constant-depth", 2268.3f, 513.22f, 29.932f}, // 10 scenes
-    {"persp-adaptive-0.5", 2268.3f, 962.55f, 349.737f}, // 10 scenes
-    {"persp-adaptive-1", 2268.3f, 1149.52f, 52.835f}, // 10 scenes
-    {"persp-adaptive-2", 2268.3f, 1167.70f, 45.122f}, // 10 scenes
-    {"persp-adaptive-4", 2268.3f, 1180.59f, 40.627f}, // 10 scenes
+    {"affine", 2181.3f, 477.79f, 40.268f}, // 10 scenes
+    {"exact", 1894.0f, 326.48f, 80.207f}, // 10 scenes
+    {"persp-subdiv-4", 1894.0f, 349.21f, 106.868f}, // 10 scenes
+    {"persp-subdiv-8", 1894.0f, 418.47f, 67.037f}, // 10 scenes
+    {"persp-subdiv-16", 1894.0f, 467.31f, 46.960f}, // 10 scenes
+    {"persp-subdiv-32", 1894.0f, 492.83f, 37.151f}, // 10 scenes
+    {"constant-depth", 1894.0f, 513.22f, 29.932f}, // 10 scenes
+    {"persp-adaptive-0.5", 1894.0f, 962.55f, 349.737f}, // 10 scenes
+    {"persp-adaptive-1", 1894.0f, 1149.52f, 52.835f}, // 10 scenes
+    {"persp-adaptive-2", 1894.0f, 1167.70f, 45.122f}, // 10 scenes
+    {"persp-adaptive-4", 1894.0f, 1180.59f, 40.627f}, // 10 scenes
     {"fast-affine", 2257.3f, 163.51f, 3.995f}, // 10 scenes
     {"fast-columns", 2267.8f, 257.43f, 5.413f}, // 10 scenes
-    {"fast-subdiv-8", 2290.3f, 383.23f, 12.296f}, // 10 scenes
-    {"fast-subdiv-16", 2290.3f, 392.98f, 8.328f}, // 10 scenes
-    {"fast-subdiv-32", 2290.3f, 397.79f, 6.479f}, // 10 scenes
-    {"fast-constant-depth", 2290.3f, 401.65f, 5.113f}, // 10 scenes
-    {"fast-adaptive-1", 2290.3f, 425.23f, 8.106f}, // 10 scenes
-    {"fast-adaptive-2", 2290.3f, 428.88f, 6.693f}, // 10 scenes
+    {"fast-subdiv-8", 1916.0f, 355.70f, 12.710f}, // 10 scenes
+    {"fast-subdiv-16", 1916.0f, 365.26f, 8.676f}, // 10 scenes
+    {"fast-subdiv-32", 1916.0f, 370.22f, 6.721f}, // 10 scenes
+    {"fast-constant-depth", 1916.0f, 374.65f, 5.113f}, // 10 scenes
+    {"fast-adaptive-1", 1916.0f, 397.63f, 8.413f}, // 10 scenes
+    {"fast-adaptive-2", 1916.0f, 401.36f, 6.918f}, // 10 scenes
     {"xsharp-dda", 1715.4f, 385.88f, 37.891f}, // 9 scenes
     {"xsharp-row-out", 1720.4f, 521.21f, 19.391f}, // 9 scenes
     {"xsharp-column", 1722.0f, 490.59f, 13.147f}, // 9 scenes
