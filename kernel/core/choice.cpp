@@ -84,19 +84,22 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
         c.least_span[k] = last || c.cost[k].span < c.least_span[k + 1] ? c.cost[k].span : c.least_span[k + 1];
         c.least_pixel[k] = last || c.cost[k].pixel < c.least_pixel[k + 1] ? c.cost[k].pixel : c.least_pixel[k + 1];
     }
+    for (int k = 0; k < c.count && c.certain < 0; ++k) {
+        const Mapper& m = MAPPERS[c.row[k]];
+        if (m.guarantee.max_error == 0 && m.guarantee.exact_coverage && whole_proof_cost(m) == 0 && !c.walks[k]) c.certain = k;
+    }
+    // (the certain one's setup may be the cheaper: only its span and pixel costs are weighed, see
+    // ENVELOPE_SETUP_ALLOWANCE)
     for (int j = 0; j < c.count; ++j) {
         if (!MAPPERS[c.row[j]].enveloped) continue;
         if (c.enveloped_count++ == 0) c.enveloped_first = j, c.envelope_cheapest = true;
         const CostRow own = cost_row(MAPPER_COSTS[c.row[j]]);  // proven for nothing
         for (int k = 0; k < c.count; ++k) {
             const CostRow& other = c.cost[k];
-            if (!MAPPERS[c.row[k]].enveloped && (other.polygon < own.polygon || other.span < own.span || other.pixel < own.pixel))
-                c.envelope_cheapest = false;
+            const bool certain = c.certain >= 0 && c.row[k] == c.row[c.certain];
+            const bool setup = certain ? other.polygon + ENVELOPE_SETUP_ALLOWANCE < own.polygon : other.polygon < own.polygon;
+            if (!MAPPERS[c.row[k]].enveloped && (setup || other.span < own.span || other.pixel < own.pixel)) c.envelope_cheapest = false;
         }
-    }
-    for (int k = 0; k < c.count && c.certain < 0; ++k) {
-        const Mapper& m = MAPPERS[c.row[k]];
-        if (m.guarantee.max_error == 0 && m.guarantee.exact_coverage && whole_proof_cost(m) == 0 && !c.walks[k]) c.certain = k;
     }
     if (c.certain >= 0) {  // the plan's part that depends on the candidates alone (plan_auto)
         AutoPlan& plan = c.plan;

@@ -124,12 +124,22 @@ void prepare_choice(const Budget& budget, const Texture& tex);
 // 1800, 0.98 (4 bench frames, QEMU icount).
 constexpr double CHOICE_COST = 1800;
 
+// How much cheaper the certain candidate's setup a polygon may be than the enveloped mapper's for
+// the envelope still to count as the cheaper on every triangle: exact's setup takes only the
+// perspective planes and is some 360 instructions below fast-affine's, which its dearer lines and
+// pixels make up on any triangle of two lines and a pixel. On smaller ones the cost model's
+// straight lines are not to be trusted that finely: weighed triangle by triangle, exact took about
+// one triangle in nine of the mesh where the model put it cheaper, and auto drew the mesh at budget
+// 1 at 265 draw instructions a pixel against fast-affine's 238 (QEMU icount; 240 with this).
+constexpr double ENVELOPE_SETUP_ALLOWANCE = 500;
+
 // What auto settles once a frame per object, before drawing its polygons (render_frame):
 // - the mapper the object's envelope proves on its uncut triangles (envelope_footprint: the
 //   object's envelope bound in the frame, frame.h), and its walker: where that bound meets the
 //   budget, exactly one candidate is enveloped (Mapper::enveloped), and it costs no more a
-//   polygon, a span and a pixel with no proof to pay than any other candidate with its proof: the
-//   choice choose_mapper would make on every such triangle were that proof free. A triangle is
+//   polygon (the certain one's: up to ENVELOPE_SETUP_ALLOWANCE less), a span and a pixel with no
+//   proof to pay than any other candidate with its proof: the choice choose_mapper would make on
+//   every such triangle were that proof free. A triangle is
 //   drawn so only where it passes the envelope's guards (draw_enveloped, render.h);
 // - the candidate proven for nothing (exact: it promises the reference itself), with its walkers
 //   and cost row, for unchosen_mapper; and whether it is the only one (a budget of 0: every other
