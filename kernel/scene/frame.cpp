@@ -125,11 +125,18 @@ int clip_polygon(const ClipVertex* in, int count, double near, double far, ClipV
 
 namespace {
 
-// One stable counting pass over places [b, e) by the byte of `key` at `shift`, from (key, other, at)
-// into the same places of (key_to, other_to, at_to); false, and nothing written, where every key has
-// the same byte there.
-bool byte_pass(const uint32_t* key, const uint32_t* other, const int32_t* at, uint32_t* key_to, uint32_t* other_to, int32_t* at_to,
-               int32_t b, int32_t e, int shift) {
+// Three arrays a sort moves together, twice: [0] holds them, [1] is room to move them into.
+struct SortBuffers {
+    uint32_t* key[2];    // what they are sorted by
+    uint32_t* other[2];  // the rest of the key, carried along
+    int32_t* at[2];      // the entries' indices, carried along
+};
+
+// One stable counting pass over places [b, e) by the byte of the keys at `shift`, from buffer `from`
+// into the same places of the other; false, and nothing written, where every key has the same
+// byte there.
+bool byte_pass(const SortBuffers& s, int from, int32_t b, int32_t e, int shift) {
+    const uint32_t* key = s.key[from];
     int32_t start[256] = {};
     for (int32_t i = b; i < e; ++i) ++start[(key[i] >> shift) & 255];
     if (start[(key[b] >> shift) & 255] == e - b) return false;
@@ -137,18 +144,41 @@ bool byte_pass(const uint32_t* key, const uint32_t* other, const int32_t* at, ui
         const int32_t count = start[k];
         start[k] = sum, sum += count;
     }
+    const int to = 1 - from;
     for (int32_t i = b; i < e; ++i) {
         const int32_t k = start[(key[i] >> shift) & 255]++;
-        key_to[k] = key[i], other_to[k] = other[i], at_to[k] = at[i];
+        s.key[to][k] = key[i], s.other[to][k] = s.other[from][i], s.at[to][k] = s.at[from][i];
     }
     return true;
+}
+
+// A stable sort of places [b, e) of buffer 0 by key, the result in buffer 0: by insertion up to 16
+// places (moved only past larger keys), else by the key's bytes, the least significant first.
+void sort_by_key(const SortBuffers& s, int32_t b, int32_t e) {
+    uint32_t *key = s.key[0], *other = s.other[0];
+    int32_t* at = s.at[0];
+    if (e - b <= 16) {
+        for (int32_t i = b + 1; i < e; ++i) {
+            const uint32_t k = key[i], o = other[i];
+            const int32_t index = at[i];
+            int32_t j = i;
+            for (; j > b && key[j - 1] > k; --j) key[j] = key[j - 1], other[j] = other[j - 1], at[j] = at[j - 1];
+            key[j] = k, other[j] = o, at[j] = index;
+        }
+        return;
+    }
+    int in = 0;
+    for (int shift = 0; shift < 32; shift += 8)
+        if (byte_pass(s, in, b, e, shift)) in = 1 - in;
+    if (in == 1)
+        for (int32_t i = b; i < e; ++i) key[i] = s.key[1][i], other[i] = s.other[1][i], at[i] = s.at[1][i];
 }
 
 }  // namespace
 
 const int32_t* painter_order(FrameScratch* scratch, int32_t n) {
-    uint32_t *lo = scratch->key_lo[0], *hi = scratch->key_hi[0], *lo_to = scratch->key_lo[1], *hi_to = scratch->key_hi[1];
-    int32_t *at = scratch->order[0], *at_to = scratch->order[1];
+    uint32_t *lo = scratch->key_lo[0], *hi = scratch->key_hi[0];
+    int32_t* at = scratch->order[0];
     for (int32_t i = 0; i < n; ++i) {
         // the depth's bits as an unsigned key that grows with it (-0 first made +0: equal depths,
         // equal keys), then inverted: the far ones first
@@ -158,43 +188,14 @@ const int32_t* painter_order(FrameScratch* scratch, int32_t n) {
         bits = ~(bits >> 63 ? ~bits : bits | (uint64_t(1) << 63));
         lo[i] = uint32_t(bits), hi[i] = uint32_t(bits >> 32), at[i] = i;
     }
-    auto swap_buffers = [&] {
-        uint32_t* t = lo;
-        lo = lo_to, lo_to = t;
-        t = hi, hi = hi_to, hi_to = t;
-        int32_t* a = at;
-        at = at_to, at_to = a;
-    };
-    // By the high word (sign, exponent, the top 20 bits of the mantissa): a frame's depths rarely
-    // share one, so the low word is looked at only within runs that do
-    for (int shift = 0; shift < 32 && n > 0; shift += 8)
-        if (byte_pass(hi, lo, at, hi_to, lo_to, at_to, 0, n, shift)) swap_buffers();
+    // By the high word (sign, exponent, the top 20 bits of the mantissa), then the low word within
+    // each run of one high word (a frame's depths rarely share one)
+    sort_by_key(SortBuffers{{hi, scratch->key_hi[1]}, {lo, scratch->key_lo[1]}, {at, scratch->order[1]}}, 0, n);
+    const SortBuffers by_low{{lo, scratch->key_lo[1]}, {hi, scratch->key_hi[1]}, {at, scratch->order[1]}};
     for (int32_t b = 0, e; b < n; b = e) {
         for (e = b + 1; e < n && hi[e] == hi[b]; ++e) {
         }
-        if (e - b <= 16) {  // by insertion, stable: moved only past larger keys
-            for (int32_t i = b + 1; i < e; ++i) {
-                const uint32_t key = lo[i];
-                const int32_t index = at[i];
-                int32_t j = i;
-                for (; j > b && lo[j - 1] > key; --j) lo[j] = lo[j - 1], at[j] = at[j - 1];
-                lo[j] = key, at[j] = index;
-            }
-            continue;
-        }
-        // a long run: by the low word's bytes, in the other buffer's places, then back
-        uint32_t *k_from = lo, *k_to = lo_to, *h_from = hi, *h_to = hi_to;
-        int32_t *a_from = at, *a_to = at_to;
-        for (int shift = 0; shift < 32; shift += 8)
-            if (byte_pass(k_from, h_from, a_from, k_to, h_to, a_to, b, e, shift)) {
-                uint32_t* t = k_from;
-                k_from = k_to, k_to = t;
-                t = h_from, h_from = h_to, h_to = t;
-                int32_t* a = a_from;
-                a_from = a_to, a_to = a;
-            }
-        if (k_from != lo)
-            for (int32_t i = b; i < e; ++i) lo[i] = k_from[i], at[i] = a_from[i];
+        if (e - b > 1) sort_by_key(by_low, b, e);
     }
     return at;
 }

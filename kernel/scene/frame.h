@@ -66,9 +66,10 @@ struct FrameScratch {
 
 // The painter's order of scratch->entries[0..n): far before near (the larger depth first), equal
 // depths in the order they come in (build_frame makes them by object, then face: the same total
-// order everywhere). A stable radix sort on the depth's bits, a byte a pass (a pass where every key
-// has the same byte is skipped: a frame's depths share their exponent); returns the indices in
-// order (one of scratch->order's buffers).
+// order everywhere). A stable sort of the depth's bits: by the high word, then by the low word
+// within runs that share one; each by insertion up to 16 places, else by radix, a byte a pass (a
+// pass where every key has the same byte skipped: a frame's depths share their exponent). Returns
+// the indices in order (scratch->order[0]).
 const int32_t* painter_order(FrameScratch* scratch, int32_t n);
 
 // The camera and projection of a frame: clip-space coordinates of world points.
