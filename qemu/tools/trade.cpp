@@ -185,7 +185,6 @@ bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage) {
            (!exact_coverage || (r.accuracy.gaps == 0 && r.accuracy.overdraw == 0));
 }
 
-// auto against the fastest single mapper that meets the same budget on the whole scene.
 // Whether the row is a single mapper's (a registry row that does not choose; auto's rows are
 // "auto" and "auto@BUDGET").
 bool single_mapper(const TradeRow& r) {
@@ -193,6 +192,7 @@ bool single_mapper(const TradeRow& r) {
     return m && !m->chooses;
 }
 
+// auto against the fastest single mapper that meets the same budget on the whole scene.
 void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
     std::string table;
     for (const TradeRow& a : rows) {
