@@ -60,44 +60,18 @@ const char* setup_status_name(SetupStatus s) {
     return "?";
 }
 
-SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupPlanes planes) {
-    if (count > MAX_POLYGON_VERTICES) return SetupStatus::TooManyVertices;
-    if (count < 3) return SetupStatus::Degenerate;
-    for (int i = 0; i < count; ++i)
-        if (!in_range(in[i])) return SetupStatus::OutOfRange;
+namespace {
 
-    // Drop vertices that repeat their predecessor (a zero-length edge would exclude everything).
-    const Vertex* v[MAX_POLYGON_VERTICES];
-    int n = 0;
-    for (int i = 0; i < count; ++i)
-        if (n == 0 || in[i].x.raw != v[n - 1]->x.raw || in[i].y.raw != v[n - 1]->y.raw) v[n++] = &in[i];
-    while (n > 1 && v[n - 1]->x.raw == v[0]->x.raw && v[n - 1]->y.raw == v[0]->y.raw) --n;
-    if (n < 3) return SetupStatus::Degenerate;
-
-    // Twice the signed area, as the fan of triangles (0, k, k+1); positive is clockwise on the
-    // y-down screen.
-    int64_t area2 = 0;
-    for (int k = 1; k + 1 < n; ++k) area2 += fan_area2(*v[0], *v[k], *v[k + 1]);
-    if (area2 == 0) {
-        // all on one line: degenerate; otherwise lobes of opposite winding (a bow tie): malformed
-        for (int i = 2; i < n; ++i) {
-            int64_t cross = (int64_t(v[1]->x.raw) - v[0]->x.raw) * (int64_t(v[i]->y.raw) - v[0]->y.raw) -
-                            (int64_t(v[1]->y.raw) - v[0]->y.raw) * (int64_t(v[i]->x.raw) - v[0]->x.raw);
-            if (cross != 0) return SetupStatus::NotConvex;
-        }
-        return SetupStatus::Degenerate;
-    }
-    if (area2 < 0) {
-        for (int i = 0, j = n - 1; i < j; ++i, --j) {
-            const Vertex* t = v[i];
-            v[i] = v[j];
-            v[j] = t;
-        }
-    }
-
+// What setup does once the outline is known: v[0..n-1] clockwise (y down), no vertex repeating
+// its predecessor, area2 twice its (positive) area, and (n > 3) convexity still to check. The
+// triangle path calls it with n = 3, which the compiler unrolls.
+template <int N>
+[[gnu::always_inline]] inline SetupStatus finish_setup(const Vertex* const* v, int count, int64_t area2, PolygonSetup* out, SetupPlanes planes) {
+    const int n = N ? N : count;
     PolygonSetup& s = *out;
     s.edge_count = n;
-    s.area2 = area2 < 0 ? -area2 : area2;
+    s.area2 = area2;
+#pragma GCC unroll 3
     for (int i = 0; i < n; ++i) {
         const Vertex& a = *v[i];
         const Vertex& b = *v[i + 1 < n ? i + 1 : 0];
@@ -121,6 +95,7 @@ SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupP
 
     s.min_x = s.max_x = v[0]->x.raw;
     s.min_y = s.max_y = v[0]->y.raw;
+#pragma GCC unroll 3
     for (int i = 1; i < n; ++i) {
         if (v[i]->x.raw < s.min_x) s.min_x = v[i]->x.raw;
         if (v[i]->x.raw > s.max_x) s.max_x = v[i]->x.raw;
@@ -133,7 +108,7 @@ SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupP
 
     // The planes come from the fan triangle (0, k, k+1) of largest area: the best-conditioned one.
     int best = 1;
-    int64_t best_area = area2 < 0 ? -area2 : area2;  // a triangle's own
+    int64_t best_area = area2;  // a triangle's own
     if (n > 3) {
         best_area = -1;
         for (int k = 1; k + 1 < n; ++k) {
@@ -175,6 +150,59 @@ SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupP
         fixed[k]->dy = Fixed16_16::from_double(affine[k]->gy * double(SUBPIXEL_ONE)).raw;
     }
     return SetupStatus::Ok;
+}
+
+bool same_point(const Vertex& a, const Vertex& b) { return a.x.raw == b.x.raw && a.y.raw == b.y.raw; }
+
+}  // namespace
+
+SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupPlanes planes) {
+    if (count > MAX_POLYGON_VERTICES) return SetupStatus::TooManyVertices;
+    if (count < 3) return SetupStatus::Degenerate;
+    for (int i = 0; i < count; ++i)
+        if (!in_range(in[i])) return SetupStatus::OutOfRange;
+
+    if (count == 3) {
+        // a triangle: any two corners at one point leave fewer than three (degenerate), as does a
+        // zero area; a triangle with positive area is convex and winds once. Clockwise as below
+        // (the order reversed: c, b, a).
+        if (same_point(in[0], in[1]) || same_point(in[1], in[2]) || same_point(in[2], in[0])) return SetupStatus::Degenerate;
+        const int64_t area2 = fan_area2(in[0], in[1], in[2]);
+        if (area2 == 0) return SetupStatus::Degenerate;
+        const Vertex* v[3] = {&in[0], &in[1], &in[2]};
+        if (area2 < 0) v[0] = &in[2], v[2] = &in[0];
+        return finish_setup<3>(v, 3, area2 < 0 ? -area2 : area2, out, planes);
+    }
+
+    // Drop vertices that repeat their predecessor (a zero-length edge would exclude everything).
+    const Vertex* v[MAX_POLYGON_VERTICES];
+    int n = 0;
+    for (int i = 0; i < count; ++i)
+        if (n == 0 || !same_point(in[i], *v[n - 1])) v[n++] = &in[i];
+    while (n > 1 && same_point(*v[n - 1], *v[0])) --n;
+    if (n < 3) return SetupStatus::Degenerate;
+
+    // Twice the signed area, as the fan of triangles (0, k, k+1); positive is clockwise on the
+    // y-down screen.
+    int64_t area2 = 0;
+    for (int k = 1; k + 1 < n; ++k) area2 += fan_area2(*v[0], *v[k], *v[k + 1]);
+    if (area2 == 0) {
+        // all on one line: degenerate; otherwise lobes of opposite winding (a bow tie): malformed
+        for (int i = 2; i < n; ++i) {
+            int64_t cross = (int64_t(v[1]->x.raw) - v[0]->x.raw) * (int64_t(v[i]->y.raw) - v[0]->y.raw) -
+                            (int64_t(v[1]->y.raw) - v[0]->y.raw) * (int64_t(v[i]->x.raw) - v[0]->x.raw);
+            if (cross != 0) return SetupStatus::NotConvex;
+        }
+        return SetupStatus::Degenerate;
+    }
+    if (area2 < 0) {
+        for (int i = 0, j = n - 1; i < j; ++i, --j) {
+            const Vertex* t = v[i];
+            v[i] = v[j];
+            v[j] = t;
+        }
+    }
+    return finish_setup<0>(v, n, area2 < 0 ? -area2 : area2, out, planes);
 }
 
 bool covers(const PolygonSetup& s, int32_t x, int32_t y) {

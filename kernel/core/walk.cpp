@@ -30,7 +30,7 @@ I last_line(I hi) { return I((hi - I(SUBPIXEL_HALF)) >> SUBPIXEL_BITS); }
 
 }  // namespace
 
-void EdgeWalker::seal(Bound* list, int32_t count, int32_t never) {
+[[gnu::always_inline]] inline void EdgeWalker::seal(Bound* list, int32_t count, int32_t never) {
     // insertion sort: a handful of edges, nearly in order already (a triangle's one or two a side:
     // at most one swap, and none to copy when they are in order)
     for (int32_t i = 1; i < count; ++i) {
@@ -72,14 +72,20 @@ EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) :
     // come out the same: moving the polygon and the pixel grid by whole pixels moves each bound's
     // quotient by as many pixels and leaves its remainder.
     constexpr int64_t SMALL = int64_t(64) << SUBPIXEL_BITS;
-    if (s.max_x - s.min_x < SMALL && s.max_y - s.min_y < SMALL)
-        build<int32_t>(s, int32_t(first), int32_t(last), s.min_x >> SUBPIXEL_BITS, s.min_y >> SUBPIXEL_BITS);  // (floors)
-    else
-        build<int64_t>(s, first, last, 0, 0);
+    // (a triangle's loops unrolled: most polygons of a mesh are small triangles)
+    if (s.max_x - s.min_x < SMALL && s.max_y - s.min_y < SMALL) {
+        if (s.edge_count == 3)
+            build<int32_t, 3>(s, int32_t(first), int32_t(last), s.min_x >> SUBPIXEL_BITS, s.min_y >> SUBPIXEL_BITS);  // (floors)
+        else
+            build<int32_t, 0>(s, int32_t(first), int32_t(last), s.min_x >> SUBPIXEL_BITS, s.min_y >> SUBPIXEL_BITS);
+    } else {
+        build<int64_t, 0>(s, first, last, 0, 0);
+    }
 }
 
-template <typename I>
+template <typename I, int N>
 void EdgeWalker::build(const PolygonSetup& s, I first, I last, int64_t origin_x, int64_t origin_y) {
+    const int edges = N ? N : s.edge_count;
     const bool rows = axis_ == Axis::Rows;
     // coordinates relative to the pixel corner (origin_x, origin_y); lines and the minor coordinate
     // too, given back absolute in the bounds (line0, minor0)
@@ -99,7 +105,8 @@ void EdgeWalker::build(const PolygonSetup& s, I first, I last, int64_t origin_x,
     // edges along the lines (top and bottom for rows, left and right for columns) cut whole lines:
     // E(L) = B(L) = B(first) + (L - first) * C >= t, with C = +-(the edge's minor extent) * 256 != 0
     const I base = first;
-    for (int i = 0; i < s.edge_count; ++i) {
+#pragma GCC unroll 3
+    for (int i = 0; i < edges; ++i) {
         const Edge& e = s.edges[i];
         if ((rows ? e.dy : e.dx) != 0) continue;
         const I dx = I(e.dx), dy = I(e.dy), px = I(e.px - ox), py = I(e.py - oy);
@@ -117,7 +124,8 @@ void EdgeWalker::build(const PolygonSetup& s, I first, I last, int64_t origin_x,
     last_line_ = int32_t(last + line0);
 
     int32_t lower_count = 0, upper_count = 0;
-    for (int i = 0; i < s.edge_count; ++i) {
+#pragma GCC unroll 3
+    for (int i = 0; i < edges; ++i) {
         const Edge& e = s.edges[i];
         const I dx = I(e.dx), dy = I(e.dy), px = I(e.px - ox), py = I(e.py - oy);
         const I p = rows ? py : px, dp = rows ? dy : dx;

@@ -90,8 +90,8 @@ private:
     // Sorts by first line, then seals the list with a sentinel that is never live and never binds.
     static void seal(Bound* list, int32_t count, int32_t never);
     // The bounds of lines first..last (clipped), in integers of type I, coordinates taken relative
-    // to the pixel (origin_x, origin_y).
-    template <typename I>
+    // to the pixel (origin_x, origin_y); N: the polygon's edges where known (3), else 0.
+    template <typename I, int N>
     void build(const PolygonSetup& s, I first, I last, int64_t origin_x, int64_t origin_y);
     // The tightest of `bound` and the chain's bounds live on `line`; steps those to the next line.
     // Every walked line's centre lies within some edge of each chain, so the cursor stops at a live
