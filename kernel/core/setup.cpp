@@ -71,7 +71,7 @@ template <int N>
     PolygonSetup& s = *out;
     s.edge_count = n;
     s.area2 = area2;
-#pragma GCC unroll 3
+#pragma GCC unroll 4
     for (int i = 0; i < n; ++i) {
         const Vertex& a = *v[i];
         const Vertex& b = *v[i + 1 < n ? i + 1 : 0];
@@ -83,25 +83,36 @@ template <int N>
         // top edge: horizontal with the inside below (dx > 0); left edge: going up (dy < 0)
         e.threshold = (e.dy < 0 || (e.dy == 0 && e.dx > 0)) ? 0 : 1;
     }
-    if (n > 3) {  // (a triangle with positive area is convex and winds once)
-        // Convex: every vertex on the inner side of (or on) every edge. Exact; rejects stars too.
-        for (int i = 0; i < n; ++i)
-            for (int k = 0; k < n; ++k)
-                if (edge_function(s.edges[i], v[k]->x.raw, v[k]->y.raw) < 0) return SetupStatus::NotConvex;
-        // ... and winding once: going round, y (and x) turns back exactly twice. A convex outline
-        // traced twice passes the test above; the walkers rely on one chain of edges a side.
-        if (direction_changes(s, true) != 2 || direction_changes(s, false) != 2) return SetupStatus::NotConvex;
-    }
-
     s.min_x = s.max_x = v[0]->x.raw;
     s.min_y = s.max_y = v[0]->y.raw;
-#pragma GCC unroll 3
+#pragma GCC unroll 4
     for (int i = 1; i < n; ++i) {
         if (v[i]->x.raw < s.min_x) s.min_x = v[i]->x.raw;
         if (v[i]->x.raw > s.max_x) s.max_x = v[i]->x.raw;
         if (v[i]->y.raw < s.min_y) s.min_y = v[i]->y.raw;
         if (v[i]->y.raw > s.max_y) s.max_y = v[i]->y.raw;
     }
+    if (n > 3) {  // (a triangle with positive area is convex and winds once)
+        // Convex: every vertex on the inner side of (or on) every edge. Exact; rejects stars too.
+        // (An edge's own ends lie on it. Within a box under 2^15 subpixels a side, 128 pixels,
+        // each product is below 2^30 and their difference fits in 32 bits: on i686 a 64-bit
+        // product is three multiplies.)
+        constexpr int64_t SMALL = int64_t(1) << 15;
+        const bool small = s.max_x - s.min_x < SMALL && s.max_y - s.min_y < SMALL;
+        for (int i = 0; i < n; ++i) {
+            const Edge& e = s.edges[i];
+            for (int k = i + 2; k < i + n; ++k) {
+                const Vertex& p = *v[k < n ? k : k - n];
+                const bool outside = small ? int32_t(e.dx) * (p.y.raw - int32_t(e.py)) - int32_t(e.dy) * (p.x.raw - int32_t(e.px)) < 0
+                                           : edge_function(e, p.x.raw, p.y.raw) < 0;
+                if (outside) return SetupStatus::NotConvex;
+            }
+        }
+        // ... and winding once: going round, y (and x) turns back exactly twice. A convex outline
+        // traced twice passes the test above; the walkers rely on one chain of edges a side.
+        if (direction_changes(s, true) != 2 || direction_changes(s, false) != 2) return SetupStatus::NotConvex;
+    }
+
     s.ref_x = v[0]->x.raw;
     s.ref_y = v[0]->y.raw;
     if (planes == PLANES_NONE) return SetupStatus::Ok;
@@ -202,7 +213,8 @@ SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupP
             v[j] = t;
         }
     }
-    return finish_setup<0>(v, n, area2 < 0 ? -area2 : area2, out, planes);
+    if (area2 < 0) area2 = -area2;
+    return n == 4 ? finish_setup<4>(v, 4, area2, out, planes) : finish_setup<0>(v, n, area2, out, planes);
 }
 
 bool covers(const PolygonSetup& s, int32_t x, int32_t y) {

@@ -2,6 +2,7 @@
 // walkers against the per-pixel definition covers().
 #include <gtest/gtest.h>
 
+#include "kernel/core/random.h"
 #include "tests/unit/raster_helpers.h"
 
 namespace {
@@ -44,6 +45,43 @@ TEST(Setup, PlanesReproduceTheVertexAttributes) {
         EXPECT_NEAR(s.u.at(x, y), v.u, 1e-9);
         EXPECT_NEAR(s.v.at(x, y), v.v, 1e-9);
     }
+}
+
+// The convexity test runs in 32 bits within a box under 128 pixels a side, in 64 beyond, and a
+// triangle skips the outline loops: scaling an outline by a power of two changes no sign of any
+// edge function, so its verdict must not change from one path to the other; and a triangle
+// given with a repeated corner (four corners: the generic path) must get the triangle's own.
+TEST(Setup, EveryPathGivesTheSameVerdict) {
+    raster::Random r(20261125);
+    int verdicts[8] = {};
+    for (int trial = 0; trial < 20000; ++trial) {
+        const int n = r.range(3, 7);
+        std::vector<Vertex> small(n);
+        for (Vertex& v : small) v = vertex_raw(r.range(-40, 40) * 256 / 8, r.range(-40, 40) * 256 / 8);  // within 10 pixels of 0
+        if (r.below(4) == 0 && n > 3) small[r.below(uint32_t(n))] = small[0];                             // a repeated corner
+        if (r.below(8) == 0) {                                                                             // all on one line
+            const int32_t dx = r.range(-64, 64), dy = r.range(-64, 64);
+            for (Vertex& v : small) {
+                const int32_t k = r.range(-40, 40);
+                v = vertex_raw(dx * k, dy * k);
+            }
+        }
+        const SetupStatus verdict = setup(small);
+        ++verdicts[int(verdict)];
+        for (int shift = 1; shift <= 10; ++shift) {  // boxes from 20 to 10000 pixels: both paths
+            std::vector<Vertex> big = small;
+            for (Vertex& v : big) v = vertex_raw(v.x.raw * (1 << shift), v.y.raw * (1 << shift));
+            ASSERT_EQ(setup(big), verdict) << "trial " << trial << ", scaled by 2^" << shift;
+        }
+        if (n == 3) {
+            std::vector<Vertex> four = {small[0], small[1], small[1], small[2]};
+            ASSERT_EQ(setup(four), verdict) << "trial " << trial;
+        }
+    }
+    // the outlines drew every verdict the test means to compare
+    EXPECT_GT(verdicts[int(SetupStatus::Ok)], 1000);
+    EXPECT_GT(verdicts[int(SetupStatus::NotConvex)], 1000);
+    EXPECT_GT(verdicts[int(SetupStatus::Degenerate)], 100);
 }
 
 TEST(Setup, DegenerateInputDrawsNothing) {
