@@ -5,34 +5,34 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 2181.3f, 477.79f, 40.268f}, // 10 scenes
-    {"exact", 1894.0f, 326.48f, 80.207f}, // 10 scenes
-    {"persp-subdiv-4", 1894.0f, 349.21f, 106.868f}, // 10 scenes
-    {"persp-subdiv-8", 1894.0f, 418.47f, 67.037f}, // 10 scenes
-    {"persp-subdiv-16", 1894.0f, 467.31f, 46.960f}, // 10 scenes
-    {"persp-subdiv-32", 1894.0f, 492.83f, 37.151f}, // 10 scenes
-    {"constant-depth", 1894.0f, 513.22f, 29.932f}, // 10 scenes
-    {"persp-adaptive-0.5", 1894.0f, 962.55f, 349.737f}, // 10 scenes
-    {"persp-adaptive-1", 1894.0f, 1149.52f, 52.835f}, // 10 scenes
-    {"persp-adaptive-2", 1894.0f, 1167.70f, 45.122f}, // 10 scenes
-    {"persp-adaptive-4", 1894.0f, 1180.59f, 40.627f}, // 10 scenes
-    {"fast-affine", 2257.3f, 163.51f, 3.995f}, // 10 scenes
-    {"fast-columns", 2267.8f, 257.43f, 5.413f}, // 10 scenes
-    {"fast-subdiv-8", 1916.0f, 355.70f, 12.710f}, // 10 scenes
-    {"fast-subdiv-16", 1916.0f, 365.26f, 8.676f}, // 10 scenes
-    {"fast-subdiv-32", 1916.0f, 370.22f, 6.721f}, // 10 scenes
-    {"fast-constant-depth", 1916.0f, 374.65f, 5.113f}, // 10 scenes
-    {"fast-adaptive-1", 1916.0f, 397.63f, 8.413f}, // 10 scenes
-    {"fast-adaptive-2", 1916.0f, 401.36f, 6.918f}, // 10 scenes
+    {"affine", 1859.3f, 477.79f, 40.268f}, // 10 scenes
+    {"exact", 1561.4f, 326.48f, 80.207f}, // 10 scenes
+    {"persp-subdiv-4", 1561.4f, 349.21f, 106.868f}, // 10 scenes
+    {"persp-subdiv-8", 1561.4f, 418.47f, 67.037f}, // 10 scenes
+    {"persp-subdiv-16", 1561.4f, 467.31f, 46.960f}, // 10 scenes
+    {"persp-subdiv-32", 1561.4f, 492.83f, 37.151f}, // 10 scenes
+    {"constant-depth", 1561.4f, 513.22f, 29.932f}, // 10 scenes
+    {"persp-adaptive-0.5", 1561.4f, 962.55f, 349.737f}, // 10 scenes
+    {"persp-adaptive-1", 1561.4f, 1149.52f, 52.835f}, // 10 scenes
+    {"persp-adaptive-2", 1561.4f, 1167.70f, 45.122f}, // 10 scenes
+    {"persp-adaptive-4", 1561.4f, 1180.59f, 40.627f}, // 10 scenes
+    {"fast-affine", 1935.3f, 163.51f, 3.995f}, // 10 scenes
+    {"fast-columns", 1937.9f, 257.43f, 5.413f}, // 10 scenes
+    {"fast-subdiv-8", 1583.4f, 355.70f, 12.710f}, // 10 scenes
+    {"fast-subdiv-16", 1583.4f, 365.26f, 8.676f}, // 10 scenes
+    {"fast-subdiv-32", 1583.4f, 370.22f, 6.721f}, // 10 scenes
+    {"fast-constant-depth", 1583.4f, 374.65f, 5.113f}, // 10 scenes
+    {"fast-adaptive-1", 1583.4f, 397.63f, 8.413f}, // 10 scenes
+    {"fast-adaptive-2", 1583.4f, 401.36f, 6.918f}, // 10 scenes
     {"xsharp-dda", 1715.4f, 385.88f, 37.891f}, // 9 scenes
     {"xsharp-row-out", 1720.4f, 521.21f, 19.391f}, // 9 scenes
     {"xsharp-column", 1722.0f, 490.59f, 13.147f}, // 9 scenes
-    {"hecker-steptable", 5815.1f, 0.00f, 636.625f}, // 9 scenes
-    {"fatmap-256", 2181.8f, 175.07f, 13.395f}, // 8 scenes
-    {"fatmap-256-16", 2181.8f, 180.07f, 12.395f}, // 8 scenes
-    {"fatmap-lut", 2797.8f, 178.57f, 9.796f}, // 7 scenes
-    {"quake-subdiv16", 2448.2f, 311.56f, 13.685f}, // 9 scenes
-    {"quake-subdiv8", 2448.2f, 296.19f, 20.045f}, // 9 scenes
+    {"hecker-steptable", 5589.0f, 0.00f, 636.617f}, // 9 scenes
+    {"fatmap-256", 1998.1f, 174.57f, 13.262f}, // 8 scenes
+    {"fatmap-256-16", 1998.1f, 179.57f, 12.262f}, // 8 scenes
+    {"fatmap-lut", 2614.6f, 178.18f, 9.634f}, // 7 scenes
+    {"quake-subdiv16", 2121.3f, 311.56f, 13.685f}, // 9 scenes
+    {"quake-subdiv8", 2121.3f, 296.19f, 20.045f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
