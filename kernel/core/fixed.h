@@ -16,8 +16,18 @@ inline double larger(double a, double b) { return a > b ? a : b; }
 // mode and back around a FISTP: some 20 instructions against 3 on i686).
 inline int64_t nearby_i64(double x) { return __builtin_llrint(x); }
 
+// floor(x) for |x| < SMALL_FLOOR, in 32 bits (a 32-bit FIST within 1 of x, no overflow): the floors
+// below take this path first, with none of their range checks (NaN fails the test), and give the
+// same value; on i686 some 15 instructions less a conversion.
+constexpr double SMALL_FLOOR = 2147483647.0;
+inline int32_t floor_small(double x) {
+    const int32_t t = int32_t(__builtin_lrint(x));
+    return double(t) > x ? t - 1 : t;
+}
+
 // floor(x) as an integer, saturated to [INT32_MIN, INT32_MAX]; NaN gives 0.
 inline int32_t floor_i32(double x) {
+    if (magnitude(x) < SMALL_FLOOR) return floor_small(x);
     if (!(x == x)) return 0;
     if (x >= 2147483647.0) return INT32_MAX;
     if (x <= -2147483648.0) return INT32_MIN;
@@ -28,6 +38,7 @@ inline int32_t floor_i32(double x) {
 // floor(x) as a 64-bit integer, saturated to +-2^62; NaN gives 0.
 inline int64_t floor_i64(double x) {
     constexpr double LIMIT = 4611686018427387904.0;  // 2^62
+    if (magnitude(x) < SMALL_FLOOR) return floor_small(x);
     if (!(x == x)) return 0;
     if (x >= LIMIT) return int64_t(1) << 62;
     if (x <= -LIMIT) return -(int64_t(1) << 62);
@@ -86,7 +97,10 @@ struct FixedN {
         return FixedN{int32_t(uint32_t(i) << FRAC)};
     }
 
-    static FixedN from_double(double x) { return FixedN{saturate(floor_i64(x * SCALE + 0.5))}; }
+    static FixedN from_double(double x) {
+        const double y = x * SCALE + 0.5;
+        return FixedN{magnitude(y) < SMALL_FLOOR ? floor_small(y) : saturate(floor_i64(y))};
+    }
 
     constexpr int32_t floor_int() const { return raw >> FRAC; }
     constexpr double to_double() const { return double(raw) / SCALE; }

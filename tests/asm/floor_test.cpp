@@ -1,7 +1,8 @@
 // The exact integer helpers as the kernel builds them (i686, x87): floor_i32 and floor_i64 through
 // the FPU's nearest-integer conversion, floor_div through one IDIV where the quotient fits in 32
 // bits, against plain references on random and boundary values (ties, near-integers, both signs,
-// the saturation limits, quotients at +-2^31), and under every x87 rounding mode.
+// the saturation limits, quotients at +-2^31), and under every x87 rounding mode; the fixed-point
+// conversions built on them likewise.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,7 +32,9 @@ std::vector<double> samples() {
     std::mt19937_64 rng(20261124u);
     std::vector<double> v = {0.0, -0.0, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 1e-300, -1e-300, 0.999999999, -0.999999999,
                              2147483646.5, -2147483647.5, 2147483647.0, -2147483648.0, 4503599627370495.5, -4503599627370495.5,
-                             4611686018427387903.0, -4611686018427387903.0};
+                             4611686018427387903.0, -4611686018427387903.0,
+                             // either side of the 32-bit path's edge (floor_small: below 2^31 - 1)
+                             2147483646.9999998, -2147483646.9999998, -2147483647.0, 2147483647.5, -2147483647.5};
     std::uniform_real_distribution<double> unit(-1, 1);
     for (int i = 0; i < 200000; ++i) {
         const double scale = std::ldexp(1.0, int(rng() % 64) - 4);
@@ -52,6 +55,10 @@ TEST(Floors, MatchTheReferenceUnderEveryRoundingMode) {
             const int64_t want64 = f >= 0x1p62 ? int64_t(1) << 62 : f <= -0x1p62 ? -(int64_t(1) << 62) : int64_t(f);
             ASSERT_EQ(floor_i32(x), want32) << x << " rounding mode " << mode;
             ASSERT_EQ(floor_i64(x), want64) << x << " rounding mode " << mode;
+            // the fixed-point conversions: floor(x * 2^F + 1/2), saturated
+            const double g16 = std::floor(x * 65536.0 + 0.5), g8 = std::floor(x * 256.0 + 0.5);
+            ASSERT_EQ(Fixed16_16::from_double(x).raw, g16 >= 2147483647.0 ? INT32_MAX : g16 <= -2147483648.0 ? INT32_MIN : int32_t(g16)) << x;
+            ASSERT_EQ(Fixed24_8::from_double(x).raw, g8 >= 2147483647.0 ? INT32_MAX : g8 <= -2147483648.0 ? INT32_MIN : int32_t(g8)) << x;
         }
     }
     set_rounding(0);
