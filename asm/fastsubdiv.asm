@@ -205,6 +205,8 @@ section .text
     fadd qword [ecx + FSUB_x]           ; x = x0 + last * 256
     POINT
     fstp st0
+    cmp eax, 1                          ; (d: POINT leaves eax)
+    je .two_pixels
     mov eax, [esp + L_U1]
     sub eax, [esp + L_U0]
     cdq
@@ -217,9 +219,31 @@ section .text
     mov edx, eax                        ; dv
     mov eax, ebx
     jmp .last_draw
-.one_pixel:
-    xor eax, eax
-    xor edx, edx
+.one_pixel:                             ; the texel at the segment's first point, stored (the core's
+    mov ebx, [esp + L_TEXTURE]          ; first pixel, without its set-up: a mesh's spans are of one
+    mov bl, [esp + L_U0 + 2]            ; or two pixels)
+    mov bh, [esp + L_V0 + 2]
+    mov al, [ebx]
+    mov edi, [esp + L_DST]
+    mov [edi], al
+    jmp .done                           ; (the last segment)
+.two_pixels:                            ; the two exact points' texels: the core's second pixel is
+    mov ebx, [esp + L_TEXTURE]          ; U0 + (U1 - U0) / 1, the second point itself
+    mov bl, [esp + L_U0 + 2]
+    mov bh, [esp + L_V0 + 2]
+    mov al, [ebx]
+    mov bl, [esp + L_U1 + 2]
+    mov bh, [esp + L_V1 + 2]
+    mov ah, [ebx]
+    mov edi, [esp + L_DST]
+%ifidn %1, rows
+    mov [edi], ax
+%else
+    mov [edi], al
+    add edi, [esp + L_STRIDE]
+    mov [edi], ah
+%endif
+    jmp .done
 .last_draw:                             ; eax: du, edx: dv
     mov ecx, [esp + L_LEFT]
     mov edi, [esp + L_DST]
