@@ -4,7 +4,8 @@
 ; 64-bit conversion rounding to nearest), the steps between two points by their 32-bit difference,
 ; the pixels by the 8:16 core (asm/core816.inc), entered part-way as fast_run_loop_asm enters it:
 ; a row (stride 1) in pairs, one word store a pair; a column (any other stride) a pixel at a time,
-; the destination moved by the stride from the frame after each store.
+; the destination moved by the stride from the frame after each store. A span of one or two pixels
+; (fast_subdiv_short) stores its exact points' texels, without the frame or the core.
 
 bits 32
 
@@ -42,27 +43,35 @@ L_FRAME       equ 92
 section .text
 
 ; the exact point at x (st0, kept) into [esp + L_U1], [esp + L_V1] (or the two offsets given);
-; ecx: the block
+; ecx (or the register given third): the block
 %macro POINT 0
     POINT_AT L_U1, L_V1
 %endmacro
-%macro POINT_AT 2
-    fld qword [ecx + FSUB_g]
+%macro POINT_AT 2-3 ecx
+    fld qword [%3 + FSUB_g]
     fmul st0, st1
-    fadd qword [ecx + FSUB_c]           ; q = c0 + g0 x
-    fld qword [ecx + FSUB_g + 8]
+    fadd qword [%3 + FSUB_c]           ; q = c0 + g0 x
+    fld qword [%3 + FSUB_g + 8]
     fmul st0, st2
-    fadd qword [ecx + FSUB_c + 8]       ; pu
+    fadd qword [%3 + FSUB_c + 8]       ; pu
     fdiv st0, st1
     fmul qword [scale_16_16]
     fistp qword [esp + %1]              ; u in 16.16, nearest
-    fld qword [ecx + FSUB_g + 16]
+    fld qword [%3 + FSUB_g + 16]
     fmul st0, st2
-    fadd qword [ecx + FSUB_c + 16]      ; pv
+    fadd qword [%3 + FSUB_c + 16]      ; pv
     fdiv st0, st1
     fmul qword [scale_16_16]
     fistp qword [esp + %2]
     fstp st0                            ; q
+%endmacro
+
+; the texel of the 16.16 point at [esp + %1], [esp + %2] into %3 (edx: the block; ecx clobbered)
+%macro TEXEL_AT 3
+    movzx ecx, byte [esp + %1 + 2]      ; u whole
+    mov ch, [esp + %2 + 2]              ; v whole
+    add ecx, [edx + FSUB_texture]       ; (64 KiB aligned)
+    mov %3, [ecx]
 %endmacro
 
 ; the core's registers (asm/core816.inc) from the steps du (eax) and dv (edx) and the segment's
@@ -285,13 +294,47 @@ section .text
 ; Rows go on here; any other stride to the column loop (the same frame and argument).
 global fast_subdiv_loop_asm
 fast_subdiv_loop_asm:
-    mov eax, [esp + 4]
-    cmp dword [eax + FSUB_stride], 1
+    mov edx, [esp + 4]
+    mov eax, [edx + FSUB_count]
+    dec eax
+    cmp eax, 1
+    jbe fast_subdiv_short               ; one or two pixels
+    cmp dword [edx + FSUB_stride], 1
     jne fast_subdiv_column_asm
     SUBDIV_SPAN rows, pair_entries
 
 fast_subdiv_column_asm:
     SUBDIV_SPAN columns, column_entries
+
+; A span of one or two pixels (most of a mesh's: triangles of a dozen pixels), rows or columns:
+; its exact points' texels (the second pixel's step is the second point less the first, so the
+; core would read the second point's texel), with no frame, no saved register and no core; edx:
+; the block, eax: the pixels less one.
+fast_subdiv_short:
+    sub esp, 32                         ; U0, V0, U1, V1 (qwords)
+    fldz
+    fadd qword [edx + FSUB_x]           ; x at pixel 0, as the twin's x0 + 0 * 256
+    POINT_AT 0, 8, edx
+    test eax, eax
+    jnz .two
+    fstp st0
+    TEXEL_AT 0, 8, al
+    mov ecx, [edx + FSUB_dst]
+    mov [ecx], al
+    add esp, 32
+    ret
+.two:
+    fadd qword [subpixel_one]           ; pixel 1: x0 + 256
+    POINT_AT 16, 24, edx
+    fstp st0
+    TEXEL_AT 0, 8, al
+    TEXEL_AT 16, 24, ah
+    mov ecx, [edx + FSUB_dst]
+    mov [ecx], al
+    add ecx, [edx + FSUB_stride]
+    mov [ecx], ah
+    add esp, 32
+    ret
 
 section .rodata
 align 4
