@@ -40,7 +40,7 @@ void along(const Plane& p, double x, double y, Axis axis, int32_t count, double*
 
 SpanLine span_line(const PolygonSetup& s, Axis axis, const Span& span) {
     SpanLine l;
-    double x = centre_x(s, span.x), y = centre_y(s, span.y);
+    double x = span_centre_x(s, span.x), y = span_centre_y(s, span.y);
     l.count = span.count;
     along(s.q, x, y, axis, span.count, &l.q0, &l.qm, &l.scale_q);
     along(s.pu, x, y, axis, span.count, &l.p0[0], &l.pm[0], &l.scale_p[0]);
@@ -485,7 +485,7 @@ double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, d
 }
 
 void affine_lines(const PolygonSetup& s, Axis axis, const Span& span, double* a, double* step) {
-    double x = centre_x(s, span.x), y = centre_y(s, span.y);
+    double x = span_centre_x(s, span.x), y = span_centre_y(s, span.y);
     const Plane* plane[2] = {&s.u, &s.v};
     for (int t = 0; t < 2; ++t) {
         a[t] = plane[t]->at(x, y);

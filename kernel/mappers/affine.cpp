@@ -24,7 +24,7 @@ Fixed16_16 start_coordinate(double t, int32_t size, Wrap wrap) {
 // pixel centre; texel = floor.
 void affine_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride) {
     const PolygonSetup& setup = c.setup;
-    double x = centre_x(setup, s.x), y = centre_y(setup, s.y);
+    double x = span_centre_x(setup, s.x), y = span_centre_y(setup, s.y);
     Fixed16_16 u = start_coordinate(setup.u.at(x, y), c.tex.width, c.tex.wrap);
     Fixed16_16 v = start_coordinate(setup.v.at(x, y), c.tex.height, c.tex.wrap);
     double per_pixel = double(SUBPIXEL_ONE);

@@ -21,8 +21,8 @@ void exact_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t strid
     a.height = c.tex.height;
     a.clamp = c.tex.wrap == Wrap::Clamp;
     a.reserved = 0;
-    a.x = centre_x(setup, s.x);
-    a.y = centre_y(setup, s.y);
+    a.x = span_centre_x(setup, s.x);
+    a.y = span_centre_y(setup, s.y);
     a.step_x = c.axis == Axis::Rows ? double(SUBPIXEL_ONE) : 0.0;
     a.step_y = c.axis == Axis::Rows ? 0.0 : double(SUBPIXEL_ONE);
     const Plane* planes[3] = {&setup.q, &setup.pu, &setup.pv};

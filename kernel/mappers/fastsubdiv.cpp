@@ -58,12 +58,7 @@ namespace {
 [[gnu::always_inline]] inline void span_args(const PolygonSetup& setup, Axis axis, const Span& s, const Texture& tex, uint8_t* dst,
                                              int32_t stride, FastSubdivArgs* out) {
     FastSubdivArgs& a = *out;
-    // the pixel centre relative to the reference vertex (centre_x, centre_y) in 32 bits: a span lies
-    // inside the polygon's box, within 16384 pixels of 0 (setup's range), so each difference is
-    // within 2^23 subpixels; on i686 the 64-bit products and differences cost some 15 instructions
-    // a span more
-    const double x = double(int32_t(uint32_t(s.x) * uint32_t(SUBPIXEL_ONE) + uint32_t(SUBPIXEL_HALF) - uint32_t(setup.ref_x)));
-    const double y = double(int32_t(uint32_t(s.y) * uint32_t(SUBPIXEL_ONE) + uint32_t(SUBPIXEL_HALF) - uint32_t(setup.ref_y)));
+    const double x = span_centre_x(setup, s.x), y = span_centre_y(setup, s.y);
     const bool rows = axis == Axis::Rows;
     a.dst = dst;
     a.stride = stride;

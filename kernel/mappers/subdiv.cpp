@@ -41,7 +41,7 @@ template <typename Length>
 void runs_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride, Length&& length) {
     const PolygonSetup& setup = c.setup;
     const bool rows = c.axis == Axis::Rows;
-    double x = centre_x(setup, s.x), y = centre_y(setup, s.y);
+    double x = span_centre_x(setup, s.x), y = span_centre_y(setup, s.y);
     auto exact_at = [&](int32_t k, double* u, double* v) {
         double px = rows ? x + double(k) * SUBPIXEL_ONE : x, py = rows ? y : y + double(k) * SUBPIXEL_ONE;
         double q = setup.q.at(px, py);
