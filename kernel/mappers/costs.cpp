@@ -5,34 +5,34 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1859.3f, 477.79f, 40.268f}, // 10 scenes
-    {"exact", 1561.4f, 326.48f, 80.207f}, // 10 scenes
-    {"persp-subdiv-4", 1561.4f, 349.21f, 106.868f}, // 10 scenes
-    {"persp-subdiv-8", 1561.4f, 418.47f, 67.037f}, // 10 scenes
-    {"persp-subdiv-16", 1561.4f, 467.31f, 46.960f}, // 10 scenes
-    {"persp-subdiv-32", 1561.4f, 492.83f, 37.151f}, // 10 scenes
-    {"constant-depth", 1561.4f, 513.22f, 29.932f}, // 10 scenes
-    {"persp-adaptive-0.5", 1561.4f, 962.55f, 349.737f}, // 10 scenes
-    {"persp-adaptive-1", 1561.4f, 1149.52f, 52.835f}, // 10 scenes
-    {"persp-adaptive-2", 1561.4f, 1167.70f, 45.122f}, // 10 scenes
-    {"persp-adaptive-4", 1561.4f, 1180.59f, 40.627f}, // 10 scenes
-    {"fast-affine", 1935.3f, 163.51f, 3.995f}, // 10 scenes
-    {"fast-columns", 1937.9f, 257.43f, 5.413f}, // 10 scenes
-    {"fast-subdiv-8", 1583.4f, 355.70f, 12.710f}, // 10 scenes
-    {"fast-subdiv-16", 1583.4f, 365.26f, 8.676f}, // 10 scenes
-    {"fast-subdiv-32", 1583.4f, 370.22f, 6.721f}, // 10 scenes
-    {"fast-constant-depth", 1583.4f, 374.65f, 5.113f}, // 10 scenes
-    {"fast-adaptive-1", 1583.4f, 397.63f, 8.413f}, // 10 scenes
-    {"fast-adaptive-2", 1583.4f, 401.36f, 6.918f}, // 10 scenes
-    {"xsharp-dda", 1715.4f, 385.88f, 37.891f}, // 9 scenes
-    {"xsharp-row-out", 1720.4f, 521.21f, 19.391f}, // 9 scenes
-    {"xsharp-column", 1722.0f, 490.59f, 13.147f}, // 9 scenes
-    {"hecker-steptable", 5589.0f, 0.00f, 636.617f}, // 9 scenes
-    {"fatmap-256", 1998.1f, 174.57f, 13.262f}, // 8 scenes
-    {"fatmap-256-16", 1998.1f, 179.57f, 12.262f}, // 8 scenes
-    {"fatmap-lut", 2614.6f, 178.18f, 9.634f}, // 7 scenes
-    {"quake-subdiv16", 2121.3f, 311.56f, 13.685f}, // 9 scenes
-    {"quake-subdiv8", 2121.3f, 296.19f, 20.045f}, // 9 scenes
+    {"affine", 1783.3f, 362.01f, 40.229f}, // 10 scenes
+    {"exact", 1559.6f, 316.48f, 80.207f}, // 10 scenes
+    {"persp-subdiv-4", 1559.6f, 326.45f, 94.387f}, // 10 scenes
+    {"persp-subdiv-8", 1559.6f, 384.02f, 60.919f}, // 10 scenes
+    {"persp-subdiv-16", 1559.6f, 425.02f, 44.045f}, // 10 scenes
+    {"persp-subdiv-32", 1559.6f, 446.47f, 35.799f}, // 10 scenes
+    {"constant-depth", 1559.6f, 463.61f, 29.732f}, // 10 scenes
+    {"persp-adaptive-0.5", 1559.6f, 934.33f, 323.006f}, // 10 scenes
+    {"persp-adaptive-1", 1559.6f, 1103.47f, 51.460f}, // 10 scenes
+    {"persp-adaptive-2", 1559.6f, 1120.60f, 44.187f}, // 10 scenes
+    {"persp-adaptive-4", 1559.6f, 1132.76f, 39.946f}, // 10 scenes
+    {"fast-affine", 1859.3f, 163.51f, 3.995f}, // 10 scenes
+    {"fast-columns", 1861.9f, 257.43f, 5.413f}, // 10 scenes
+    {"fast-subdiv-8", 1581.6f, 297.63f, 13.476f}, // 10 scenes
+    {"fast-subdiv-16", 1581.6f, 307.40f, 9.553f}, // 10 scenes
+    {"fast-subdiv-32", 1581.6f, 312.25f, 7.654f}, // 10 scenes
+    {"fast-constant-depth", 1581.6f, 316.59f, 6.095f}, // 10 scenes
+    {"fast-adaptive-1", 1581.6f, 339.91f, 9.235f}, // 10 scenes
+    {"fast-adaptive-2", 1581.6f, 343.50f, 7.811f}, // 10 scenes
+    {"xsharp-dda", 1586.0f, 385.24f, 37.860f}, // 9 scenes
+    {"xsharp-row-out", 1591.0f, 520.57f, 19.359f}, // 9 scenes
+    {"xsharp-column", 1592.6f, 490.04f, 13.113f}, // 9 scenes
+    {"hecker-steptable", 5550.5f, 0.00f, 636.613f}, // 9 scenes
+    {"fatmap-256", 1964.2f, 174.38f, 13.261f}, // 8 scenes
+    {"fatmap-256-16", 1964.2f, 179.38f, 12.261f}, // 8 scenes
+    {"fatmap-lut", 2580.7f, 177.99f, 9.631f}, // 7 scenes
+    {"quake-subdiv16", 2084.0f, 311.61f, 13.667f}, // 9 scenes
+    {"quake-subdiv8", 2084.0f, 296.24f, 20.028f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
