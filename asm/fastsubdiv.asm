@@ -229,8 +229,8 @@ section .text
     mov eax, ebx
     jmp .last_draw
 .one_pixel:                             ; the texel at the segment's first point, stored (the core's
-    mov ebx, [esp + L_TEXTURE]          ; first pixel, without its set-up: a mesh's spans are of one
-    mov bl, [esp + L_U0 + 2]            ; or two pixels)
+    mov ebx, [esp + L_TEXTURE]          ; first pixel, without its set-up: a last segment of one or
+    mov bl, [esp + L_U0 + 2]            ; two pixels after full ones; shorter spans: fast_subdiv_short)
     mov bh, [esp + L_V0 + 2]
     mov al, [ebx]
     mov edi, [esp + L_DST]
