@@ -63,8 +63,8 @@ const char* setup_status_name(SetupStatus s) {
 namespace {
 
 // What setup does once the outline is known: v[0..n-1] clockwise (y down), no vertex repeating
-// its predecessor, area2 twice its (positive) area, and (n > 3) convexity still to check. The
-// triangle path calls it with n = 3, which the compiler unrolls.
+// its predecessor, area2 twice its (positive) area, and (n > 3) convexity still to check. N: the
+// corners where known (a triangle's 3, a quad's 4: the loops unrolled), else 0 (n = count).
 template <int N>
 [[gnu::always_inline]] inline SetupStatus finish_setup(const Vertex* const* v, int count, int64_t area2, PolygonSetup* out, SetupPlanes planes) {
     const int n = N ? N : count;
