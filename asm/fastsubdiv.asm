@@ -66,11 +66,12 @@ section .text
     fstp st0                            ; q
 %endmacro
 
-; the texel of the 16.16 point at [esp + %1], [esp + %2] into %3 (edx: the block; ecx clobbered)
-%macro TEXEL_AT 3
+; the texel of the 16.16 point at [esp + %1], [esp + %2] into %3; %4: the texture (64 KiB
+; aligned; the block's by default, edx holding the block); ecx clobbered
+%macro TEXEL_AT 3-4 [edx + FSUB_texture]
     movzx ecx, byte [esp + %1 + 2]      ; u whole
     mov ch, [esp + %2 + 2]              ; v whole
-    add ecx, [edx + FSUB_texture]       ; (64 KiB aligned)
+    add ecx, %4
     mov %3, [ecx]
 %endmacro
 
@@ -229,21 +230,16 @@ section .text
     mov eax, ebx
     jmp .last_draw
 .one_pixel:                             ; the texel at the segment's first point, stored (the core's
-    mov ebx, [esp + L_TEXTURE]          ; first pixel, without its set-up: a last segment of one or
-    mov bl, [esp + L_U0 + 2]            ; two pixels after full ones; shorter spans: fast_subdiv_short)
-    mov bh, [esp + L_V0 + 2]
-    mov al, [ebx]
+                                        ; first pixel, without its set-up: a last segment of one or
+                                        ; two pixels after full ones; shorter spans: fast_subdiv_short)
+    TEXEL_AT L_U0, L_V0, al, [esp + L_TEXTURE]
     mov edi, [esp + L_DST]
     mov [edi], al
     jmp .done                           ; (the last segment)
 .two_pixels:                            ; the two exact points' texels: the core's second pixel is
-    mov ebx, [esp + L_TEXTURE]          ; U0 + (U1 - U0) / 1, the second point itself
-    mov bl, [esp + L_U0 + 2]
-    mov bh, [esp + L_V0 + 2]
-    mov al, [ebx]
-    mov bl, [esp + L_U1 + 2]
-    mov bh, [esp + L_V1 + 2]
-    mov ah, [ebx]
+                                        ; U0 + (U1 - U0) / 1, the second point itself
+    TEXEL_AT L_U0, L_V0, al, [esp + L_TEXTURE]
+    TEXEL_AT L_U1, L_V1, ah, [esp + L_TEXTURE]
     mov edi, [esp + L_DST]
 %ifidn %1, rows
     mov [edi], ax
