@@ -92,7 +92,7 @@ NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error -I$(KBUILD)/gen/ -Iasm/
 
 # portable kernel code the host builds too (no port I/O, no inline asm)
 CORE_CXX := $(wildcard $(PORTABLE_DIRS:%=%/*.cpp))
-PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/protocol.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp kernel/lib/stats.cpp $(CORE_CXX)
+PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/protocol.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp kernel/lib/stats.cpp $(CORE_CXX)
 # host-only code: the exact reference and the accuracy measures, the harness, the tools' libraries
 HARNESS_CXX := $(filter-out %/main.cpp %_main.cpp,$(wildcard qemu/*/*.cpp))
 HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
@@ -111,8 +111,8 @@ H32CXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -
 ASM_TESTS := $(H32BUILD)/modexlab-asm-tests
 # real host cycles of the mappers, C++ twins and NASM loops, 32-bit static (modexlab-bench runs it)
 CYCLES := $(H32BUILD)/modexlab-cycles
-CYCLES_CXX := qemu/tools/cycles_main.cpp kernel/lib/words.cpp kernel/lib/fmt.cpp $(CORE_CXX)
-ASM_TEST_CXX := tests/main.cpp $(wildcard tests/asm/*.cpp) kernel/lib/words.cpp kernel/lib/fmt.cpp $(CORE_CXX)
+CYCLES_CXX := qemu/tools/cycles_main.cpp kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/fmt.cpp $(CORE_CXX)
+ASM_TEST_CXX := tests/main.cpp $(wildcard tests/asm/*.cpp) kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/fmt.cpp $(CORE_CXX)
 
 HARNESS := $(HBUILD)/modexlab
 RENDER := $(HBUILD)/modexlab-render

@@ -1,9 +1,11 @@
 ; CPU-exception entry stubs (vectors 0-31): build an ExceptionFrame and hand it to exception_handler.
+; IRQ stubs (vectors 0x20-0x2F, the remapped PICs): save the registers, call irq_handler(irq), return.
 ; Also the deliberate fault sites the `fault` command jumps into, named so tests can find their addresses.
 
 bits 32
 
 extern exception_handler
+extern irq_handler
 
 ; Vectors where the CPU pushes an error code: 8, 10-14, 17, 21, 29, 30.
 %macro ISR_NOERR 1
@@ -68,7 +70,34 @@ ISR_ERR   29
 ISR_ERR   30
 ISR_NOERR 31
 
+; An IRQ interrupts whatever runs (ring 0, flat segments): the general registers saved around the
+; C++ handler, which touches no x87 or SSE state; iret restores EFLAGS (the direction flag too).
+%macro IRQ 1
+irq_stub_%1:
+    pushad
+    cld
+    push dword %1
+    call irq_handler
+    add esp, 4
+    popad
+    iretd
+%endmacro
+
+%assign i 0
+%rep 16
+IRQ i
+%assign i i+1
+%endrep
+
 section .rodata
+global irq_stub_table
+irq_stub_table:
+%assign i 0
+%rep 16
+    dd irq_stub_%+i
+%assign i i+1
+%endrep
+
 global isr_stub_table
 isr_stub_table:
 %assign i 0

@@ -1,4 +1,4 @@
-// 8259 initialisation: ICW1..ICW4 with vector bases 0x20/0x28, then every IRQ masked.
+// 8259 initialisation: ICW1..ICW4 with vector bases 0x20/0x28, then every IRQ masked; unmasking, EOI.
 #include "drivers/pic.h"
 
 #include "drivers/io.h"
@@ -25,6 +25,30 @@ void remap_and_mask() {
     io::wait();
     io::outb(MASTER_DATA, 0xFF); // mask everything
     io::outb(SLAVE_DATA, 0xFF);
+}
+
+}  // namespace pic
+
+namespace pic {
+
+void unmask(uint32_t irq) {
+    if (irq >= 16) return;
+    if (irq >= 8) unmask(2);  // the cascade
+    const uint16_t port = irq < 8 ? 0x21 : 0xA1;
+    io::outb(port, uint8_t(io::inb(port) & ~(1u << (irq & 7))));
+}
+
+bool in_service(uint32_t irq) {
+    const uint16_t port = irq < 8 ? 0x20 : 0xA0;
+    io::outb(port, 0x0B);  // OCW3: the next read is the in-service register
+    const uint8_t isr = io::inb(port);
+    io::outb(port, 0x0A);  // back to the interrupt request register
+    return isr & (1u << (irq & 7));
+}
+
+void end_of_interrupt(uint32_t irq) {
+    if (irq >= 8) io::outb(0xA0, 0x20);
+    io::outb(0x20, 0x20);
 }
 
 }  // namespace pic

@@ -2,6 +2,7 @@
 #include "kernel/idt.h"
 
 #include "drivers/debug_exit.h"
+#include "drivers/pic.h"
 #include "drivers/serial.h"
 #include "drivers/vga.h"
 #include "kernel/core/render.h"
@@ -11,6 +12,7 @@
 #include "kernel/server/reply.h"
 
 extern "C" const uint32_t isr_stub_table[32];
+extern "C" const uint32_t irq_stub_table[16];
 
 namespace idt {
 
@@ -33,7 +35,7 @@ struct [[gnu::packed]] Descriptor {
 constexpr uint16_t KERNEL_CS = 0x08;
 constexpr uint8_t INTERRUPT_GATE_RING0 = 0x8E;  // present, DPL 0, 32-bit interrupt gate (IF cleared)
 
-Gate g_idt[32];
+Gate g_idt[48];  // the CPU's exceptions, then IRQs 0-15 (pic::VECTOR_BASE on)
 
 constexpr const char* NAMES[32] = {
     "#DE", "#DB", "NMI", "#BP", "#OF", "#BR", "#UD", "#NM", "#DF", "CSO", "#TS", "#NP", "#SS", "#GP", "#PF", "#15",
@@ -68,8 +70,9 @@ raster::DrawingNow& drawing_now() { return g_drawing_now; }
 const char* exception_name(uint32_t vector) { return vector < 32 ? NAMES[vector] : "?"; }
 
 void init() {
-    for (int v = 0; v < 32; ++v) {
-        uint32_t handler = isr_stub_table[v];
+    static_assert(pic::VECTOR_BASE == 32, "the IRQ gates follow the exceptions'");
+    for (int v = 0; v < 48; ++v) {
+        uint32_t handler = v < 32 ? isr_stub_table[v] : irq_stub_table[v - 32];
         g_idt[v] = Gate{uint16_t(handler), KERNEL_CS, 0, INTERRUPT_GATE_RING0, uint16_t(handler >> 16)};
     }
     Descriptor d{sizeof(g_idt) - 1, reinterpret_cast<uint32_t>(&g_idt)};

@@ -1,4 +1,5 @@
-// The IDT: CPU exceptions 0-31 go to a handler that reports them on COM1 and ends the run.
+// The IDT: CPU exceptions 0-31 go to a handler that reports them on COM1 and ends the run; IRQs
+// 0-15 (vectors 0x20-0x2F) to irq_handler (drivers/keyboard.h), which serves the keyboard.
 #pragma once
 
 #include <stdint.h>

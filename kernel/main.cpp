@@ -3,6 +3,7 @@
 
 #include "drivers/cpu.h"
 #include "drivers/debug_exit.h"
+#include "drivers/keyboard.h"
 #include "drivers/pic.h"
 #include "drivers/serial.h"
 #include "drivers/timer.h"
@@ -97,6 +98,7 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     ctx.cpu = cpu::detect();
     const bool guard_pages = guard::init(ctx.cpu.features_edx);
     ctx.tsc_hz = cpu::has_tsc(ctx.cpu) ? timer::calibrate_tsc_hz() : 0;
+    const keyboard::Status keys = keyboard::init();  // (interrupts on from here: IRQ 1 alone unmasked)
     bool vbe_found = vga::disable_bochs_vbe();
     if ((info->flags & multiboot::INFO_MEMORY) && 0x100000 + uint64_t(info->mem_upper) * 1024 < uint64_t(reinterpret_cast<uintptr_t>(__kernel_end)))
         panic("not enough memory: the kernel's image and buffers need more than the loader reports");
@@ -112,6 +114,8 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     boot.u32("files", uint32_t(files::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
     boot.u32("memory_kib", (info->flags & multiboot::INFO_MEMORY) ? info->mem_upper + 1024 : 0);
     boot.boolean("guard_pages", guard_pages);
+    boot.begin_object("keyboard").boolean("controller", keys.controller).boolean("port", keys.port_ok).boolean("keyboard", keys.keyboard);
+    boot.boolean("irq", keys.irq).end_object();
     boot.begin_array("ignored_options");
     for (size_t i = 0; i < options.rejected_count; ++i) {
         lib::Fmt w;
@@ -124,7 +128,10 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     if (options.action == BootAction::Demo) {
         vga::set_mode_x();
         vga::load_palette(raster::palette(ctx.palette));
-        show::run(options.interval_ms, options.patterns, options.scene, options.mapper);
+        show::Options o;
+        o.interval_ms = options.interval_ms, o.patterns = options.patterns, o.scene = options.scene, o.mapper = options.mapper;
+        o.tsc_hz = ctx.tsc_hz;
+        show::run(o);
         vga::load_palette(raster::palette(ctx.palette));
     }
     server::run(ctx);

@@ -1,11 +1,19 @@
-// The boot show: scenes played frame by frame, or patterns; the serial line interrupts either.
+// The boot show: scenes played frame by frame, or patterns; the keyboard drives it, the serial
+// line interrupts it.
 #include "kernel/show.h"
 
+#include "drivers/keyboard.h"
 #include "drivers/serial.h"
 #include "drivers/timer.h"
 #include "drivers/vga.h"
+#include "kernel/core/choice.h"
 #include "kernel/draw.h"
 #include "kernel/files.h"
+#include "kernel/lib/fmt.h"
+#include "kernel/lib/json.h"
+#include "kernel/lib/keys.h"
+#include "kernel/scene/text.h"
+#include "kernel/server/commands.h"
 #include "kernel/worlds.h"
 
 namespace show {
@@ -19,19 +27,6 @@ bool is_world(const files::File& f) {
     return raster::scene_version(reinterpret_cast<const char*>(f.data), f.size, &e) == 2;
 }
 
-// Plays one scene through its frames; false when a byte arrived (stop the show).
-bool play(const files::File& f, const raster::Mapper& mapper) {
-    raster::ParseError e;
-    if (!worlds::load(f.name, f.data, f.size, &e)) return true;  // a bad module: on to the next
-    for (int32_t n = 0; n < worlds::world().frames; ++n) {
-        if (serial::byte_ready()) return false;
-        int page = vga::shown_page() == 0 ? 1 : 0;
-        worlds::render(n, mapper, raster::Surface::Linear, page, raster::Variant::Asm);
-        vga::flip(page);
-    }
-    return true;
-}
-
 void patterns(uint32_t interval_ms) {
     for (uint32_t n = 0;; ++n) {
         if (serial::byte_ready()) return;
@@ -42,26 +37,270 @@ void patterns(uint32_t interval_ms) {
     }
 }
 
+// The budgets the keys step through (auto), in footprints; ANY_ERROR last.
+constexpr double BUDGET_STEPS[] = {0, 0.5, 1, 2, 4, raster::ANY_ERROR};
+constexpr int BUDGET_STEP_COUNT = sizeof(BUDGET_STEPS) / sizeof(BUDGET_STEPS[0]);
+double budget_order(double e) { return e < 0 ? 1e300 : e; }  // any: above every number
+
+constexpr int MAX_SCENES = 64;
+constexpr int HUD_LINES = 7, HUD_CHARS = 40;
+
+struct Show {
+    Options options;
+    int scenes[MAX_SCENES];  // file indices of the 3D scenes
+    int scene_count = 0;
+    int scene = 0;            // of scenes[]
+    bool pinned = false;      // stay on the scene (picked by a key or the boot options)
+    bool loaded = false;
+    const raster::Mapper* mapper = nullptr;
+    raster::Surface surface = raster::Surface::Linear;
+    bool paused = false, hud = true, help = false;
+    int32_t next_frame = 0, shown_frame = -1;
+    raster::TextColours colours{15, 0};
+    lib::ScanDecoder decoder;
+    // the figures: the last frame's, and when the one before it began (fps over consecutive frames)
+    uint64_t last_start = 0, last_hud_ticks = 0;
+    bool running_before = false;
+    char hud_text[HUD_LINES][HUD_CHARS + 1] = {};
+    int hud_count = 0;
+};
+
+const files::File& scene_file(const Show& s) { return files::at(s.scenes[s.scene]); }
+
+bool load_scene(Show& s) {
+    const files::File& f = scene_file(s);
+    raster::ParseError e;
+    s.loaded = worlds::load(f.name, f.data, f.size, &e);
+    if (s.loaded) s.colours = raster::text_colours(worlds::world().palette);
+    s.next_frame = 0;
+    return s.loaded;
+}
+
+// "12.3" from tenths
+void put_tenths(lib::Fmt& f, uint64_t tenths) { f.u(uint32_t(tenths / 10)).s(".").u(uint32_t(tenths % 10)); }
+
+// a budget's error in footprints, up to two decimals ("0.5", "1", "any")
+void put_error(lib::Fmt& f, double e) {
+    if (e < 0) {
+        f.s("any");
+        return;
+    }
+    const uint64_t hundredths = uint64_t(e * 100 + 0.5);
+    f.u(uint32_t(hundredths / 100));
+    if (hundredths % 100) {
+        f.s(".").u(uint32_t(hundredths % 100 / 10));
+        if (hundredths % 10) f.u(uint32_t(hundredths % 10));
+    }
+}
+
+void set_line(Show& s, const lib::Fmt& f) {
+    if (s.hud_count < HUD_LINES) lib::copy_c_string(s.hud_text[s.hud_count++], HUD_CHARS + 1, f.c_str());
+}
+
+// The HUD's lines for a frame just drawn: the scene and frame, the mapper (auto: its budget and
+// shares), frames a second and cycles a pixel (TSC; the HUD's own drawing left out), the surface.
+void compose_hud(Show& s, const worlds::FrameResult& r, uint64_t period) {
+    s.hud_count = 0;
+    lib::Fmt a;
+    a.s(worlds::name()).s("  frame ").u(uint32_t(s.shown_frame)).s("/").u(uint32_t(worlds::world().frames));
+    set_line(s, a);
+    lib::Fmt b;
+    b.s(s.mapper->name);
+    if (s.mapper->chooses) {
+        const raster::Budget budget = worlds::budget();
+        b.s(", budget ");
+        put_error(b, budget.max_error);
+        b.s(budget.exact_coverage ? " exact" : " any");
+    }
+    set_line(s, b);
+    lib::Fmt c;
+    if (s.paused) c.s("paused");
+    else if (period > 0 && s.options.tsc_hz > 0) put_tenths(c, s.options.tsc_hz * 10 / period), c.s(" fps");
+    else c.s("- fps");
+    c.s(s.surface == raster::Surface::Vga ? ", VGA memory" : ", RAM + blit");
+    set_line(s, c);
+    const uint32_t pixels = r.render.stats.pixels;
+    lib::Fmt d;
+    if (s.options.tsc_hz == 0) d.s("no TSC: no cycle counts");
+    else if (pixels == 0) d.s("no pixels drawn");
+    else {
+        const uint64_t all = r.ticks_geometry + r.render.ticks_clear + r.render.ticks_draw + r.render.ticks_blit;
+        d.s("cycles/px ");
+        put_tenths(d, r.render.ticks_draw * 10 / pixels);
+        d.s(" drawing, ");
+        put_tenths(d, all * 10 / pixels);
+        d.s(" all");
+    }
+    set_line(s, d);
+    if (!s.mapper->chooses || pixels == 0) return;
+    // auto: the three mappers that drew the most pixels, with their shares
+    bool listed[raster::MAPPER_LIMIT] = {};
+    for (int k = 0; k < 3; ++k) {
+        int best = -1;
+        for (int i = 0; i < raster::MAPPER_COUNT; ++i)
+            if (!listed[i] && r.render.stats.mapper_pixels[i] > 0 && (best < 0 || r.render.stats.mapper_pixels[i] > r.render.stats.mapper_pixels[best])) best = i;
+        if (best < 0) break;
+        listed[best] = true;
+        lib::Fmt e;
+        e.u(uint32_t(uint64_t(r.render.stats.mapper_pixels[best]) * 100 / pixels)).s("% ").s(raster::MAPPERS[best].name);
+        set_line(s, e);
+    }
+}
+
+void draw_hud(Show& s, int page) {
+    raster::Target t = vga::page_target(page);
+    lib::StrView lines[HUD_LINES];
+    for (int i = 0; i < s.hud_count; ++i) lines[i] = lib::StrView{s.hud_text[i], lib::c_length(s.hud_text[i])};
+    raster::draw_text_box(t, raster::HUD_X, raster::HUD_Y, lines, s.hud_count, s.colours);
+}
+
+// Draws frame n into the back page, the HUD over it, and flips. `running`: a frame of the
+// animation going on (its period counts for the frames a second), not a redraw.
+void draw_frame(Show& s, int32_t n, bool running) {
+    const int page = vga::shown_page() == 0 ? 1 : 0;
+    const uint64_t start = timer::rdtsc();
+    const worlds::FrameResult r = worlds::render(n, *s.mapper, s.surface, page, raster::Variant::Asm);
+    s.shown_frame = n;
+    const uint64_t period = running && s.running_before ? start - s.last_start - s.last_hud_ticks : 0;
+    const uint64_t hud_start = timer::rdtsc();
+    s.hud_count = 0;
+    if (s.hud) {
+        compose_hud(s, r, period);
+        draw_hud(s, page);
+    }
+    s.last_hud_ticks = timer::rdtsc() - hud_start;
+    s.last_start = start;
+    s.running_before = running;
+    vga::flip(page);
+}
+
+void draw_help_page(Show& s) {
+    const int page = vga::shown_page() == 0 ? 1 : 0;
+    raster::Target t = vga::page_target(page);
+    raster::draw_help(t, s.colours);
+    vga::flip(page);
+}
+
+void step_budget(int direction) {
+    raster::Budget b = worlds::budget();
+    const double now = budget_order(b.max_error);
+    int pick = -1;
+    for (int i = 0; i < BUDGET_STEP_COUNT; ++i) {
+        const double step = budget_order(BUDGET_STEPS[i]);
+        if (direction > 0 && step > now) {
+            pick = i;
+            break;
+        }
+        if (direction < 0 && step < now) pick = i;
+    }
+    if (pick < 0) return;
+    b.given = true;
+    b.max_error = BUDGET_STEPS[pick];
+    worlds::set_budget(&b);
+}
+
+int mapper_index(const raster::Mapper* m) { return int(m - raster::MAPPERS); }
+
+// What a key press does; then its event on COM1, with what is on the screen.
+void on_key(Show& s, lib::Key key) {
+    const lib::Action action = s.help ? lib::Action::Help : lib::action_for(key);
+    bool redraw = s.paused;  // a change while paused shows at once
+    bool moved = false;      // to another scene: its first frame
+    switch (action) {
+    case lib::Action::NextScene:
+    case lib::Action::PreviousScene:
+        s.scene = (s.scene + (action == lib::Action::NextScene ? 1 : s.scene_count - 1)) % s.scene_count;
+        s.pinned = true;
+        moved = true;
+        break;
+    case lib::Action::NextMapper:
+    case lib::Action::PreviousMapper:
+        s.mapper = &raster::MAPPERS[(mapper_index(s.mapper) + (action == lib::Action::NextMapper ? 1 : raster::MAPPER_COUNT - 1)) % raster::MAPPER_COUNT];
+        break;
+    case lib::Action::BudgetUp:
+    case lib::Action::BudgetDown: step_budget(action == lib::Action::BudgetUp ? 1 : -1); break;
+    case lib::Action::Pause:
+        s.paused = !s.paused;
+        redraw = s.paused;  // the paused frame again, its HUD saying so
+        break;
+    case lib::Action::Step:
+        s.paused = true;
+        redraw = false;
+        if (s.loaded) {
+            draw_frame(s, s.next_frame, false);
+            s.next_frame = (s.next_frame + 1) % worlds::world().frames;
+        }
+        break;
+    case lib::Action::Surface: s.surface = s.surface == raster::Surface::Vga ? raster::Surface::Linear : raster::Surface::Vga; break;
+    case lib::Action::Hud: s.hud = !s.hud; break;
+    case lib::Action::Help:
+        s.help = !s.help;  // (while the help is up, any key leaves it)
+        redraw = !s.help;
+        if (s.help) draw_help_page(s);
+        break;
+    case lib::Action::None: redraw = false; break;
+    }
+    if (moved && load_scene(s)) redraw = true;
+    if (moved && s.loaded && !s.paused) redraw = false;  // the animation goes on from the new scene's first frame
+    if (redraw && s.loaded && !s.help) {
+        const int32_t n = moved ? 0 : s.shown_frame < 0 ? 0 : s.shown_frame;
+        draw_frame(s, n, false);
+        s.next_frame = (n + 1) % worlds::world().frames;
+    }
+    lib::JsonLine e(serial::sink());
+    e.str("event", "key").str("key", lib::key_name(key)).str("action", lib::action_name(action));
+    e.str("scene", s.loaded ? worlds::name() : "").i32("frame", s.shown_frame).str("mapper", s.mapper->name);
+    server::write_budget(e, "budget", worlds::budget());
+    e.boolean("paused", s.paused).str("surface", s.surface == raster::Surface::Vga ? "vga" : "ram").boolean("help", s.help);
+    e.begin_array("hud");
+    for (int i = 0; i < s.hud_count; ++i) e.item_str(s.hud_text[i]);
+    e.end_array().end();
+}
+
+// Key presses waiting, handled in order; false when a byte on COM1 ends the show.
+bool keys(Show& s) {
+    uint8_t byte;
+    lib::KeyEvent ev;
+    while (keyboard::next_byte(&byte))
+        if (s.decoder.feed(byte, &ev) && ev.pressed) on_key(s, ev.key);
+    return !serial::byte_ready();
+}
+
+void play(Show& s) {
+    s.loaded = false;
+    for (int tries = 0; tries < s.scene_count && !load_scene(s); ++tries) s.scene = (s.scene + 1) % s.scene_count;  // a bad module: on
+    if (!s.loaded) return;
+    for (;;) {
+        if (!keys(s)) return;
+        if (s.paused || s.help || !s.loaded) continue;
+        draw_frame(s, s.next_frame, true);
+        if (++s.next_frame < worlds::world().frames) continue;
+        s.next_frame = 0;
+        if (s.pinned) continue;
+        s.scene = (s.scene + 1) % s.scene_count;  // the animation played: on to the next scene
+        s.running_before = false;
+        load_scene(s);
+    }
+}
+
 }  // namespace
 
-void run(uint32_t interval_ms, bool show_patterns, lib::StrView scene, lib::StrView mapper_name) {
+void run(const Options& o) {
     if (vga::mode() != vga::Mode::ModeX) vga::set_mode_x();
-    if (show_patterns) return patterns(interval_ms);
-    const raster::Mapper* mapper = mapper_name.empty() ? nullptr : raster::find_mapper(mapper_name);
-    if (!mapper) mapper = raster::find_mapper("auto");
-    bool any = false;
-    for (int i = 0; i < files::count(); ++i) any = any || is_world(files::at(i));
-    if (!any) return patterns(interval_ms);
-    for (;;) {
-        for (int i = 0; i < files::count(); ++i) {
-            const files::File& f = files::at(i);
-            if (!scene.empty() && !scene.equals(f.name)) continue;
-            if (!is_world(f)) continue;
-            if (files::find(lib::StrView{f.name, lib::c_length(f.name)}) != &f) continue;  // shadowed by a module
-            if (!play(f, *mapper)) return;
-        }
-        if (!scene.empty() && !files::find(scene)) return patterns(interval_ms);  // no such scene
+    if (o.patterns) return patterns(o.interval_ms);
+    static Show s;  // (its HUD text: off the kernel's stack)
+    s = Show{};
+    s.options = o;
+    s.mapper = o.mapper.empty() ? nullptr : raster::find_mapper(o.mapper);
+    if (!s.mapper) s.mapper = raster::find_mapper("auto");
+    for (int i = 0; i < files::count() && s.scene_count < MAX_SCENES; ++i) {
+        const files::File& f = files::at(i);
+        if (!is_world(f) || files::find(lib::StrView{f.name, lib::c_length(f.name)}) != &f) continue;  // (shadowed by a module)
+        if (!o.scene.empty() && o.scene.equals(f.name)) s.scene = s.scene_count, s.pinned = true;
+        s.scenes[s.scene_count++] = i;
     }
+    if (s.scene_count == 0 || (!o.scene.empty() && !s.pinned)) return patterns(o.interval_ms);  // none, or no such scene
+    play(s);
 }
 
 }  // namespace show

@@ -1,6 +1,8 @@
 // The boot show: with nobody on the serial line, Mode X plays the 3D scenes the kernel has (built
 // in or loaded as modules), each through its animation, scene after scene; without any, it cycles
-// through the test patterns.
+// through the test patterns. A person at the PC drives it from the keyboard (lib/keys.h: scene,
+// mapper, budget, pause and single frames, the surface, the HUD of figures, the help) and reads
+// the figures on the screen; each key is reported on COM1 as a `key` event (docs/protocol.md).
 #pragma once
 
 #include <stdint.h>
@@ -9,11 +11,18 @@
 
 namespace show {
 
-// Sets Mode X and plays: every 3D scene file, or only `scene` when it is not empty, drawn with
-// `mapper` (default persp-subdiv-16), into the back page, flipped on the retrace. With `patterns`
-// (or without any 3D scene, or a `scene` that is not there) the test patterns instead, each for
-// `interval_ms`. Returns as soon as a byte arrives on COM1 (the byte stays unread: it starts the
-// first command).
-void run(uint32_t interval_ms, bool patterns, lib::StrView scene, lib::StrView mapper);
+struct Options {
+    uint32_t interval_ms = 2000;  // the patterns': each shown this long
+    bool patterns = false;        // the test patterns, not the scenes
+    lib::StrView scene;           // start with this scene file (and stay on it)
+    lib::StrView mapper;          // draw with this mapper (default: auto)
+    uint64_t tsc_hz = 0;          // the TSC's rate (0: none), for the HUD's figures
+};
+
+// Sets Mode X and plays: every 3D scene file, or only `scene` when it is given (until a key picks
+// another), drawn into the back page, flipped on the retrace, the HUD over it. With `patterns` (or
+// without any 3D scene, or a `scene` that is not there) the test patterns instead. Returns as soon as
+// a byte arrives on COM1 (the byte stays unread: it starts the first command).
+void run(const Options& o);
 
 }  // namespace show

@@ -102,6 +102,26 @@ json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds t
     }
 }
 
+json KernelLink::wait_event(const std::string& event, std::chrono::milliseconds timeout) {
+    const auto deadline = Clock::now() + timeout;
+    for (;;) {
+        auto line = channel_.read_line(deadline);
+        if (!line) throw HarnessError("no '" + event + "' event within " + std::to_string(timeout.count()) + " ms");
+        remember("< ", *line);
+        KernelLine k = classify_kernel_line(*line);
+        switch (k.kind) {
+        case KernelLine::Kind::Blank: continue;
+        case KernelLine::Kind::BootEvent: throw HarnessError("the kernel rebooted while waiting for a '" + event + "' event");
+        case KernelLine::Kind::PanicEvent: throw HarnessError("kernel panic: " + k.body.value("error", "?"));
+        case KernelLine::Kind::OtherEvent:
+            if (k.body.value("event", "") == event) return k.body;
+            throw HarnessError("a '" + k.body.value("event", "") + "' event while waiting for a '" + event + "' event: " + k.body.dump());
+        case KernelLine::Kind::Reply:
+        case KernelLine::Kind::Fault: throw HarnessError("a reply while waiting for a '" + event + "' event: " + k.body.dump());
+        }
+    }
+}
+
 json KernelLink::upload(const std::string& header, const std::string& bytes, std::chrono::milliseconds timeout) {
     send_raw(header + "\n");
     bool sent = false;

@@ -66,6 +66,10 @@ public:
     // bytes; a refused header's reply comes instead of `ready`, and the bytes are not sent.
     json upload(const std::string& header, const std::string& bytes, std::chrono::milliseconds timeout);
 
+    // Waits for an event line named `event` that the kernel sends on its own (the show's `key`
+    // events) and returns it. Throws on a reply, a panic, a reboot, another event or a timeout.
+    json wait_event(const std::string& event, std::chrono::milliseconds timeout);
+
     uint32_t next_seq() const { return next_seq_; }
 
     // The last lines sent ("> ") and received ("< "), long lines shortened, for failure messages.

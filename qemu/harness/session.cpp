@@ -107,6 +107,18 @@ json Session::upload_file(const std::string& name, const std::string& bytes) {
     return guarded([&] { return link_.upload("file " + name + " " + std::to_string(bytes.size()) + " " + crc, bytes, options_.command_timeout); });
 }
 
+void Session::send_key(const std::string& qcode) {
+    try {
+        qmp_.execute("send-key", {{"keys", json::array({{{"type", "qcode"}, {"data", qcode}}})}});
+    } catch (const HarnessError& e) {
+        fail("send-key " + qcode + ": " + e.what());
+    }
+}
+
+json Session::wait_event(const std::string& event) {
+    return guarded([&] { return link_.wait_event(event, options_.command_timeout); });
+}
+
 RgbImage Session::screendump(const std::string& name) {
     std::string path = run_dir_ + "/" + name + ".png";
     try {

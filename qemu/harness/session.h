@@ -61,6 +61,12 @@ public:
     // `file NAME BYTES CRC32`, then the bytes, likewise.
     json upload_file(const std::string& name, const std::string& bytes);
 
+    // A key pressed and released on the PS/2 keyboard (QMP send-key; `qcode` as QEMU names keys:
+    // "spc", "h", "f1", "right", ...).
+    void send_key(const std::string& qcode);
+    // The next event the kernel sends unasked, which must be `event` (KernelLink::wait_event).
+    json wait_event(const std::string& event);
+
     // QMP stop, screendump (PNG, saved as RUN_DIR/NAME.png), cont.
     RgbImage screendump(const std::string& name);
     // screendump, decoded to palette indices for `mode`; throws when it does not decode.
