@@ -63,6 +63,20 @@ inline ToolRun run_command(const std::string& command) {
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
 
+// The screendump against the picture as QEMU shows it in the palette, compared by colour (some
+// scenes' palettes repeat a colour, so a dump does not always decode to indices); on a difference
+// the expected picture is saved beside the dump, RUN_DIR/STEM-expected.png.
+inline void expect_screendump(Session& s, const IndexImage& want, const raster::Palette& palette, const std::string& stem) {
+    RgbImage dump = s.screendump(stem), expected = screendump_of(want, palette);
+    ASSERT_EQ(dump.width, expected.width);
+    ASSERT_EQ(dump.height, expected.height);
+    size_t differing = 0;
+    for (size_t i = 0; i < dump.rgb.size(); i += 3)
+        differing += dump.rgb[i] != expected.rgb[i] || dump.rgb[i + 1] != expected.rgb[i + 1] || dump.rgb[i + 2] != expected.rgb[i + 2];
+    if (differing) save_png(s.run_dir() + "/" + stem + "-expected.png", expected);
+    EXPECT_EQ(differing, 0u) << stem << ": screendump pixels differ (see " << s.run_dir() << "/" << stem << "{,-expected}.png)";
+}
+
 inline const raster::Palette& default_palette() { return raster::palette(raster::PaletteId::Default); }
 
 // Runs a long `command` and, at its first event, sends a line (`hello`, whose reply comes after the

@@ -20,15 +20,7 @@ std::string scene_path(const std::string& name) { return "scenes/" + name + ".sc
 // The kernel's shown page (screendump, in the scene's palette as QEMU widens it) and the page read
 // back (palette indices) against the host's frame.
 void expect_same_frame(Session& s, const IndexImage& want, const raster::Palette& palette, int page, const std::string& stem) {
-    RgbImage dump = s.screendump(stem);
-    RgbImage expected = screendump_of(want, palette);
-    ASSERT_EQ(dump.width, expected.width);
-    ASSERT_EQ(dump.height, expected.height);
-    size_t differing = 0;
-    for (size_t i = 0; i < dump.rgb.size(); i += 3)
-        differing += dump.rgb[i] != expected.rgb[i] || dump.rgb[i + 1] != expected.rgb[i + 1] || dump.rgb[i + 2] != expected.rgb[i + 2];
-    if (differing) save_png(s.run_dir() + "/" + stem + "-expected.png", expected);
-    EXPECT_EQ(differing, 0u) << stem << ": screendump pixels differ (see " << s.run_dir() << "/" << stem << "{,-expected}.png)";
+    expect_screendump(s, want, palette, stem);
     Comparison rb = compare(s.readback(page), want);
     EXPECT_TRUE(rb.equal()) << stem << " readback: " << rb.summary();
 }
