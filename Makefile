@@ -148,7 +148,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures run bench report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
+.PHONY: all iso kernel host fixtures usb run bench report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
@@ -307,6 +307,11 @@ $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 $(BROWSER_TESTS): $(BROWSER_TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ -lgtest $(HLDLIBS)
+
+# `make usb DEVICE=/dev/sdX [FORCE=1] [YES=1]`: the ISO onto a USB stick, after the checks in
+# qemu/tools/write_usb.sh (a removable or USB whole disk, nothing mounted, at most 64 GiB).
+usb: $(ISO)
+	@DEVICE="$(DEVICE)" FORCE="$(FORCE)" YES="$(YES)" qemu/tools/write_usb.sh $(ISO)
 
 # `make run SCENE=corridor DISPLAY=1`: a window. DISPLAY=1 on make's command line hides X's own
 # DISPLAY from the recipe; $(shell) still sees the environment make started with.
