@@ -47,7 +47,8 @@ DEPS := \
 	/usr/src/googletest/googletest/src/gtest-all.cc:googletest \
 	i686-linux-gnu-g++:g++-i686-linux-gnu \
 	/usr/share/games/doom/freedoom1.wad:freedoom \
-	gnuplot:gnuplot-nox
+	gnuplot:gnuplot-nox \
+	zbarimg:zbar-tools
 
 # ---- kernel ------------------------------------------------------------------------------------
 
@@ -92,7 +93,7 @@ NASMFLAGS := -f elf32 -g -F dwarf -w+all -w+error -I$(KBUILD)/gen/ -Iasm/
 
 # portable kernel code the host builds too (no port I/O, no inline asm)
 CORE_CXX := $(wildcard $(PORTABLE_DIRS:%=%/*.cpp))
-PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/protocol.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp kernel/lib/stats.cpp $(CORE_CXX)
+PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/qr.cpp kernel/lib/protocol.cpp kernel/lib/encode.cpp kernel/lib/json.cpp kernel/lib/fmt.cpp kernel/lib/stats.cpp $(CORE_CXX)
 # host-only code: the exact reference and the accuracy measures, the harness, the tools' libraries
 HARNESS_CXX := $(filter-out %/main.cpp %_main.cpp,$(wildcard qemu/*/*.cpp))
 HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
