@@ -324,16 +324,19 @@ run: deps
 		$(if $(MAPPER),--mapper $(MAPPER)) $(if $(filter 1,$(DISPLAY)),--display)
 
 # `make bench`: every mapper on every demo scene; the report in build/report (docs/bench.md), and the
-# cost model auto chooses by, kernel/mappers/costs.cpp, when the run is full.
+# cost model auto chooses by, kernel/mappers/costs.cpp, and the errors the on-screen bench shows,
+# kernel/mappers/errors.cpp, when the run is full.
 # SCENES=a,b MAPPERS=x,y FRAMES=N narrow it.
 # Then the gallery, with the report's speeds.
 bench report: deps
 	@$(MAKE) -s -j$(NPROC) $(KERNEL) $(BENCH) $(CYCLES) $(GALLERY)
 	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
 		$(if $(FRAMES),--frames $(FRAMES))
-	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "cost model not copied (a narrowed run): $(BUILD)/report/costs.cpp",\
+	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "cost model and measured errors not copied (a narrowed run): $(BUILD)/report/costs.cpp, errors.cpp",\
 		cmp -s $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model unchanged" || \
-		{ cp $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model updated: kernel/mappers/costs.cpp (commit it)"; })
+		{ cp $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model updated: kernel/mappers/costs.cpp (commit it)"; }; \
+		cmp -s $(BUILD)/report/errors.cpp kernel/mappers/errors.cpp && echo "measured errors unchanged" || \
+		{ cp $(BUILD)/report/errors.cpp kernel/mappers/errors.cpp && echo "measured errors updated: kernel/mappers/errors.cpp (commit it)"; })
 	$(GALLERY_RUN)
 
 # `make gallery`: a page a demo scene in build/gallery, every mapper's frame beside its footprint-error

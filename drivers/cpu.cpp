@@ -58,6 +58,19 @@ Info detect() {
         info.features_edx = d;
         info.features_ecx = c;
     }
+    cpuid(0x80000000, &a, &b, &c, &d);
+    if (a >= 0x80000004 && a < 0x8000FFFF) {  // (a CPU without extended leaves may echo anything)
+        char text[48];
+        for (uint32_t leaf = 0; leaf < 3; ++leaf) {
+            cpuid(0x80000002 + leaf, &a, &b, &c, &d);
+            put_word(text + 16 * leaf, a), put_word(text + 16 * leaf + 4, b), put_word(text + 16 * leaf + 8, c), put_word(text + 16 * leaf + 12, d);
+        }
+        int from = 0, n = 0;
+        while (from < 48 && text[from] == ' ') ++from;
+        for (; from < 48 && text[from]; ++from) info.brand[n++] = text[from] >= 32 && text[from] < 127 ? text[from] : '?';
+        while (n > 0 && info.brand[n - 1] == ' ') --n;
+        info.brand[n] = 0;
+    }
     return info;
 }
 

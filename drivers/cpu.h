@@ -11,6 +11,7 @@ struct Info {
     uint32_t family = 0, model = 0, stepping = 0;
     uint32_t features_edx = 0;  // CPUID.1:EDX
     uint32_t features_ecx = 0;  // CPUID.1:ECX
+    char brand[49] = {};        // CPUID 0x80000002-4, leading blanks dropped; empty where the CPU has none
 };
 
 struct Feature {

@@ -33,11 +33,13 @@ struct BootOptions {
     lib::StrView scene;   // the demo shows only this scene file
     lib::StrView mapper;  // and draws with this mapper
     bool patterns = false;  // the demo shows the test patterns, not scenes
+    uint32_t bench_frames = 0;  // the demo starts with the on-screen bench, this many frames a row
     lib::StrView rejected[4];  // words we did not understand, reported in the boot line
     size_t rejected_count = 0;
 };
 
 constexpr uint32_t MAX_INTERVAL_MS = 60000;
+constexpr uint32_t MAX_BENCH_FRAMES = 1000;
 
 // Set by a global constructor (a value the compiler cannot fold into static initialisation), so
 // kernel_main can tell that boot/entry.asm ran .init_array.
@@ -72,6 +74,7 @@ BootOptions parse_options(const char* cmdline) {
         else if (w.starts_with("scene=") && w.size > 6) o.scene = w.drop(6);
         else if (w.equals("show=patterns") || w.equals("show=scenes")) o.patterns = w.equals("show=patterns");
         else if (w.starts_with("mapper=") && raster::find_mapper(w.drop(7))) o.mapper = w.drop(7);
+        else if (w.starts_with("bench=") && lib::parse_u32(w.drop(6), &v) && v >= 1 && v <= MAX_BENCH_FRAMES) o.bench_frames = v;
         else if (o.rejected_count < 4) o.rejected[o.rejected_count++] = w;
     }
     return o;
@@ -130,7 +133,7 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
         vga::load_palette(raster::palette(ctx.palette));
         show::Options o;
         o.interval_ms = options.interval_ms, o.patterns = options.patterns, o.scene = options.scene, o.mapper = options.mapper;
-        o.tsc_hz = ctx.tsc_hz;
+        o.tsc_hz = ctx.tsc_hz, o.cpu = &ctx.cpu, o.bench_frames = options.bench_frames;
         show::run(o);
         vga::load_palette(raster::palette(ctx.palette));
     }

@@ -12,6 +12,7 @@
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
 #include "kernel/lib/keys.h"
+#include "kernel/onscreen.h"
 #include "kernel/scene/text.h"
 #include "kernel/server/commands.h"
 #include "kernel/worlds.h"
@@ -63,6 +64,7 @@ struct Show {
     bool running_before = false;
     char hud_text[HUD_LINES][HUD_CHARS + 1] = {};
     int hud_count = 0;
+    bool served = false;  // a byte on COM1 ended the on-screen bench: the show gives way
 };
 
 const files::File& scene_file(const Show& s) { return files::at(s.scenes[s.scene]); }
@@ -201,6 +203,26 @@ void step_budget(int direction) {
 
 int mapper_index(const raster::Mapper* m) { return int(m - raster::MAPPERS); }
 
+// The next key pressed on the keyboard (releases and other bytes skipped), or None.
+lib::Key next_key(void* ctx) {
+    Show& s = *static_cast<Show*>(ctx);
+    uint8_t byte;
+    lib::KeyEvent ev;
+    while (keyboard::next_byte(&byte))
+        if (s.decoder.feed(byte, &ev) && ev.pressed) return ev.key;
+    return lib::Key::None;
+}
+
+// The on-screen bench over `scenes` (frames a row), then the show's scene again; false when a byte
+// on COM1 ended it.
+bool bench(Show& s, const int* scenes, int count, uint32_t frames) {
+    const onscreen::Setup setup{scenes, count, frames, s.options.cpu, s.options.tsc_hz};
+    const bool on = onscreen::run(setup, next_key, &s);
+    load_scene(s);
+    s.running_before = false;
+    return on;
+}
+
 // What a key press does; then its event on COM1, with what is on the screen.
 void on_key(Show& s, lib::Key key) {
     const lib::Action action = s.help ? lib::Action::Help : lib::action_for(key);
@@ -238,8 +260,13 @@ void on_key(Show& s, lib::Key key) {
         redraw = !s.help;
         if (s.help) draw_help_page(s);
         break;
+    case lib::Action::Bench:
+        s.served = !bench(s, s.scenes, s.scene_count, onscreen::DEFAULT_FRAMES);
+        redraw = !s.served;
+        break;
     case lib::Action::None: redraw = false; break;
     }
+    if (s.served) return;  // (the server answers next: no event before its reply)
     if (moved && load_scene(s)) redraw = true;
     if (moved && s.loaded && !s.paused) redraw = false;  // the animation goes on from the new scene's first frame
     if (redraw && s.loaded && !s.help) {
@@ -259,11 +286,8 @@ void on_key(Show& s, lib::Key key) {
 
 // Key presses waiting, handled in order; false when a byte on COM1 ends the show.
 bool keys(Show& s) {
-    uint8_t byte;
-    lib::KeyEvent ev;
-    while (keyboard::next_byte(&byte))
-        if (s.decoder.feed(byte, &ev) && ev.pressed) on_key(s, ev.key);
-    return !serial::byte_ready();
+    for (lib::Key k; !s.served && (k = next_key(&s)) != lib::Key::None;) on_key(s, k);
+    return !s.served && !serial::byte_ready();
 }
 
 void play(Show& s) {
@@ -300,6 +324,7 @@ void run(const Options& o) {
         s.scenes[s.scene_count++] = i;
     }
     if (s.scene_count == 0 || (!o.scene.empty() && !s.pinned)) return patterns(o.interval_ms);  // none, or no such scene
+    if (o.bench_frames > 0 && !bench(s, s.pinned ? &s.scenes[s.scene] : s.scenes, s.pinned ? 1 : s.scene_count, o.bench_frames)) return;
     play(s);
 }
 

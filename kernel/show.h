@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "drivers/cpu.h"
 #include "kernel/lib/words.h"
 
 namespace show {
@@ -17,9 +18,12 @@ struct Options {
     lib::StrView scene;           // start with this scene file (and stay on it)
     lib::StrView mapper;          // draw with this mapper (default: auto)
     uint64_t tsc_hz = 0;          // the TSC's rate (0: none), for the HUD's figures
+    const cpu::Info* cpu = nullptr;  // for the on-screen bench's machine page
+    uint32_t bench_frames = 0;    // run the on-screen bench first, this many frames a row (0: not)
 };
 
-// Sets Mode X and plays: every 3D scene file, or only `scene` when it is given (until a key picks
+// Sets Mode X and plays (after the on-screen bench, kernel/onscreen.h, when `bench_frames` asks;
+// over the scene given, else every 3D scene): every 3D scene file, or only `scene` when it is given (until a key picks
 // another), drawn into the back page, flipped on the retrace, the HUD over it. With `patterns` (or
 // without any 3D scene, or a `scene` that is not there) the test patterns instead. Returns as soon as
 // a byte arrives on COM1 (the byte stays unread: it starts the first command).

@@ -111,4 +111,40 @@ FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surf
     return r;
 }
 
+const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry", "ticks_clear", "ticks_draw", "ticks_setup",
+                                                 "ticks_walk", "ticks_inner",    "ticks_blit",  "ticks_flip"};
+
+namespace {
+uint64_t bench_clock() { return timer::rdtsc(); }
+}  // namespace
+
+raster::Probe bench_probe() {
+    raster::Probe p;
+    p.clock = bench_clock;
+    p.calibrate();
+    return p;
+}
+
+BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper, raster::Surface surface, raster::Variant variant,
+                       const raster::Probe& probe, const raster::Watch* watch) {
+    BenchFrame b{};
+    b.frame = int32_t(uint64_t(i) * uint32_t(g_world.frames) / count);
+    b.page = vga::shown_page() == 0 ? 1 : 0;
+    const FrameResult f = render(b.frame, mapper, surface, b.page, variant, nullptr, watch);
+    raster::Probe timed = probe;
+    render(b.frame, mapper, surface, b.page, variant, &timed, watch);
+    const uint64_t t0 = timer::rdtsc();
+    b.retrace = vga::flip(b.page);
+    const uint64_t flip = timer::rdtsc() - t0;
+    const scenes::RenderResult& r = f.render;
+    const uint64_t setup = timed.net(raster::Phase::Setup), inner = timed.net(raster::Phase::Inner);
+    const uint64_t walk = r.ticks_draw > setup + inner ? r.ticks_draw - setup - inner : 0;
+    const uint64_t figures[B_FIELDS] = {f.ticks_geometry + r.ticks_clear + r.ticks_draw + r.ticks_blit, f.ticks_geometry, r.ticks_clear, r.ticks_draw,
+                                        setup, walk, inner, r.ticks_blit, flip};
+    for (uint32_t k = 0; k < B_FIELDS; ++k) b.figures[k] = figures[k];
+    b.stats = r.stats;
+    b.used_asm = r.used_asm;
+    return b;
+}
+
 }  // namespace worlds

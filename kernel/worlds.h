@@ -35,4 +35,27 @@ bool budget_overridden();
 FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
                    raster::Probe* probe = nullptr, const raster::Watch* watch = nullptr);
 
+// The bench's figures for one frame (the `bench` command's and the show's on-screen bench's):
+// ticks of the whole frame (geometry, clear, draw, blit), and of its parts; setup and inner loops
+// from a second drawing with the probe, walking the rest of the first's drawing time.
+enum BenchField : uint32_t { B_TICKS, B_GEOMETRY, B_CLEAR, B_DRAW, B_SETUP, B_WALK, B_INNER, B_BLIT, B_FLIP, B_FIELDS };
+extern const char* const BENCH_FIELD_NAMES[B_FIELDS];  // "ticks", "ticks_geometry", ...
+struct BenchFrame {
+    int32_t frame;  // the scene's frame number
+    int page;
+    raster::RenderStats stats;  // the first drawing's
+    bool used_asm, retrace;
+    uint64_t figures[B_FIELDS];
+};
+// The probe the bench's frames are timed with: the TSC its clock, its lap cost calibrated here, in
+// one place (a lap compiled elsewhere may cost an instruction more or less: the `bench` command and
+// the on-screen bench then give the same figures, identical under QEMU icount).
+raster::Probe bench_probe();
+
+// Frame i of `count` spread evenly over the animation (frame i * length / count), drawn twice into
+// the hidden page of pages 0 and 1 (plainly, then with a copy of the calibrated `probe`), then
+// flipped. With a watch, the drawing may stop early.
+BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper, raster::Surface surface, raster::Variant variant,
+                       const raster::Probe& probe, const raster::Watch* watch = nullptr);
+
 }  // namespace worlds

@@ -69,12 +69,13 @@ constexpr Binding BINDINGS[] = {
     {Action::Surface, {Key::V, Key::None, Key::None}, "V", "RAM + blit / VGA memory"},
     {Action::Hud, {Key::H, Key::None, Key::None}, "H", "figures on / off"},
     {Action::Help, {Key::F1, Key::Slash, Key::None}, "F1 ?", "this help"},
+    {Action::Bench, {Key::B, Key::None, Key::None}, "B", "the bench, on this PC"},
 };
 constexpr int BINDING_COUNT = sizeof(BINDINGS) / sizeof(BINDINGS[0]);
 
 constexpr const char* ACTION_NAMES[] = {"none", "next-scene", "previous-scene", "next-mapper", "previous-mapper", "budget-up",
-                                        "budget-down", "pause", "step", "surface", "hud", "help"};
-static_assert(sizeof(ACTION_NAMES) / sizeof(ACTION_NAMES[0]) == int(Action::Help) + 1);
+                                        "budget-down", "pause", "step", "surface", "hud", "help", "bench"};
+static_assert(sizeof(ACTION_NAMES) / sizeof(ACTION_NAMES[0]) == int(Action::Bench) + 1);
 
 // The help's lines, written once: "  Right N     next scene" (keys in a column of 12).
 constexpr int HELP_HEAD = 2, HELP_TAIL = 2, HELP_WIDTH = 40;
@@ -126,7 +127,7 @@ bool ScanDecoder::feed(uint8_t byte, KeyEvent* out) {
     return true;
 }
 
-const char* action_name(Action a) { return int(a) <= int(Action::Help) ? ACTION_NAMES[int(a)] : "?"; }
+const char* action_name(Action a) { return int(a) <= int(Action::Bench) ? ACTION_NAMES[int(a)] : "?"; }
 
 Action action_for(Key k) {
     if (k == Key::None) return Action::None;

@@ -41,7 +41,7 @@ private:
 // What a key does in the show (kernel/show.cpp).
 enum class Action : uint8_t {
     None, NextScene, PreviousScene, NextMapper, PreviousMapper, BudgetUp, BudgetDown,
-    Pause, Step, Surface, Hud, Help,
+    Pause, Step, Surface, Hud, Help, Bench,
 };
 const char* action_name(Action a);  // "next-scene", ...
 Action action_for(Key k);

@@ -230,8 +230,28 @@ void draw_help(Target& t, TextColours c) {
         const char* line = lib::help_line(count);
         lines[count] = lib::StrView{line, lib::c_length(line)};
     }
-    by_planes(t, [&](int plane) { fill_pixels(t, t.clip.x0, t.clip.y0, t.clip.x1, t.clip.y1, c.paper, plane); });
+    fill_target(t, c.paper);
     draw_text_box(t, HELP_X, HELP_Y, lines, count, c);
+}
+
+void fill_target(Target& t, uint8_t colour) {
+    by_planes(t, [&](int plane) { fill_pixels(t, t.clip.x0, t.clip.y0, t.clip.x1, t.clip.y1, colour, plane); });
+}
+
+void draw_qr(Target& t, const lib::QrCode& q, TextColours c) {
+    const int32_t modules = q.size + 8, width = t.clip.x1 - t.clip.x0, height = t.clip.y1 - t.clip.y0 - QR_TOP;
+    int32_t scale = (width < height ? width : height) / modules;
+    if (scale < 1) scale = 1;
+    const int32_t x0 = t.clip.x0 + (width - modules * scale) / 2, y0 = t.clip.y0 + QR_TOP + (height - modules * scale) / 2;
+    by_planes(t, [&](int plane) {
+        fill_pixels(t, x0, y0, x0 + modules * scale, y0 + modules * scale, c.ink, plane);
+        for (int32_t y = 0; y < q.size; ++y)
+            for (int32_t x = 0; x < q.size; ++x)
+                if (q.at(x, y)) {
+                    const int32_t px = x0 + (x + 4) * scale, py = y0 + (y + 4) * scale;
+                    fill_pixels(t, px, py, px + scale, py + scale, c.paper, plane);
+                }
+    });
 }
 
 }  // namespace raster

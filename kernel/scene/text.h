@@ -7,6 +7,7 @@
 #include <stdint.h>
 
 #include "kernel/core/surface.h"
+#include "kernel/lib/qr.h"
 #include "kernel/lib/words.h"
 #include "kernel/scene/palette.h"
 
@@ -32,6 +33,14 @@ void draw_text(Target& t, int32_t x, int32_t y, lib::StrView text, TextColours c
 // Lines of text in a box at (x, y): paper behind them, one pixel of margin all round, as wide as
 // the longest line. Returns the box's height in pixels.
 int32_t draw_text_box(Target& t, int32_t x, int32_t y, const lib::StrView* lines, int count, TextColours c);
+
+// The whole clip in one colour.
+void fill_target(Target& t, uint8_t colour);
+
+// A QR code under the first line of text (QR_TOP on): as many pixels a module as fit with its quiet
+// zone of four modules, centred; dark modules in paper, light ones and the quiet zone in ink.
+constexpr int32_t QR_TOP = GLYPH_SIZE + 2;
+void draw_qr(Target& t, const lib::QrCode& q, TextColours c);
 
 // Where the show puts its HUD (a text box of figures over the frame) and its help.
 constexpr int32_t HUD_X = 0, HUD_Y = 0, HELP_X = 8, HELP_Y = 8;

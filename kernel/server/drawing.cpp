@@ -22,9 +22,8 @@ uint32_t g_play_ticks[MAX_PLAY_FRAMES];
 // bench: each frame drawn twice, once plainly (the totals) and once with the probe (setup and
 // inner loops; walking is the rest of the plain drawing time), then flipped.
 constexpr uint32_t MAX_BENCH_FRAMES = 1000;
-enum BenchField : uint32_t { B_TICKS, B_GEOMETRY, B_CLEAR, B_DRAW, B_SETUP, B_WALK, B_INNER, B_BLIT, B_FLIP, B_FIELDS };
-const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry", "ticks_clear", "ticks_draw", "ticks_setup",
-                                                 "ticks_walk", "ticks_inner",    "ticks_blit",  "ticks_flip"};
+using worlds::B_FIELDS;
+using worlds::BENCH_FIELD_NAMES;
 // Static: every field of every frame for the medians, 36 KB, more than half the 64 KiB kernel stack.
 uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
 
@@ -55,7 +54,6 @@ uint64_t frame_ticks(const worlds::FrameResult& f) { return f.ticks_geometry + r
 // Of pages 0 and 1, the one not shown: play and bench draw there, then flip.
 int hidden_page() { return vga::shown_page() == 0 ? 1 : 0; }
 
-uint64_t bench_clock() { return timer::rdtsc(); }
 
 void render_fields(lib::JsonLine& r, const DrawArgs& d, const scenes::RenderResult& res) {
     r.str("mapper", d.mapper->name)
@@ -196,10 +194,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     uint32_t frames;
     DrawArgs d;
     if (!parse_animation_args("bench", args, nargs, MAX_BENCH_FRAMES, " (spread evenly over the scene's animation)", &frames, &d)) return;
-    raster::Probe probe;
-    probe.clock = bench_clock;
-    probe.calibrate();
-    const uint32_t length = uint32_t(worlds::world().frames);
+    const raster::Probe probe = worlds::bench_probe();
     uint64_t polygons = 0, rejected = 0, spans = 0, pixels = 0;
     MapperTally tally;
     bool used_asm = false;
@@ -207,29 +202,20 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     Progress p{"bench", 0, 0};  // stops a long frame; the bench events are the progress
     const raster::Watch watch = p.watch();
     for (uint32_t i = 0; i < frames && !interrupted(i); ++i, ++done) {
-        int32_t n = int32_t(uint64_t(i) * length / frames);
-        d.page = hidden_page();
-        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
-        raster::Probe timed = probe;
-        worlds::render(n, *d.mapper, d.surface, d.page, d.variant, &timed, &watch);
-        uint64_t t0 = timer::rdtsc();
-        bool retrace = vga::flip(d.page);
-        uint64_t flip = timer::rdtsc() - t0;
-        const scenes::RenderResult& r = f.render;
-        uint64_t setup = timed.net(raster::Phase::Setup), inner = timed.net(raster::Phase::Inner);
-        uint64_t walk = r.ticks_draw > setup + inner ? r.ticks_draw - setup - inner : 0;
-        uint64_t figures[B_FIELDS] = {frame_ticks(f), f.ticks_geometry, r.ticks_clear, r.ticks_draw, setup, walk, inner, r.ticks_blit, flip};
+        const worlds::BenchFrame b = worlds::bench_frame(i, frames, *d.mapper, d.surface, d.variant, probe, &watch);
+        d.page = b.page;
+        const raster::RenderStats& r = b.stats;
         lib::JsonLine e(serial::sink());
-        e.str("event", "bench").u32("n", i).u32("frame", uint32_t(n)).u32("page", uint32_t(d.page));
-        e.u32("polygons", r.stats.polygons).u32("rejected", r.stats.rejected).u32("spans", r.stats.spans).u32("pixels", r.stats.pixels);
+        e.str("event", "bench").u32("n", i).u32("frame", uint32_t(b.frame)).u32("page", uint32_t(b.page));
+        e.u32("polygons", r.polygons).u32("rejected", r.rejected).u32("spans", r.spans).u32("pixels", r.pixels);
         for (uint32_t k = 0; k < B_FIELDS; ++k) {
-            g_bench[k][i] = clamp32(figures[k]);
-            e.u64(BENCH_FIELD_NAMES[k], figures[k]);
+            g_bench[k][i] = clamp32(b.figures[k]);
+            e.u64(BENCH_FIELD_NAMES[k], b.figures[k]);
         }
-        e.boolean("retrace", retrace).end();
-        polygons += r.stats.polygons, rejected += r.stats.rejected, spans += r.stats.spans, pixels += r.stats.pixels;
-        tally.add(r.stats);
-        used_asm = r.used_asm;
+        e.boolean("retrace", b.retrace).end();
+        polygons += r.polygons, rejected += r.rejected, spans += r.spans, pixels += r.pixels;
+        tally.add(r);
+        used_asm = b.used_asm;
     }
     lib::JsonLine r = animation_reply("bench", done, frames, d);
     r.str("loop", used_asm ? "asm" : "twin").u64("lap_cost", probe.lap_cost);

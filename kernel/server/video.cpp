@@ -33,7 +33,7 @@ void cmd_hello(Context& ctx, const StrView*, size_t) {
     r.str("cmd", "hello").str("version", MODEXLAB_VERSION);
     r.begin_object("cpu");
     r.str("vendor", ctx.cpu.has_cpuid ? ctx.cpu.vendor : "unknown (no CPUID)");
-    r.u32("family", ctx.cpu.family).u32("model", ctx.cpu.model).u32("stepping", ctx.cpu.stepping);
+    r.u32("family", ctx.cpu.family).u32("model", ctx.cpu.model).u32("stepping", ctx.cpu.stepping).str("brand", ctx.cpu.brand);
     r.begin_array("features");
     for (int i = 0; i < cpu::FEATURE_COUNT; ++i)
         if (cpu::has(ctx.cpu, cpu::FEATURES[i])) r.item_str(cpu::FEATURES[i].name);

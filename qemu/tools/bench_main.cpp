@@ -200,16 +200,22 @@ std::string host_cycles(const std::vector<BenchScene>& scenes, const std::vector
     return baseline;
 }
 
-// The cost model fitted to a trade.csv, as DIR/costs.cpp (make bench copies it into kernel/mappers).
-void write_costs(const std::string& csv, const std::string& dir) {
-    std::filesystem::create_directories(dir);
-    std::string path = dir + "/costs.cpp";
+void write_text(const std::string& path, const std::string& text) {
     FILE* f = std::fopen(path.c_str(), "w");
     if (!f) throw HarnessError(path + ": cannot write");
-    std::string text = cost_model_source(fit_costs(read_csv(csv)), std::filesystem::path(csv).filename().string() + " of a make bench run");
     bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
     if (std::fclose(f) != 0 || !ok) throw HarnessError(path + ": cannot write");
-    std::printf("cost model: %s\n", path.c_str());
+}
+
+// What the kernel takes from a trade.csv: the cost model fitted to it, as DIR/costs.cpp, and the
+// measured errors, as DIR/errors.cpp (make bench copies both into kernel/mappers).
+void write_costs(const std::string& csv, const std::string& dir) {
+    std::filesystem::create_directories(dir);
+    const std::vector<std::vector<std::string>> rows = read_csv(csv);
+    const std::string source = std::filesystem::path(csv).filename().string() + " of a make bench run";
+    write_text(dir + "/costs.cpp", cost_model_source(fit_costs(rows), source));
+    write_text(dir + "/errors.cpp", measured_errors_source(rows, source));
+    std::printf("cost model: %s/costs.cpp, measured errors: %s/errors.cpp\n", dir.c_str(), dir.c_str());
 }
 
 int run(const Args& a) {

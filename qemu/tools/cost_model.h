@@ -23,4 +23,9 @@ std::map<std::string, FittedCost> fit_costs(const std::vector<std::vector<std::s
 // measured; auto chooses such a mapper last). `source` names where the figures came from.
 std::string cost_model_source(const std::map<std::string, FittedCost>& costs, const std::string& source);
 
+// The C++ source of kernel/mappers/errors.cpp: per scene and mapper of a trade.csv (auto at the
+// scene's own budget, not the auto@B rows), the largest footprint error the bench measured, which
+// the kernel's on-screen bench shows beside its own timings (the kernel's pictures are the host's).
+std::string measured_errors_source(const std::vector<std::vector<std::string>>& csv, const std::string& source);
+
 }  // namespace harness

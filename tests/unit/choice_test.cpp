@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kernel/core/choice.h"
+#include "kernel/core/measured.h"
 #include "kernel/core/policy.h"
 #include "qemu/tools/demo_scenes.h"
 #include "tests/unit/raster_helpers.h"
@@ -27,6 +28,27 @@ TEST(CostModel, HasOneRowPerRegistryRowInItsOrder) {
             EXPECT_GT(MAPPER_COSTS[i].pixel, 0) << MAPPERS[i].name << " is not measured";
         }
     }
+}
+
+// The errors the on-screen bench shows: one for every demo scene and registry row (a new mapper or
+// scene needs a make bench), as make bench measured them: exact's 0, and a mapper's that
+// drew nothing -1.
+TEST(MeasuredErrors, EveryDemoSceneAndMapperHasItsRow) {
+    for (const harness::DemoScene& d : harness::demo_scenes())
+        for (int i = 0; i < MAPPER_COUNT; ++i) {
+            double e = -2;
+            EXPECT_TRUE(measured_error((std::string(d.name) + ".scene").c_str(), MAPPERS[i].name, &e))
+                << d.name << " " << MAPPERS[i].name << ": kernel/mappers/errors.cpp is out of date: run make bench";
+            EXPECT_GE(e, -1) << d.name << " " << MAPPERS[i].name;
+            if (MAPPERS[i].guarantee.max_error == 0 && MAPPERS[i].guarantee.exact_coverage && !MAPPERS[i].chooses) {
+                EXPECT_EQ(e, 0) << d.name << " " << MAPPERS[i].name << " promises the reference";
+            }
+        }
+    double e;
+    EXPECT_FALSE(measured_error("no-such.scene", "exact", &e));
+    EXPECT_FALSE(measured_error("ball.scene", "no-such-mapper", &e));
+    EXPECT_FALSE(measured_error("ball-256.scene", "nothing", &e));
+    EXPECT_TRUE(measured_error("ball", "exact", &e)) << "a scene's name with or without .scene";
 }
 
 // The spans auto's bounds walk (and the mappers that take spans draw from) are the walker's: the

@@ -57,13 +57,14 @@ TEST(Keys, EveryBindingIsInTheHelpAndEveryHelpKeyIsBound) {
         {Key::Minus, lib::Action::BudgetDown}, {Key::KeypadMinus, lib::Action::BudgetDown}, {Key::Space, lib::Action::Pause},
         {Key::S, lib::Action::Step},          {Key::Period, lib::Action::Step},       {Key::V, lib::Action::Surface},
         {Key::H, lib::Action::Hud},           {Key::F1, lib::Action::Help},           {Key::Slash, lib::Action::Help},
+        {Key::B, lib::Action::Bench},
     };
     for (auto [k, a] : bound) EXPECT_EQ(lib::action_for(k), a) << lib::key_name(k);
     EXPECT_EQ(lib::action_for(Key::Q), lib::Action::None);
     EXPECT_EQ(lib::action_for(Key::None), lib::Action::None);
     std::string help;
     for (int i = 0; i < lib::help_line_count(); ++i) help += std::string(lib::help_line(i)) + "\n";
-    for (const char* line : {"Right N     next scene", "Space       pause, go on", "F1 ?        this help", "any key: back to the show"})
+    for (const char* line : {"Right N     next scene", "Space       pause, go on", "F1 ?        this help", "B           the bench, on this PC", "any key: back to the show"})
         EXPECT_NE(help.find(line), std::string::npos) << line << " in\n" << help;
     for (int i = 0; i < lib::help_line_count(); ++i) EXPECT_LE(std::string(lib::help_line(i)).size(), 39u) << "within the screen's 40 columns";
 }

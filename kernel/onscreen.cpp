@@ -1,0 +1,347 @@
+// The on-screen bench (onscreen.h).
+#include "kernel/onscreen.h"
+
+#include "drivers/serial.h"
+#include "drivers/vga.h"
+#include "kernel/core/measured.h"
+#include "kernel/core/policy.h"
+#include "kernel/files.h"
+#include "kernel/lib/fmt.h"
+#include "kernel/lib/json.h"
+#include "kernel/lib/qr.h"
+#include "kernel/scene/text.h"
+#include "kernel/server/commands.h"
+#include "kernel/worlds.h"
+
+namespace onscreen {
+
+namespace {
+
+constexpr int MAX_SCENES = 16;
+constexpr int MAX_ROWS = MAX_SCENES * raster::MAPPER_LIMIT;
+
+struct Row {
+    int scene;  // of Setup::scenes
+    int mapper;  // registry row
+    uint64_t pixels, polygons, ticks_inner, ticks_frame;
+    double error;  // make bench's; below 0: none measured
+    bool interrupted;
+};
+
+// Everything the pages need, static: the rows, the CSV, one QR code at a time (62 KB).
+Row g_rows[MAX_ROWS];
+int g_row_count = 0;
+constexpr int CSV_BYTES = 48 * 1024;
+char g_csv[CSV_BYTES];
+int g_csv_length = 0;
+lib::QrCode g_qr;
+
+// The CSV parts a QR code each: [start, end) of g_csv, whole lines, each with its header.
+constexpr int MAX_PARTS = 32, PART_HEADER = 40;
+int g_part_start[MAX_PARTS + 1];
+int g_part_count = 0;
+
+const char* scene_name(const Setup& s, int i) { return files::at(s.scenes[i]).name; }
+
+// per pixel, in tenths
+uint64_t tenths_per_pixel(uint64_t ticks, uint64_t pixels) { return pixels ? ticks * 10 / pixels : 0; }
+
+void put_tenths(lib::Fmt& f, uint64_t tenths) { f.u(uint32_t(tenths / 10)).s(".").u(uint32_t(tenths % 10)); }
+
+// a footprint error as the table shows it: two decimals below 10, none above ("-": none)
+void put_error(lib::Fmt& f, double e) {
+    if (e < 0) {
+        f.s("-");
+        return;
+    }
+    if (e >= 10) {
+        f.u(uint32_t(e + 0.5));
+        return;
+    }
+    const uint32_t hundredths = uint32_t(e * 100 + 0.5);
+    f.u(hundredths / 100).s(".").u(hundredths % 100 / 10).u(hundredths % 10);
+}
+
+// Right-aligns the text of `f` in a field of `width` after what `line` holds.
+void field(lib::Fmt& line, const lib::Fmt& f, int width) {
+    const int n = int(lib::c_length(f.c_str()));
+    for (int i = n; i < width; ++i) line.s(" ");
+    line.s(f.c_str());
+}
+
+class Csv {
+public:
+    void s(const char* text) {
+        for (; *text; ++text) put(*text == ',' ? ' ' : *text);
+    }
+    void raw(const char* text) {
+        for (; *text; ++text) put(*text);
+    }
+    void u64(uint64_t v) {
+        char digits[lib::DECIMAL_MAX_CHARS];
+        const size_t n = lib::format_decimal(v, digits);
+        for (size_t i = 0; i < n; ++i) put(digits[i]);
+    }
+
+private:
+    void put(char c) {
+        if (g_csv_length < CSV_BYTES - 1) g_csv[g_csv_length++] = c;
+    }
+};
+
+void build_csv(const Setup& s) {
+    g_csv_length = 0;
+    Csv c;
+    c.raw("modexlab-bench,1,");
+    c.s(s.cpu->has_cpuid ? s.cpu->vendor : "no CPUID");
+    c.raw(",");
+    c.u64(s.cpu->family), c.raw(","), c.u64(s.cpu->model), c.raw(","), c.u64(s.cpu->stepping), c.raw(",");
+    c.s(s.cpu->brand);
+    c.raw(",");
+    c.u64(s.tsc_hz), c.raw(","), c.u64(s.frames), c.raw("\n");
+    c.raw("scene,mapper,pixels,polygons,inner_tsc_ticks,frame_tsc_ticks,max_footprint_error\n");
+    for (int i = 0; i < g_row_count; ++i) {
+        const Row& r = g_rows[i];
+        c.s(scene_name(s, r.scene)), c.raw(","), c.s(raster::MAPPERS[r.mapper].name), c.raw(",");
+        c.u64(r.pixels), c.raw(","), c.u64(r.polygons), c.raw(","), c.u64(r.ticks_inner), c.raw(","), c.u64(r.ticks_frame), c.raw(",");
+        lib::Fmt e;
+        put_error(e, r.error);
+        c.raw(e.c_str());
+        c.raw("\n");
+    }
+    // parts of whole lines, each within a version 40 code at level L with its header
+    const int room = int(lib::qr_capacity(40, lib::QrLevel::L)) - PART_HEADER;
+    g_part_count = 0;
+    g_part_start[0] = 0;
+    for (int at = 0; at < g_csv_length && g_part_count < MAX_PARTS;) {
+        int end = at + room < g_csv_length ? at + room : g_csv_length;
+        if (end < g_csv_length) {
+            int line_end = end;
+            while (line_end > at && g_csv[line_end - 1] != '\n') --line_end;
+            if (line_end > at) end = line_end;
+        }
+        g_part_start[++g_part_count] = end;
+        at = end;
+    }
+}
+
+// A page of text lines: the box at the top left over the whole page in paper.
+constexpr int PAGE_LINES = 29, PAGE_CHARS = 40, TABLE_ROWS = PAGE_LINES - 2;
+struct Page {
+    char text[PAGE_LINES][PAGE_CHARS + 1];
+    int count = 0;
+    void add(const char* line) {
+        if (count < PAGE_LINES) lib::copy_c_string(text[count++], PAGE_CHARS + 1, line);
+    }
+};
+
+void machine_page(const Setup& s, Page* p) {
+    p->add("modexlab on-screen bench");
+    p->add("");
+    lib::Fmt a;
+    a.s("CPU    ").s(s.cpu->has_cpuid ? s.cpu->vendor : "no CPUID");
+    p->add(a.c_str());
+    lib::Fmt b;
+    b.s("       family ").u(s.cpu->family).s(" model ").u(s.cpu->model).s(" stepping ").u(s.cpu->stepping);
+    p->add(b.c_str());
+    const char* brand = s.cpu->brand;
+    for (int line = 0; *brand && line < 2; ++line) {  // up to 48 characters on two lines
+        lib::Fmt c;
+        c.s(line ? "       " : "brand  ");
+        int n = 0;
+        for (; *brand && n < PAGE_CHARS - 7; ++n) {
+            const char ch[2] = {*brand++, 0};
+            c.s(ch);
+        }
+        p->add(c.c_str());
+    }
+    lib::Fmt d;
+    d.s("TSC    ");
+    if (s.tsc_hz) put_tenths(d, s.tsc_hz / 100000), d.s(" MHz, against the PIT");
+    else d.s("none: no timings");
+    p->add(d.c_str());
+    lib::Fmt e;
+    e.s("run    ").u(uint32_t(s.scene_count)).s(" scenes x ").u(uint32_t(raster::MAPPER_COUNT)).s(" mappers, ").u(s.frames).s(" frames");
+    p->add(e.c_str());
+    p->add("");
+    p->add("A page a scene: TSC cycles a pixel of");
+    p->add("the inner loops and of the whole frame,");
+    p->add("fastest first, and the footprint error");
+    p->add("make bench measured on 8 frames (the");
+    p->add("same pictures on every machine). Then");
+    p->add("the CSV of the run as QR codes.");
+    p->add("");
+    p->add("Right, Left: pages   Esc: the show");
+}
+
+// The table pages of a scene: its rows sorted by whole-frame cycles a pixel (refusals last).
+int table_pages(int rows_of_scene) { return (rows_of_scene + TABLE_ROWS - 1) / TABLE_ROWS; }
+
+void table_page(const Setup& s, int scene, int part, int parts, Page* p) {
+    int order[raster::MAPPER_LIMIT], n = 0;
+    for (int i = 0; i < g_row_count; ++i)
+        if (g_rows[i].scene == scene && n < raster::MAPPER_LIMIT) order[n++] = i;
+    auto key = [](const Row& r) { return r.pixels ? r.ticks_frame * 1000 / r.pixels : ~uint64_t(0); };
+    for (int i = 1; i < n; ++i)  // insertion: stable, registry order among equals
+        for (int j = i; j > 0 && key(g_rows[order[j - 1]]) > key(g_rows[order[j]]); --j) {
+            const int t = order[j];
+            order[j] = order[j - 1], order[j - 1] = t;
+        }
+    lib::Fmt title;
+    title.s(scene_name(s, scene)).s(", frames: ").u(s.frames).s(" (page ").u(uint32_t(part + 1)).s("/").u(uint32_t(parts)).s(")");
+    p->add(title.c_str());
+    p->add("mapper               inner   frame  err");
+    for (int k = part * TABLE_ROWS; k < n && k < (part + 1) * TABLE_ROWS; ++k) {
+        const Row& r = g_rows[order[k]];
+        lib::Fmt line;
+        line.s(raster::MAPPERS[r.mapper].name);
+        for (int c = int(lib::c_length(raster::MAPPERS[r.mapper].name)); c < 19; ++c) line.s(" ");  // (the longest name: 19)
+        lib::Fmt inner, frame, err;
+        if (r.pixels) {
+            put_tenths(inner, tenths_per_pixel(r.ticks_inner, r.pixels));
+            put_tenths(frame, tenths_per_pixel(r.ticks_frame, r.pixels));
+        } else {
+            inner.s("-"), frame.s("refused");
+        }
+        put_error(err, r.error);
+        field(line, inner, 7), field(line, frame, 8), field(line, err, 5);
+        p->add(line.c_str());
+    }
+}
+
+int scene_rows(int scene) {
+    int n = 0;
+    for (int i = 0; i < g_row_count; ++i) n += g_rows[i].scene == scene;
+    return n;
+}
+
+int page_count(const Setup& s) {
+    int n = 1;
+    for (int i = 0; i < s.scene_count; ++i) n += table_pages(scene_rows(i));
+    return n + g_part_count;
+}
+
+void draw_page_text(const Page& p, int page, raster::TextColours c) {
+    raster::Target t = vga::page_target(page);
+    lib::StrView lines[PAGE_LINES];
+    for (int i = 0; i < p.count; ++i) lines[i] = lib::StrView{p.text[i], lib::c_length(p.text[i])};
+    raster::fill_target(t, c.paper);
+    raster::draw_text_box(t, 0, 0, lines, p.count, c);
+}
+
+// Shows page k (0: the machine, then the tables, then the QR codes) and reports it on COM1.
+void show_page(const Setup& s, int k, raster::TextColours c) {
+    static Page p;
+    p.count = 0;
+    const int of = page_count(s), page = vga::shown_page() == 0 ? 1 : 0;
+    int part = -1;
+    if (k == 0) {
+        machine_page(s, &p);
+    } else {
+        int at = 1;
+        for (int i = 0; i < s.scene_count && part < 0 && p.count == 0; ++i) {
+            const int pages = table_pages(scene_rows(i));
+            if (k < at + pages) table_page(s, i, k - at, pages, &p);
+            at += pages;
+        }
+        if (p.count == 0) part = k - at;
+    }
+    lib::JsonLine e(serial::sink());
+    e.str("event", "bench_page").u32("page", uint32_t(k)).u32("of", uint32_t(of));
+    if (part < 0) {
+        draw_page_text(p, page, c);
+        e.begin_array("lines");
+        for (int i = 0; i < p.count; ++i) e.item_str(p.text[i]);
+        e.end_array();
+    } else {
+        // the part's header and its lines, as one QR code under a line of text
+        static char text[4096];
+        lib::Fmt head;
+        head.s("modexlab-bench part ").u(uint32_t(part + 1)).s("/").u(uint32_t(g_part_count)).s("\n");
+        int n = 0;
+        for (const char* h = head.c_str(); *h; ++h) text[n++] = *h;
+        for (int i = g_part_start[part]; i < g_part_start[part + 1] && n < int(sizeof text) - 1; ++i) text[n++] = g_csv[i];
+        text[n] = 0;
+        lib::qr_encode(reinterpret_cast<const uint8_t*>(text), size_t(n), lib::QrLevel::L, &g_qr);
+        lib::Fmt caption;
+        caption.s("CSV of the run, part ").u(uint32_t(part + 1)).s(" of ").u(uint32_t(g_part_count));
+        lib::StrView l{caption.c_str(), lib::c_length(caption.c_str())};
+        raster::Target t = vga::page_target(page);
+        raster::fill_target(t, c.ink);  // (light all round the code: its quiet zone and more)
+        raster::draw_text_box(t, 0, 0, &l, 1, c);
+        raster::draw_qr(t, g_qr, c);
+        e.str("qr", text).u32("qr_version", uint32_t(g_qr.version));
+    }
+    vga::flip(page);  // (then the event: what it names is on the screen)
+    e.end();
+}
+
+}  // namespace
+
+bool run(const Setup& s, NextKey next_key, void* ctx) {
+    g_row_count = 0;
+    const raster::Probe probe = worlds::bench_probe();
+    // the bench command's watch: a byte on COM1 stops a long frame (and so the bench), a page fault
+    // names the mapper and polygon; and the same instructions as the command's, which it is compared with
+    server::Progress progress{"bench", 0, 0};
+    const raster::Watch watch = progress.watch();
+    raster::TextColours colours{15, 0};
+    bool stopped = false;
+    const int scenes = s.scene_count < MAX_SCENES ? s.scene_count : MAX_SCENES;
+    const int total = scenes * raster::MAPPER_COUNT;
+    for (int i = 0; i < scenes && !stopped; ++i) {
+        const files::File& f = files::at(s.scenes[i]);
+        raster::ParseError pe;
+        if (!worlds::load(f.name, f.data, f.size, &pe)) continue;
+        colours = raster::text_colours(worlds::world().palette);
+        for (int m = 0; m < raster::MAPPER_COUNT && !stopped; ++m) {
+            const raster::Mapper& mapper = raster::MAPPERS[m];
+            Row& r = g_rows[g_row_count++];
+            r = Row{i, m, 0, 0, 0, 0, -1, false};
+            for (uint32_t k = 0; k < s.frames; ++k) {
+                if (serial::byte_ready()) return false;
+                if (next_key(ctx) == lib::Key::Escape) {
+                    stopped = r.interrupted = true;
+                    break;
+                }
+                const worlds::BenchFrame b = worlds::bench_frame(k, s.frames, mapper, raster::home_surface(mapper), raster::Variant::Asm, probe, &watch);
+                r.pixels += b.stats.pixels, r.polygons += b.stats.polygons;
+                r.ticks_inner += b.figures[worlds::B_INNER], r.ticks_frame += b.figures[worlds::B_TICKS];
+            }
+            double e;
+            if (raster::measured_error(f.name, mapper.name, &e)) r.error = e;
+            lib::JsonLine j(serial::sink());
+            j.str("event", "bench_row").str("scene", f.name).str("mapper", mapper.name).u32("frames", s.frames);
+            j.u64("pixels", r.pixels).u64("polygons", r.polygons).u64("ticks_inner", r.ticks_inner).u64("ticks", r.ticks_frame);
+            if (r.error >= 0) j.fixed("max_footprint_error", r.error, 3);
+            else j.str("max_footprint_error", "none measured");
+            j.boolean("interrupted", r.interrupted).u32("row", uint32_t(g_row_count)).u32("of", uint32_t(total)).end();
+            // progress, over the frame just shown
+            lib::Fmt line;
+            line.s("bench ").u(uint32_t(g_row_count)).s("/").u(uint32_t(total)).s(": ").s(f.name).s(" ").s(mapper.name);
+            lib::StrView l{line.c_str(), lib::c_length(line.c_str())};
+            raster::Target t = vga::page_target(vga::shown_page());
+            raster::draw_text_box(t, 0, 0, &l, 1, colours);
+        }
+    }
+    build_csv(s);
+    {
+        lib::JsonLine j(serial::sink());
+        j.str("event", "bench_done").u32("rows", uint32_t(g_row_count)).boolean("interrupted", stopped);
+        j.begin_object("cpu").str("vendor", s.cpu->has_cpuid ? s.cpu->vendor : "no CPUID").u32("family", s.cpu->family);
+        j.u32("model", s.cpu->model).u32("stepping", s.cpu->stepping).str("brand", s.cpu->brand).end_object();
+        j.u64("tsc_hz", s.tsc_hz).u32("csv_bytes", uint32_t(g_csv_length)).u32("qr_codes", uint32_t(g_part_count)).u32("pages", uint32_t(page_count(s))).end();
+    }
+    int k = 0;
+    show_page(s, k, colours);
+    for (;;) {
+        if (serial::byte_ready()) return false;
+        const lib::Key key = next_key(ctx);
+        const int last = page_count(s) - 1;
+        if (key == lib::Key::Escape || key == lib::Key::B) return true;
+        if ((key == lib::Key::Right || key == lib::Key::N || key == lib::Key::Space || key == lib::Key::PageDown) && k < last) show_page(s, ++k, colours);
+        if ((key == lib::Key::Left || key == lib::Key::P || key == lib::Key::PageUp) && k > 0) show_page(s, --k, colours);
+    }
+}
+
+}  // namespace onscreen
