@@ -48,7 +48,10 @@ DEPS := \
 	i686-linux-gnu-g++:g++-i686-linux-gnu \
 	/usr/share/games/doom/freedoom1.wad:freedoom \
 	gnuplot:gnuplot-nox \
-	zbarimg:zbar-tools
+	zbarimg:zbar-tools \
+	bochs-bin:bochs \
+	/usr/share/bochs/BIOS-bochs-latest:bochsbios \
+	/usr/share/vgabios/vgabios.bin:vgabios
 
 # ---- kernel ------------------------------------------------------------------------------------
 
@@ -149,7 +152,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures usb run bench report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
+.PHONY: all iso kernel host fixtures usb run bench test-bochs report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
@@ -409,6 +412,11 @@ soak: deps
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
 	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(FUZZ_REPLAY) $(TESTS)
+
+# `make test-bochs`: the Bochs tier alone (tests/system/bochs_test.cpp; make test runs it too)
+test-bochs: deps
+	@$(MAKE) -s -j$(NPROC) $(ISO) $(TESTS)
+	@GTEST_FILTER='Bochs.*' tests/run $(TESTS)
 
 clean:
 	rm -rf $(BUILD)

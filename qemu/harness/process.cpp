@@ -1,4 +1,4 @@
-// fork/exec of QEMU with a death signal tied to the harness, Unix-socket rendezvous, exit decoding.
+// fork/exec of QEMU (or Bochs) with a death signal tied to the harness, socket rendezvous, exit decoding.
 #include "qemu/harness/process.h"
 
 #include <fcntl.h>
@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
+#include <netinet/in.h>
 #include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -40,6 +41,24 @@ int listen_unix(const std::string& path) {
     return fd;
 }
 
+// A TCP socket on 127.0.0.1, at a port the kernel picks (*port).
+int listen_tcp(int* port) {
+    int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd < 0) throw HarnessError(errno_text("socket"));
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof addr;
+    if (::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) < 0 || ::listen(fd, 1) < 0 ||
+        ::getsockname(fd, reinterpret_cast<sockaddr*>(&addr), &length) < 0) {
+        std::string e = errno_text("bind/listen 127.0.0.1");
+        ::close(fd);
+        throw HarnessError(e);
+    }
+    *port = ntohs(addr.sin_port);
+    return fd;
+}
+
 ExitInfo exit_from_wait_status(int status) {
     ExitInfo e;
     e.exited = WIFEXITED(status);
@@ -51,6 +70,7 @@ ExitInfo exit_from_wait_status(int status) {
 }  // namespace
 
 std::string ExitInfo::describe() const {
+    if (emulator == Emulator::Bochs) return exited ? "Bochs exit status " + std::to_string(status) : "Bochs killed by signal " + std::to_string(signal);
     if (!exited) return "QEMU killed by signal " + std::to_string(signal);
     if (status == 0) return "QEMU exit status 0: reset or triple fault under -no-reboot (never a pass)";
     if (status % 2 == 0) return "QEMU exit status " + std::to_string(status) + " (not from isa-debug-exit)";
@@ -98,10 +118,34 @@ std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& 
     return a;
 }
 
+std::string bochs_configuration(const QemuConfig& c, int serial_port) {
+    return "# written by the modexlab harness (qemu/harness/process.cpp)\n"
+           "megs: 128\n"
+           "romimage: file=/usr/share/bochs/BIOS-bochs-latest\n"
+           "vgaromimage: file=/usr/share/bochs/VGABIOS-lgpl-latest\n"
+           "ata0-master: type=cdrom, path=\"" + c.image + "\", status=inserted\n"
+           "boot: cdrom\n"
+           "display_library: rfb, options=\"timeout=0\"\n"
+           "com1: enabled=1, mode=socket-client, dev=127.0.0.1:" + std::to_string(serial_port) + "\n"
+           "speaker: enabled=0\n"
+           "sound: driver=dummy\n"
+           "clock: sync=none, time0=local\n"
+           "cpu: count=1, ips=20000000, reset_on_triple_fault=0\n"
+           "log: " + c.run_dir + "/bochs.log\n"
+           "panic: action=fatal\n"
+           "error: action=report\n"
+           "info: action=ignore\n";
+}
+
 QemuProcess::QemuProcess(const QemuConfig& config) {
     if (!std::filesystem::exists(config.image)) throw HarnessError("boot image not found: " + config.image);
     std::filesystem::create_directories(config.run_dir);
     log_path_ = config.run_dir + "/qemu.log";
+    emulator_ = config.emulator;
+    if (config.emulator == Emulator::Bochs) {
+        start_bochs(config);
+        return;
+    }
 
     // Socket paths must be short (108 bytes): a private directory under /tmp.
     char dir_template[] = "/tmp/modexlab-XXXXXX";
@@ -160,8 +204,58 @@ QemuProcess::QemuProcess(const QemuConfig& config) {
     qmp_ = LineChannel(qmp_fd);
 }
 
+void QemuProcess::start_bochs(const QemuConfig& config) {
+    if (config.medium != BootMedium::Cdrom) throw HarnessError("Bochs boots the ISO from its CD drive only");
+    log_path_ = config.run_dir + "/bochs.out";
+    int port = 0;
+    const int serial_listen = listen_tcp(&port);
+    const std::string rc = config.run_dir + "/bochsrc";
+    {
+        std::ofstream out(rc);
+        out << bochs_configuration(config, port);
+        if (!out) throw HarnessError(rc + ": cannot write");
+    }
+    int to_stdin[2];
+    if (::pipe2(to_stdin, O_CLOEXEC) < 0) throw HarnessError(errno_text("pipe"));
+    int log_fd = ::open(log_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    pid_t parent = ::getpid();
+    pid_ = ::fork();
+    if (pid_ < 0) throw HarnessError(errno_text("fork"));
+    if (pid_ == 0) {
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (::getppid() != parent) ::_exit(127);
+        if (log_fd >= 0) ::dup2(log_fd, 1), ::dup2(log_fd, 2);
+        ::dup2(to_stdin[0], 0);
+        ::execlp("bochs-bin", "bochs-bin", "-q", "-f", rc.c_str(), static_cast<char*>(nullptr));
+        ::dprintf(2, "exec bochs-bin: %s\n", std::strerror(errno));
+        ::_exit(127);
+    }
+    if (log_fd >= 0) ::close(log_fd);
+    ::close(to_stdin[0]);
+    stdin_fd_ = to_stdin[1];
+    // Debian's Bochs has its debugger built in and stops before the first instruction: continue
+    if (::write(stdin_fd_, "c\n", 2) != 2) throw HarnessError(errno_text("write to Bochs"));
+    const auto deadline = Clock::now() + std::chrono::seconds(30);
+    while (Clock::now() < deadline && !poll_exit()) {
+        pollfd p{serial_listen, POLLIN, 0};
+        if (::poll(&p, 1, 50) > 0) {
+            int fd = ::accept4(serial_listen, nullptr, nullptr, SOCK_CLOEXEC);
+            if (fd >= 0) {
+                ::close(serial_listen);
+                serial_ = LineChannel(fd);
+                return;
+            }
+        }
+    }
+    ::close(serial_listen);
+    std::string why = exit_ ? exit_->describe() : std::string("timeout");
+    kill();
+    throw HarnessError("Bochs did not connect its serial socket (" + why + ")\n" + log_tail());
+}
+
 QemuProcess::~QemuProcess() {
     kill();
+    if (stdin_fd_ >= 0) ::close(stdin_fd_);
     std::error_code ec;
     if (!socket_dir_.empty()) std::filesystem::remove_all(socket_dir_, ec);
 }
@@ -170,7 +264,7 @@ std::optional<ExitInfo> QemuProcess::poll_exit() {
     if (exit_ || pid_ <= 0) return exit_;
     int status = 0;
     pid_t r = ::waitpid(pid_, &status, WNOHANG);
-    if (r == pid_) exit_ = exit_from_wait_status(status);
+    if (r == pid_) exit_ = exit_from_wait_status(status), exit_->emulator = emulator_;
     return exit_;
 }
 
@@ -186,6 +280,7 @@ void QemuProcess::kill() {
     int status = 0;
     ::waitpid(pid_, &status, 0);
     exit_ = exit_from_wait_status(status);
+    exit_->emulator = emulator_;
 }
 
 std::string QemuProcess::log_tail(size_t lines) const {
@@ -193,7 +288,8 @@ std::string QemuProcess::log_tail(size_t lines) const {
     std::vector<std::string> all;
     for (std::string line; std::getline(in, line);) all.push_back(line);
     std::string out;
-    for (size_t i = all.size() > lines ? all.size() - lines : 0; i < all.size(); ++i) out += "  qemu: " + all[i] + "\n";
+    const char* who = emulator_ == Emulator::Bochs ? "  bochs: " : "  qemu: ";
+    for (size_t i = all.size() > lines ? all.size() - lines : 0; i < all.size(); ++i) out += who + all[i] + "\n";
     return out;
 }
 

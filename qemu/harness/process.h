@@ -1,5 +1,6 @@
 // Starting qemu-system-i386 (TCG, headless, -no-reboot, isa-debug-exit, COM1 and QMP on Unix sockets),
-// watching it, and always killing it.
+// or Bochs (the ISO from its CD drive, COM1 on a TCP socket, no QMP), watching it, and always
+// killing it.
 #pragma once
 
 #include <sys/types.h>
@@ -14,15 +15,17 @@
 namespace harness {
 
 enum class BootMedium { Kernel, Cdrom, Usb };
+enum class Emulator { Qemu, Bochs };
 
 struct QemuConfig {
+    Emulator emulator = Emulator::Qemu;  // Bochs: the CD (an ISO) only, no icount, no display
     BootMedium medium = BootMedium::Kernel;
     std::string image;       // the ELF (-kernel) or the ISO (CD or USB stick)
     std::string append;      // multiboot command line, -kernel only
     std::vector<std::string> modules;  // -kernel only: Multiboot modules (-initrd), each "PATH" or "PATH NAME"
     bool display = false;    // a window (QEMU's default display) instead of none
     bool icount = false;     // -icount shift=0,align=off,sleep=off: rdtsc counts guest instructions
-    std::string run_dir;     // serial.log and qemu.log go here
+    std::string run_dir;     // serial.log and qemu.log go here (Bochs: bochsrc, bochs.log)
     std::vector<std::string> extra_args;
 };
 
@@ -31,12 +34,19 @@ struct ExitInfo {
     bool exited = false;  // false: killed by a signal
     int status = 0;
     int signal = 0;
+    Emulator emulator = Emulator::Qemu;
     std::string describe() const;  // what the status means for modexlab (docs/protocol.md)
 };
 
 // The argument vector (without the program name) for the given sockets.
 std::vector<std::string> qemu_arguments(const QemuConfig& config, const std::string& serial_socket,
                                         const std::string& qmp_socket);
+// Bochs's configuration (bochsrc) for the ISO, COM1 connecting to 127.0.0.1:port: Debian's ROM
+// BIOS and LGPL VGA BIOS, 128 MiB, no sound (its mixer thread aborts where ALSA has no device),
+// the RFB display library (the package's only one without X) never waiting for a viewer, emulated
+// time by instructions (20 million a second: the GRUB menu's wait and the UART's pace pass in
+// fewer instructions).
+std::string bochs_configuration(const QemuConfig& config, int serial_port);
 
 class QemuProcess {
 public:
@@ -62,6 +72,9 @@ private:
     std::optional<ExitInfo> exit_;
     std::string socket_dir_;
     std::string log_path_;
+    int stdin_fd_ = -1;  // Bochs: its debugger's input, "c" (continue) then kept open
+    Emulator emulator_ = Emulator::Qemu;
+    void start_bochs(const QemuConfig& config);
     LineChannel serial_;
     LineChannel qmp_;
 };

@@ -33,11 +33,12 @@ Session::Session(SessionOptions options) : options_(std::move(options)) {
     config.display = options_.display;
     config.icount = options_.icount;
     config.run_dir = run_dir_;
+    config.emulator = options_.emulator;
     qemu_ = std::make_unique<QemuProcess>(config);
     link_ = KernelLink(qemu_->take_serial());
-    qmp_ = QmpClient(qemu_->take_qmp());
+    if (options_.emulator == Emulator::Qemu) qmp_ = QmpClient(qemu_->take_qmp());
     try {
-        qmp_.handshake(std::chrono::seconds(20));
+        if (options_.emulator == Emulator::Qemu) qmp_.handshake(std::chrono::seconds(20));
         boot_line_ = link_.wait_boot(options_.boot_timeout);
     } catch (const HarnessError& e) {
         fail(std::string("boot failed: ") + e.what());
@@ -49,7 +50,7 @@ Session::~Session() = default;  // QemuProcess kills QEMU
 std::string Session::context() const {
     std::string s = "\nlast serial lines (" + run_dir_ + "/serial.log):\n" + link_.transcript_tail();
     std::string log = qemu_ ? qemu_->log_tail() : "";
-    if (!log.empty()) s += "QEMU said:\n" + log;
+    if (!log.empty()) s += std::string(emulator_name()) + " said:\n" + log;
     return s;
 }
 
@@ -57,7 +58,7 @@ void Session::fail(const std::string& what) {
     std::string status;
     if (qemu_) {
         auto e = qemu_->wait_exit(std::chrono::seconds(1));  // a closed line usually means QEMU is ending
-        status = e ? "\n" + e->describe() : "\nQEMU was still running: killed";
+        status = e ? "\n" + e->describe() : std::string("\n") + emulator_name() + " was still running: killed";
         qemu_->kill();
     }
     throw HarnessError(what + status + context());
@@ -68,7 +69,7 @@ json Session::guarded(const std::function<json()>& exchange) {
         return exchange();
     } catch (const KernelFault& f) {
         auto e = qemu_->wait_exit(std::chrono::seconds(5));
-        std::string status = e ? e->describe() : "QEMU did not exit after the fault: killed";
+        std::string status = e ? e->describe() : std::string(emulator_name()) + " did not exit after the fault: killed";
         qemu_->kill();
         throw KernelFault(std::string(f.what()) + "\n" + status + context(), f.report());
     } catch (const HarnessError& e) {
@@ -108,6 +109,7 @@ json Session::upload_file(const std::string& name, const std::string& bytes) {
 }
 
 void Session::send_key(const std::string& qcode) {
+    if (options_.emulator != Emulator::Qemu) fail("send-key " + qcode + ": only QEMU has QMP");
     try {
         qmp_.execute("send-key", {{"keys", json::array({{{"type", "qcode"}, {"data", qcode}}})}});
     } catch (const HarnessError& e) {
@@ -121,6 +123,7 @@ json Session::wait_event(const std::string& event) {
 
 RgbImage Session::screendump(const std::string& name) {
     std::string path = run_dir_ + "/" + name + ".png";
+    if (options_.emulator != Emulator::Qemu) fail("screendump " + name + ": only QEMU has QMP (read pages back instead)");
     try {
         qmp_.execute("stop");
         qmp_.execute("screendump", {{"filename", path}, {"format", "png"}});

@@ -24,6 +24,7 @@ namespace harness {
 std::string build_dir();
 
 struct SessionOptions {
+    Emulator emulator = Emulator::Qemu;  // Bochs: medium Cdrom; no screendump, no send-key
     BootMedium medium = BootMedium::Kernel;
     std::string image;                 // empty: build/kernel/modexlab.elf, or build/modexlab.iso for CD/USB
     std::string append = "boot=serve"; // -kernel only; an ISO boots its GRUB menu's default entry
@@ -83,6 +84,7 @@ public:
 
 private:
     [[noreturn]] void fail(const std::string& what);
+    const char* emulator_name() const { return options_.emulator == Emulator::Bochs ? "Bochs" : "QEMU"; }
     // Runs one exchange with the kernel; failures get QEMU's fate and the context added.
     json guarded(const std::function<json()>& exchange);
 

@@ -1,0 +1,79 @@
+// The kernel in Bochs 2.7, a second VGA implementation beside QEMU's: the ISO booted from Bochs's CD
+// drive (GRUB, the demo's modules), COM1 on a socket; mode 13h, Mode X patterns in every page, flips
+// and 3D frames drawn with several mappers and surfaces, each page read back over the serial line and
+// compared with the host's picture; every NASM loop against its twin, the VGA ones in Bochs's video
+// memory. Bochs has no QMP: the pages come back by `readback` alone.
+#include "tests/system/system.h"
+
+#include "qemu/accuracy/measure.h"
+
+namespace {
+
+using namespace systest;
+
+SessionOptions bochs_options() {
+    SessionOptions o = options_for_this_test();
+    o.emulator = Emulator::Bochs;
+    o.medium = BootMedium::Cdrom;
+    o.boot_timeout = std::chrono::seconds(180);
+    o.command_timeout = std::chrono::seconds(180);
+    return o;
+}
+
+TEST(Bochs, BootsTheIsoAndDrawsWhatQemuAndTheHostDraw) {
+    Session s(bochs_options());
+    const json& b = s.boot_line();
+    EXPECT_EQ(b["boot"], "demo") << "GRUB's default entry";
+    EXPECT_GT(b["modules"].get<int>(), 0) << "the demo scenes as Multiboot modules";
+    EXPECT_TRUE(b["keyboard"]["irq"].get<bool>()) << b.dump();
+    json hello = s.ok("hello");  // (ends the show)
+    EXPECT_EQ(hello["mode"], "modex");
+
+    // mode 13h: one linear page
+    EXPECT_EQ(s.ok("mode 13h")["height"], 200);
+    s.ok("pattern ramp 0");
+    Comparison c13 = compare(s.readback(0), render_pattern(raster::Pattern::Ramp, MODE_13H));
+    EXPECT_TRUE(c13.equal()) << "13h ramp: " << c13.summary();
+
+    // Mode X: a different pattern in each page, each page read back; the flips report the retrace
+    EXPECT_EQ(s.ok("mode modex")["pages"], 3);
+    const raster::Pattern in_page[3] = {raster::Pattern::Planes, raster::Pattern::Grid, raster::Pattern::Border};
+    for (int page = 0; page < 3; ++page) s.ok("pattern " + std::string(raster::pattern_name(in_page[page])) + " " + std::to_string(page));
+    for (int page = 0; page < 3; ++page) {
+        json f = s.ok("flip " + std::to_string(page));
+        EXPECT_TRUE(f["retrace"].get<bool>()) << "flip " << page;
+        Comparison c = compare(s.readback(page), render_pattern(in_page[page], MODE_X));
+        EXPECT_TRUE(c.equal()) << raster::pattern_name(in_page[page]) << " in page " << page << ": " << c.summary();
+    }
+
+    // every NASM loop against its C++ twin, those that program the VGA (map mask, write modes) into
+    // Bochs's own page 2
+    json st = s.ok("selftest 300");
+    EXPECT_TRUE(st["vga_loops_checked"].get<bool>());
+    for (const json& l : st["loops"]) EXPECT_EQ(l["mismatches"], 0) << l.dump();
+
+    // a 3D scene: frames drawn by rows into RAM and blitted, by columns into RAM planes, and by
+    // columns straight into the page (the map mask a column)
+    LoadedWorld host = load_world_file("scenes/cube.scene");
+    s.ok("load cube.scene");
+    const struct {
+        const char* mapper;
+        const char* surface;
+        int32_t frame;
+    } runs[] = {{"exact", "linear", 37}, {"persp-subdiv-16", "planar", 80}, {"fast-columns", "vga", 131}, {"auto", "linear", 200}};
+    int page = 0;
+    for (const auto& r : runs) {
+        SCOPED_TRACE(std::string(r.mapper) + " " + r.surface);
+        json reply = s.ok("frame " + std::to_string(r.frame) + " " + r.mapper + " " + std::to_string(page) + " " + r.surface);
+        const raster::Axis axis = reply["walker"] == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
+        auto f = world_frame(host, r.frame);
+        raster::RenderStats stats;
+        IndexImage want = render_world_frame(host, *f, *raster::find_mapper(r.mapper), axis, &stats);
+        EXPECT_EQ(reply["pixels"], stats.pixels);
+        Comparison c = compare(s.readback(page), want);
+        EXPECT_TRUE(c.equal()) << c.summary();
+        page = (page + 1) % 3;
+    }
+}
+
+}  // namespace
