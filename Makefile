@@ -51,7 +51,10 @@ DEPS := \
 	zbarimg:zbar-tools \
 	bochs-bin:bochs \
 	/usr/share/bochs/BIOS-bochs-latest:bochsbios \
-	/usr/share/vgabios/vgabios.bin:vgabios
+	/usr/share/vgabios/vgabios.bin:vgabios \
+	/usr/lib/grub/x86_64-efi/multiboot.mod:grub-efi-amd64-bin \
+	/usr/lib/grub/i386-efi/multiboot.mod:grub-efi-ia32-bin \
+	/usr/share/ovmf/OVMF.fd:ovmf
 
 # ---- kernel ------------------------------------------------------------------------------------
 
@@ -240,7 +243,7 @@ $(ISO): $(KERNEL) boot/grub.cfg $(BUILTIN_SOURCES)
 	for f in $(DEMO_SCENES); do n=$${f#scenes/}; s=$${n%.scene}; \
 		entries="$$entries""menuentry \"modexlab: $$s\" {\n    multiboot /boot/modexlab.elf boot=demo scene=$$n\n    module /boot/files/$$n $$n\n"; \
 		for t in $$(sed -n 's/^texture [^ ]* file \([^ ]*\).*/\1/p' $$f); do entries="$$entries    module /boot/files/$$t $$t\n"; done; \
-		entries="$$entries    set gfxpayload=text\n    boot\n}\n\n"; done; \
+		entries="$$entries    set gfxpayload=\$${modexlab_payload}\n    boot\n}\n\n"; done; \
 	awk -v modules="$$(printf "$$modules")" -v scenes="$$(printf "$$entries")" \
 		'/^@MODULES@$$/ { print modules; next } /^@SCENES@$$/ { print scenes; next } { print }' boot/grub.cfg \
 		> $(BUILD)/isodir/boot/grub/grub.cfg

@@ -5,7 +5,8 @@ bits 32
 MB_MAGIC        equ 0x1BADB002
 MB_FLAG_ALIGN   equ 1 << 0              ; modules page-aligned
 MB_FLAG_MEMINFO equ 1 << 1              ; mem_lower/mem_upper and the memory map
-MB_FLAGS        equ MB_FLAG_ALIGN | MB_FLAG_MEMINFO
+MB_FLAG_VIDEO   equ 1 << 2              ; the video fields below: a UEFI loader hands over its framebuffer
+MB_FLAGS        equ MB_FLAG_ALIGN | MB_FLAG_MEMINFO | MB_FLAG_VIDEO
 
 KERNEL_CS       equ 0x08
 KERNEL_DS       equ 0x10
@@ -15,6 +16,9 @@ section .multiboot progbits alloc noexec nowrite align=4
     dd MB_MAGIC
     dd MB_FLAGS
     dd -(MB_MAGIC + MB_FLAGS)
+    dd 0, 0, 0, 0, 0                    ; header, load, load end, bss end, entry: unused (the ELF's own)
+    dd 0                                ; mode type: linear graphics (GRUB's gfxpayload decides: text under BIOS)
+    dd 0, 0, 32                         ; width, height: no preference; 32 bits a pixel
 
 section .rodata
 align 8

@@ -115,6 +115,46 @@ constexpr size_t VGA_WINDOW = 0x10000;
 Mode g_mode = Mode::Text;
 int g_shown_page = 0;
 
+// The framebuffer backend (vga.h): the pages in RAM, four planes each as raster::planar_target lays
+// them out (mode 13h: page 0, linear), the palette the flips draw with.
+bool g_fb_on = false;
+Framebuffer g_fb;
+uint8_t g_ram_pages[MODEX_PAGES][raster::SCREEN_PIXELS];
+raster::Palette g_fb_palette{};
+
+// The shown page into the framebuffer.
+void present(int page) {
+    const int h = g_mode == Mode::ModeX ? MODEX_HEIGHT : MODE13H_HEIGHT;
+    const raster::ScaledPlacement at = raster::scaled_placement(g_fb.width, g_fb.height, uint32_t(WIDTH), uint32_t(h));
+    uint32_t colour[256];
+    for (int i = 0; i < 256; ++i) {
+        const raster::Rgb6& e = g_fb_palette.entry[i];
+        auto put = [](uint8_t v8, uint8_t position, uint8_t size) { return uint32_t(v8 >> (8 - size)) << position; };
+        colour[i] = put(raster::widen6(e.r), g_fb.red_position, g_fb.red_size) | put(raster::widen6(e.g), g_fb.green_position, g_fb.green_size) |
+                    put(raster::widen6(e.b), g_fb.blue_position, g_fb.blue_size);
+    }
+    const uint8_t* src = g_ram_pages[page];
+    const uint32_t bytes = g_fb.bpp / 8;
+    for (int y = 0; y < h; ++y)
+        for (uint32_t dy = 0; dy < at.scale; ++dy) {
+            uint8_t* line = g_fb.base + (at.y + uint32_t(y) * at.scale + dy) * g_fb.pitch + at.x * bytes;
+            for (int x = 0; x < WIDTH; ++x) {
+                const uint8_t index = g_mode == Mode::ModeX ? src[(x & 3) * raster::PLANE_BYTES + y * MODEX_ROW_BYTES + (x >> 2)] : src[y * WIDTH + x];
+                const uint32_t c = colour[index];
+                for (uint32_t dx = 0; dx < at.scale; ++dx, line += bytes) {
+                    if (bytes == 4) *reinterpret_cast<volatile uint32_t*>(line) = c;
+                    else if (bytes == 2) *reinterpret_cast<volatile uint16_t*>(line) = uint16_t(c);
+                    else line[0] = uint8_t(c), line[1] = uint8_t(c >> 8), line[2] = uint8_t(c >> 16);
+                }
+            }
+        }
+}
+
+void clear_framebuffer() {
+    for (uint32_t y = 0; y < g_fb.height; ++y)
+        for (uint32_t i = 0; i < g_fb.width * (g_fb.bpp / 8u); ++i) g_fb.base[y * g_fb.pitch + i] = 0;
+}
+
 void apply(const RegWrite* table, size_t n) {
     for (size_t i = 0; i < n; ++i) {
         const RegWrite& w = table[i];
@@ -197,14 +237,27 @@ bool vbe_present() {
 
 }  // namespace
 
+bool use_framebuffer(const Framebuffer& fb) {
+    const bool sizes = fb.red_size >= 1 && fb.red_size <= 8 && fb.green_size >= 1 && fb.green_size <= 8 && fb.blue_size >= 1 && fb.blue_size <= 8;
+    if (!fb.base || !(fb.bpp == 16 || fb.bpp == 24 || fb.bpp == 32) || fb.width < uint32_t(WIDTH) || fb.height < uint32_t(MODEX_HEIGHT) ||
+        fb.pitch < fb.width * (fb.bpp / 8u) || !sizes)
+        return false;
+    g_fb = fb;
+    g_fb_on = true;
+    return true;
+}
+
+bool framebuffer_in_use() { return g_fb_on; }
+const Framebuffer& framebuffer() { return g_fb; }
+
 bool disable_bochs_vbe() {
-    if (!vbe_present()) return false;
+    if (g_fb_on || !vbe_present()) return false;  // (the framebuffer may be the VBE's own)
     vbe_write(VBE_ENABLE, 0);
     return true;
 }
 
 bool enable_bochs_vbe_640x480() {
-    if (!vbe_present()) return false;
+    if (g_fb_on || !vbe_present()) return false;
     vbe_write(VBE_ENABLE, 0);
     vbe_write(VBE_XRES, 640);
     vbe_write(VBE_YRES, 480);
@@ -214,7 +267,17 @@ bool enable_bochs_vbe_640x480() {
     return true;
 }
 
+// The framebuffer backend's mode change: the pages cleared, the screen black.
+void set_ram_mode(Mode m) {
+    for (auto& page : g_ram_pages)
+        for (uint8_t& b : page) b = 0;
+    clear_framebuffer();
+    g_mode = m;
+    g_shown_page = 0;
+}
+
 void set_mode_13h() {
+    if (g_fb_on) return set_ram_mode(Mode::Mode13h);
     disable_bochs_vbe();
     apply(MODE_13H);
     attributes_on();
@@ -224,6 +287,7 @@ void set_mode_13h() {
 }
 
 void set_mode_x() {
+    if (g_fb_on) return set_ram_mode(Mode::ModeX);
     disable_bochs_vbe();
     apply(MODE_13H);
     apply(MODE_X_FROM_13H);
@@ -254,6 +318,11 @@ int page_count() { return g_mode == Mode::ModeX ? MODEX_PAGES : g_mode == Mode::
 int shown_page() { return g_shown_page; }
 
 void load_palette(const raster::Palette& p) {
+    if (g_fb_on) {
+        g_fb_palette = p;
+        if (g_mode == Mode::ModeX || g_mode == Mode::Mode13h) present(g_shown_page);  // (as a DAC change shows at once)
+        return;
+    }
     io::outb(DAC_WRITE_INDEX, 0);
     for (const raster::Rgb6& c : p.entry) {
         io::outb(DAC_DATA, c.r);
@@ -263,20 +332,28 @@ void load_palette(const raster::Palette& p) {
 }
 
 void set_map_mask(uint8_t mask) {
+    if (g_fb_on) return;  // (the RAM pages are addressed plane by plane: page_target)
     io::outb(SEQ_INDEX, SEQ_MAP_MASK);
     io::outb(SEQ_INDEX + 1, mask);
 }
 
 void set_read_plane(uint8_t plane) {
+    if (g_fb_on) return;
     io::outb(GC_INDEX, GC_READ_MAP);
     io::outb(GC_INDEX + 1, uint8_t(plane & 3));
 }
 
 volatile uint8_t* page_base(int page) {
+    if (g_fb_on) return g_ram_pages[page];
     return g_mode == Mode::ModeX ? VGA_MEMORY + uint32_t(page) * MODEX_PAGE_BYTES : VGA_MEMORY;
 }
 
 bool flip(int page) {
+    if (g_fb_on) {
+        present(page);
+        g_shown_page = page;
+        return true;
+    }
     uint32_t start = g_mode == Mode::ModeX ? uint32_t(page) * MODEX_PAGE_BYTES : 0;
     // Change the start address outside retrace; it is latched when the next retrace begins.
     bool ok = wait_retrace_state(false);
@@ -290,6 +367,10 @@ bool flip(int page) {
 }
 
 void clear_page(int page, uint8_t colour) {
+    if (g_fb_on) {
+        for (uint8_t& b : g_ram_pages[page]) b = colour;
+        return;
+    }
     volatile uint8_t* base = page_base(page);
     if (g_mode == Mode::ModeX) {
         set_map_mask(0x0F);
@@ -301,6 +382,11 @@ void clear_page(int page, uint8_t colour) {
 }
 
 void read_page(int page, uint8_t* out) {
+    if (g_fb_on && g_mode == Mode::ModeX) {
+        for (int y = 0; y < MODEX_HEIGHT; ++y)
+            for (int x = 0; x < WIDTH; ++x) out[y * WIDTH + x] = g_ram_pages[page][(x & 3) * raster::PLANE_BYTES + y * MODEX_ROW_BYTES + (x >> 2)];
+        return;
+    }
     volatile const uint8_t* base = page_base(page);
     if (g_mode != Mode::ModeX) {
         for (int i = 0; i < WIDTH * height(); ++i) out[i] = base[i];
@@ -317,6 +403,10 @@ void read_page(int page, uint8_t* out) {
 }
 
 void blit_planar(const uint8_t* planes, int page) {
+    if (g_fb_on) {
+        for (int32_t i = 0; i < raster::SCREEN_PIXELS; ++i) g_ram_pages[page][i] = planes[i];
+        return;
+    }
     volatile uint8_t* base = page_base(page);
     for (int plane = 0; plane < 4; ++plane) {
         set_map_mask(uint8_t(1u << plane));
@@ -327,6 +417,7 @@ void blit_planar(const uint8_t* planes, int page) {
 }
 
 void blit_linear(const uint8_t* linear, int page) {
+    if (g_fb_on) return raster::planar_from_linear(linear, g_ram_pages[page]);
     volatile uint8_t* base = page_base(page);
     for (int plane = 0; plane < 4; ++plane) {
         set_map_mask(uint8_t(1u << plane));
@@ -356,6 +447,7 @@ void select_plane(void* ctx, int plane) {
 }  // namespace
 
 raster::Target page_target(int page) {
+    if (g_fb_on) return raster::planar_target(g_ram_pages[page]);  // (a RAM target: no loop programs the VGA)
     raster::Target t = raster::planar_target(const_cast<uint8_t*>(page_base(page)));
     t.plane_bytes = 0;  // every plane at the same address: the map mask picks the plane
     g_plane_selector.current = -1;
@@ -366,7 +458,7 @@ raster::Target page_target(int page) {
 }
 
 void text_write(const char* s) {
-    if (g_mode != Mode::Text) return;
+    if (g_mode != Mode::Text || g_fb_on) return;  // (no text memory behind a loader's framebuffer)
     if (!g_text_cleared) {
         for (int i = 0; i < TEXT_ROWS * TEXT_COLS; ++i) TEXT[i] = TEXT_ATTR | ' ';
         g_text_cleared = true;

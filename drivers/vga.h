@@ -20,6 +20,24 @@ constexpr uint32_t MODEX_PAGE_BYTES = 0x4B00;  // 80 bytes x 240 lines, per plan
 constexpr int MODEX_ROW_BYTES = WIDTH / 4;
 constexpr int MAX_PIXELS = WIDTH * MODEX_HEIGHT;
 
+// A linear RGB framebuffer a UEFI loader handed over (GRUB EFI through the Multiboot header): on a
+// PC without legacy VGA the driver keeps the Mode X pages (and mode 13h's) in RAM, behind the same
+// functions, and a flip draws the page into the framebuffer, scaled by the largest whole factor
+// that fits, centred on black (raster::scaled_placement), each index through the palette (6-bit DAC
+// values widened to 8 bits: raster::widen6). The VGA's ports are left alone.
+struct Framebuffer {
+    uint8_t* base = nullptr;
+    uint32_t pitch = 0, width = 0, height = 0;  // bytes a line; pixels
+    uint8_t bpp = 0;                            // 16, 24 or 32
+    uint8_t red_position = 0, red_size = 0, green_position = 0, green_size = 0, blue_position = 0, blue_size = 0;
+};
+// Switches the driver to the framebuffer; false (and nothing changed) where it is not one the
+// driver draws into (bpp 16, 24 or 32, at least 320 x 240, components of 1 to 8 bits).
+bool use_framebuffer(const Framebuffer& fb);
+bool framebuffer_in_use();
+const Framebuffer& framebuffer();
+// (where the picture goes: raster::scaled_placement; its colours: raster::widen6)
+
 // Writes 0 to the Bochs VBE enable register if a Bochs/QEMU VBE adapter answers (a loader may have
 // left a VBE mode on; VGA register writes are ignored while it is). True when it was found.
 // The mode setters call it too.

@@ -65,12 +65,11 @@ void init(const multiboot::Info* info, uint32_t* skipped) {
         add(builtin_files[i].name, lib::c_length(builtin_files[i].name), builtin_files[i].data, builtin_files[i].size, Origin::Builtin);
     if (!(info->flags & multiboot::INFO_MODULES)) return;
     const auto* mods = reinterpret_cast<const multiboot::Module*>(info->mods_addr);
-    const uint32_t memory_end = (info->flags & multiboot::INFO_MEMORY) ? 0x100000 + info->mem_upper * 1024 : 0xFFFFFFFF;
     const uint32_t kernel_start = uint32_t(reinterpret_cast<uintptr_t>(__kernel_start)), kernel_end = uint32_t(reinterpret_cast<uintptr_t>(__kernel_end));
     for (uint32_t m = 0; m < info->mods_count; ++m) {
         const multiboot::Module& mod = mods[m];
         bool overlaps = mod.mod_start < kernel_end && mod.mod_end > kernel_start;
-        if (mod.mod_end < mod.mod_start || mod.mod_end > memory_end || overlaps) {
+        if (mod.mod_end < mod.mod_start || multiboot::first_not_ram(info, mod.mod_start, mod.mod_end) < mod.mod_end || overlaps) {
             ++*skipped;
             continue;
         }

@@ -21,7 +21,7 @@
 #include "kernel/show.h"
 #include "kernel/version.h"
 
-extern "C" uint8_t __kernel_end[];
+extern "C" uint8_t __kernel_start[], __kernel_end[];
 
 namespace {
 
@@ -102,9 +102,29 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     const bool guard_pages = guard::init(ctx.cpu.features_edx);
     ctx.tsc_hz = cpu::has_tsc(ctx.cpu) ? timer::calibrate_tsc_hz() : 0;
     const keyboard::Status keys = keyboard::init();  // (interrupts on from here: IRQ 1 alone unmasked)
+    // a UEFI loader's framebuffer (RGB, by the Multiboot header's video fields): drawn into, the VGA
+    // left alone; under BIOS GRUB hands over text mode, and the kernel programs the VGA itself
+    bool framebuffer = false;
+    if (info->flags & multiboot::INFO_FRAMEBUFFER) {
+        const multiboot::FramebufferInfo* f = multiboot::framebuffer(info);
+        vga::Framebuffer fb;
+        fb.base = f->addr < 0xFFFFFFFFull ? reinterpret_cast<uint8_t*>(uintptr_t(f->addr)) : nullptr;  // (identity-mapped: guard.h)
+        fb.pitch = f->pitch, fb.width = f->width, fb.height = f->height, fb.bpp = f->bpp;
+        fb.red_position = f->red_position, fb.red_size = f->red_size, fb.green_position = f->green_position;
+        fb.green_size = f->green_size, fb.blue_position = f->blue_position, fb.blue_size = f->blue_size;
+        framebuffer = f->type == 1 && vga::use_framebuffer(fb);
+    }
     bool vbe_found = vga::disable_bochs_vbe();
-    if ((info->flags & multiboot::INFO_MEMORY) && 0x100000 + uint64_t(info->mem_upper) * 1024 < uint64_t(reinterpret_cast<uintptr_t>(__kernel_end)))
-        panic("not enough memory: the kernel's image and buffers need more than the loader reports");
+    // (by the memory map where there is one: UEFI firmware leaves reserved islands above 1 MiB, so
+    // mem_upper, the RAM up to the first of them, says too little there)
+    const uint64_t kernel_start = reinterpret_cast<uintptr_t>(__kernel_start), kernel_end = reinterpret_cast<uintptr_t>(__kernel_end);
+    const uint64_t missing = multiboot::first_not_ram(info, kernel_start, kernel_end);
+    if (missing < kernel_end) {
+        lib::Fmt m;
+        m.s("not enough memory: the kernel's image and buffers need RAM from ").hex(uint32_t(kernel_start)).s(" to ").hex(uint32_t(kernel_end));
+        m.s(", the loader reports none at ").hex(uint32_t(missing));
+        panic(m.c_str());
+    }
     uint32_t skipped_modules = 0;
     files::init(info, &skipped_modules);
     uint32_t modules = 0;
@@ -117,6 +137,13 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     boot.u32("files", uint32_t(files::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
     boot.u32("memory_kib", (info->flags & multiboot::INFO_MEMORY) ? info->mem_upper + 1024 : 0);
     boot.boolean("guard_pages", guard_pages);
+    if (framebuffer) {
+        const vga::Framebuffer& fb = vga::framebuffer();
+        boot.begin_object("framebuffer").hex32("address", uint32_t(reinterpret_cast<uintptr_t>(fb.base))).u32("width", fb.width);
+        boot.u32("height", fb.height).u32("pitch", fb.pitch).u32("bpp", fb.bpp).end_object();
+    } else {
+        boot.boolean("framebuffer", false);
+    }
     boot.begin_object("keyboard").boolean("controller", keys.controller).boolean("port", keys.port_ok).boolean("keyboard", keys.keyboard);
     boot.boolean("irq", keys.irq).end_object();
     boot.begin_array("ignored_options");

@@ -56,6 +56,17 @@ inline uint8_t* pixel_at(Target& t, int32_t x, int32_t y) {
     return t.base + plane * t.plane_bytes + y * t.row_bytes + (x >> 2);
 }
 
+// Where a picture of w x h pixels goes in a screen of sw x sh (a UEFI framebuffer, drivers/vga.h):
+// scaled by the largest whole factor that fits (at least 1), centred.
+struct ScaledPlacement {
+    uint32_t scale, x, y;
+};
+constexpr ScaledPlacement scaled_placement(uint32_t sw, uint32_t sh, uint32_t w, uint32_t h) {
+    uint32_t scale = sw / w < sh / h ? sw / w : sh / h;
+    scale = scale < 1 ? 1 : scale;
+    return ScaledPlacement{scale, sw > w * scale ? (sw - w * scale) / 2 : 0, sh > h * scale ? (sh - h * scale) / 2 : 0};
+}
+
 // Converts a linear 320x240 picture to the four-plane layout (the RAM side of a blit).
 void planar_from_linear(const uint8_t* linear, uint8_t* planes);
 // And back: the four planes of a page to a linear picture.

@@ -26,6 +26,10 @@ const Palette& palette(PaletteId id);
 const char* palette_name(PaletteId id);
 bool palette_from_name(lib::StrView name, PaletteId* out);
 
+// A 6-bit DAC value as 8 bits, its top bits repeated below (0 -> 0, 63 -> 255): the colour the
+// kernel writes into a UEFI framebuffer (drivers/vga.h).
+constexpr uint8_t widen6(uint8_t v) { return uint8_t(v << 2 | v >> 4); }
+
 // The entry nearest to c (squared distance in the DAC's 6-bit units; ties to the lower index).
 uint8_t nearest_entry(const Palette& palette, Rgb6 c);
 

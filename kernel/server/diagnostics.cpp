@@ -96,7 +96,7 @@ void cmd_selftest(Context&, const StrView* args, size_t nargs) {
     int n = 0;
     bool all_equal = true;
     uint64_t t0 = timer::rdtsc();
-    bool vga_checked = vga::mode() == vga::Mode::ModeX;
+    bool vga_checked = vga::mode() == vga::Mode::ModeX && !vga::framebuffer_in_use();  // (RAM pages: no VGA to program)
     const raster::Mapper* loops[MAX_CHECKED_LOOPS];
     int count = raster::checked_loops(loops, MAX_CHECKED_LOOPS);
     bool stopped = false;

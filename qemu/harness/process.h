@@ -19,6 +19,7 @@ enum class Emulator { Qemu, Bochs };
 
 struct QemuConfig {
     Emulator emulator = Emulator::Qemu;  // Bochs: the CD (an ISO) only, no icount, no display
+    bool uefi = false;  // QEMU: qemu-system-x86_64 with OVMF (Debian's ovmf: a 64-bit UEFI PC), not a BIOS
     BootMedium medium = BootMedium::Kernel;
     std::string image;       // the ELF (-kernel) or the ISO (CD or USB stick)
     std::string append;      // multiboot command line, -kernel only
