@@ -46,20 +46,10 @@ const char* scene_name(const Setup& s, int i) { return files::at(s.scenes[i]).na
 // per pixel, in tenths
 uint64_t tenths_per_pixel(uint64_t ticks, uint64_t pixels) { return pixels ? ticks * 10 / pixels : 0; }
 
-void put_tenths(lib::Fmt& f, uint64_t tenths) { f.u(uint32_t(tenths / 10)).s(".").u(uint32_t(tenths % 10)); }
-
-// a footprint error as the table shows it: two decimals below 10, none above ("-": none)
+// a footprint error as the table shows it ("-": none measured)
 void put_error(lib::Fmt& f, double e) {
-    if (e < 0) {
-        f.s("-");
-        return;
-    }
-    if (e >= 10) {
-        f.u(uint32_t(e + 0.5));
-        return;
-    }
-    const uint32_t hundredths = uint32_t(e * 100 + 0.5);
-    f.u(hundredths / 100).s(".").u(hundredths % 100 / 10).u(hundredths % 10);
+    if (e < 0) f.s("-");
+    else f.decimal(e);
 }
 
 // Right-aligns the text of `f` in a field of `width` after what `line` holds.
@@ -157,7 +147,7 @@ void machine_page(const Setup& s, Page* p) {
     }
     lib::Fmt d;
     d.s("TSC    ");
-    if (s.tsc_hz) put_tenths(d, s.tsc_hz / 100000), d.s(" MHz, against the PIT");
+    if (s.tsc_hz) d.tenths(s.tsc_hz / 100000).s(" MHz, against the PIT");
     else d.s("none: no timings");
     p->add(d.c_str());
     lib::Fmt e;
@@ -198,8 +188,8 @@ void table_page(const Setup& s, int scene, int part, int parts, Page* p) {
         for (int c = int(lib::c_length(raster::MAPPERS[r.mapper].name)); c < 19; ++c) line.s(" ");  // (the longest name: 19)
         lib::Fmt inner, frame, err;
         if (r.pixels) {
-            put_tenths(inner, tenths_per_pixel(r.ticks_inner, r.pixels));
-            put_tenths(frame, tenths_per_pixel(r.ticks_frame, r.pixels));
+            inner.tenths(tenths_per_pixel(r.ticks_inner, r.pixels));
+            frame.tenths(tenths_per_pixel(r.ticks_frame, r.pixels));
         } else {
             inner.s("-"), frame.s("refused");
         }

@@ -78,23 +78,6 @@ bool load_scene(Show& s) {
     return s.loaded;
 }
 
-// "12.3" from tenths
-void put_tenths(lib::Fmt& f, uint64_t tenths) { f.u(uint32_t(tenths / 10)).s(".").u(uint32_t(tenths % 10)); }
-
-// a budget's error in footprints, up to two decimals ("0.5", "1", "any")
-void put_error(lib::Fmt& f, double e) {
-    if (e < 0) {
-        f.s("any");
-        return;
-    }
-    const uint64_t hundredths = uint64_t(e * 100 + 0.5);
-    f.u(uint32_t(hundredths / 100));
-    if (hundredths % 100) {
-        f.s(".").u(uint32_t(hundredths % 100 / 10));
-        if (hundredths % 10) f.u(uint32_t(hundredths % 10));
-    }
-}
-
 void set_line(Show& s, const lib::Fmt& f) {
     if (s.hud_count < HUD_LINES) lib::copy_c_string(s.hud_text[s.hud_count++], HUD_CHARS + 1, f.c_str());
 }
@@ -111,13 +94,14 @@ void compose_hud(Show& s, const worlds::FrameResult& r, uint64_t period) {
     if (s.mapper->chooses) {
         const raster::Budget budget = worlds::budget();
         b.s(", budget ");
-        put_error(b, budget.max_error);
+        if (budget.max_error < 0) b.s("any");
+        else b.decimal(budget.max_error);
         b.s(budget.exact_coverage ? " exact" : " any");
     }
     set_line(s, b);
     lib::Fmt c;
     if (s.paused) c.s("paused");
-    else if (period > 0 && s.options.tsc_hz > 0) put_tenths(c, s.options.tsc_hz * 10 / period), c.s(" fps");
+    else if (period > 0 && s.options.tsc_hz > 0) c.tenths(s.options.tsc_hz * 10 / period).s(" fps");
     else c.s("- fps");
     c.s(s.surface == raster::Surface::Vga ? ", VGA memory" : ", RAM + blit");
     set_line(s, c);
@@ -128,9 +112,9 @@ void compose_hud(Show& s, const worlds::FrameResult& r, uint64_t period) {
     else {
         const uint64_t all = r.ticks_geometry + r.render.ticks_clear + r.render.ticks_draw + r.render.ticks_blit;
         d.s("cycles/px ");
-        put_tenths(d, r.render.ticks_draw * 10 / pixels);
+        d.tenths(r.render.ticks_draw * 10 / pixels);
         d.s(" drawing, ");
-        put_tenths(d, all * 10 / pixels);
+        d.tenths(all * 10 / pixels);
         d.s(" all");
     }
     set_line(s, d);

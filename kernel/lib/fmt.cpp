@@ -32,6 +32,28 @@ Fmt& Fmt::hex(uint32_t value) {
     return *this;
 }
 
+Fmt& Fmt::tenths(uint64_t value) {
+    char digits[DECIMAL_MAX_CHARS];
+    const size_t n = format_decimal(value / 10, digits);
+    for (size_t i = 0; i < n; ++i) put(digits[i]);
+    put('.');
+    put(char('0' + value % 10));
+    return *this;
+}
+
+Fmt& Fmt::decimal(double v) {
+    if (!(v >= 0)) return s("?");
+    if (v >= 10) return u(v < 4e9 ? uint32_t(v + 0.5) : 0xFFFFFFFFu);
+    const uint32_t hundredths = uint32_t(v * 100 + 0.5);
+    u(hundredths / 100);
+    if (hundredths % 100) {
+        put('.');
+        put(char('0' + hundredths % 100 / 10));
+        if (hundredths % 10) put(char('0' + hundredths % 10));
+    }
+    return *this;
+}
+
 size_t format_decimal(uint64_t value, char* out) {
     char reversed[DECIMAL_MAX_CHARS];
     size_t n = 0;

@@ -24,6 +24,9 @@ public:
     Fmt& s(StrView text);
     Fmt& u(uint32_t value);
     Fmt& hex(uint32_t value);  // 0x-prefixed, 8 digits
+    Fmt& tenths(uint64_t value);  // value / 10 with one decimal: 123 -> "12.3"
+    // v >= 0 to two decimals, trailing zeros dropped ("0.5", "1", "2.25"); from 10 on, whole
+    Fmt& decimal(double v);
     const char* c_str() const { return buf_; }
 
 private:

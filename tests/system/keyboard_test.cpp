@@ -16,33 +16,10 @@ namespace {
 
 using namespace systest;
 
-// The screen as the show should have it after a key: the frame the event names, drawn on the host
-// with the event's mapper, surface and budget, and the HUD's lines over it.
-IndexImage expected_screen(const json& e) {
-    LoadedWorld host = load_world_file("scenes/" + e["scene"].get<std::string>());
-    auto f = world_frame(host, e["frame"].get<int32_t>());
-    const std::string name = e["mapper"];
-    const raster::Mapper* m = raster::find_mapper({name.data(), name.size()});
-    EXPECT_NE(m, nullptr) << name;
-    if (!m) return IndexImage{};
-    const json& b = e["budget"];
-    f->budget.given = b["given"];
-    f->budget.max_error = b["max_error"].is_string() ? raster::ANY_ERROR : b["max_error"].get<double>();
-    f->budget.exact_coverage = b["exact_coverage"];
-    const raster::Surface surface = e["surface"] == "vga" ? raster::Surface::Vga : raster::Surface::Linear;
-    IndexImage want = render_world_frame(host, *f, *m, raster::surface_axis(*m, surface));
-    raster::Target t = raster::linear_target(want.index.data(), want.width, want.height, want.width);
-    std::vector<std::string> text = e["hud"];
-    std::vector<lib::StrView> lines;
-    for (const std::string& l : text) lines.push_back({l.data(), l.size()});
-    if (!lines.empty()) raster::draw_text_box(t, raster::HUD_X, raster::HUD_Y, lines.data(), int(lines.size()), raster::text_colours(host.world->palette));
-    return want;
-}
-
 void expect_screen(Session& s, const json& e, const std::string& stem) {
     SCOPED_TRACE(stem + ": " + e.dump());
     LoadedWorld host = load_world_file("scenes/" + e["scene"].get<std::string>());
-    expect_screendump(s, expected_screen(e), host.world->palette, stem);
+    expect_screendump(s, show_screen(e), host.world->palette, stem);
 }
 
 json press(Session& s, const std::string& qcode, const std::string& action) {

@@ -9,6 +9,9 @@
 #include <sstream>
 #include <string>
 
+#include "kernel/core/policy.h"
+#include "kernel/scene/text.h"
+#include "qemu/accuracy/measure.h"
 #include "qemu/harness/session.h"
 
 namespace systest {
@@ -75,6 +78,29 @@ inline void expect_screendump(Session& s, const IndexImage& want, const raster::
         differing += dump.rgb[i] != expected.rgb[i] || dump.rgb[i + 1] != expected.rgb[i + 1] || dump.rgb[i + 2] != expected.rgb[i + 2];
     if (differing) save_png(s.run_dir() + "/" + stem + "-expected.png", expected);
     EXPECT_EQ(differing, 0u) << stem << ": screendump pixels differ (see " << s.run_dir() << "/" << stem << "{,-expected}.png)";
+}
+
+// The screen as the show should have it after a key: the frame the event names, drawn on the host
+// with the event's mapper, surface and budget, and the HUD's lines over it.
+inline IndexImage show_screen(const json& e) {
+    LoadedWorld host = load_world_file("scenes/" + e["scene"].get<std::string>());
+    auto f = world_frame(host, e["frame"].get<int32_t>());
+    const std::string name = e["mapper"];
+    const raster::Mapper* m = raster::find_mapper({name.data(), name.size()});
+    EXPECT_NE(m, nullptr) << name;
+    if (!m) return IndexImage{};
+    const json& b = e["budget"];
+    f->budget.given = b["given"];
+    f->budget.max_error = b["max_error"].is_string() ? raster::ANY_ERROR : b["max_error"].get<double>();
+    f->budget.exact_coverage = b["exact_coverage"];
+    const raster::Surface surface = e["surface"] == "vga" ? raster::Surface::Vga : raster::Surface::Linear;
+    IndexImage want = render_world_frame(host, *f, *m, raster::surface_axis(*m, surface));
+    raster::Target t = raster::linear_target(want.index.data(), want.width, want.height, want.width);
+    std::vector<std::string> text = e["hud"];
+    std::vector<lib::StrView> lines;
+    for (const std::string& l : text) lines.push_back({l.data(), l.size()});
+    if (!lines.empty()) raster::draw_text_box(t, raster::HUD_X, raster::HUD_Y, lines.data(), int(lines.size()), raster::text_colours(host.world->palette));
+    return want;
 }
 
 inline const raster::Palette& default_palette() { return raster::palette(raster::PaletteId::Default); }

@@ -1,7 +1,8 @@
 // A UEFI-only PC: the ISO booted by OVMF (qemu-system-x86_64) through GRUB EFI, which hands the
 // kernel the firmware's framebuffer (the Multiboot header's video fields); the kernel keeps its Mode
 // X pages in RAM and draws each flip into the framebuffer, scaled and centred. Every screen equals
-// the host's picture scaled the same way, colour for colour; the pages read back as on a VGA.
+// the host's picture scaled the same way, colour for colour, the show's HUD and keys included; the
+// pages read back as on a VGA.
 #include "tests/system/system.h"
 
 #include "kernel/core/surface.h"
@@ -48,6 +49,14 @@ TEST(Uefi, TheIsoBootsByOvmfAndDrawsIntoTheFramebuffer) {
     EXPECT_GE(b["framebuffer"]["width"].get<int>(), 320);
     EXPECT_FALSE(b["bochs_vbe_cleared"].get<bool>()) << "the VGA (and the VBE behind the framebuffer) left alone";
     EXPECT_GT(b["modules"].get<int>(), 0);
+    EXPECT_TRUE(b["keyboard"]["irq"].get<bool>()) << "QEMU's PC has its 8042 under OVMF too";
+    // the show with its HUD, driven by the keyboard: Space pauses, the screen is the host's frame
+    // and HUD, scaled
+    s.send_key("spc");
+    json key = s.wait_event("key");
+    EXPECT_TRUE(key["paused"].get<bool>());
+    EXPECT_FALSE(key["hud"].empty());
+    expect_screen(s, show_screen(key), load_world_file("scenes/" + key["scene"].get<std::string>()).world->palette, "show-paused");
     s.ok("hello");  // (ends the show)
 
     // Mode X's pages in RAM: a pattern a page, each flip shown scaled, each page read back

@@ -68,4 +68,13 @@ TEST(Fmt, FormatsAndTruncates) {
     EXPECT_EQ(strlen(big.c_str()), lib::Fmt::CAPACITY);
 }
 
+TEST(Fmt, TenthsAndDecimals) {
+    lib::Fmt t;
+    t.tenths(0).s(" ").tenths(7).s(" ").tenths(123).s(" ").tenths(50000000000ull);
+    EXPECT_STREQ(t.c_str(), "0.0 0.7 12.3 5000000000.0");
+    lib::Fmt d;
+    for (double v : {0.0, 0.5, 1.0, 2.25, 0.808, 9.999, 10.0, 127.6, -1.0}) d.decimal(v).s(" ");
+    EXPECT_STREQ(d.c_str(), "0 0.5 1 2.25 0.81 10 10 128 ? ");
+}
+
 }  // namespace
