@@ -68,18 +68,26 @@ json KernelLink::request(const std::string& command, std::chrono::milliseconds t
     return read_reply("'" + command + "'", timeout, on_event);
 }
 
+// The next line that is not blank, classified; throws on a timeout ("no WHAT within N ms"), a
+// reboot and a panic, which no caller waits for.
+KernelLine KernelLink::next_line(Clock::time_point deadline, std::chrono::milliseconds timeout, const std::string& what) {
+    for (;;) {
+        auto line = channel_.read_line(deadline);
+        if (!line) throw HarnessError("no " + what + " within " + std::to_string(timeout.count()) + " ms");
+        remember("< ", *line);
+        KernelLine k = classify_kernel_line(*line);
+        if (k.kind == KernelLine::Kind::Blank) continue;
+        if (k.kind == KernelLine::Kind::BootEvent) throw HarnessError("the kernel rebooted while waiting for " + what);
+        if (k.kind == KernelLine::Kind::PanicEvent) throw HarnessError("kernel panic: " + k.body.value("error", "?"));
+        return k;
+    }
+}
+
 json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds timeout, const EventFn& on_event) {
     auto deadline = Clock::now() + timeout;
     for (;;) {
-        auto line = channel_.read_line(deadline);
-        if (!line) throw HarnessError("no reply to " + what + " within " + std::to_string(timeout.count()) + " ms");
-        remember("< ", *line);
-        KernelLine k = classify_kernel_line(*line);
-        switch (k.kind) {
-        case KernelLine::Kind::Blank: continue;
-        case KernelLine::Kind::BootEvent: throw HarnessError("the kernel rebooted while waiting for the reply to " + what);
-        case KernelLine::Kind::PanicEvent: throw HarnessError("kernel panic: " + k.body.value("error", "?"));
-        case KernelLine::Kind::OtherEvent:
+        KernelLine k = next_line(deadline, timeout, "reply to " + what);
+        if (k.kind == KernelLine::Kind::OtherEvent) {
             if (!on_event && (k.body.value("event", "") == "ready" || k.body.value("event", "") == "progress")) {
                 deadline = Clock::now() + timeout;  // alive: the command is making progress
                 continue;
@@ -88,8 +96,6 @@ json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds t
             on_event(k.body);
             deadline = Clock::now() + timeout;
             continue;
-        case KernelLine::Kind::Reply:
-        case KernelLine::Kind::Fault: break;
         }
         uint32_t seq = k.body["seq"].get<uint32_t>();
         if (seq != next_seq_)
@@ -103,23 +109,9 @@ json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds t
 }
 
 json KernelLink::wait_event(const std::string& event, std::chrono::milliseconds timeout) {
-    const auto deadline = Clock::now() + timeout;
-    for (;;) {
-        auto line = channel_.read_line(deadline);
-        if (!line) throw HarnessError("no '" + event + "' event within " + std::to_string(timeout.count()) + " ms");
-        remember("< ", *line);
-        KernelLine k = classify_kernel_line(*line);
-        switch (k.kind) {
-        case KernelLine::Kind::Blank: continue;
-        case KernelLine::Kind::BootEvent: throw HarnessError("the kernel rebooted while waiting for a '" + event + "' event");
-        case KernelLine::Kind::PanicEvent: throw HarnessError("kernel panic: " + k.body.value("error", "?"));
-        case KernelLine::Kind::OtherEvent:
-            if (k.body.value("event", "") == event) return k.body;
-            throw HarnessError("a '" + k.body.value("event", "") + "' event while waiting for a '" + event + "' event: " + k.body.dump());
-        case KernelLine::Kind::Reply:
-        case KernelLine::Kind::Fault: throw HarnessError("a reply while waiting for a '" + event + "' event: " + k.body.dump());
-        }
-    }
+    KernelLine k = next_line(Clock::now() + timeout, timeout, "'" + event + "' event");
+    if (k.kind == KernelLine::Kind::OtherEvent && k.body.value("event", "") == event) return k.body;
+    throw HarnessError("while waiting for a '" + event + "' event: " + k.body.dump());
 }
 
 json KernelLink::upload(const std::string& header, const std::string& bytes, std::chrono::milliseconds timeout) {

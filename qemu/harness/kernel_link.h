@@ -77,6 +77,7 @@ public:
 
 private:
     void remember(const std::string& prefix, const std::string& line);
+    KernelLine next_line(Clock::time_point deadline, std::chrono::milliseconds timeout, const std::string& what);
 
     LineChannel channel_;
     uint32_t next_seq_ = 1;
