@@ -54,7 +54,8 @@ DEPS := \
 	/usr/share/vgabios/vgabios.bin:vgabios \
 	/usr/lib/grub/x86_64-efi/multiboot.mod:grub-efi-amd64-bin \
 	/usr/lib/grub/i386-efi/multiboot.mod:grub-efi-ia32-bin \
-	/usr/share/ovmf/OVMF.fd:ovmf
+	/usr/share/ovmf/OVMF.fd:ovmf \
+	/usr/share/OVMF/OVMF32_CODE_4M.secboot.fd:ovmf-ia32
 
 # ---- kernel ------------------------------------------------------------------------------------
 

@@ -49,9 +49,14 @@ inline const FramebufferInfo* framebuffer(const Info* info) {
 struct [[gnu::packed]] MemoryRegion {
     uint32_t size;
     uint64_t addr, len;
-    uint32_t type;  // 1: available RAM
+    uint32_t type;  // 1: available RAM; 3: ACPI tables (reclaimable); 4: ACPI NVS; 2: reserved; 5: bad
 };
-// The first address of [lo, hi) that is not RAM, or hi: by the memory map's available regions
+// RAM the kernel may use: available, or kept for ACPI (its tables and its non-volatile storage).
+// UEFI firmware leaves ACPI NVS islands where GRUB EFI loads the kernel all the same (OVMF: at 8 MiB,
+// the 32-bit one up to 23 MiB); the kernel never uses ACPI nor returns to the firmware, so that RAM
+// is as good as any. Reserved regions (MMIO, SMRAM) and bad memory are not.
+constexpr bool usable(uint32_t type) { return type == 1 || type == 3 || type == 4; }
+// The first address of [lo, hi) that is not RAM, or hi: by the memory map's usable regions
 // where there is a map (regions that touch count as one), else by 1 MiB + mem_upper (KiB) where
 // that is given; hi where the loader says nothing.
 inline uint64_t first_not_ram(const Info* info, uint64_t lo, uint64_t hi) {
@@ -61,7 +66,7 @@ inline uint64_t first_not_ram(const Info* info, uint64_t lo, uint64_t hi) {
             moved = false;
             for (uint32_t off = 0; off + sizeof(MemoryRegion) <= info->mmap_length;) {
                 const MemoryRegion* r = reinterpret_cast<const MemoryRegion*>(uintptr_t(info->mmap_addr) + off);
-                if (r->type == 1 && r->addr <= at && at < r->addr + r->len) at = r->addr + r->len, moved = true;
+                if (usable(r->type) && r->addr <= at && at < r->addr + r->len) at = r->addr + r->len, moved = true;
                 off += r->size + 4;
             }
         }

@@ -44,7 +44,7 @@ constexpr int BUDGET_STEP_COUNT = sizeof(BUDGET_STEPS) / sizeof(BUDGET_STEPS[0])
 double budget_order(double e) { return e < 0 ? 1e300 : e; }  // any: above every number
 
 constexpr int MAX_SCENES = 64;
-constexpr int HUD_LINES = 7, HUD_CHARS = 40;
+constexpr int HUD_LINES = 10, HUD_CHARS = 40, HUD_SHARES = 6;
 
 struct Show {
     Options options;
@@ -119,9 +119,9 @@ void compose_hud(Show& s, const worlds::FrameResult& r, uint64_t period) {
     }
     set_line(s, d);
     if (!s.mapper->chooses || pixels == 0) return;
-    // auto: the three mappers that drew the most pixels, with their shares
+    // auto: the mappers that drew pixels, the most first, with their shares
     bool listed[raster::MAPPER_LIMIT] = {};
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < HUD_SHARES; ++k) {
         int best = -1;
         for (int i = 0; i < raster::MAPPER_COUNT; ++i)
             if (!listed[i] && r.render.stats.mapper_pixels[i] > 0 && (best < 0 || r.render.stats.mapper_pixels[i] > r.render.stats.mapper_pixels[best])) best = i;

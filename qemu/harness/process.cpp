@@ -26,7 +26,9 @@ namespace {
 
 std::string errno_text(const std::string& what) { return what + ": " + std::strerror(errno); }
 
-constexpr const char* OVMF = "/usr/share/ovmf/OVMF.fd";
+constexpr const char* OVMF64 = "/usr/share/ovmf/OVMF.fd";
+constexpr const char* OVMF32_CODE = "/usr/share/OVMF/OVMF32_CODE_4M.secboot.fd";
+constexpr const char* OVMF32_VARS = "/usr/share/OVMF/OVMF32_VARS_4M.fd";
 
 int listen_unix(const std::string& path) {
     int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
@@ -88,7 +90,8 @@ std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& 
                                         const std::string& qmp_socket) {
     std::vector<std::string> a = {
         // (OVMF keeps more of 128 MiB for itself than the kernel's 70 MiB at 16 MiB leave: 256 there)
-        "-machine", "pc,accel=tcg", "-m", c.uefi ? "256" : "128", "-vga", "std", "-no-reboot",
+        "-machine", c.firmware == Firmware::Uefi32 ? "q35,smm=on,accel=tcg" : "pc,accel=tcg", "-m", c.firmware == Firmware::Bios ? "128" : "256",
+        "-vga", "std", "-no-reboot",
         "-device", "isa-debug-exit,iobase=0xf4,iosize=0x04",
         "-chardev", "socket,id=com1,path=" + serial_socket + ",logfile=" + c.run_dir + "/serial.log",
         "-serial", "chardev:com1",
@@ -98,7 +101,11 @@ std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& 
     };
     if (!c.display) a.insert(a.end(), {"-display", "none"});
     if (c.icount) a.insert(a.end(), {"-icount", "shift=0,align=off,sleep=off"});
-    if (c.uefi) a.insert(a.end(), {"-bios", OVMF});
+    if (c.firmware == Firmware::Uefi64) a.insert(a.end(), {"-bios", OVMF64});
+    if (c.firmware == Firmware::Uefi32)  // (the variable store copied: the firmware writes it)
+        a.insert(a.end(), {"-global", "driver=cfi.pflash01,property=secure,value=on", "-drive",
+                           std::string("if=pflash,format=raw,unit=0,readonly=on,file=") + OVMF32_CODE, "-drive",
+                           "if=pflash,format=raw,unit=1,file=" + c.run_dir + "/ovmf32-vars.fd"});
     switch (c.medium) {
     case BootMedium::Kernel:
         a.insert(a.end(), {"-kernel", c.image});
@@ -160,7 +167,9 @@ QemuProcess::QemuProcess(const QemuConfig& config) {
     int qmp_listen = listen_unix(qmp_path);
 
     std::vector<std::string> args = qemu_arguments(config, serial_path, qmp_path);
-    args.insert(args.begin(), config.uefi ? "qemu-system-x86_64" : "qemu-system-i386");
+    args.insert(args.begin(), config.firmware == Firmware::Uefi64 ? "qemu-system-x86_64" : "qemu-system-i386");
+    if (config.firmware == Firmware::Uefi32)
+        std::filesystem::copy_file(OVMF32_VARS, config.run_dir + "/ovmf32-vars.fd", std::filesystem::copy_options::overwrite_existing);
     std::vector<char*> argv;
     for (auto& s : args) argv.push_back(s.data());
     argv.push_back(nullptr);

@@ -16,10 +16,14 @@ namespace harness {
 
 enum class BootMedium { Kernel, Cdrom, Usb };
 enum class Emulator { Qemu, Bochs };
+// QEMU's firmware: SeaBIOS (a PC with a BIOS), or OVMF, UEFI without a CSM: 64-bit (Debian's ovmf,
+// qemu-system-x86_64, the pc machine) or 32-bit (ovmf-ia32, qemu-system-i386, q35 with SMM: its
+// build has Secure Boot, off with the empty variable store).
+enum class Firmware { Bios, Uefi64, Uefi32 };
 
 struct QemuConfig {
     Emulator emulator = Emulator::Qemu;  // Bochs: the CD (an ISO) only, no icount, no display
-    bool uefi = false;  // QEMU: qemu-system-x86_64 with OVMF (Debian's ovmf: a 64-bit UEFI PC), not a BIOS
+    Firmware firmware = Firmware::Bios;  // QEMU's
     BootMedium medium = BootMedium::Kernel;
     std::string image;       // the ELF (-kernel) or the ISO (CD or USB stick)
     std::string append;      // multiboot command line, -kernel only

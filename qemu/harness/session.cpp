@@ -34,7 +34,7 @@ Session::Session(SessionOptions options) : options_(std::move(options)) {
     config.icount = options_.icount;
     config.run_dir = run_dir_;
     config.emulator = options_.emulator;
-    config.uefi = options_.uefi;
+    config.firmware = options_.firmware;
     qemu_ = std::make_unique<QemuProcess>(config);
     link_ = KernelLink(qemu_->take_serial());
     if (options_.emulator == Emulator::Qemu) qmp_ = QmpClient(qemu_->take_qmp());

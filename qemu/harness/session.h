@@ -25,7 +25,7 @@ std::string build_dir();
 
 struct SessionOptions {
     Emulator emulator = Emulator::Qemu;  // Bochs: medium Cdrom; no screendump, no send-key
-    bool uefi = false;                   // QEMU with OVMF (an ISO: medium Cdrom or Usb)
+    Firmware firmware = Firmware::Bios;  // QEMU's (UEFI: an ISO, medium Cdrom or Usb)
     BootMedium medium = BootMedium::Kernel;
     std::string image;                 // empty: build/kernel/modexlab.elf, or build/modexlab.iso for CD/USB
     std::string append = "boot=serve"; // -kernel only; an ISO boots its GRUB menu's default entry

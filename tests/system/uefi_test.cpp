@@ -1,4 +1,4 @@
-// A UEFI-only PC: the ISO booted by OVMF (qemu-system-x86_64) through GRUB EFI, which hands the
+// A UEFI-only PC, 64-bit and 32-bit firmware: the ISO booted by OVMF through GRUB EFI, which hands the
 // kernel the firmware's framebuffer (the Multiboot header's video fields); the kernel keeps its Mode
 // X pages in RAM and draws each flip into the framebuffer, scaled and centred. Every screen equals
 // the host's picture scaled the same way, colour for colour, the show's HUD and keys included; the
@@ -37,9 +37,11 @@ void expect_screen(Session& s, const IndexImage& want, const raster::Palette& pa
     EXPECT_EQ(differing, 0u) << stem << ": screendump pixels differ (see " << s.run_dir() << "/" << stem << "{,-expected}.png)";
 }
 
-TEST(Uefi, TheIsoBootsByOvmfAndDrawsIntoTheFramebuffer) {
+class Uefi : public testing::TestWithParam<Firmware> {};
+
+TEST_P(Uefi, TheIsoBootsByOvmfAndDrawsIntoTheFramebuffer) {
     SessionOptions o = options_for_this_test();
-    o.uefi = true;
+    o.firmware = GetParam();
     o.medium = BootMedium::Cdrom;
     o.boot_timeout = std::chrono::seconds(120);
     Session s(o);
@@ -86,5 +88,8 @@ TEST(Uefi, TheIsoBootsByOvmfAndDrawsIntoTheFramebuffer) {
     expect_screen(s, want, host.world->palette, "cube-37");
     EXPECT_FALSE(s.ok("selftest 10")["vga_loops_checked"].get<bool>());
 }
+
+INSTANTIATE_TEST_SUITE_P(Firmware, Uefi, testing::Values(Firmware::Uefi64, Firmware::Uefi32),
+                         [](const testing::TestParamInfo<Firmware>& i) { return i.param == Firmware::Uefi64 ? "x64" : "ia32"; });
 
 }  // namespace
