@@ -415,7 +415,11 @@ soak: deps
 
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
-	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(FUZZ_REPLAY) $(TESTS)
+	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(FUZZ_REPLAY) '$(TESTS)::$(OTHER_MACHINES)' '$(TESTS)::-$(OTHER_MACHINES)'
+
+# The system tests on machines other than QEMU's BIOS PC (Bochs, UEFI), some 45 s: make test runs
+# them in the foreground after the 32-bit and sanitizer tests, beside the rest of the tests.
+OTHER_MACHINES := Bochs.*:Firmware/Uefi.*
 
 # `make test-bochs`: the Bochs tier alone (tests/system/bochs_test.cpp; make test runs it too)
 test-bochs: deps

@@ -366,6 +366,10 @@ bool flip(int page) {
     return ok;
 }
 
+void refresh() {
+    if (g_fb_on && (g_mode == Mode::ModeX || g_mode == Mode::Mode13h)) present(g_shown_page);
+}
+
 void clear_page(int page, uint8_t colour) {
     if (g_fb_on) {
         for (uint8_t& b : g_ram_pages[page]) b = colour;

@@ -66,6 +66,10 @@ volatile uint8_t* page_base(int page);  // Mode X: plane offset of the page; 13h
 // is, once vertical retrace has begun; false if the retrace never came (bounded wait).
 bool flip(int page);
 
+// After drawing into the shown page: the framebuffer backend draws it again (a VGA shows its
+// memory as it changes: nothing to do).
+void refresh();
+
 void clear_page(int page, uint8_t colour);
 
 // The page's pixels as palette indices, row-major, width x height() bytes into `out`.

@@ -191,7 +191,7 @@ void table_page(const Setup& s, int scene, int part, int parts, Page* p) {
             inner.tenths(tenths_per_pixel(r.ticks_inner, r.pixels));
             frame.tenths(tenths_per_pixel(r.ticks_frame, r.pixels));
         } else {
-            inner.s("-"), frame.s("refused");
+            inner.s("-"), frame.s(r.interrupted ? "stopped" : "refused");
         }
         put_error(err, r.error);
         field(line, inner, 7), field(line, frame, 8), field(line, err, 5);
@@ -312,6 +312,7 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
             lib::StrView l{line.c_str(), lib::c_length(line.c_str())};
             raster::Target t = vga::page_target(vga::shown_page());
             raster::draw_text_box(t, 0, 0, &l, 1, colours);
+            vga::refresh();
         }
     }
     build_csv(s);
