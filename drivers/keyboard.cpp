@@ -47,7 +47,7 @@ bool to_keyboard(uint8_t byte) {
 // The ring: the IRQ handler writes at head, the show reads at tail (one writer, one reader).
 constexpr uint32_t RING = 64;
 volatile uint8_t g_ring[RING];
-volatile uint32_t g_head = 0, g_tail = 0, g_dropped = 0;
+volatile uint32_t g_head = 0, g_tail = 0;
 
 }  // namespace
 
@@ -90,16 +90,11 @@ bool next_byte(uint8_t* out) {
     return true;
 }
 
-uint32_t dropped() { return g_dropped; }
-
 void on_irq() {
     // the controller raised IRQ 1 with a byte in its output buffer
     const uint8_t byte = io::inb(DATA);
     const uint32_t head = g_head;
-    if (head - g_tail >= RING) {
-        g_dropped = g_dropped + 1;
-        return;
-    }
+    if (head - g_tail >= RING) return;  // full: the show has not read them (the byte is lost)
     g_ring[head % RING] = byte;
     g_head = head + 1;
 }

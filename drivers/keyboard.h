@@ -25,9 +25,6 @@ bool next_byte(uint8_t* out);
 // IRQ 1: the byte in the controller's output buffer into the ring (irq_handler calls it).
 void on_irq();
 
-// Bytes dropped because the ring was full (the show did not read them in time).
-uint32_t dropped();
-
 }  // namespace keyboard
 
 // The IRQ handler (boot/isr.asm's stubs call it with the IRQ number, 0..15).

@@ -108,7 +108,8 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     if (info->flags & multiboot::INFO_FRAMEBUFFER) {
         const multiboot::FramebufferInfo* f = multiboot::framebuffer(info);
         vga::Framebuffer fb;
-        fb.base = f->addr < 0xFFFFFFFFull ? reinterpret_cast<uint8_t*>(uintptr_t(f->addr)) : nullptr;  // (identity-mapped: guard.h)
+        const uint64_t end = f->addr + uint64_t(f->pitch) * f->height;  // (all of it below 4 GiB: identity-mapped, guard.h)
+        fb.base = end <= 0x100000000ull ? reinterpret_cast<uint8_t*>(uintptr_t(f->addr)) : nullptr;
         fb.pitch = f->pitch, fb.width = f->width, fb.height = f->height, fb.bpp = f->bpp;
         fb.red_position = f->red_position, fb.red_size = f->red_size, fb.green_position = f->green_position;
         fb.green_size = f->green_size, fb.blue_position = f->blue_position, fb.blue_size = f->blue_size;
