@@ -339,7 +339,7 @@ bench report: deps
 	@$(MAKE) -s -j$(NPROC) $(KERNEL) $(BENCH) $(CYCLES) $(GALLERY)
 	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
 		$(if $(FRAMES),--frames $(FRAMES))
-	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "cost model and measured errors not copied (a narrowed run): $(BUILD)/report/costs.cpp, errors.cpp",\
+	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "cost model and measured errors not copied (a narrowed run): $(BUILD)/report/costs.cpp and errors.cpp",\
 		cmp -s $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model unchanged" || \
 		{ cp $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model updated: kernel/mappers/costs.cpp (commit it)"; }; \
 		cmp -s $(BUILD)/report/errors.cpp kernel/mappers/errors.cpp && echo "measured errors unchanged" || \

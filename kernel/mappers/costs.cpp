@@ -5,34 +5,34 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1783.3f, 362.01f, 40.229f}, // 10 scenes
-    {"exact", 1559.6f, 316.48f, 80.207f}, // 10 scenes
-    {"persp-subdiv-4", 1559.6f, 326.45f, 94.387f}, // 10 scenes
-    {"persp-subdiv-8", 1559.6f, 384.02f, 60.919f}, // 10 scenes
-    {"persp-subdiv-16", 1559.6f, 425.02f, 44.045f}, // 10 scenes
-    {"persp-subdiv-32", 1559.6f, 446.47f, 35.799f}, // 10 scenes
-    {"constant-depth", 1559.6f, 463.61f, 29.732f}, // 10 scenes
-    {"persp-adaptive-0.5", 1559.6f, 934.33f, 323.006f}, // 10 scenes
-    {"persp-adaptive-1", 1559.6f, 1103.47f, 51.460f}, // 10 scenes
-    {"persp-adaptive-2", 1559.6f, 1120.60f, 44.187f}, // 10 scenes
-    {"persp-adaptive-4", 1559.6f, 1132.76f, 39.946f}, // 10 scenes
-    {"fast-affine", 1859.3f, 163.51f, 3.995f}, // 10 scenes
-    {"fast-columns", 1861.9f, 257.43f, 5.413f}, // 10 scenes
-    {"fast-subdiv-8", 1581.6f, 297.63f, 13.476f}, // 10 scenes
-    {"fast-subdiv-16", 1581.6f, 307.40f, 9.553f}, // 10 scenes
-    {"fast-subdiv-32", 1581.6f, 312.25f, 7.654f}, // 10 scenes
-    {"fast-constant-depth", 1581.6f, 316.59f, 6.095f}, // 10 scenes
-    {"fast-adaptive-1", 1581.6f, 339.91f, 9.235f}, // 10 scenes
-    {"fast-adaptive-2", 1581.6f, 343.50f, 7.811f}, // 10 scenes
-    {"xsharp-dda", 1586.0f, 385.24f, 37.860f}, // 9 scenes
-    {"xsharp-row-out", 1591.0f, 520.57f, 19.359f}, // 9 scenes
-    {"xsharp-column", 1592.6f, 490.04f, 13.113f}, // 9 scenes
-    {"hecker-steptable", 5550.5f, 0.00f, 636.613f}, // 9 scenes
-    {"fatmap-256", 1964.2f, 174.38f, 13.261f}, // 8 scenes
-    {"fatmap-256-16", 1964.2f, 179.38f, 12.261f}, // 8 scenes
-    {"fatmap-lut", 2580.7f, 177.99f, 9.631f}, // 7 scenes
-    {"quake-subdiv16", 2084.0f, 311.61f, 13.667f}, // 9 scenes
-    {"quake-subdiv8", 2084.0f, 296.24f, 20.028f}, // 9 scenes
+    {"affine", 1785.3f, 361.55f, 40.238f}, // 10 scenes
+    {"exact", 1561.6f, 316.02f, 80.216f}, // 10 scenes
+    {"persp-subdiv-4", 1561.6f, 325.99f, 94.396f}, // 10 scenes
+    {"persp-subdiv-8", 1561.6f, 383.56f, 60.928f}, // 10 scenes
+    {"persp-subdiv-16", 1561.6f, 424.55f, 44.054f}, // 10 scenes
+    {"persp-subdiv-32", 1561.6f, 446.01f, 35.808f}, // 10 scenes
+    {"constant-depth", 1561.6f, 463.14f, 29.741f}, // 10 scenes
+    {"persp-adaptive-0.5", 1561.6f, 933.87f, 323.015f}, // 10 scenes
+    {"persp-adaptive-1", 1561.6f, 1103.01f, 51.469f}, // 10 scenes
+    {"persp-adaptive-2", 1561.6f, 1120.14f, 44.196f}, // 10 scenes
+    {"persp-adaptive-4", 1561.6f, 1132.29f, 39.955f}, // 10 scenes
+    {"fast-affine", 1861.3f, 163.04f, 4.004f}, // 10 scenes
+    {"fast-columns", 1863.9f, 258.88f, 5.425f}, // 10 scenes
+    {"fast-subdiv-8", 1583.6f, 297.17f, 13.487f}, // 10 scenes
+    {"fast-subdiv-16", 1583.6f, 306.93f, 9.563f}, // 10 scenes
+    {"fast-subdiv-32", 1583.6f, 311.79f, 7.663f}, // 10 scenes
+    {"fast-constant-depth", 1583.6f, 316.13f, 6.105f}, // 10 scenes
+    {"fast-adaptive-1", 1583.6f, 339.44f, 9.245f}, // 10 scenes
+    {"fast-adaptive-2", 1583.6f, 343.03f, 7.820f}, // 10 scenes
+    {"xsharp-dda", 1588.0f, 384.75f, 37.871f}, // 9 scenes
+    {"xsharp-row-out", 1593.0f, 520.08f, 19.371f}, // 9 scenes
+    {"xsharp-column", 1594.6f, 491.50f, 13.125f}, // 9 scenes
+    {"hecker-steptable", 5552.8f, 0.00f, 636.594f}, // 9 scenes
+    {"fatmap-256", 1966.3f, 173.88f, 13.276f}, // 8 scenes
+    {"fatmap-256-16", 1966.3f, 178.88f, 12.276f}, // 8 scenes
+    {"fatmap-lut", 2582.8f, 177.49f, 9.648f}, // 7 scenes
+    {"quake-subdiv16", 2086.0f, 311.14f, 13.677f}, // 9 scenes
+    {"quake-subdiv8", 2086.0f, 295.77f, 20.038f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
