@@ -133,14 +133,16 @@ void present(int page) {
         colour[i] = put(raster::widen6(e.r), g_fb.red_position, g_fb.red_size) | put(raster::widen6(e.g), g_fb.green_position, g_fb.green_size) |
                     put(raster::widen6(e.b), g_fb.blue_position, g_fb.blue_size);
     }
+    // (Mode X's planes as a linear picture first: one loop for both modes)
+    static uint8_t linear[raster::SCREEN_PIXELS];
     const uint8_t* src = g_ram_pages[page];
+    if (g_mode == Mode::ModeX) raster::linear_from_planar(src, linear), src = linear;
     const uint32_t bytes = g_fb.bpp / 8;
     for (int y = 0; y < h; ++y)
         for (uint32_t dy = 0; dy < at.scale; ++dy) {
             uint8_t* line = g_fb.base + (at.y + uint32_t(y) * at.scale + dy) * g_fb.pitch + at.x * bytes;
             for (int x = 0; x < WIDTH; ++x) {
-                const uint8_t index = g_mode == Mode::ModeX ? src[(x & 3) * raster::PLANE_BYTES + y * MODEX_ROW_BYTES + (x >> 2)] : src[y * WIDTH + x];
-                const uint32_t c = colour[index];
+                const uint32_t c = colour[src[y * WIDTH + x]];
                 for (uint32_t dx = 0; dx < at.scale; ++dx, line += bytes) {
                     if (bytes == 4) *reinterpret_cast<volatile uint32_t*>(line) = c;
                     else if (bytes == 2) *reinterpret_cast<volatile uint16_t*>(line) = uint16_t(c);
@@ -269,8 +271,7 @@ bool enable_bochs_vbe_640x480() {
 
 // The framebuffer backend's mode change: the pages cleared, the screen black.
 void set_ram_mode(Mode m) {
-    for (auto& page : g_ram_pages)
-        for (uint8_t& b : page) b = 0;
+    memset(g_ram_pages, 0, sizeof g_ram_pages);
     clear_framebuffer();
     g_mode = m;
     g_shown_page = 0;
@@ -372,7 +373,7 @@ void refresh() {
 
 void clear_page(int page, uint8_t colour) {
     if (g_fb_on) {
-        for (uint8_t& b : g_ram_pages[page]) b = colour;
+        memset(g_ram_pages[page], colour, sizeof g_ram_pages[page]);
         return;
     }
     volatile uint8_t* base = page_base(page);
@@ -386,11 +387,7 @@ void clear_page(int page, uint8_t colour) {
 }
 
 void read_page(int page, uint8_t* out) {
-    if (g_fb_on && g_mode == Mode::ModeX) {
-        for (int y = 0; y < MODEX_HEIGHT; ++y)
-            for (int x = 0; x < WIDTH; ++x) out[y * WIDTH + x] = g_ram_pages[page][(x & 3) * raster::PLANE_BYTES + y * MODEX_ROW_BYTES + (x >> 2)];
-        return;
-    }
+    if (g_fb_on && g_mode == Mode::ModeX) return raster::linear_from_planar(g_ram_pages[page], out);
     volatile const uint8_t* base = page_base(page);
     if (g_mode != Mode::ModeX) {
         for (int i = 0; i < WIDTH * height(); ++i) out[i] = base[i];
@@ -408,7 +405,7 @@ void read_page(int page, uint8_t* out) {
 
 void blit_planar(const uint8_t* planes, int page) {
     if (g_fb_on) {
-        for (int32_t i = 0; i < raster::SCREEN_PIXELS; ++i) g_ram_pages[page][i] = planes[i];
+        memcpy(g_ram_pages[page], planes, sizeof g_ram_pages[page]);
         return;
     }
     volatile uint8_t* base = page_base(page);
