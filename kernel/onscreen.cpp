@@ -325,10 +325,10 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
     }
     int k = 0;
     show_page(s, k, colours);
+    const int last = page_count(s) - 1;
     for (;;) {
         if (serial::byte_ready()) return false;
         const lib::Key key = next_key(ctx);
-        const int last = page_count(s) - 1;
         if (key == lib::Key::Escape || key == lib::Key::B) return true;
         if ((key == lib::Key::Right || key == lib::Key::N || key == lib::Key::Space || key == lib::Key::PageDown) && k < last) show_page(s, ++k, colours);
         if ((key == lib::Key::Left || key == lib::Key::P || key == lib::Key::PageUp) && k > 0) show_page(s, --k, colours);

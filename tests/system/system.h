@@ -66,11 +66,10 @@ inline ToolRun run_command(const std::string& command) {
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, out};
 }
 
-// The screendump against the picture as QEMU shows it in the palette, compared by colour (some
-// scenes' palettes repeat a colour, so a dump does not always decode to indices); on a difference
-// the expected picture is saved beside the dump, RUN_DIR/STEM-expected.png.
-inline void expect_screendump(Session& s, const IndexImage& want, const raster::Palette& palette, const std::string& stem) {
-    RgbImage dump = s.screendump(stem), expected = screendump_of(want, palette);
+// The screendump against the expected screen, colour for colour; on a difference the expected
+// picture is saved beside the dump, RUN_DIR/STEM-expected.png.
+inline void expect_screendump_rgb(Session& s, const RgbImage& expected, const std::string& stem) {
+    RgbImage dump = s.screendump(stem);
     ASSERT_EQ(dump.width, expected.width);
     ASSERT_EQ(dump.height, expected.height);
     size_t differing = 0;
@@ -78,6 +77,12 @@ inline void expect_screendump(Session& s, const IndexImage& want, const raster::
         differing += dump.rgb[i] != expected.rgb[i] || dump.rgb[i + 1] != expected.rgb[i + 1] || dump.rgb[i + 2] != expected.rgb[i + 2];
     if (differing) save_png(s.run_dir() + "/" + stem + "-expected.png", expected);
     EXPECT_EQ(differing, 0u) << stem << ": screendump pixels differ (see " << s.run_dir() << "/" << stem << "{,-expected}.png)";
+}
+
+// The same against a picture as QEMU's VGA shows it in the palette (compared by colour: some
+// scenes' palettes repeat a colour, so a dump does not always decode to indices).
+inline void expect_screendump(Session& s, const IndexImage& want, const raster::Palette& palette, const std::string& stem) {
+    expect_screendump_rgb(s, screendump_of(want, palette), stem);
 }
 
 // The screen as the show should have it after a key: the frame the event names, drawn on the host

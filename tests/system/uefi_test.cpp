@@ -27,14 +27,11 @@ RgbImage scaled(const IndexImage& picture, const raster::Palette& palette, int w
     return out;
 }
 
+// The screen after a flip: the picture scaled into a framebuffer of the screendump's size (the
+// framebuffer's own: the boot line's width and height).
 void expect_screen(Session& s, const IndexImage& want, const raster::Palette& palette, const std::string& stem) {
-    RgbImage dump = s.screendump(stem);
-    RgbImage expected = scaled(want, palette, dump.width, dump.height);
-    size_t differing = 0;
-    for (size_t i = 0; i < dump.rgb.size(); i += 3)
-        differing += dump.rgb[i] != expected.rgb[i] || dump.rgb[i + 1] != expected.rgb[i + 1] || dump.rgb[i + 2] != expected.rgb[i + 2];
-    if (differing) save_png(s.run_dir() + "/" + stem + "-expected.png", expected);
-    EXPECT_EQ(differing, 0u) << stem << ": screendump pixels differ (see " << s.run_dir() << "/" << stem << "{,-expected}.png)";
+    const json& fb = s.boot_line()["framebuffer"];
+    expect_screendump_rgb(s, scaled(want, palette, fb["width"], fb["height"]), stem);
 }
 
 class Uefi : public testing::TestWithParam<Firmware> {};
