@@ -13,13 +13,15 @@ bool in_range(const Vertex& v) {
     return v.w >= MIN_W && v.w <= MAX_W && magnitude(v.u) <= MAX_UV && magnitude(v.v) <= MAX_UV;
 }
 
-int64_t edge_function(const Edge& e, int64_t x, int64_t y) { return e.dx * (y - e.py) - e.dy * (x - e.px); }
+int64_t edge_function(const Edge& e, int64_t x, int64_t y) { return int64_t(e.dx) * (y - e.py) - int64_t(e.dy) * (x - e.px); }
 
-// Twice the signed area of triangle (a, b, c): the cross product (b - a) x (c - a).
+// Twice the signed area of triangle (a, b, c): the cross product (b - a) x (c - a). The corners are
+// in range (within 2^22 subpixels): the differences fit in 32 bits, and each product of two is one
+// 32 x 32 -> 64-bit multiply on i686 (three for a 64 x 64 one).
 int64_t fan_area2(const Vertex& a, const Vertex& b, const Vertex& c) {
-    int64_t xb = int64_t(b.x.raw) - a.x.raw, yb = int64_t(b.y.raw) - a.y.raw;
-    int64_t xc = int64_t(c.x.raw) - a.x.raw, yc = int64_t(c.y.raw) - a.y.raw;
-    return xb * yc - xc * yb;
+    int32_t xb = b.x.raw - a.x.raw, yb = b.y.raw - a.y.raw;
+    int32_t xc = c.x.raw - a.x.raw, yc = c.y.raw - a.y.raw;
+    return int64_t(xb) * yc - int64_t(xc) * yb;
 }
 
 // How often the outline's direction along y (or x) reverses, going once round; edges along the
@@ -78,20 +80,20 @@ template <int N>
         Edge& e = s.edges[i];
         e.px = a.x.raw;
         e.py = a.y.raw;
-        e.dx = int64_t(b.x.raw) - a.x.raw;
-        e.dy = int64_t(b.y.raw) - a.y.raw;
+        e.dx = b.x.raw - a.x.raw;
+        e.dy = b.y.raw - a.y.raw;
         // top edge: horizontal with the inside below (dx > 0); left edge: going up (dy < 0)
         e.threshold = (e.dy < 0 || (e.dy == 0 && e.dx > 0)) ? 0 : 1;
     }
-    s.min_x = s.max_x = v[0]->x.raw;
-    s.min_y = s.max_y = v[0]->y.raw;
+    int32_t min_x = v[0]->x.raw, max_x = min_x, min_y = v[0]->y.raw, max_y = min_y;  // (in 32 bits, then widened)
 #pragma GCC unroll 4
     for (int i = 1; i < n; ++i) {
-        if (v[i]->x.raw < s.min_x) s.min_x = v[i]->x.raw;
-        if (v[i]->x.raw > s.max_x) s.max_x = v[i]->x.raw;
-        if (v[i]->y.raw < s.min_y) s.min_y = v[i]->y.raw;
-        if (v[i]->y.raw > s.max_y) s.max_y = v[i]->y.raw;
+        if (v[i]->x.raw < min_x) min_x = v[i]->x.raw;
+        if (v[i]->x.raw > max_x) max_x = v[i]->x.raw;
+        if (v[i]->y.raw < min_y) min_y = v[i]->y.raw;
+        if (v[i]->y.raw > max_y) max_y = v[i]->y.raw;
     }
+    s.min_x = min_x, s.max_x = max_x, s.min_y = min_y, s.max_y = max_y;
     if (n > 3) {  // (a triangle with positive area is convex and winds once)
         // Convex: every vertex on the inner side of (or on) every edge. Exact; rejects stars too.
         // (An edge's own ends lie on it. Within a box under 2^15 subpixels a side, 128 pixels,
@@ -147,18 +149,24 @@ template <int N>
     s.v = plane_through(va.v, vb.v, vc.v, xb, yb, xc, yc, d);
     // the fixed-point planes: anchored at the pixel whose centre is nearest the reference vertex;
     // the anchor value reduced modulo 65536 texels (what 16.16 holds), which changes no texel
-    int32_t x0 = int32_t(floor_div(s.ref_x, SUBPIXEL_ONE)), y0 = int32_t(floor_div(s.ref_y, SUBPIXEL_ONE));
-    double ax = centre_x(s, x0), ay = centre_y(s, y0);
+    // (the shifts floor; the anchor pixel holds the reference vertex, so its centre is within a
+    // pixel of it, in 32 bits as for a span)
+    const int32_t x0 = int32_t(s.ref_x >> SUBPIXEL_BITS), y0 = int32_t(s.ref_y >> SUBPIXEL_BITS);
+    const double ax = span_centre_x(s, x0), ay = span_centre_y(s, y0);
     const Plane* affine[2] = {&s.u, &s.v};
     FixedPlane* fixed[2] = {&s.u_fx, &s.v_fx};
     for (int k = 0; k < 2; ++k) {
-        double at = affine[k]->at(ax, ay);
-        at -= 65536.0 * double(floor_i64(at / 65536.0));
         fixed[k]->x0 = x0;
         fixed[k]->y0 = y0;
-        fixed[k]->at = int32_t(uint32_t(floor_i64(at * 65536.0 + 0.5)));
         fixed[k]->dx = Fixed16_16::from_double(affine[k]->gx * double(SUBPIXEL_ONE)).raw;
         fixed[k]->dy = Fixed16_16::from_double(affine[k]->gy * double(SUBPIXEL_ONE)).raw;
+        double at = affine[k]->at(ax, ay);
+        if (at >= 0 && at < 16384.0) {  // the reduction below leaves it as it is: one 32-bit floor
+            fixed[k]->at = floor_small(at * 65536.0 + 0.5);
+            continue;
+        }
+        at -= 65536.0 * double(floor_i64(at / 65536.0));
+        fixed[k]->at = int32_t(uint32_t(floor_i64(at * 65536.0 + 0.5)));
     }
     return SetupStatus::Ok;
 }

@@ -36,9 +36,11 @@ struct ClipRect {
 // Edge i runs from vertex i to vertex i+1 of the polygon in clockwise screen order (y down);
 // E(P) = dx * (P.y - py) - dy * (P.x - px) is positive inside. A pixel centre P is inside
 // when E(P) >= threshold for every edge: threshold 0 on top and left edges, 1 on the others.
+// (32 bits hold them: coordinates within 2^22 subpixels, so differences within 2^23; products are
+// taken in 64 bits.)
 struct Edge {
-    int64_t px, py;  // start vertex, subpixels
-    int64_t dx, dy;  // direction, subpixels
+    int32_t px, py;  // start vertex, subpixels
+    int32_t dx, dy;  // direction, subpixels
     int32_t threshold;
 };
 

@@ -55,29 +55,34 @@ void EdgeBound::init(I m, I divisor, I increment) {
 
 EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) : axis_(axis) {
     const bool rows = axis == Axis::Rows;
+    // (the box is within setup's range, 2^22 subpixels: 32 bits hold it and its sides)
+    const int32_t min_x = int32_t(s.min_x), min_y = int32_t(s.min_y), max_x = int32_t(s.max_x), max_y = int32_t(s.max_y);
     // lines whose centre lies within the bounding box, inside the clip rectangle
-    int64_t first = first_line(rows ? s.min_y : s.min_x);
-    int64_t last = last_line(rows ? s.max_y : s.max_x);
-    int32_t clip_lo = rows ? clip.y0 : clip.x0, clip_hi = (rows ? clip.y1 : clip.x1) - 1;
+    int32_t first = first_line(rows ? min_y : min_x);
+    int32_t last = last_line(rows ? max_y : max_x);
+    const int32_t clip_lo = rows ? clip.y0 : clip.x0, clip_hi = (rows ? clip.y1 : clip.x1) - 1;
     if (first < clip_lo) first = clip_lo;
     if (last > clip_hi) last = clip_hi;
     minor_lo_ = rows ? clip.x0 : clip.y0;
     minor_hi_ = (rows ? clip.x1 : clip.y1) - 1;
-    line_ = int32_t(first);
-    last_line_ = int32_t(first) - 1;  // empty (and the bounds never looked at) until proven otherwise
+    line_ = first;
+    last_line_ = first - 1;  // empty (and the bounds never looked at) until proven otherwise
     if (first > last) return;
     // A polygon whose box is under 64 pixels a side is walked in 32 bits, its coordinates taken
     // from the pixel corner at or below its box (every product and numerator below 2^30; on i686
     // 64-bit products and divisions are several instructions or a libgcc call each). The bounds
     // come out the same: moving the polygon and the pixel grid by whole pixels moves each bound's
     // quotient by as many pixels and leaves its remainder.
-    constexpr int64_t SMALL = int64_t(64) << SUBPIXEL_BITS;
+    constexpr int32_t SMALL = 64 << SUBPIXEL_BITS;
     // (a triangle's loops unrolled: most polygons of a mesh are small triangles)
-    if (s.max_x - s.min_x < SMALL && s.max_y - s.min_y < SMALL) {
-        if (s.edge_count == 3)
-            build<int32_t, 3>(s, int32_t(first), int32_t(last), s.min_x >> SUBPIXEL_BITS, s.min_y >> SUBPIXEL_BITS);  // (floors)
+    if (max_x - min_x < SMALL && max_y - min_y < SMALL) {
+        const int32_t ox = min_x >> SUBPIXEL_BITS, oy = min_y >> SUBPIXEL_BITS;  // (floors)
+        if (s.edge_count == 3 && rows)
+            build_triangle<true>(s, first, last, ox, oy);
+        else if (s.edge_count == 3)
+            build_triangle<false>(s, first, last, ox, oy);
         else
-            build<int32_t, 0>(s, int32_t(first), int32_t(last), s.min_x >> SUBPIXEL_BITS, s.min_y >> SUBPIXEL_BITS);
+            build<int32_t, 0>(s, first, last, ox, oy);
     } else {
         build<int64_t, 0>(s, first, last, 0, 0);
     }
@@ -151,6 +156,111 @@ void EdgeWalker::build(const PolygonSetup& s, I first, I last, int64_t origin_x,
     }
     seal(lower_, lower_count, INT32_MIN);
     seal(upper_, upper_count, INT32_MAX);
+}
+
+namespace {
+
+// floor(n / d) and n - floor(n / d) * d, d > 0: one IDIV gives both (truncated), then the step down
+[[gnu::always_inline]] inline void floor_div_rem32(int32_t n, int32_t d, int32_t* q, uint32_t* r) {
+    int32_t quotient = n / d, remainder = n % d;
+    if (remainder < 0) --quotient, remainder += d;
+    *q = quotient;
+    *r = uint32_t(remainder);
+}
+
+}  // namespace
+
+// build<int32_t, 3>'s arithmetic, term for term (the same bounds to the bit: FillRule's tests walk
+// both). Along the axis: major = the line's coordinate, minor = across it; for rows (major y)
+// E = dmin * (centre - pmaj) - dmaj * (m*256 + 128 - pmin), for columns (major x) its negation.
+template <bool ROWS>
+void EdgeWalker::build_triangle(const PolygonSetup& s, int32_t first, int32_t last, int32_t origin_x, int32_t origin_y) {
+    constexpr int32_t one = int32_t(SUBPIXEL_ONE), half = int32_t(SUBPIXEL_HALF);
+    const int32_t line0 = ROWS ? origin_y : origin_x, minor0 = ROWS ? origin_x : origin_y;
+    const int32_t omaj = line0 * one, omin = minor0 * one;
+    first -= line0, last -= line0;
+    struct Rel {
+        int32_t pmaj, pmin, dmaj, dmin, t;
+    } e[3];
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; ++i) {
+        const Edge& g = s.edges[i];
+        e[i].pmaj = int32_t(ROWS ? g.py : g.px) - omaj;
+        e[i].pmin = int32_t(ROWS ? g.px : g.py) - omin;
+        e[i].dmaj = int32_t(ROWS ? g.dy : g.dx);
+        e[i].dmin = int32_t(ROWS ? g.dx : g.dy);
+        e[i].t = g.threshold;
+    }
+    // E at line L (relative), minor coordinate 0 (the pixel at origin's minor coordinate)
+    auto b_at = [&](const Rel& r, int32_t line) {
+        const int32_t value = r.dmin * (line * one + half - r.pmaj) - r.dmaj * (half - r.pmin);
+        return ROWS ? value : -value;
+    };
+    // an edge along the lines (at most one: the area is positive) cuts whole lines
+    const int32_t base = first;
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; ++i) {
+        if (e[i].dmaj != 0) continue;
+        const int32_t b = b_at(e[i], base), c = (ROWS ? e[i].dmin : -e[i].dmin) * one;
+        if (c > 0) {
+            const int32_t from = base - floor_div32(b - e[i].t, c);  // base + ceil((t - b) / c)
+            if (from > first) first = from;
+        } else {
+            const int32_t to = base + floor_div32(b - e[i].t, -c);
+            if (to < last) last = to;
+        }
+    }
+    if (first > last) return;
+    line_ = first + line0;
+    last_line_ = last + line0;
+
+    // First each edge's lines and chain: a triangle's edges across the lines go both ways, so each
+    // chain has one or two, put in order of first line (ties as they come). Then each bound is
+    // written once, in its place (a Bound assigned whole is a copying loop on i686).
+    int32_t lo[3], hi[3];
+    int lower_edges[2], upper_edges[2];
+    int32_t lower_count = 0, upper_count = 0;
+#pragma GCC unroll 3
+    for (int i = 0; i < 3; ++i) {
+        const Rel& r = e[i];
+        if (r.dmaj == 0) continue;
+        lo[i] = first_line(r.dmaj < 0 ? r.pmaj + r.dmaj : r.pmaj), hi[i] = last_line(r.dmaj < 0 ? r.pmaj : r.pmaj + r.dmaj);
+        if (lo[i] < first) lo[i] = first;
+        if (hi[i] > last) hi[i] = last;
+        if (lo[i] > hi[i]) continue;  // no line's centre within its extent
+        if ((ROWS ? -r.dmaj : r.dmaj) > 0) lower_edges[lower_count++] = i;  // A = -sign * dmaj * 256 > 0
+        else upper_edges[upper_count++] = i;
+    }
+    auto order = [&](int* edges, int32_t count) {
+        if (count == 2 && lo[edges[0]] > lo[edges[1]]) {
+            const int t = edges[0];
+            edges[0] = edges[1], edges[1] = t;
+        }
+    };
+    order(lower_edges, lower_count);
+    order(upper_edges, upper_count);
+    auto fill = [&](Bound& bound, int i, bool lower) {
+        const Rel& r = e[i];
+        const int32_t b = b_at(r, lo[i]), c = (ROWS ? r.dmin : -r.dmin) * one;
+        // lower: m >= ceil((t - B)/A), the numerator falling by C a line; upper: m <= floor((B - t)/-A)
+        const int32_t d = (ROWS == lower ? -r.dmaj : r.dmaj) * one;
+        floor_div_rem32(lower ? r.t - b + d - 1 : b - r.t, d, &bound.q, &bound.r);
+        floor_div_rem32(lower ? -c : c, d, &bound.dq, &bound.dr);
+        bound.d = uint32_t(d);
+        bound.q += minor0;
+        bound.first = lo[i] + line0;
+        bound.last = hi[i] + line0;
+    };
+    for (int32_t k = 0; k < lower_count; ++k) fill(lower_[k], lower_edges[k], true);
+    for (int32_t k = 0; k < upper_count; ++k) fill(upper_[k], upper_edges[k], false);
+    // the sentinels, as seal() makes them
+    auto sentinel = [](Bound& bound, int32_t never) {
+        bound.first = bound.last = INT32_MAX;
+        bound.q = never;
+        bound.dq = 0, bound.r = 0, bound.dr = 0, bound.d = 1;
+    };
+    sentinel(lower_[lower_count], INT32_MIN);
+    sentinel(upper_[upper_count], INT32_MAX);
 }
 
 }  // namespace raster

@@ -93,6 +93,11 @@ private:
     // to the pixel (origin_x, origin_y); N: the polygon's edges where known (3), else 0.
     template <typename I, int N>
     void build(const PolygonSetup& s, I first, I last, int64_t origin_x, int64_t origin_y);
+    // The same for a triangle in 32 bits (its box under 64 pixels a side), written for the mesh's
+    // small triangles: the axis fixed, one division a quotient and its remainder, the chains put in
+    // order as they are built.
+    template <bool ROWS>
+    void build_triangle(const PolygonSetup& s, int32_t first, int32_t last, int32_t origin_x, int32_t origin_y);
     // The tightest of `bound` and the chain's bounds live on `line`; steps those to the next line.
     // Every walked line's centre lies within some edge of each chain, so the cursor stops at a live
     // bound, never at the sentinel; a second one is live only where a vertex lies on the centre.
