@@ -22,7 +22,8 @@ PathKey on_path(const PathKey* keys, int32_t count, double time) {
 }
 
 // A clip-space point on the 320 x 240 screen, snapped to the subpixel grid.
-void project(const ClipVertex& p, Fixed24_8* x, Fixed24_8* y) {
+template <typename P>  // ClipVertex or ClipPoint
+void project(const P& p, Fixed24_8* x, Fixed24_8* y) {
     *x = snap(160.0 + 160.0 * (p.x / p.w));
     *y = snap(120.0 - 120.0 * (p.y / p.w));
 }
@@ -30,10 +31,10 @@ void project(const ClipVertex& p, Fixed24_8* x, Fixed24_8* y) {
 // Twice the signed area of a face in clip space, as seen from the eye: the sum over its fan of
 // det[A, B, C] with rows (x, y, w). Positive: the face's front (counter-clockwise in a right-handed
 // world) is toward the eye, for any w, so faces reaching behind the eye are culled correctly too.
-double facing(const ClipVertex* const* c, int n) {
+double facing(const ClipPoint* const* c, int n) {
     double sum = 0;
     for (int k = 1; k + 1 < n; ++k) {
-        const ClipVertex &a = *c[0], &b = *c[k], &d = *c[k + 1];
+        const ClipPoint &a = *c[0], &b = *c[k], &d = *c[k + 1];
         sum += (a.x * (b.y * d.w - b.w * d.y) - a.y * (b.x * d.w - b.w * d.x)) + a.w * (b.x * d.y - b.y * d.x);
     }
     return sum;
@@ -53,7 +54,7 @@ double distance(const ClipVertex& p, int plane, double near, double far) {
 
 // The outcode of a point: bit k set where it lies outside clip plane k (distance() below 0), all six
 // at once (the same expressions, the guard band's product taken once).
-uint8_t outcode(const ClipVertex& p, double near, double far) {
+uint8_t outcode(const ClipPoint& p, double near, double far) {
     const double band = GUARD_BAND * p.w;
     return uint8_t(int(p.w - near < 0) | int(far - p.w < 0) << 1 | int(band + p.x < 0) << 2 | int(band - p.x < 0) << 3 |
                    int(band + p.y < 0) << 4 | int(band - p.y < 0) << 5);
@@ -83,9 +84,9 @@ View View::of(const Camera& camera, double time) {
     return v;
 }
 
-ClipVertex View::clip(Vec3 p) const {
+ClipPoint View::clip(Vec3 p) const {
     Vec3 d = p - eye;
-    return ClipVertex{focal_x * dot(side, d), focal_y * dot(up, d), dot(forward, d), 0, 0};
+    return ClipPoint{focal_x * dot(side, d), focal_y * dot(up, d), dot(forward, d)};
 }
 
 Placement Placement::of(const Object& o, double time) {
@@ -130,30 +131,32 @@ struct SortBuffers {
     uint32_t* key[2];    // what they are sorted by
     uint32_t* other[2];  // the rest of the key, carried along
     int32_t* at[2];      // the entries' indices, carried along
+    int32_t* count;      // room for the digits' bucket sizes (DIGITS x BUCKETS)
 };
 
-// One stable counting pass over places [b, e) by the byte of the keys at `shift`, from buffer `from`
-// into the same places of the other; false, and nothing written, where every key has the same
-// byte there.
-bool byte_pass(const SortBuffers& s, int from, int32_t b, int32_t e, int shift) {
-    const uint32_t* key = s.key[from];
-    int32_t start[256] = {};
-    for (int32_t i = b; i < e; ++i) ++start[(key[i] >> shift) & 255];
-    if (start[(key[b] >> shift) & 255] == e - b) return false;
-    for (int32_t k = 0, sum = b; k < 256; ++k) {
-        const int32_t count = start[k];
-        start[k] = sum, sum += count;
+// The keys' digits: 11 bits, three of them a 32-bit key.
+constexpr int DIGIT_BITS = 11, DIGITS = 3;
+constexpr uint32_t BUCKETS = 1u << DIGIT_BITS;
+
+// One stable counting pass over places [b, e) by the digit of the keys at `shift`, whose bucket
+// sizes are in `count` (made starts here), from buffer `from` into the same places of the other.
+void digit_pass(const SortBuffers& s, int from, int32_t b, int32_t e, int shift, int32_t* count) {
+    for (uint32_t k = 0, sum = uint32_t(b); k < BUCKETS; ++k) {
+        const int32_t c = count[k];
+        count[k] = int32_t(sum), sum += uint32_t(c);
     }
+    const uint32_t* key = s.key[from];
     const int to = 1 - from;
     for (int32_t i = b; i < e; ++i) {
-        const int32_t k = start[(key[i] >> shift) & 255]++;
+        const int32_t k = count[(key[i] >> shift) & (BUCKETS - 1)]++;
         s.key[to][k] = key[i], s.other[to][k] = s.other[from][i], s.at[to][k] = s.at[from][i];
     }
-    return true;
 }
 
 // A stable sort of places [b, e) of buffer 0 by key, the result in buffer 0: by insertion up to 16
-// places (moved only past larger keys), else by the key's bytes, the least significant first.
+// places (moved only past larger keys), else by the key's digits, the least significant first: the
+// three digits' bucket sizes counted in one pass, and a pass skipped where every key has the same
+// digit (a frame's depths share their sign and exponent, so most of the top digit).
 void sort_by_key(const SortBuffers& s, int32_t b, int32_t e) {
     uint32_t *key = s.key[0], *other = s.other[0];
     int32_t* at = s.at[0];
@@ -167,9 +170,22 @@ void sort_by_key(const SortBuffers& s, int32_t b, int32_t e) {
         }
         return;
     }
+    int32_t* count = s.count;
+    __builtin_memset(count, 0, sizeof(int32_t) * DIGITS * BUCKETS);
+    for (int32_t i = b; i < e; ++i) {
+        const uint32_t k = key[i];
+        ++count[k & (BUCKETS - 1)];
+        ++count[BUCKETS + ((k >> DIGIT_BITS) & (BUCKETS - 1))];
+        ++count[2 * BUCKETS + (k >> (2 * DIGIT_BITS))];
+    }
     int in = 0;
-    for (int shift = 0; shift < 32; shift += 8)
-        if (byte_pass(s, in, b, e, shift)) in = 1 - in;
+    for (int d = 0; d < DIGITS; ++d) {
+        int32_t* c = count + d * BUCKETS;
+        const int shift = d * DIGIT_BITS;
+        if (c[(key[b] >> shift) & (BUCKETS - 1)] == e - b) continue;  // (key: buffer 0's; any key has the digit then)
+        digit_pass(s, in, b, e, shift, c);
+        in = 1 - in;
+    }
     if (in == 1)
         for (int32_t i = b; i < e; ++i) key[i] = s.key[1][i], other[i] = s.other[1][i], at[i] = s.at[1][i];
 }
@@ -190,8 +206,8 @@ const int32_t* painter_order(FrameScratch* scratch, int32_t n) {
     }
     // By the high word (sign, exponent, the top 20 bits of the mantissa), then the low word within
     // each run of one high word (a frame's depths rarely share one)
-    sort_by_key(SortBuffers{{hi, scratch->key_hi[1]}, {lo, scratch->key_lo[1]}, {at, scratch->order[1]}}, 0, n);
-    const SortBuffers by_low{{lo, scratch->key_lo[1]}, {hi, scratch->key_hi[1]}, {at, scratch->order[1]}};
+    sort_by_key(SortBuffers{{hi, scratch->key_hi[1]}, {lo, scratch->key_lo[1]}, {at, scratch->order[1]}, scratch->digit_count}, 0, n);
+    const SortBuffers by_low{{lo, scratch->key_lo[1]}, {hi, scratch->key_hi[1]}, {at, scratch->order[1]}, scratch->digit_count};
     for (int32_t b = 0, e; b < n; b = e) {
         for (e = b + 1; e < n && hi[e] == hi[b]; ++e) {
         }
@@ -228,7 +244,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         const Placement place = Placement::of(object, time);
         double nearest = far;  // the least w of a position inside every plane (the corners of uncut faces)
         for (int32_t i = 0; i < mesh.position_count; ++i) {
-            const ClipVertex p = view.clip(place.apply(world.positions[mesh.first_position + i]));
+            const ClipPoint p = view.clip(place.apply(world.positions[mesh.first_position + i]));
             const uint8_t code = outcode(p, near, far);
             scratch->positions[used + i] = p;
             scratch->outcodes[used + i] = code;
@@ -243,7 +259,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         used += mesh.position_count;
         for (int32_t k = 0; k < mesh.face_count; ++k) {
             const Face& face = world.faces[mesh.first_face + k];
-            const ClipVertex* c[MAX_FACE_CORNERS];  // (pointers: a copy of each corner cost 40 instructions)
+            const ClipPoint* c[MAX_FACE_CORNERS];  // (pointers: a copy of each corner cost 40 instructions)
             uint8_t all = 0x3F, any = 0;  // planes every corner is outside; planes some corner is
             double depth = 0;
             for (int32_t i = 0; i < face.count; ++i) {
@@ -283,9 +299,8 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             ClipVertex c[MAX_FACE_CORNERS];
             for (int32_t i = 0; i < n; ++i) {
                 const Corner& corner = world.corners[face.first_corner + i];
-                c[i] = scratch->positions[base + corner.position];
-                c[i].u = world.uvs[corner.uv].u * texture.width;
-                c[i].v = world.uvs[corner.uv].v * texture.height;
+                const ClipPoint& p = scratch->positions[base + corner.position];
+                c[i] = ClipVertex{p.x, p.y, p.w, world.uvs[corner.uv].u * texture.width, world.uvs[corner.uv].v * texture.height};
             }
             n = clip_polygon(c, face.count, near, far, clipped);
             if (n < 3) {

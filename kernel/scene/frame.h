@@ -48,10 +48,15 @@ struct ClipVertex {
     double x, y, w;  // w: the depth along the view direction
     double u, v;
 };
+// A position in clip space (what the frame's positions need: their texture coordinates come with
+// the faces' corners).
+struct ClipPoint {
+    double x, y, w;
+};
 
 // Working memory for build_frame (large: kept apart so that it can be static in the kernel).
 struct FrameScratch {
-    ClipVertex positions[MAX_FRAME_POSITIONS];
+    ClipPoint positions[MAX_FRAME_POSITIONS];
     uint8_t outcodes[MAX_FRAME_POSITIONS];  // bit k: outside clip plane k
     Fixed24_8 screen_x[MAX_FRAME_POSITIONS], screen_y[MAX_FRAME_POSITIONS];  // projected, where the outcode is 0
     struct Entry {
@@ -62,13 +67,14 @@ struct FrameScratch {
     // painter_order's two buffers: each entry's key (its depth's bits, in halves) and index
     uint32_t key_lo[2][MAX_FRAME_POLYGONS], key_hi[2][MAX_FRAME_POLYGONS];
     int32_t order[2][MAX_FRAME_POLYGONS];
+    int32_t digit_count[3 << 11];  // the bucket sizes of its three 11-bit digits
 };
 
 // The painter's order of scratch->entries[0..n): far before near (the larger depth first), equal
 // depths in the order they come in (build_frame makes them by object, then face: the same total
 // order everywhere). A stable sort of the depth's bits: by the high word, then by the low word
-// within runs that share one; each by insertion up to 16 places, else by radix, a byte a pass (a
-// pass where every key has the same byte skipped: a frame's depths share their exponent). Returns
+// within runs that share one; each by insertion up to 16 places, else by radix, 11 bits a pass (a
+// pass where every key has the same digit skipped: a frame's depths share their exponent). Returns
 // the indices in order (scratch->order[0]).
 const int32_t* painter_order(FrameScratch* scratch, int32_t n);
 
@@ -77,7 +83,7 @@ struct View {
     Vec3 eye, side, up, forward;  // right-handed: forward = toward the target; side = forward x up
     double focal_x = 1, focal_y = 1;  // clip x = focal_x * (side . p), y = focal_y * (up . p)
     static View of(const Camera& camera, double time);
-    ClipVertex clip(Vec3 world_point) const;
+    ClipPoint clip(Vec3 world_point) const;
 };
 
 // An object's placement at a time: world = rotation(scale * model) + position.
