@@ -93,6 +93,7 @@ struct DrawContext {
     RenderStats* stats;  // the driver adds spans and pixels through emit() and tally()
     LoopFn loop;
     const PolygonSetup* setup = nullptr;  // the polygon set up already (auto: every plane), or nullptr
+    Input input = Input::Any;             // for the driver's own setup_polygon
 };
 using DrawFn = SetupStatus (*)(const DrawContext& c, const Vertex* vertices, int count);
 

@@ -9,9 +9,11 @@ namespace {
 // polygon as auto walked it) and its span function on each span. Counts the polygon. `setup`: the
 // polygon set up already (every plane, for a mapper without its own driver), or nullptr; `walked`:
 // its spans along the axis when auto walked them (count below 0: not), or nullptr. `checked`: the
-// mapper known to walk the axis, take the texture and draw into the target.
+// mapper known to walk the axis, take the texture and draw into the target. `input`: as setup.h
+// says, for the setup done here or by the mapper's driver.
 SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                      RenderStats* stats, Variant variant, const PolygonSetup* setup, const PreparedSpans* walked, bool checked = false) {
+                      RenderStats* stats, Variant variant, const PolygonSetup* setup, const PreparedSpans* walked,
+                      Input input = Input::Any, bool checked = false) {
     Probe* probe = stats->probe;
     const uint32_t pixels_before = stats->pixels;
     if (!checked && (!mapper_walks(mapper, axis) || !mapper_accepts(mapper, tex) || !mapper_targets(mapper, target, axis))) {
@@ -21,7 +23,7 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
     LoopFn loop = mapper_loop(mapper, variant, target);
     SetupStatus status;
     if (mapper.draw) {
-        status = mapper.draw(DrawContext{tex, axis, target, stats, loop, setup}, vertices, count);
+        status = mapper.draw(DrawContext{tex, axis, target, stats, loop, setup, input}, vertices, count);
     } else {
         auto draw_spans = [&](const PolygonSetup& set_up, auto&& next) {
             const SpanContext context{set_up, tex, axis, loop};
@@ -43,7 +45,7 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
             }
         } else {
             PolygonSetup own;
-            status = setup_polygon(vertices, count, &own, mapper.span_planes);
+            status = setup_polygon(vertices, count, &own, mapper.span_planes, input);
             if (status == SetupStatus::Ok) {
                 EdgeWalker walker(own, axis, target.clip);
                 draw_spans(own, [&](Span* s) { return walker.next(s); });
@@ -78,9 +80,9 @@ SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& te
 }  // namespace
 
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
-                         Target& target, RenderStats* stats, Variant variant, const Budget& budget) {
+                         Target& target, RenderStats* stats, Variant variant, const Budget& budget, Input input) {
     probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
-    if (!mapper.chooses) return draw_with(vertices, count, tex, mapper, axis, target, stats, variant, nullptr, nullptr);
+    if (!mapper.chooses) return draw_with(vertices, count, tex, mapper, axis, target, stats, variant, nullptr, nullptr, input);
     PreparedPolygon prepared;
     return choose_and_draw(vertices, count, tex, axis, target, stats, variant, budget, &prepared);
 }
@@ -90,9 +92,10 @@ SetupStatus draw_enveloped(const Vertex* vertices, const Texture& tex, const Map
     probe_lap(stats->probe, Phase::Walk);
     {
         PolygonSetup setup;
-        if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE) == SetupStatus::Ok && envelope_guards(setup)) {
+        // (an uncut triangle: in range, as build_frame makes it)
+        if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE, Input::InRange) == SetupStatus::Ok && envelope_guards(setup)) {
             ++stats->enveloped;  // (plan_auto checked what draw_with would)
-            return draw_with(vertices, 3, tex, mapper, axis, target, stats, variant, &setup, nullptr, true);
+            return draw_with(vertices, 3, tex, mapper, axis, target, stats, variant, &setup, nullptr, Input::InRange, true);
         }
     }
     PreparedPolygon prepared;

@@ -14,8 +14,10 @@ namespace raster {
 // Draws one convex polygon. Returns the setup status; nothing is drawn (and the polygon counts as
 // rejected) unless it is Ok, the mapper walks `axis`, accepts the texture and can draw into the
 // target (mapper_targets). `auto` draws it with the mapper choose_mapper picks for the budget.
+// `input`: InRange where the caller answers for the vertices' range (setup.h).
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
-                         Target& target, RenderStats* stats, Variant variant = Variant::Twin, const Budget& budget = DEFAULT_BUDGET);
+                         Target& target, RenderStats* stats, Variant variant = Variant::Twin, const Budget& budget = DEFAULT_BUDGET,
+                         Input input = Input::Any);
 // auto on an uncut triangle of an object whose envelope proves `mapper` (plan_auto, choice.h):
 // the mapper's own setup (affine planes), the envelope's guards on it (envelope_guards), and the
 // mapper drawing from it; where a guard fails, auto's choice as in draw_polygon.

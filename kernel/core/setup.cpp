@@ -175,11 +175,16 @@ bool same_point(const Vertex& a, const Vertex& b) { return a.x.raw == b.x.raw &&
 
 }  // namespace
 
-SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupPlanes planes) {
+bool vertices_in_range(const Vertex* vertices, int count) {
+    for (int i = 0; i < count; ++i)
+        if (!in_range(vertices[i])) return false;
+    return true;
+}
+
+SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupPlanes planes, Input input) {
     if (count > MAX_POLYGON_VERTICES) return SetupStatus::TooManyVertices;
     if (count < 3) return SetupStatus::Degenerate;
-    for (int i = 0; i < count; ++i)
-        if (!in_range(in[i])) return SetupStatus::OutOfRange;
+    if (input == Input::Any && !vertices_in_range(in, count)) return SetupStatus::OutOfRange;
 
     if (count == 3) {
         // a triangle: any two corners at one point leave fewer than three (degenerate), as does a

@@ -103,9 +103,17 @@ enum SetupPlanes : uint8_t {
     PLANES_ALL = 3,
 };
 
-// Orients the polygon, drops repeated vertices, checks range and convexity, builds the edges and
-// the planes. Any input is safe: on anything but Ok, `out` must not be drawn.
-SetupStatus setup_polygon(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL);
+// Who answers for the vertices' range: Any, the setup checks each against the limits above;
+// InRange, the caller made them within the limits (build_frame's uncut faces, Frame::polygon_whole).
+enum class Input : uint8_t { Any, InRange };
+
+// Whether every vertex is within the limits above (NaN and infinities are not).
+bool vertices_in_range(const Vertex* vertices, int count);
+
+// Orients the polygon, drops repeated vertices, checks range (unless the input is InRange) and
+// convexity, builds the edges and the planes. Any input is safe: on anything but Ok, `out` must
+// not be drawn.
+SetupStatus setup_polygon(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL, Input input = Input::Any);
 
 // Whether the pixel centre (x + 0.5, y + 0.5) is inside: the definition the walkers implement.
 bool covers(const PolygonSetup& s, int32_t x, int32_t y);

@@ -25,7 +25,7 @@ struct Planes {
 const PolygonSetup* set_up(const DrawContext& c, const Vertex* vertices, int count, PolygonSetup* own, SetupStatus* status) {
     *status = SetupStatus::Ok;
     if (c.setup) return c.setup;
-    *status = setup_polygon(vertices, count, own, PLANES_AFFINE);
+    *status = setup_polygon(vertices, count, own, PLANES_AFFINE, c.input);
     return own;
 }
 

@@ -32,7 +32,7 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
     SetupStatus status = takes(vertices, count, c.tex, &shift_u, &shift_v);
     if (status != SetupStatus::Ok) return status;
     PolygonSetup own;  // the setup auto made already, or one here
-    if (!c.setup && (status = setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE)) != SetupStatus::Ok) return status;
+    if (!c.setup && (status = setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE, c.input)) != SetupStatus::Ok) return status;
     const PolygonSetup& setup = c.setup ? *c.setup : own;
 
     constexpr double N = double(1 << SHIFT);

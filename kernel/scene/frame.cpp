@@ -389,12 +389,14 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
         const AutoPlan& plan = plans[object];
         Axis unchosen_axis;
         const Mapper* unchosen = nullptr;
+        // an uncut face's corners are within setup's limits (Frame::polygon_whole)
+        const Input input = frame.polygon_whole[i] ? Input::InRange : Input::Any;
         if (!mapper.chooses)
-            draw_polygon(v, n, tex, mapper, axis, target, &stats, variant);
+            draw_polygon(v, n, tex, mapper, axis, target, &stats, variant, DEFAULT_BUDGET, input);
         else if (plan.enveloped && frame.polygon_whole[i] && n == 3)
             draw_enveloped(v, tex, *plan.enveloped, plan.enveloped_axis, target, &stats, variant, frame.budget);
         else if ((unchosen = unchosen_mapper(plan, v, n, target.clip, &unchosen_axis)))
-            draw_polygon(v, n, tex, *unchosen, unchosen_axis, target, &stats, variant);
+            draw_polygon(v, n, tex, *unchosen, unchosen_axis, target, &stats, variant, DEFAULT_BUDGET, input);
         else
             draw_polygon(v, n, tex, mapper, axis, target, &stats, variant, frame.budget);
         v += n;

@@ -16,6 +16,8 @@ constexpr int32_t MAX_FRAME_POSITIONS = 65536;  // object positions transformed 
 // pixels, inside the setup's limits and the classics' +-8192.
 constexpr double GUARD_BAND = 32;
 constexpr double SCREEN_ASPECT = 4.0 / 3.0;  // 320 x 240, square pixels
+// (what Frame::polygon_whole's range rests on)
+static_assert(MAX_TEXCOORD * MAX_TEXTURE_SIZE <= MAX_UV && 160 * GUARD_BAND + 160 < MAX_COORD_PIXELS && 120 * GUARD_BAND + 120 < MAX_COORD_PIXELS);
 
 struct FrameStats {
     uint32_t faces = 0;         // faces of all objects
@@ -34,7 +36,13 @@ struct Frame {
     Budget budget;  // the world's: what auto draws to
     uint8_t polygon_size[MAX_FRAME_POLYGONS];
     uint8_t polygon_object[MAX_FRAME_POLYGONS];  // whose texture (and wrap) it takes
-    uint8_t polygon_whole[MAX_FRAME_POLYGONS];   // 1: a face inside every clip plane, as it is (not cut)
+    // 1: a face inside every clip plane, as it is (not cut). Its corners are within setup's limits
+    // (setup.h), so the drawing does not check them again (Input::InRange): w within [near, far]
+    // (its outcode), which the parser keeps within [MIN_W, MAX_W]; |x| and |y| at most 32 w (the
+    // guard band's planes; 32 w is exact), so on screen within 160 +- 5120 and 120 +- 3840 pixels;
+    // u and v are vt times the texture's side, at most MAX_TEXCOORD x MAX_TEXTURE_SIZE = MAX_UV;
+    // all finite (the parser's numbers are). A cut face's corners are interpolated: checked.
+    uint8_t polygon_whole[MAX_FRAME_POLYGONS];
     // per object: what its envelope proves on its uncut triangles (object_envelope), which auto
     // takes as their proof (footprint NO_BOUND: none)
     EnvelopeBound envelope[MAX_WORLD_OBJECTS];

@@ -243,6 +243,50 @@ TEST(Frame, NoVertexBehindTheEyeReachesTheSetup) {
     EXPECT_EQ(culled, 0u) << "seen from inside, every wall faces the eye";
 }
 
+// Frame::polygon_whole's promise, on which the drawing skips setup's range checks: every corner of
+// an uncut face is within setup's limits, at the parser's limits (texture coordinates of +-16384
+// texture sizes on a 1024 x 1024 texture, near and far at MIN_W and MAX_W, positions out to 10^6,
+// faces past the guard band and behind the eye, every corner of an uncut face just inside it).
+TEST(Frame, UncutFacesAreWithinTheSetupsLimits) {
+    std::mt19937 rng(20261125u);
+    auto any = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+    std::string mesh = "mesh m\n";
+    for (int i = 0; i < 60; ++i) {
+        const double scale = i % 3 == 0 ? 1e6 : i % 3 == 1 ? 50 : 0.001;
+        mesh += "v " + std::to_string(any(-scale, scale)) + " " + std::to_string(any(-scale, scale)) + " " + std::to_string(any(-scale, scale)) + "\n";
+    }
+    for (int i = 0; i < 60; ++i)
+        mesh += i % 4 == 0 ? std::string("vt ") + (i % 8 ? "16384 -16384\n" : "-16384 16384\n") : "vt " + std::to_string(any(-16384, 16384)) + " " + std::to_string(any(-16384, 16384)) + "\n";
+    for (int i = 0; i < 400; ++i) {
+        int a = int(rng() % 60), b = int(rng() % 60), c = int(rng() % 60);
+        mesh += "f " + std::to_string(a + 1) + "/" + std::to_string(int(rng() % 60) + 1) + " " + std::to_string(b + 1) + "/" + std::to_string(int(rng() % 60) + 1) +
+                " " + std::to_string(c + 1) + "/" + std::to_string(int(rng() % 60) + 1) + "\n";
+    }
+    mesh += "end\n";
+    const std::string text = "modexlab-scene 2\ntexture t checker 1024 1024\n" + mesh + "object o\nmesh m\ntexture t\ncull none\nspin 1 2 3 40\nend\n" +
+                             "camera\nnear 0.000016\nfar 16777216\nfov 120\nkey 0 0 0 60 0 0 0\nkey 4 30 -20 -60 0 0 0\nend\nframes 120\n";
+    auto b = std::make_unique<Built>();
+    ParseError e;
+    FileResolver none;
+    ASSERT_TRUE(parse_world(text.data(), text.size(), none, b->world.get(), &e)) << e.line << ": " << e.message;
+    uint32_t whole = 0, cut = 0;
+    for (int32_t n = 0; n < 120; ++n) {
+        build_frame(*b->world, n, b->frame.get(), b->scratch.get());
+        const Frame& f = *b->frame;
+        const Vertex* v = f.vertices;
+        for (int32_t i = 0; i < f.polygon_count; v += f.polygon_size[i], ++i) {
+            if (!f.polygon_whole[i]) {
+                ++cut;
+                continue;
+            }
+            ++whole;
+            ASSERT_TRUE(vertices_in_range(v, f.polygon_size[i])) << "frame " << n << ", polygon " << i;
+        }
+    }
+    EXPECT_GT(whole, 1000u);
+    EXPECT_GT(cut, 1000u);
+}
+
 TEST(Frame, AnimationFollowsTheFrameNumber) {
     std::string text = "modexlab-scene 2\ntexture t checker 8 8\n" + QUAD +
                        "object q\nmesh quad\ntexture t\nspin 0 0 1 90\nkey 0 0 0 -5\nkey 2 3 0 -5\nend\n"
