@@ -5,28 +5,29 @@ namespace raster {
 
 namespace {
 
-// Draws the polygon with the mapper: its own driver, or setup, the walker (or the spans of the
-// polygon as auto walked it) and its span function on each span. Counts the polygon. `setup`: the
-// polygon set up already (every plane, for a mapper without its own driver), or nullptr; `walked`:
-// its spans along the axis when auto walked them (count below 0: not), or nullptr. `checked`: the
-// mapper known to walk the axis, take the texture and draw into the target. `input`: as setup.h
-// says, for the setup done here or by the mapper's driver.
-SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                      RenderStats* stats, Variant variant, const PolygonSetup* setup, const PreparedSpans* walked,
-                      Input input = Input::Any, bool checked = false) {
-    Probe* probe = stats->probe;
-    const uint32_t pixels_before = stats->pixels;
-    if (!checked && (!mapper_walks(mapper, axis) || !mapper_accepts(mapper, tex) || !mapper_targets(mapper, target, axis))) {
+// Draws the polygon with the drawer's mapper: its own driver, or setup, the walker (or the spans
+// of the polygon as auto walked it) and its span function on each span. Counts the polygon.
+// `setup`: the polygon set up already (every plane, for a mapper without its own driver), or
+// nullptr; `walked`: its spans along the axis when auto walked them (count below 0: not), or
+// nullptr. `input`: as setup.h says, for the setup done here or by the mapper's driver.
+SetupStatus draw_with(const Drawer& d, const Vertex* vertices, int count, const PolygonSetup* setup, const PreparedSpans* walked,
+                      Input input) {
+    RenderStats* stats = d.stats;
+    if (!d.usable) {
         ++stats->rejected;
         return SetupStatus::Unsupported;
     }
-    LoopFn loop = mapper_loop(mapper, variant, target);
+    Probe* probe = stats->probe;
+    const uint32_t pixels_before = stats->pixels;
+    const Mapper& mapper = *d.mapper;
+    const Axis axis = d.axis;
+    Target& target = *d.target;
     SetupStatus status;
     if (mapper.draw) {
-        status = mapper.draw(DrawContext{tex, axis, target, stats, loop, setup, input}, vertices, count);
+        status = mapper.draw(DrawContext{*d.tex, axis, target, stats, d.loop, setup, input}, vertices, count);
     } else {
         auto draw_spans = [&](const PolygonSetup& set_up, auto&& next) {
-            const SpanContext context{set_up, tex, axis, loop};
+            const SpanContext context{set_up, *d.tex, axis, d.loop};
             probe_lap(probe, Phase::Setup);
             Span span;
             while (next(&span)) {
@@ -55,9 +56,8 @@ SetupStatus draw_with(const Vertex* vertices, int count, const Texture& tex, con
     probe_lap(probe, Phase::Walk);
     if (status == SetupStatus::Ok) {
         ++stats->polygons;
-        const int row = int(&mapper - MAPPERS);
-        ++stats->mapper_polygons[row];
-        stats->mapper_pixels[row] += stats->pixels - pixels_before;
+        ++stats->mapper_polygons[d.row];
+        stats->mapper_pixels[d.row] += stats->pixels - pixels_before;
     } else if (status == SetupStatus::Degenerate) ++stats->skipped;
     else ++stats->rejected;
     return status;
@@ -71,18 +71,33 @@ SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& te
     probe_lap(stats->probe, Phase::Setup);
     if (!c.mapper) {
         const Axis any = target_supports(target, axis) ? axis : Axis::Columns;  // a walker the target takes
-        return draw_with(vertices, count, tex, *find_mapper("exact"), any, target, stats, variant, nullptr, nullptr);
+        return draw_with(Drawer::of(*find_mapper("exact"), tex, any, target, stats, variant), vertices, count, nullptr, nullptr, Input::Any);
     }
     const bool set_up = prepared->status == SetupStatus::Ok;
-    return draw_with(vertices, count, tex, *c.mapper, c.axis, target, stats, variant, set_up ? &prepared->setup : nullptr, &prepared->walked[int(c.axis)]);
+    return draw_with(Drawer::of(*c.mapper, tex, c.axis, target, stats, variant), vertices, count, set_up ? &prepared->setup : nullptr,
+                     &prepared->walked[int(c.axis)], Input::Any);
 }
 
 }  // namespace
 
+Drawer Drawer::of(const Mapper& mapper, const Texture& tex, Axis axis, Target& target, RenderStats* stats, Variant variant, bool checked) {
+    Drawer d;
+    d.mapper = &mapper, d.tex = &tex, d.target = &target, d.stats = stats, d.axis = axis;
+    d.loop = mapper_loop(mapper, variant, target);
+    d.row = int32_t(&mapper - MAPPERS);
+    d.usable = checked || (mapper_walks(mapper, axis) && mapper_accepts(mapper, tex) && mapper_targets(mapper, target, axis));
+    return d;
+}
+
+SetupStatus Drawer::draw(const Vertex* vertices, int count, Input input) const {
+    probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
+    return draw_with(*this, vertices, count, nullptr, nullptr, input);
+}
+
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant, const Budget& budget, Input input) {
+    if (!mapper.chooses) return Drawer::of(mapper, tex, axis, target, stats, variant).draw(vertices, count, input);
     probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
-    if (!mapper.chooses) return draw_with(vertices, count, tex, mapper, axis, target, stats, variant, nullptr, nullptr, input);
     PreparedPolygon prepared;
     return choose_and_draw(vertices, count, tex, axis, target, stats, variant, budget, &prepared);
 }
@@ -95,7 +110,7 @@ SetupStatus draw_enveloped(const Vertex* vertices, const Texture& tex, const Map
         // (an uncut triangle: in range, as build_frame makes it)
         if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE, Input::InRange) == SetupStatus::Ok && envelope_guards(setup)) {
             ++stats->enveloped;  // (plan_auto checked what draw_with would)
-            return draw_with(vertices, 3, tex, mapper, axis, target, stats, variant, &setup, nullptr, Input::InRange, true);
+            return draw_with(Drawer::of(mapper, tex, axis, target, stats, variant, true), vertices, 3, &setup, nullptr, Input::InRange);
         }
     }
     PreparedPolygon prepared;

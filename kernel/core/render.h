@@ -18,6 +18,25 @@ namespace raster {
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant = Variant::Twin, const Budget& budget = DEFAULT_BUDGET,
                          Input input = Input::Any);
+// A mapper set to draw with one texture along one axis into one target: what draw_polygon settles
+// before each polygon (whether the mapper takes them at all, and its loop), settled once, for a
+// mapper that does not choose (render_frame keeps one an object).
+struct Drawer {
+    const Mapper* mapper = nullptr;
+    const Texture* tex = nullptr;
+    Target* target = nullptr;
+    RenderStats* stats = nullptr;
+    LoopFn loop = nullptr;
+    int32_t row = 0;      // the mapper's registry row (RenderStats::mapper_polygons)
+    Axis axis = Axis::Rows;
+    bool usable = false;  // it walks the axis, takes the texture and draws into the target
+    // `checked`: known usable (plan_auto checked it)
+    static Drawer of(const Mapper& mapper, const Texture& tex, Axis axis, Target& target, RenderStats* stats, Variant variant,
+                     bool checked = false);
+    // draw_polygon with this mapper, texture, axis and target
+    SetupStatus draw(const Vertex* vertices, int count, Input input = Input::Any) const;
+};
+
 // auto on an uncut triangle of an object whose envelope proves `mapper` (plan_auto, choice.h):
 // the mapper's own setup (affine planes), the envelope's guards on it (envelope_guards), and the
 // mapper drawing from it; where a guard fails, auto's choice as in draw_polygon.

@@ -377,9 +377,12 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
     stats.probe = probe;
     // auto: what it settles once a frame per object (choice.h, AutoPlan)
     AutoPlan plans[MAX_WORLD_OBJECTS];
-    if (mapper.chooses)
-        for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o)
-            plans[o] = plan_auto(frame.budget, textures.objects[o], target, frame.envelope[o].footprint);
+    // any other mapper: what it settles once for a texture (render.h, Drawer)
+    Drawer drawers[MAX_WORLD_OBJECTS];
+    for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o) {
+        if (mapper.chooses) plans[o] = plan_auto(frame.budget, textures.objects[o], target, frame.envelope[o].footprint);
+        else drawers[o] = Drawer::of(mapper, textures.objects[o], axis, target, &stats, variant);
+    }
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
         if (watch && watch->stops(uint32_t(i), uint32_t(frame.polygon_count), &stats)) break;
@@ -392,7 +395,7 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
         // an uncut face's corners are within setup's limits (Frame::polygon_whole)
         const Input input = frame.polygon_whole[i] ? Input::InRange : Input::Any;
         if (!mapper.chooses)
-            draw_polygon(v, n, tex, mapper, axis, target, &stats, variant, DEFAULT_BUDGET, input);
+            drawers[object].draw(v, n, input);
         else if (plan.enveloped && frame.polygon_whole[i] && n == 3)
             draw_enveloped(v, tex, *plan.enveloped, plan.enveloped_axis, target, &stats, variant, frame.budget);
         else if ((unchosen = unchosen_mapper(plan, v, n, target.clip, &unchosen_axis)))
