@@ -169,3 +169,177 @@ column_entries:
 run_entries:
     dd fast_run_loop_asm.e0, fast_run_loop_asm.e1, fast_run_loop_asm.e2, fast_run_loop_asm.e3
     dd fast_run_loop_asm.e4, fast_run_loop_asm.e5, fast_run_loop_asm.e6, fast_run_loop_asm.e7
+
+section .text
+
+; triangle_rows_asm: a small triangle's row bounds (twin: triangle_rows, kernel/core/walk.cpp), for
+; EdgeWalker's 32-bit build: each edge across the rows gives the bound of the rows whose centre lies
+; within its extent, floor(m / d) with its remainder and step, m and the step from the edge function
+; at the pixel corner (origin_x, origin_y); one IDIV for a quotient and its remainder. Returns 1, or
+; 0 with nothing written where an edge lies along a row (dy = 0: the C++ build cuts rows with it).
+T_OMAJ    equ 0                         ; origin_y * 256
+T_OMIN    equ 4                         ; origin_x * 256
+T_FIRST   equ 8                         ; the rows, relative to origin_y
+T_LAST    equ 12
+T_NLOWER  equ 16                        ; bounds in each chain so far
+T_NUPPER  equ 20
+T_FRAME   equ 24
+
+; one edge: esi the edges, ebp the block
+%macro TRI_EDGE 1
+%define E(f) [esi + (%1) * EDGE_SIZE + EDGE_ %+ f]
+    mov eax, E(py)
+    sub eax, [esp + T_OMAJ]             ; pmaj: the start, relative
+    mov ebx, E(dy)                      ; dmaj (not 0)
+    lea ecx, [eax + ebx]                ; the end
+    mov edx, eax
+    cmp ecx, eax
+    cmovl edx, ecx                      ; the top
+    cmovl ecx, eax                      ; the bottom
+    add edx, 127
+    sar edx, 8                          ; lo: the first row whose centre is at or below the top
+    sub ecx, 128
+    sar ecx, 8                          ; hi: the last row whose centre is at or above the bottom
+    mov edi, [esp + T_FIRST]
+    cmp edx, edi
+    cmovl edx, edi
+    mov edi, [esp + T_LAST]
+    cmp ecx, edi
+    cmovg ecx, edi
+    cmp edx, ecx
+    jg %%skip                           ; no row's centre within its extent
+    ; its place: going up (dy < 0) a lower bound, down an upper one
+    test ebx, ebx
+    js %%lower
+    mov edi, [esp + T_NUPPER]
+    inc dword [esp + T_NUPPER]
+    imul edi, edi, BOUND_SIZE
+    add edi, [ebp + TRI_upper]
+    jmp %%placed
+%%lower:
+    mov edi, [esp + T_NLOWER]
+    inc dword [esp + T_NLOWER]
+    imul edi, edi, BOUND_SIZE
+    add edi, [ebp + TRI_lower]
+%%placed:
+    push edx
+    add edx, [ebp + TRI_origin_y]
+    mov [edi + BOUND_first], edx
+    add ecx, [ebp + TRI_origin_y]
+    mov [edi + BOUND_last], ecx
+    pop edx
+    ; B at row lo: dmin * (lo * 256 + 128 - pmaj) - dmaj * (128 - pmin)
+    shl edx, 8
+    add edx, 128
+    sub edx, eax
+    imul edx, E(dx)
+    mov eax, 128 + 0
+    add eax, [esp + T_OMIN]
+    sub eax, E(px)                      ; 128 - pmin
+    imul eax, ebx
+    sub edx, eax                        ; B
+    mov ecx, E(dx)
+    shl ecx, 8                          ; C = dmin * 256
+    test ebx, ebx
+    js %%below
+    shl ebx, 8                          ; upper: d = dmaj * 256, m = B - t, step C
+    sub edx, E(threshold)
+    jmp %%divide
+%%below:
+    neg ebx
+    shl ebx, 8                          ; lower: d = -dmaj * 256, m = t - B + d - 1, step -C
+    neg edx
+    add edx, E(threshold)
+    lea edx, [edx + ebx - 1]
+    neg ecx
+%%divide:
+    mov [edi + BOUND_d], ebx
+    mov eax, edx
+    cdq
+    idiv ebx                            ; truncated: a negative remainder steps the quotient down
+    test edx, edx
+    jns %%q
+    dec eax
+    add edx, ebx
+%%q:
+    add eax, [ebp + TRI_origin_x]
+    mov [edi + BOUND_q], eax
+    mov [edi + BOUND_r], edx
+    mov eax, ecx
+    cdq
+    idiv ebx
+    test edx, edx
+    jns %%dq
+    dec eax
+    add edx, ebx
+%%dq:
+    mov [edi + BOUND_dq], eax
+    mov [edi + BOUND_dr], edx
+%%skip:
+%undef E
+%endmacro
+
+; a chain of two in order of first row (a tie keeps their order), then its sentinel: never live,
+; never binding (q = %2)
+%macro TRI_SEAL 3
+    mov edi, [ebp + %1]
+    mov ecx, [esp + %2]
+    cmp ecx, 2
+    jne %%sentinel
+    mov eax, [edi + BOUND_first]
+    cmp eax, [edi + BOUND_SIZE + BOUND_first]
+    jle %%sentinel
+%assign off 0
+%rep BOUND_SIZE / 4
+    mov eax, [edi + off]
+    mov edx, [edi + BOUND_SIZE + off]
+    mov [edi + off], edx
+    mov [edi + BOUND_SIZE + off], eax
+%assign off off + 4
+%endrep
+%%sentinel:
+    imul ecx, ecx, BOUND_SIZE
+    add edi, ecx
+    mov dword [edi + BOUND_first], 0x7FFFFFFF
+    mov dword [edi + BOUND_last], 0x7FFFFFFF
+    mov dword [edi + BOUND_q], %3
+    mov dword [edi + BOUND_dq], 0
+    mov dword [edi + BOUND_r], 0
+    mov dword [edi + BOUND_dr], 0
+    mov dword [edi + BOUND_d], 1
+%endmacro
+
+global triangle_rows_asm
+triangle_rows_asm:
+    LOOP_ENTER T_FRAME
+    mov ebp, LOOP_ARG(T_FRAME)
+    mov esi, [ebp + TRI_edges]
+    xor eax, eax
+    cmp [esi + EDGE_dy], eax
+    je .done
+    cmp [esi + EDGE_SIZE + EDGE_dy], eax
+    je .done
+    cmp [esi + 2 * EDGE_SIZE + EDGE_dy], eax
+    je .done
+    mov [esp + T_NLOWER], eax
+    mov [esp + T_NUPPER], eax
+    mov eax, [ebp + TRI_origin_y]
+    mov edx, [ebp + TRI_first]
+    sub edx, eax
+    mov [esp + T_FIRST], edx
+    mov edx, [ebp + TRI_last]
+    sub edx, eax
+    mov [esp + T_LAST], edx
+    shl eax, 8
+    mov [esp + T_OMAJ], eax
+    mov eax, [ebp + TRI_origin_x]
+    shl eax, 8
+    mov [esp + T_OMIN], eax
+    TRI_EDGE 0
+    TRI_EDGE 1
+    TRI_EDGE 2
+    TRI_SEAL TRI_lower, T_NLOWER, 0x80000000
+    TRI_SEAL TRI_upper, T_NUPPER, 0x7FFFFFFF
+    mov eax, 1
+.done:
+    LOOP_LEAVE T_FRAME

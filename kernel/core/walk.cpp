@@ -170,49 +170,50 @@ namespace {
 
 }  // namespace
 
+namespace {
+
 // build<int32_t, 3>'s arithmetic, term for term (the same bounds to the bit: FillRule's tests walk
 // both). Along the axis: major = the line's coordinate, minor = across it; for rows (major y)
 // E = dmin * (centre - pmaj) - dmaj * (m*256 + 128 - pmin), for columns (major x) its negation.
+// Returns false where an edge along the lines leaves no line (nothing written then); first and last
+// come back cut by such an edge.
 template <bool ROWS>
-void EdgeWalker::build_triangle(const PolygonSetup& s, int32_t first, int32_t last, int32_t origin_x, int32_t origin_y) {
+bool triangle_bounds(const Edge* edges, int32_t* first_io, int32_t* last_io, int32_t origin_x, int32_t origin_y, EdgeBound* lower_,
+                     EdgeBound* upper_) {
+    using Bound = EdgeBound;
+    int32_t first = *first_io, last = *last_io;
     constexpr int32_t one = int32_t(SUBPIXEL_ONE), half = int32_t(SUBPIXEL_HALF);
     const int32_t line0 = ROWS ? origin_y : origin_x, minor0 = ROWS ? origin_x : origin_y;
     const int32_t omaj = line0 * one, omin = minor0 * one;
     first -= line0, last -= line0;
-    struct Rel {
-        int32_t pmaj, pmin, dmaj, dmin, t;
-    } e[3];
-#pragma GCC unroll 3
-    for (int i = 0; i < 3; ++i) {
-        const Edge& g = s.edges[i];
-        e[i].pmaj = int32_t(ROWS ? g.py : g.px) - omaj;
-        e[i].pmin = int32_t(ROWS ? g.px : g.py) - omin;
-        e[i].dmaj = int32_t(ROWS ? g.dy : g.dx);
-        e[i].dmin = int32_t(ROWS ? g.dx : g.dy);
-        e[i].t = g.threshold;
-    }
+    // edge i's start and direction along and across the lines, relative to the origin (read from
+    // the setup where used: a copy of them cost more than the reads)
+    auto pmaj = [&](int i) __attribute__((always_inline)) { return (ROWS ? edges[i].py : edges[i].px) - omaj; };
+    auto pmin = [&](int i) __attribute__((always_inline)) { return (ROWS ? edges[i].px : edges[i].py) - omin; };
+    auto dmaj = [&](int i) __attribute__((always_inline)) { return ROWS ? edges[i].dy : edges[i].dx; };
+    auto dmin = [&](int i) __attribute__((always_inline)) { return ROWS ? edges[i].dx : edges[i].dy; };
     // E at line L (relative), minor coordinate 0 (the pixel at origin's minor coordinate)
-    auto b_at = [&](const Rel& r, int32_t line) {
-        const int32_t value = r.dmin * (line * one + half - r.pmaj) - r.dmaj * (half - r.pmin);
+    auto b_at = [&](int i, int32_t line) __attribute__((always_inline)) {
+        const int32_t value = dmin(i) * (line * one + half - pmaj(i)) - dmaj(i) * (half - pmin(i));
         return ROWS ? value : -value;
     };
     // an edge along the lines (at most one: the area is positive) cuts whole lines
     const int32_t base = first;
 #pragma GCC unroll 3
     for (int i = 0; i < 3; ++i) {
-        if (e[i].dmaj != 0) continue;
-        const int32_t b = b_at(e[i], base), c = (ROWS ? e[i].dmin : -e[i].dmin) * one;
+        if (dmaj(i) != 0) continue;
+        const int32_t b = b_at(i, base), c = (ROWS ? dmin(i) : -dmin(i)) * one, t = edges[i].threshold;
         if (c > 0) {
-            const int32_t from = base - floor_div32(b - e[i].t, c);  // base + ceil((t - b) / c)
+            const int32_t from = base - floor_div32(b - t, c);  // base + ceil((t - b) / c)
             if (from > first) first = from;
         } else {
-            const int32_t to = base + floor_div32(b - e[i].t, -c);
+            const int32_t to = base + floor_div32(b - t, -c);
             if (to < last) last = to;
         }
     }
-    if (first > last) return;
-    line_ = first + line0;
-    last_line_ = last + line0;
+    if (first > last) return false;
+    *first_io = first + line0;
+    *last_io = last + line0;
 
     // First each edge's lines and chain: a triangle's edges across the lines go both ways, so each
     // chain has one or two, put in order of first line (ties as they come). Then each bound is
@@ -222,29 +223,29 @@ void EdgeWalker::build_triangle(const PolygonSetup& s, int32_t first, int32_t la
     int32_t lower_count = 0, upper_count = 0;
 #pragma GCC unroll 3
     for (int i = 0; i < 3; ++i) {
-        const Rel& r = e[i];
-        if (r.dmaj == 0) continue;
-        lo[i] = first_line(r.dmaj < 0 ? r.pmaj + r.dmaj : r.pmaj), hi[i] = last_line(r.dmaj < 0 ? r.pmaj : r.pmaj + r.dmaj);
-        if (lo[i] < first) lo[i] = first;
-        if (hi[i] > last) hi[i] = last;
-        if (lo[i] > hi[i]) continue;  // no line's centre within its extent
-        if ((ROWS ? -r.dmaj : r.dmaj) > 0) lower_edges[lower_count++] = i;  // A = -sign * dmaj * 256 > 0
+        const int32_t p = pmaj(i), d = dmaj(i);
+        if (d == 0) continue;
+        int32_t l = first_line(d < 0 ? p + d : p), h = last_line(d < 0 ? p : p + d);
+        if (l < first) l = first;
+        if (h > last) h = last;
+        if (l > h) continue;  // no line's centre within its extent
+        lo[i] = l, hi[i] = h;
+        if ((ROWS ? -d : d) > 0) lower_edges[lower_count++] = i;  // A = -sign * dmaj * 256 > 0
         else upper_edges[upper_count++] = i;
     }
-    auto order = [&](int* edges, int32_t count) {
-        if (count == 2 && lo[edges[0]] > lo[edges[1]]) {
-            const int t = edges[0];
-            edges[0] = edges[1], edges[1] = t;
+    auto order = [&lo](int* chain, int32_t count) __attribute__((always_inline)) {
+        if (count == 2 && lo[chain[0]] > lo[chain[1]]) {
+            const int t = chain[0];
+            chain[0] = chain[1], chain[1] = t;
         }
     };
     order(lower_edges, lower_count);
     order(upper_edges, upper_count);
-    auto fill = [&](Bound& bound, int i, bool lower) {
-        const Rel& r = e[i];
-        const int32_t b = b_at(r, lo[i]), c = (ROWS ? r.dmin : -r.dmin) * one;
+    auto fill = [&](Bound& bound, int i, bool lower) __attribute__((always_inline)) {
+        const int32_t b = b_at(i, lo[i]), c = (ROWS ? dmin(i) : -dmin(i)) * one, t = edges[i].threshold;
         // lower: m >= ceil((t - B)/A), the numerator falling by C a line; upper: m <= floor((B - t)/-A)
-        const int32_t d = (ROWS == lower ? -r.dmaj : r.dmaj) * one;
-        floor_div_rem32(lower ? r.t - b + d - 1 : b - r.t, d, &bound.q, &bound.r);
+        const int32_t d = (ROWS == lower ? -dmaj(i) : dmaj(i)) * one;
+        floor_div_rem32(lower ? t - b + d - 1 : b - t, d, &bound.q, &bound.r);
         floor_div_rem32(lower ? -c : c, d, &bound.dq, &bound.dr);
         bound.d = uint32_t(d);
         bound.q += minor0;
@@ -254,13 +255,36 @@ void EdgeWalker::build_triangle(const PolygonSetup& s, int32_t first, int32_t la
     for (int32_t k = 0; k < lower_count; ++k) fill(lower_[k], lower_edges[k], true);
     for (int32_t k = 0; k < upper_count; ++k) fill(upper_[k], upper_edges[k], false);
     // the sentinels, as seal() makes them
-    auto sentinel = [](Bound& bound, int32_t never) {
+    auto sentinel = [](Bound& bound, int32_t never) __attribute__((always_inline)) {
         bound.first = bound.last = INT32_MAX;
         bound.q = never;
         bound.dq = 0, bound.r = 0, bound.dr = 0, bound.d = 1;
     };
     sentinel(lower_[lower_count], INT32_MIN);
     sentinel(upper_[upper_count], INT32_MAX);
+    return true;
+}
+
+}  // namespace
+
+bool triangle_rows(const TriangleRowsArgs* a) {
+    if (a->edges[0].dy == 0 || a->edges[1].dy == 0 || a->edges[2].dy == 0) return false;
+    int32_t first = a->first, last = a->last;
+    return triangle_bounds<true>(a->edges, &first, &last, a->origin_x, a->origin_y, a->lower, a->upper);
+}
+
+template <bool ROWS>
+void EdgeWalker::build_triangle(const PolygonSetup& s, int32_t first, int32_t last, int32_t origin_x, int32_t origin_y) {
+#if defined(MODEXLAB_ASM_LOOPS)
+    if (ROWS) {  // (its C++ twin: triangle_rows, which is triangle_bounds<true> without edges along the rows)
+        const TriangleRowsArgs a{s.edges, first, last, origin_x, origin_y, lower_, upper_};
+        if (triangle_rows_asm(&a)) {
+            line_ = first, last_line_ = last;
+            return;
+        }
+    }
+#endif
+    if (triangle_bounds<ROWS>(s.edges, &first, &last, origin_x, origin_y, lower_, upper_)) line_ = first, last_line_ = last;
 }
 
 }  // namespace raster

@@ -38,6 +38,23 @@ struct EdgeBound {
     static EdgeBound constant(int32_t q) { return EdgeBound{0, 0, q, 0, 0, 0, 1}; }
 };
 
+// A small triangle's row bounds, as EdgeWalker builds them in 32 bits (its box under 64 pixels a
+// side): the block asm/fast.asm's triangle_rows_asm takes. The chains come back in `lower` and
+// `upper` (room for three each: two bounds and the sentinel), in order of first line.
+struct TriangleRowsArgs {
+    const Edge* edges;           // the setup's three
+    int32_t first, last;         // the rows to walk, first <= last
+    int32_t origin_x, origin_y;  // the pixel corner the arithmetic is relative to (at or below the box)
+    EdgeBound* lower;
+    EdgeBound* upper;
+};
+// The C++ twin: the bounds of a triangle none of whose edges lies along a row; false, and nothing
+// written, where one does (the walker's own build takes those).
+bool triangle_rows(const TriangleRowsArgs* a);
+#if defined(MODEXLAB_ASM_LOOPS)
+extern "C" int triangle_rows_asm(const TriangleRowsArgs* a);
+#endif
+
 class EdgeWalker {
 public:
     EdgeWalker(const PolygonSetup& setup, Axis axis, const ClipRect& clip);

@@ -272,7 +272,11 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
 void fast_offsets() {
     ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, texture, u_16_16, v_16_16, u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally)
-    ASM_FIELDS(BOUND, EdgeBound, q, dq, r, dr, d)
+    ASM_FIELDS(BOUND, EdgeBound, first, last, q, dq, r, dr, d)
+    ASM_SIZE(BOUND_SIZE, EdgeBound);
+    ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)
+    ASM_SIZE(EDGE_SIZE, Edge);
+    ASM_FIELDS(TRI, TriangleRowsArgs, edges, first, last, origin_x, origin_y, lower, upper)
     ASM_CONSTANT(MODEX_ROW_BYTES, MODEX_ROW_BYTES);
 }
 #endif
