@@ -135,8 +135,9 @@ template <int N>
     const Vertex& va = *v[0];
     const Vertex& vb = *v[best];
     const Vertex& vc = *v[best + 1];
-    double xb = double(int64_t(vb.x.raw) - va.x.raw), yb = double(int64_t(vb.y.raw) - va.y.raw);
-    double xc = double(int64_t(vc.x.raw) - va.x.raw), yc = double(int64_t(vc.y.raw) - va.y.raw);
+    // (differences within 2^23: in 32 bits, converted from 32 bits)
+    const double xb = double(vb.x.raw - va.x.raw), yb = double(vb.y.raw - va.y.raw);
+    const double xc = double(vc.x.raw - va.x.raw), yc = double(vc.y.raw - va.y.raw);
     double d = double(best_area);
     if (planes & PLANES_PERSPECTIVE) {
         double qa = 1.0 / va.w, qb = 1.0 / vb.w, qc = 1.0 / vc.w;
