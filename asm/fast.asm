@@ -343,3 +343,291 @@ triangle_rows_asm:
     mov eax, 1
 .done:
     LOOP_LEAVE T_FRAME
+
+; setup_triangle_affine_asm(const Vertex* in, PolygonSetup* out): setup_polygon's work on a triangle
+; whose corners are in range (Input::InRange), affine planes only (PLANES_AFFINE), for the fast
+; mappers (twin: the same call in C++, kernel/core/setup.cpp): the orientation, the edges with the
+; top-left rule, the box, the u and v planes in x87 double arithmetic (53-bit precision, the
+; kernel's), operation for operation as plane_through, and their 16.16 form as finish_setup makes
+; it. Returns 1, or 0 with `out` in an unspecified state where C++ must do it: a repeated corner or
+; no area (degenerate), or a value off its 32-bit path (a 16.16 step of 32768 texels a pixel or
+; more, an anchor value outside [0, 16384) texels).
+S_P0      equ 0                         ; the corners in clockwise order
+S_P1      equ 4
+S_P2      equ 8
+S_XB      equ 12                        ; corners 1 and 2 relative to corner 0, subpixels (int32)
+S_YB      equ 16
+S_XC      equ 20
+S_YC      equ 24
+S_AX      equ 28                        ; the anchor pixel's centre relative to corner 0 (int32)
+S_AY      equ 32
+S_TMP     equ 36
+S_D       equ 40                        ; twice the area, as a double
+S_FRAME   equ 48
+
+; floor(st0) by the 32-bit path (floor_small), into eax; st0 popped. The caller checked |st0| < 2^31 - 1.
+%macro FLOOR_SMALL 0
+    fist dword [esp + S_TMP]            ; the nearest integer (round-to-nearest, as lrint)
+    mov eax, [esp + S_TMP]
+    fild dword [esp + S_TMP]
+    fcomip st0, st1                     ; t against x
+    fstp st0
+    jbe %%done                          ; t <= x
+    dec eax
+%%done:
+%endmacro
+
+; FixedN<16>::from_double(st0 * 256) into eax, st0 popped (the 32-bit path; else to .refuse)
+%macro FIXED_16_16_PER_PIXEL 0
+    fmul qword [c_256]
+    fmul qword [c_65536]
+    fadd qword [c_half]
+    fld st0
+    fabs
+    fcomp qword [c_small_floor]
+    fnstsw ax
+    sahf
+    jae .refuse_pop                     ; not below 2^31 - 1
+    jp .refuse_pop                      ; (NaN: unordered)
+    FLOOR_SMALL
+%endmacro
+
+; one plane (the corners' u or v at %1, the plane at %2) and its 16.16 form (at %3): esi, edi, edx
+; the oriented corners, ebp the setup
+%macro AFFINE_PLANE 3
+    fld qword [edi + %1]
+    fsub qword [esi + %1]               ; rb - ra
+    fld qword [edx + %1]
+    fsub qword [esi + %1]               ; rc - ra, rb - ra
+    fld st1
+    fimul dword [esp + S_YC]            ; (rb - ra) * yc
+    fld st1
+    fimul dword [esp + S_YB]            ; (rc - ra) * yb
+    fsubp st1, st0
+    fdiv qword [esp + S_D]
+    fstp qword [ebp + %2 + PLANE_gx]
+    fimul dword [esp + S_XB]            ; (rc - ra) * xb
+    fxch st1
+    fimul dword [esp + S_XC]            ; (rb - ra) * xc
+    fsubp st1, st0
+    fdiv qword [esp + S_D]
+    fstp qword [ebp + %2 + PLANE_gy]
+    mov eax, [esi + %1]
+    mov [ebp + %2 + PLANE_a0], eax
+    mov eax, [esi + %1 + 4]
+    mov [ebp + %2 + PLANE_a0 + 4], eax
+    ; 16.16: the steps, then the anchor's value (a0 + gy * ay) + gx * ax
+    fld qword [ebp + %2 + PLANE_gx]
+    FIXED_16_16_PER_PIXEL
+    mov [ebp + %3 + FIX_dx], eax
+    fld qword [ebp + %2 + PLANE_gy]
+    FIXED_16_16_PER_PIXEL
+    mov [ebp + %3 + FIX_dy], eax
+    fld qword [ebp + %2 + PLANE_gy]
+    fimul dword [esp + S_AY]
+    fadd qword [ebp + %2 + PLANE_a0]
+    fld qword [ebp + %2 + PLANE_gx]
+    fimul dword [esp + S_AX]
+    faddp st1, st0                      ; at
+    fldz
+    fcomip st0, st1
+    ja .refuse_pop                      ; below 0 (NaN: unordered sets CF and ZF: refused below)
+    jp .refuse_pop
+    fcom qword [c_16384]
+    fnstsw ax
+    sahf
+    jae .refuse_pop                     ; at or above 16384
+    fmul qword [c_65536]
+    fadd qword [c_half]
+    FLOOR_SMALL
+    mov [ebp + %3 + FIX_at], eax
+%endmacro
+
+; edge %1 from corner slot %2 to slot %3
+%macro SETUP_EDGE 3
+    mov esi, [esp + %2]
+    mov edi, [esp + %3]
+    mov eax, [esi + VERT_x]
+    mov [ebp + PS_edges + (%1) * EDGE_SIZE + EDGE_px], eax
+    mov ecx, [edi + VERT_x]
+    sub ecx, eax                        ; dx
+    mov [ebp + PS_edges + (%1) * EDGE_SIZE + EDGE_dx], ecx
+    mov eax, [esi + VERT_y]
+    mov [ebp + PS_edges + (%1) * EDGE_SIZE + EDGE_py], eax
+    mov edx, [edi + VERT_y]
+    sub edx, eax                        ; dy
+    mov [ebp + PS_edges + (%1) * EDGE_SIZE + EDGE_dy], edx
+    ; the top-left rule: threshold 0 going up (dy < 0) or along the top (dy = 0, dx > 0), else 1
+    mov eax, 1
+    test edx, edx
+    js %%zero
+    jnz %%set
+    test ecx, ecx
+    jle %%set
+%%zero:
+    xor eax, eax
+%%set:
+    mov [ebp + PS_edges + (%1) * EDGE_SIZE + EDGE_threshold], eax
+%endmacro
+
+; the box along one axis (%1: VERT_x or VERT_y) into %2 (min) and %3 (max), as 64-bit values
+%macro SETUP_BOX 3
+    mov esi, [esp + S_P0]
+    mov eax, [esi + %1]
+    mov ecx, eax
+    mov esi, [esp + S_P1]
+    mov edx, [esi + %1]
+    cmp edx, eax
+    cmovl eax, edx
+    cmp edx, ecx
+    cmovg ecx, edx
+    mov esi, [esp + S_P2]
+    mov edx, [esi + %1]
+    cmp edx, eax
+    cmovl eax, edx
+    cmp edx, ecx
+    cmovg ecx, edx
+    mov [ebp + %2], eax
+    sar eax, 31
+    mov [ebp + %2 + 4], eax
+    mov [ebp + %3], ecx
+    sar ecx, 31
+    mov [ebp + %3 + 4], ecx
+%endmacro
+
+global setup_triangle_affine_asm
+setup_triangle_affine_asm:
+    LOOP_ENTER S_FRAME
+    mov esi, LOOP_ARG(S_FRAME)          ; in
+    mov ebp, [esp + S_FRAME + 24]       ; out
+    ; a corner repeated: degenerate (C++ says so)
+    mov eax, [esi + VERT_x]
+    mov edx, [esi + VERT_y]
+    cmp eax, [esi + VERT_SIZE + VERT_x]
+    jne .one_two
+    cmp edx, [esi + VERT_SIZE + VERT_y]
+    je .refuse
+.one_two:
+    cmp eax, [esi + 2 * VERT_SIZE + VERT_x]
+    jne .two_three
+    cmp edx, [esi + 2 * VERT_SIZE + VERT_y]
+    je .refuse
+.two_three:
+    mov eax, [esi + VERT_SIZE + VERT_x]
+    cmp eax, [esi + 2 * VERT_SIZE + VERT_x]
+    jne .area
+    mov eax, [esi + VERT_SIZE + VERT_y]
+    cmp eax, [esi + 2 * VERT_SIZE + VERT_y]
+    je .refuse
+.area:
+    ; twice the signed area, (b - a) x (c - a), in 64 bits; clockwise (y down) when positive
+    mov ecx, [esi + VERT_x]
+    mov ebx, [esi + VERT_y]
+    mov eax, [esi + VERT_SIZE + VERT_x]
+    sub eax, ecx                        ; xb
+    mov edi, [esi + 2 * VERT_SIZE + VERT_y]
+    sub edi, ebx                        ; yc
+    imul edi                            ; xb * yc
+    mov [esp + S_D], eax
+    mov [esp + S_D + 4], edx
+    mov eax, [esi + 2 * VERT_SIZE + VERT_x]
+    sub eax, ecx                        ; xc
+    mov edi, [esi + VERT_SIZE + VERT_y]
+    sub edi, ebx                        ; yb
+    imul edi                            ; xc * yb
+    mov ecx, [esp + S_D]
+    mov ebx, [esp + S_D + 4]
+    sub ecx, eax
+    sbb ebx, edx                        ; ebx:ecx = area2
+    mov eax, ecx
+    or eax, ebx
+    jz .refuse                          ; no area
+    lea eax, [esi + 2 * VERT_SIZE]
+    test ebx, ebx
+    js .counter
+    mov [esp + S_P0], esi
+    mov [esp + S_P2], eax
+    jmp .oriented
+.counter:                               ; counter-clockwise: the order reversed (c, b, a), the area negated
+    mov [esp + S_P0], eax
+    mov [esp + S_P2], esi
+    neg ecx
+    adc ebx, 0
+    neg ebx
+.oriented:
+    lea eax, [esi + VERT_SIZE]
+    mov [esp + S_P1], eax
+    mov dword [ebp + PS_edge_count], 3
+    mov [ebp + PS_area2], ecx
+    mov [ebp + PS_area2 + 4], ebx
+    fild qword [ebp + PS_area2]
+    fstp qword [esp + S_D]              ; d
+    SETUP_EDGE 0, S_P0, S_P1
+    SETUP_EDGE 1, S_P1, S_P2
+    SETUP_EDGE 2, S_P2, S_P0
+    SETUP_BOX VERT_x, PS_min_x, PS_max_x
+    SETUP_BOX VERT_y, PS_min_y, PS_max_y
+    ; the reference vertex: corner 0
+    mov esi, [esp + S_P0]
+    mov edi, [esp + S_P1]
+    mov edx, [esp + S_P2]
+    mov eax, [esi + VERT_x]
+    mov [ebp + PS_ref_x], eax
+    sar eax, 31
+    mov [ebp + PS_ref_x + 4], eax
+    mov eax, [esi + VERT_y]
+    mov [ebp + PS_ref_y], eax
+    sar eax, 31
+    mov [ebp + PS_ref_y + 4], eax
+    ; corners 1 and 2 relative to corner 0
+    mov ecx, [esi + VERT_x]
+    mov eax, [edi + VERT_x]
+    sub eax, ecx
+    mov [esp + S_XB], eax
+    mov eax, [edx + VERT_x]
+    sub eax, ecx
+    mov [esp + S_XC], eax
+    mov ecx, [esi + VERT_y]
+    mov eax, [edi + VERT_y]
+    sub eax, ecx
+    mov [esp + S_YB], eax
+    mov eax, [edx + VERT_y]
+    sub eax, ecx
+    mov [esp + S_YC], eax
+    ; the anchor: the pixel holding corner 0, its centre relative to the corner
+    mov eax, [esi + VERT_x]
+    mov ecx, eax
+    sar ecx, 8
+    mov [ebp + PS_u_fx + FIX_x0], ecx
+    mov [ebp + PS_v_fx + FIX_x0], ecx
+    shl ecx, 8
+    add ecx, 128
+    sub ecx, eax
+    mov [esp + S_AX], ecx
+    mov eax, [esi + VERT_y]
+    mov ecx, eax
+    sar ecx, 8
+    mov [ebp + PS_u_fx + FIX_y0], ecx
+    mov [ebp + PS_v_fx + FIX_y0], ecx
+    shl ecx, 8
+    add ecx, 128
+    sub ecx, eax
+    mov [esp + S_AY], ecx
+    AFFINE_PLANE VERT_u, PS_u, PS_u_fx
+    AFFINE_PLANE VERT_v, PS_v, PS_v_fx
+    mov eax, 1
+    jmp .done
+.refuse_pop:
+    fstp st0
+.refuse:
+    xor eax, eax
+.done:
+    LOOP_LEAVE S_FRAME
+
+section .rodata
+align 8
+c_256:          dq 256.0
+c_65536:        dq 65536.0
+c_half:         dq 0.5
+c_small_floor:  dq 2147483647.0
+c_16384:        dq 16384.0

@@ -114,6 +114,14 @@ bool vertices_in_range(const Vertex* vertices, int count);
 // convexity, builds the edges and the planes. Any input is safe: on anything but Ok, `out` must
 // not be drawn.
 SetupStatus setup_polygon(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL, Input input = Input::Any);
+// The same in C++ alone. Where the NASM loops are built in (the kernel, the 32-bit host
+// programs), setup_polygon takes a triangle in range with affine planes only (the fast mappers' on
+// a frame's uncut faces) through setup_triangle_affine_asm (asm/fast.asm), whose twin this is:
+// it writes the same fields with the same bits, or returns 0 and leaves the triangle to C++.
+SetupStatus setup_polygon_cpp(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL, Input input = Input::Any);
+#if defined(MODEXLAB_ASM_LOOPS)
+extern "C" int setup_triangle_affine_asm(const Vertex* in, PolygonSetup* out);
+#endif
 
 // Whether the pixel centre (x + 0.5, y + 0.5) is inside: the definition the walkers implement.
 bool covers(const PolygonSetup& s, int32_t x, int32_t y);

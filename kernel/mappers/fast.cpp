@@ -277,6 +277,11 @@ void fast_offsets() {
     ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)
     ASM_SIZE(EDGE_SIZE, Edge);
     ASM_FIELDS(TRI, TriangleRowsArgs, edges, first, last, origin_x, origin_y, lower, upper)
+    ASM_FIELDS(VERT, Vertex, x, y, u, v)
+    ASM_SIZE(VERT_SIZE, Vertex);
+    ASM_FIELDS(PS, PolygonSetup, edge_count, edges, area2, ref_x, ref_y, min_x, min_y, max_x, max_y, u, v, u_fx, v_fx)
+    ASM_FIELDS(PLANE, Plane, a0, gx, gy)
+    ASM_FIELDS(FIX, FixedPlane, x0, y0, at, dx, dy)
     ASM_CONSTANT(MODEX_ROW_BYTES, MODEX_ROW_BYTES);
 }
 #endif
