@@ -495,6 +495,27 @@ S_FRAME   equ 48
     mov [ebp + %3 + 4], ecx
 %endmacro
 
+; along one axis (%1: VERT_x or VERT_y), esi, edi, edx the oriented corners: corners 1 and 2
+; relative to corner 0 (into %2, %3), and the anchor, the pixel holding corner 0 (its coordinate
+; into both 16.16 planes' %4), its centre relative to the corner (into %5)
+%macro SETUP_AXIS 5
+    mov ecx, [esi + %1]
+    mov eax, [edi + %1]
+    sub eax, ecx
+    mov [esp + %2], eax
+    mov eax, [edx + %1]
+    sub eax, ecx
+    mov [esp + %3], eax
+    mov eax, ecx
+    sar ecx, 8
+    mov [ebp + PS_u_fx + %4], ecx
+    mov [ebp + PS_v_fx + %4], ecx
+    shl ecx, 8
+    add ecx, 128
+    sub ecx, eax
+    mov [esp + %5], ecx
+%endmacro
+
 global setup_triangle_affine_asm
 setup_triangle_affine_asm:
     LOOP_ENTER S_FRAME
@@ -579,40 +600,8 @@ setup_triangle_affine_asm:
     mov [ebp + PS_ref_y], eax
     sar eax, 31
     mov [ebp + PS_ref_y + 4], eax
-    ; corners 1 and 2 relative to corner 0
-    mov ecx, [esi + VERT_x]
-    mov eax, [edi + VERT_x]
-    sub eax, ecx
-    mov [esp + S_XB], eax
-    mov eax, [edx + VERT_x]
-    sub eax, ecx
-    mov [esp + S_XC], eax
-    mov ecx, [esi + VERT_y]
-    mov eax, [edi + VERT_y]
-    sub eax, ecx
-    mov [esp + S_YB], eax
-    mov eax, [edx + VERT_y]
-    sub eax, ecx
-    mov [esp + S_YC], eax
-    ; the anchor: the pixel holding corner 0, its centre relative to the corner
-    mov eax, [esi + VERT_x]
-    mov ecx, eax
-    sar ecx, 8
-    mov [ebp + PS_u_fx + FIX_x0], ecx
-    mov [ebp + PS_v_fx + FIX_x0], ecx
-    shl ecx, 8
-    add ecx, 128
-    sub ecx, eax
-    mov [esp + S_AX], ecx
-    mov eax, [esi + VERT_y]
-    mov ecx, eax
-    sar ecx, 8
-    mov [ebp + PS_u_fx + FIX_y0], ecx
-    mov [ebp + PS_v_fx + FIX_y0], ecx
-    shl ecx, 8
-    add ecx, 128
-    sub ecx, eax
-    mov [esp + S_AY], ecx
+    SETUP_AXIS VERT_x, S_XB, S_XC, FIX_x0, S_AX
+    SETUP_AXIS VERT_y, S_YB, S_YC, FIX_y0, S_AY
     AFFINE_PLANE VERT_u, PS_u, PS_u_fx
     AFFINE_PLANE VERT_v, PS_v, PS_v_fx
     mov eax, 1

@@ -102,19 +102,19 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
     return choose_and_draw(vertices, count, tex, axis, target, stats, variant, budget, &prepared);
 }
 
-SetupStatus draw_enveloped(const Vertex* vertices, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                           RenderStats* stats, Variant variant, const Budget& budget) {
+SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
+    RenderStats* stats = enveloped.stats;
     probe_lap(stats->probe, Phase::Walk);
     {
         PolygonSetup setup;
         // (an uncut triangle: in range, as build_frame makes it)
         if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE, Input::InRange) == SetupStatus::Ok && envelope_guards(setup)) {
-            ++stats->enveloped;  // (plan_auto checked what draw_with would)
-            return draw_with(Drawer::of(mapper, tex, axis, target, stats, variant, true), vertices, 3, &setup, nullptr, Input::InRange);
+            ++stats->enveloped;
+            return draw_with(enveloped, vertices, 3, &setup, nullptr, Input::InRange);
         }
     }
     PreparedPolygon prepared;
-    return choose_and_draw(vertices, 3, tex, axis, target, stats, variant, budget, &prepared);
+    return choose_and_draw(vertices, 3, *enveloped.tex, enveloped.axis, *enveloped.target, stats, variant, budget, &prepared);
 }
 
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,

@@ -37,11 +37,11 @@ struct Drawer {
     SetupStatus draw(const Vertex* vertices, int count, Input input = Input::Any) const;
 };
 
-// auto on an uncut triangle of an object whose envelope proves `mapper` (plan_auto, choice.h):
-// the mapper's own setup (affine planes), the envelope's guards on it (envelope_guards), and the
-// mapper drawing from it; where a guard fails, auto's choice as in draw_polygon.
-SetupStatus draw_enveloped(const Vertex* vertices, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                           RenderStats* stats, Variant variant, const Budget& budget);
+// auto on an uncut triangle of an object whose envelope proves the mapper of `enveloped` (plan_auto,
+// choice.h; the drawer made once an object, checked): the mapper's own setup (affine planes), the
+// envelope's guards on it (envelope_guards), and the mapper drawing from it; where a guard fails,
+// auto's choice as in draw_polygon, with the drawer's texture, axis and target.
+SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget);
 
 // The polygon being drawn, for a fault's report (the kernel's page-fault handler names them): the
 // mapper asked for and the polygon's index in the scene, frame or run; mapper null between drawings.

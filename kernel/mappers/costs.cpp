@@ -5,34 +5,34 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1785.3f, 361.55f, 40.238f}, // 10 scenes
-    {"exact", 1561.6f, 316.02f, 80.216f}, // 10 scenes
-    {"persp-subdiv-4", 1561.6f, 325.99f, 94.396f}, // 10 scenes
-    {"persp-subdiv-8", 1561.6f, 383.56f, 60.928f}, // 10 scenes
-    {"persp-subdiv-16", 1561.6f, 424.55f, 44.054f}, // 10 scenes
-    {"persp-subdiv-32", 1561.6f, 446.01f, 35.808f}, // 10 scenes
-    {"constant-depth", 1561.6f, 463.14f, 29.741f}, // 10 scenes
-    {"persp-adaptive-0.5", 1561.6f, 933.87f, 323.015f}, // 10 scenes
-    {"persp-adaptive-1", 1561.6f, 1103.01f, 51.469f}, // 10 scenes
-    {"persp-adaptive-2", 1561.6f, 1120.14f, 44.196f}, // 10 scenes
-    {"persp-adaptive-4", 1561.6f, 1132.29f, 39.955f}, // 10 scenes
-    {"fast-affine", 1861.3f, 163.04f, 4.004f}, // 10 scenes
-    {"fast-columns", 1863.9f, 258.88f, 5.425f}, // 10 scenes
-    {"fast-subdiv-8", 1583.6f, 297.17f, 13.487f}, // 10 scenes
-    {"fast-subdiv-16", 1583.6f, 306.93f, 9.563f}, // 10 scenes
-    {"fast-subdiv-32", 1583.6f, 311.79f, 7.663f}, // 10 scenes
-    {"fast-constant-depth", 1583.6f, 316.13f, 6.105f}, // 10 scenes
-    {"fast-adaptive-1", 1583.6f, 339.44f, 9.245f}, // 10 scenes
-    {"fast-adaptive-2", 1583.6f, 343.03f, 7.820f}, // 10 scenes
-    {"xsharp-dda", 1588.0f, 384.75f, 37.871f}, // 9 scenes
-    {"xsharp-row-out", 1593.0f, 520.08f, 19.371f}, // 9 scenes
-    {"xsharp-column", 1594.6f, 491.50f, 13.125f}, // 9 scenes
-    {"hecker-steptable", 5552.8f, 0.00f, 636.594f}, // 9 scenes
-    {"fatmap-256", 1966.3f, 173.88f, 13.276f}, // 8 scenes
-    {"fatmap-256-16", 1966.3f, 178.88f, 12.276f}, // 8 scenes
-    {"fatmap-lut", 2582.8f, 177.49f, 9.648f}, // 7 scenes
-    {"quake-subdiv16", 2086.0f, 311.14f, 13.677f}, // 9 scenes
-    {"quake-subdiv8", 2086.0f, 295.77f, 20.038f}, // 9 scenes
+    {"affine", 1089.3f, 357.49f, 40.357f}, // 10 scenes
+    {"exact", 1023.1f, 311.96f, 80.335f}, // 10 scenes
+    {"persp-subdiv-4", 1023.1f, 321.93f, 94.515f}, // 10 scenes
+    {"persp-subdiv-8", 1023.1f, 379.50f, 61.047f}, // 10 scenes
+    {"persp-subdiv-16", 1023.1f, 420.50f, 44.173f}, // 10 scenes
+    {"persp-subdiv-32", 1023.1f, 441.95f, 35.927f}, // 10 scenes
+    {"constant-depth", 1023.1f, 459.08f, 29.861f}, // 10 scenes
+    {"persp-adaptive-0.5", 1023.1f, 929.81f, 323.134f}, // 10 scenes
+    {"persp-adaptive-1", 1023.1f, 1098.95f, 51.588f}, // 10 scenes
+    {"persp-adaptive-2", 1023.1f, 1116.08f, 44.316f}, // 10 scenes
+    {"persp-adaptive-4", 1023.1f, 1128.24f, 40.075f}, // 10 scenes
+    {"fast-affine", 1140.3f, 159.07f, 4.126f}, // 10 scenes
+    {"fast-columns", 1212.6f, 255.05f, 5.552f}, // 10 scenes
+    {"fast-subdiv-8", 1023.1f, 293.10f, 13.611f}, // 10 scenes
+    {"fast-subdiv-16", 1023.1f, 302.87f, 9.687f}, // 10 scenes
+    {"fast-subdiv-32", 1023.1f, 307.72f, 7.787f}, // 10 scenes
+    {"fast-constant-depth", 1023.1f, 312.06f, 6.228f}, // 10 scenes
+    {"fast-adaptive-1", 1023.1f, 335.38f, 9.369f}, // 10 scenes
+    {"fast-adaptive-2", 1023.1f, 338.97f, 7.944f}, // 10 scenes
+    {"xsharp-dda", 1560.0f, 380.28f, 38.001f}, // 9 scenes
+    {"xsharp-row-out", 1560.0f, 515.59f, 19.499f}, // 9 scenes
+    {"xsharp-column", 1563.6f, 487.61f, 13.239f}, // 9 scenes
+    {"hecker-steptable", 5404.2f, 0.00f, 636.475f}, // 9 scenes
+    {"fatmap-256", 1807.9f, 168.54f, 13.489f}, // 8 scenes
+    {"fatmap-256-16", 1807.9f, 173.54f, 12.489f}, // 8 scenes
+    {"fatmap-lut", 2424.7f, 172.06f, 9.884f}, // 7 scenes
+    {"quake-subdiv16", 1549.4f, 307.15f, 13.801f}, // 9 scenes
+    {"quake-subdiv8", 1549.4f, 291.78f, 20.162f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

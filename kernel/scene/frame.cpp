@@ -377,11 +377,17 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
     stats.probe = probe;
     // auto: what it settles once a frame per object (choice.h, AutoPlan)
     AutoPlan plans[MAX_WORLD_OBJECTS];
-    // any other mapper: what it settles once for a texture (render.h, Drawer)
+    // any other mapper, or the one auto's envelope proves: what it settles once for a texture
+    // (render.h, Drawer)
     Drawer drawers[MAX_WORLD_OBJECTS];
     for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o) {
-        if (mapper.chooses) plans[o] = plan_auto(frame.budget, textures.objects[o], target, frame.envelope[o].footprint);
-        else drawers[o] = Drawer::of(mapper, textures.objects[o], axis, target, &stats, variant);
+        if (!mapper.chooses) {
+            drawers[o] = Drawer::of(mapper, textures.objects[o], axis, target, &stats, variant);
+            continue;
+        }
+        plans[o] = plan_auto(frame.budget, textures.objects[o], target, frame.envelope[o].footprint);
+        if (plans[o].enveloped)  // (plan_auto checked what Drawer::of would)
+            drawers[o] = Drawer::of(*plans[o].enveloped, textures.objects[o], plans[o].enveloped_axis, target, &stats, variant, true);
     }
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
@@ -397,7 +403,7 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
         if (!mapper.chooses)
             drawers[object].draw(v, n, input);
         else if (plan.enveloped && frame.polygon_whole[i] && n == 3)
-            draw_enveloped(v, tex, *plan.enveloped, plan.enveloped_axis, target, &stats, variant, frame.budget);
+            draw_enveloped(drawers[object], v, variant, frame.budget);
         else if ((unchosen = unchosen_mapper(plan, v, n, target.clip, &unchosen_axis)))
             draw_polygon(v, n, tex, *unchosen, unchosen_axis, target, &stats, variant, DEFAULT_BUDGET, input);
         else
