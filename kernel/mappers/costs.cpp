@@ -5,34 +5,34 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1089.3f, 357.49f, 40.357f}, // 10 scenes
-    {"exact", 1023.1f, 311.96f, 80.335f}, // 10 scenes
-    {"persp-subdiv-4", 1023.1f, 321.93f, 94.515f}, // 10 scenes
-    {"persp-subdiv-8", 1023.1f, 379.50f, 61.047f}, // 10 scenes
-    {"persp-subdiv-16", 1023.1f, 420.50f, 44.173f}, // 10 scenes
-    {"persp-subdiv-32", 1023.1f, 441.95f, 35.927f}, // 10 scenes
-    {"constant-depth", 1023.1f, 459.08f, 29.861f}, // 10 scenes
-    {"persp-adaptive-0.5", 1023.1f, 929.81f, 323.134f}, // 10 scenes
-    {"persp-adaptive-1", 1023.1f, 1098.95f, 51.588f}, // 10 scenes
-    {"persp-adaptive-2", 1023.1f, 1116.08f, 44.316f}, // 10 scenes
-    {"persp-adaptive-4", 1023.1f, 1128.24f, 40.075f}, // 10 scenes
-    {"fast-affine", 1140.3f, 159.07f, 4.126f}, // 10 scenes
-    {"fast-columns", 1212.6f, 255.05f, 5.552f}, // 10 scenes
-    {"fast-subdiv-8", 1023.1f, 293.10f, 13.611f}, // 10 scenes
-    {"fast-subdiv-16", 1023.1f, 302.87f, 9.687f}, // 10 scenes
-    {"fast-subdiv-32", 1023.1f, 307.72f, 7.787f}, // 10 scenes
-    {"fast-constant-depth", 1023.1f, 312.06f, 6.228f}, // 10 scenes
-    {"fast-adaptive-1", 1023.1f, 335.38f, 9.369f}, // 10 scenes
-    {"fast-adaptive-2", 1023.1f, 338.97f, 7.944f}, // 10 scenes
-    {"xsharp-dda", 1560.0f, 380.28f, 38.001f}, // 9 scenes
-    {"xsharp-row-out", 1560.0f, 515.59f, 19.499f}, // 9 scenes
-    {"xsharp-column", 1563.6f, 487.61f, 13.239f}, // 9 scenes
-    {"hecker-steptable", 5404.2f, 0.00f, 636.475f}, // 9 scenes
-    {"fatmap-256", 1807.9f, 168.54f, 13.489f}, // 8 scenes
-    {"fatmap-256-16", 1807.9f, 173.54f, 12.489f}, // 8 scenes
-    {"fatmap-lut", 2424.7f, 172.06f, 9.884f}, // 7 scenes
-    {"quake-subdiv16", 1549.4f, 307.15f, 13.801f}, // 9 scenes
-    {"quake-subdiv8", 1549.4f, 291.78f, 20.162f}, // 9 scenes
+    {"affine", 1087.6f, 356.32f, 40.380f}, // 10 scenes
+    {"exact", 1023.1f, 310.79f, 80.359f}, // 10 scenes
+    {"persp-subdiv-4", 1023.1f, 320.76f, 94.538f}, // 10 scenes
+    {"persp-subdiv-8", 1023.1f, 378.32f, 61.070f}, // 10 scenes
+    {"persp-subdiv-16", 1023.1f, 419.32f, 44.196f}, // 10 scenes
+    {"persp-subdiv-32", 1023.1f, 440.78f, 35.950f}, // 10 scenes
+    {"constant-depth", 1023.1f, 457.91f, 29.884f}, // 10 scenes
+    {"persp-adaptive-0.5", 1023.1f, 928.64f, 323.158f}, // 10 scenes
+    {"persp-adaptive-1", 1023.1f, 1097.78f, 51.611f}, // 10 scenes
+    {"persp-adaptive-2", 1023.1f, 1114.91f, 44.339f}, // 10 scenes
+    {"persp-adaptive-4", 1023.1f, 1127.06f, 40.098f}, // 10 scenes
+    {"fast-affine", 1138.6f, 157.90f, 4.150f}, // 10 scenes
+    {"fast-columns", 1210.9f, 253.93f, 5.576f}, // 10 scenes
+    {"fast-subdiv-8", 1023.1f, 291.93f, 13.634f}, // 10 scenes
+    {"fast-subdiv-16", 1023.1f, 301.70f, 9.710f}, // 10 scenes
+    {"fast-subdiv-32", 1023.1f, 306.55f, 7.810f}, // 10 scenes
+    {"fast-constant-depth", 1023.1f, 310.89f, 6.252f}, // 10 scenes
+    {"fast-adaptive-1", 1023.1f, 334.20f, 9.392f}, // 10 scenes
+    {"fast-adaptive-2", 1023.1f, 337.79f, 7.968f}, // 10 scenes
+    {"xsharp-dda", 1560.0f, 379.01f, 38.028f}, // 9 scenes
+    {"xsharp-row-out", 1560.0f, 514.32f, 19.525f}, // 9 scenes
+    {"xsharp-column", 1563.6f, 486.51f, 13.261f}, // 9 scenes
+    {"hecker-steptable", 5404.2f, 0.00f, 636.433f}, // 9 scenes
+    {"fatmap-256", 1807.9f, 167.24f, 13.531f}, // 8 scenes
+    {"fatmap-256-16", 1807.9f, 172.24f, 12.531f}, // 8 scenes
+    {"fatmap-lut", 2424.7f, 170.75f, 9.929f}, // 7 scenes
+    {"quake-subdiv16", 1549.4f, 305.97f, 13.825f}, // 9 scenes
+    {"quake-subdiv8", 1549.4f, 290.61f, 20.186f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
