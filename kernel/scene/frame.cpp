@@ -380,6 +380,7 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
     // any other mapper, or the one auto's envelope proves: what it settles once for a texture
     // (render.h, Drawer)
     Drawer drawers[MAX_WORLD_OBJECTS];
+    Drawer certain[MAX_WORLD_OBJECTS][2];  // auto: its certain mapper, by walker (what unchosen_mapper gives)
     for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o) {
         if (!mapper.chooses) {
             drawers[o] = Drawer::of(mapper, textures.objects[o], axis, target, &stats, variant);
@@ -388,6 +389,8 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
         plans[o] = plan_auto(frame.budget, textures.objects[o], target, frame.envelope[o].footprint);
         if (plans[o].enveloped)  // (plan_auto checked what Drawer::of would)
             drawers[o] = Drawer::of(*plans[o].enveloped, textures.objects[o], plans[o].enveloped_axis, target, &stats, variant, true);
+        if (plans[o].certain)
+            for (int a = 0; a < 2; ++a) certain[o][a] = Drawer::of(*plans[o].certain, textures.objects[o], Axis(a), target, &stats, variant);
     }
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
@@ -404,7 +407,9 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
             drawers[object].draw(v, n, input);
         else if (plan.enveloped && frame.polygon_whole[i] && n == 3)
             draw_enveloped(drawers[object], v, variant, frame.budget);
-        else if ((unchosen = unchosen_mapper(plan, v, n, target.clip, &unchosen_axis)))
+        else if ((unchosen = unchosen_mapper(plan, v, n, target.clip, &unchosen_axis)) && unchosen == plan.certain)
+            certain[object][int(unchosen_axis)].draw(v, n, input);
+        else if (unchosen)
             draw_polygon(v, n, tex, *unchosen, unchosen_axis, target, &stats, variant, DEFAULT_BUDGET, input);
         else
             draw_polygon(v, n, tex, mapper, axis, target, &stats, variant, frame.budget);
