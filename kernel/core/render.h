@@ -20,7 +20,8 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
                          Input input = Input::Any);
 // A mapper set to draw with one texture along one axis into one target: what draw_polygon settles
 // before each polygon (whether the mapper takes them at all, and its loop), settled once, for a
-// mapper that does not choose (render_frame keeps one an object).
+// mapper that does not choose (render_frame keeps them an object: the frame's mapper, or auto's
+// envelope-proven and certain ones).
 struct Drawer {
     const Mapper* mapper = nullptr;
     const Texture* tex = nullptr;

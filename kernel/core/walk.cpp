@@ -74,7 +74,7 @@ EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) :
     // come out the same: moving the polygon and the pixel grid by whole pixels moves each bound's
     // quotient by as many pixels and leaves its remainder.
     constexpr int32_t SMALL = 64 << SUBPIXEL_BITS;
-    // (a triangle's loops unrolled: most polygons of a mesh are small triangles)
+    // (a triangle by its own build: most polygons of a mesh are small triangles)
     if (max_x - min_x < SMALL && max_y - min_y < SMALL) {
         const int32_t ox = min_x >> SUBPIXEL_BITS, oy = min_y >> SUBPIXEL_BITS;  // (floors)
         if (s.edge_count == 3 && rows)
@@ -82,15 +82,15 @@ EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) :
         else if (s.edge_count == 3)
             build_triangle<false>(s, first, last, ox, oy);
         else
-            build<int32_t, 0>(s, first, last, ox, oy);
+            build<int32_t>(s, first, last, ox, oy);
     } else {
-        build<int64_t, 0>(s, first, last, 0, 0);
+        build<int64_t>(s, first, last, 0, 0);
     }
 }
 
-template <typename I, int N>
+template <typename I>
 void EdgeWalker::build(const PolygonSetup& s, I first, I last, int64_t origin_x, int64_t origin_y) {
-    const int edges = N ? N : s.edge_count;
+    const int edges = s.edge_count;
     const bool rows = axis_ == Axis::Rows;
     // coordinates relative to the pixel corner (origin_x, origin_y); lines and the minor coordinate
     // too, given back absolute in the bounds (line0, minor0)
@@ -110,7 +110,6 @@ void EdgeWalker::build(const PolygonSetup& s, I first, I last, int64_t origin_x,
     // edges along the lines (top and bottom for rows, left and right for columns) cut whole lines:
     // E(L) = B(L) = B(first) + (L - first) * C >= t, with C = +-(the edge's minor extent) * 256 != 0
     const I base = first;
-#pragma GCC unroll 3
     for (int i = 0; i < edges; ++i) {
         const Edge& e = s.edges[i];
         if ((rows ? e.dy : e.dx) != 0) continue;
@@ -129,7 +128,6 @@ void EdgeWalker::build(const PolygonSetup& s, I first, I last, int64_t origin_x,
     last_line_ = int32_t(last + line0);
 
     int32_t lower_count = 0, upper_count = 0;
-#pragma GCC unroll 3
     for (int i = 0; i < edges; ++i) {
         const Edge& e = s.edges[i];
         const I dx = I(e.dx), dy = I(e.dy), px = I(e.px - ox), py = I(e.py - oy);
@@ -168,12 +166,8 @@ namespace {
     *r = uint32_t(remainder);
 }
 
-}  // namespace
-
-namespace {
-
-// build<int32_t, 3>'s arithmetic, term for term (the same bounds to the bit: FillRule's tests walk
-// both). Along the axis: major = the line's coordinate, minor = across it; for rows (major y)
+// build's arithmetic for three edges in 32 bits, term for term (FillRule's tests check both
+// against covers()). Along the axis: major = the line's coordinate, minor = across it; for rows (major y)
 // E = dmin * (centre - pmaj) - dmaj * (m*256 + 128 - pmin), for columns (major x) its negation.
 // Returns false where an edge along the lines leaves no line (nothing written then); first and last
 // come back cut by such an edge.

@@ -107,8 +107,8 @@ private:
     // Sorts by first line, then seals the list with a sentinel that is never live and never binds.
     static void seal(Bound* list, int32_t count, int32_t never);
     // The bounds of lines first..last (clipped), in integers of type I, coordinates taken relative
-    // to the pixel (origin_x, origin_y); N: the polygon's edges where known (3), else 0.
-    template <typename I, int N>
+    // to the pixel (origin_x, origin_y).
+    template <typename I>
     void build(const PolygonSetup& s, I first, I last, int64_t origin_x, int64_t origin_y);
     // The same for a triangle in 32 bits (its box under 64 pixels a side), written for the mesh's
     // small triangles: the axis fixed, one division a quotient and its remainder, the chains put in

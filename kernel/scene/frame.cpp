@@ -131,16 +131,15 @@ struct SortBuffers {
     uint32_t* key[2];    // what they are sorted by
     uint32_t* other[2];  // the rest of the key, carried along
     int32_t* at[2];      // the entries' indices, carried along
-    int32_t* count;      // room for the digits' bucket sizes (DIGITS x BUCKETS)
+    int32_t* count;      // room for the digits' bucket sizes (FrameScratch::DIGIT_COUNTS)
 };
 
-// The keys' digits: 11 bits, three of them a 32-bit key.
-constexpr int DIGIT_BITS = 11, DIGITS = 3;
-constexpr uint32_t BUCKETS = 1u << DIGIT_BITS;
-
-// One stable counting pass over places [b, e) by the digit of the keys at `shift`, whose bucket
-// sizes are in `count` (made starts here), from buffer `from` into the same places of the other.
+// One stable counting pass over places [b, e) by the BITS-bit digit of the keys at `shift`, whose
+// bucket sizes are in `count` (made starts here), from buffer `from` into the same places of the
+// other.
+template <int BITS>
 void digit_pass(const SortBuffers& s, int from, int32_t b, int32_t e, int shift, int32_t* count) {
+    constexpr uint32_t BUCKETS = 1u << BITS;
     for (uint32_t k = 0, sum = uint32_t(b); k < BUCKETS; ++k) {
         const int32_t c = count[k];
         count[k] = int32_t(sum), sum += uint32_t(c);
@@ -153,41 +152,54 @@ void digit_pass(const SortBuffers& s, int from, int32_t b, int32_t e, int shift,
     }
 }
 
-// A stable sort of places [b, e) of buffer 0 by key, the result in buffer 0: by insertion up to 16
-// places (moved only past larger keys), else by the key's digits, the least significant first: the
-// three digits' bucket sizes counted in one pass, and a pass skipped where every key has the same
-// digit (a frame's depths share their sign and exponent, so most of the top digit).
-void sort_by_key(const SortBuffers& s, int32_t b, int32_t e) {
+// Places [b, e) of buffer 0 by the key's BITS-bit digits, the least significant first: every
+// digit's bucket sizes counted in one pass, and a pass skipped where every key has the same digit
+// (a frame's depths share their sign and exponent, so most of the top digit). The result in buffer
+// 0.
+template <int BITS>
+void radix_sort(const SortBuffers& s, int32_t b, int32_t e) {
+    constexpr int DIGITS = (32 + BITS - 1) / BITS;
+    constexpr uint32_t BUCKETS = 1u << BITS;
+    static_assert(DIGITS * BUCKETS <= FrameScratch::DIGIT_COUNTS);
     uint32_t *key = s.key[0], *other = s.other[0];
     int32_t* at = s.at[0];
-    if (e - b <= 16) {
-        for (int32_t i = b + 1; i < e; ++i) {
-            const uint32_t k = key[i], o = other[i];
-            const int32_t index = at[i];
-            int32_t j = i;
-            for (; j > b && key[j - 1] > k; --j) key[j] = key[j - 1], other[j] = other[j - 1], at[j] = at[j - 1];
-            key[j] = k, other[j] = o, at[j] = index;
-        }
-        return;
-    }
     int32_t* count = s.count;
     __builtin_memset(count, 0, sizeof(int32_t) * DIGITS * BUCKETS);
     for (int32_t i = b; i < e; ++i) {
         const uint32_t k = key[i];
-        ++count[k & (BUCKETS - 1)];
-        ++count[BUCKETS + ((k >> DIGIT_BITS) & (BUCKETS - 1))];
-        ++count[2 * BUCKETS + (k >> (2 * DIGIT_BITS))];
+#pragma GCC unroll 4
+        for (int d = 0; d < DIGITS; ++d) ++count[d * BUCKETS + ((k >> (d * BITS)) & (BUCKETS - 1))];
     }
     int in = 0;
     for (int d = 0; d < DIGITS; ++d) {
         int32_t* c = count + d * BUCKETS;
-        const int shift = d * DIGIT_BITS;
+        const int shift = d * BITS;
         if (c[(key[b] >> shift) & (BUCKETS - 1)] == e - b) continue;  // (key: buffer 0's; any key has the digit then)
-        digit_pass(s, in, b, e, shift, c);
+        digit_pass<BITS>(s, in, b, e, shift, c);
         in = 1 - in;
     }
     if (in == 1)
         for (int32_t i = b; i < e; ++i) key[i] = s.key[1][i], other[i] = s.other[1][i], at[i] = s.at[1][i];
+}
+
+// A stable sort of places [b, e) of buffer 0 by key, the result in buffer 0: by insertion up to 16
+// places (moved only past larger keys), else by radix: 11-bit digits from 1024 places (three
+// passes at most, 6144 buckets to clear), bytes below (four, 1024).
+void sort_by_key(const SortBuffers& s, int32_t b, int32_t e) {
+    if (e - b > 16) {
+        if (e - b >= 1024) radix_sort<11>(s, b, e);
+        else radix_sort<8>(s, b, e);
+        return;
+    }
+    uint32_t *key = s.key[0], *other = s.other[0];
+    int32_t* at = s.at[0];
+    for (int32_t i = b + 1; i < e; ++i) {
+        const uint32_t k = key[i], o = other[i];
+        const int32_t index = at[i];
+        int32_t j = i;
+        for (; j > b && key[j - 1] > k; --j) key[j] = key[j - 1], other[j] = other[j - 1], at[j] = at[j - 1];
+        key[j] = k, other[j] = o, at[j] = index;
+    }
 }
 
 }  // namespace

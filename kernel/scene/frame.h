@@ -75,14 +75,15 @@ struct FrameScratch {
     // painter_order's two buffers: each entry's key (its depth's bits, in halves) and index
     uint32_t key_lo[2][MAX_FRAME_POLYGONS], key_hi[2][MAX_FRAME_POLYGONS];
     int32_t order[2][MAX_FRAME_POLYGONS];
-    int32_t digit_count[3 << 11];  // the bucket sizes of its three 11-bit digits
+    static constexpr int32_t DIGIT_COUNTS = 3 << 11;
+    int32_t digit_count[DIGIT_COUNTS];  // the bucket sizes of its radix digits (three of 11 bits at most)
 };
 
 // The painter's order of scratch->entries[0..n): far before near (the larger depth first), equal
 // depths in the order they come in (build_frame makes them by object, then face: the same total
 // order everywhere). A stable sort of the depth's bits: by the high word, then by the low word
-// within runs that share one; each by insertion up to 16 places, else by radix, 11 bits a pass (a
-// pass where every key has the same digit skipped: a frame's depths share their exponent). Returns
+// within runs that share one; each by insertion up to 16 places, else by radix, 11 or 8 bits a pass
+// (a pass where every key has the same digit skipped: a frame's depths share their exponent). Returns
 // the indices in order (scratch->order[0]).
 const int32_t* painter_order(FrameScratch* scratch, int32_t n);
 
