@@ -5,34 +5,34 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1087.6f, 356.32f, 40.380f}, // 10 scenes
-    {"exact", 1023.1f, 310.79f, 80.359f}, // 10 scenes
-    {"persp-subdiv-4", 1023.1f, 320.76f, 94.538f}, // 10 scenes
-    {"persp-subdiv-8", 1023.1f, 378.32f, 61.070f}, // 10 scenes
-    {"persp-subdiv-16", 1023.1f, 419.32f, 44.196f}, // 10 scenes
-    {"persp-subdiv-32", 1023.1f, 440.78f, 35.950f}, // 10 scenes
-    {"constant-depth", 1023.1f, 457.91f, 29.884f}, // 10 scenes
-    {"persp-adaptive-0.5", 1023.1f, 928.64f, 323.158f}, // 10 scenes
-    {"persp-adaptive-1", 1023.1f, 1097.78f, 51.611f}, // 10 scenes
-    {"persp-adaptive-2", 1023.1f, 1114.91f, 44.339f}, // 10 scenes
-    {"persp-adaptive-4", 1023.1f, 1127.06f, 40.098f}, // 10 scenes
-    {"fast-affine", 1138.6f, 157.90f, 4.150f}, // 10 scenes
-    {"fast-columns", 1210.9f, 253.93f, 5.576f}, // 10 scenes
-    {"fast-subdiv-8", 1023.1f, 291.93f, 13.634f}, // 10 scenes
-    {"fast-subdiv-16", 1023.1f, 301.70f, 9.710f}, // 10 scenes
-    {"fast-subdiv-32", 1023.1f, 306.55f, 7.810f}, // 10 scenes
-    {"fast-constant-depth", 1023.1f, 310.89f, 6.252f}, // 10 scenes
-    {"fast-adaptive-1", 1023.1f, 334.20f, 9.392f}, // 10 scenes
-    {"fast-adaptive-2", 1023.1f, 337.79f, 7.968f}, // 10 scenes
-    {"xsharp-dda", 1560.0f, 379.01f, 38.028f}, // 9 scenes
-    {"xsharp-row-out", 1560.0f, 514.32f, 19.525f}, // 9 scenes
-    {"xsharp-column", 1563.6f, 486.51f, 13.261f}, // 9 scenes
-    {"hecker-steptable", 5404.2f, 0.00f, 636.433f}, // 9 scenes
-    {"fatmap-256", 1807.9f, 167.24f, 13.531f}, // 8 scenes
-    {"fatmap-256-16", 1807.9f, 172.24f, 12.531f}, // 8 scenes
-    {"fatmap-lut", 2424.7f, 170.75f, 9.929f}, // 7 scenes
-    {"quake-subdiv16", 1549.4f, 305.97f, 13.825f}, // 9 scenes
-    {"quake-subdiv8", 1549.4f, 290.61f, 20.186f}, // 9 scenes
+    {"affine", 1089.1f, 357.05f, 40.406f}, // 10 scenes
+    {"exact", 1024.6f, 311.51f, 80.384f}, // 10 scenes
+    {"persp-subdiv-4", 1024.6f, 321.49f, 94.564f}, // 10 scenes
+    {"persp-subdiv-8", 1024.6f, 379.05f, 61.096f}, // 10 scenes
+    {"persp-subdiv-16", 1024.6f, 420.05f, 44.222f}, // 10 scenes
+    {"persp-subdiv-32", 1024.6f, 441.51f, 35.976f}, // 10 scenes
+    {"constant-depth", 1024.6f, 458.64f, 29.909f}, // 10 scenes
+    {"persp-adaptive-0.5", 1024.6f, 929.37f, 323.183f}, // 10 scenes
+    {"persp-adaptive-1", 1024.6f, 1098.51f, 51.637f}, // 10 scenes
+    {"persp-adaptive-2", 1024.6f, 1115.63f, 44.364f}, // 10 scenes
+    {"persp-adaptive-4", 1024.6f, 1127.79f, 40.123f}, // 10 scenes
+    {"fast-affine", 1140.1f, 158.62f, 4.175f}, // 10 scenes
+    {"fast-columns", 1211.5f, 254.62f, 5.601f}, // 10 scenes
+    {"fast-subdiv-8", 1024.6f, 292.66f, 13.659f}, // 10 scenes
+    {"fast-subdiv-16", 1024.6f, 302.42f, 9.735f}, // 10 scenes
+    {"fast-subdiv-32", 1024.6f, 307.28f, 7.836f}, // 10 scenes
+    {"fast-constant-depth", 1024.6f, 311.62f, 6.277f}, // 10 scenes
+    {"fast-adaptive-1", 1024.6f, 334.93f, 9.418f}, // 10 scenes
+    {"fast-adaptive-2", 1024.6f, 338.52f, 7.993f}, // 10 scenes
+    {"xsharp-dda", 1560.0f, 379.74f, 38.067f}, // 9 scenes
+    {"xsharp-row-out", 1560.0f, 515.05f, 19.565f}, // 9 scenes
+    {"xsharp-column", 1563.6f, 487.14f, 13.304f}, // 9 scenes
+    {"hecker-steptable", 5404.2f, 0.00f, 636.488f}, // 9 scenes
+    {"fatmap-256", 1807.9f, 167.96f, 13.578f}, // 8 scenes
+    {"fatmap-256-16", 1807.9f, 172.96f, 12.578f}, // 8 scenes
+    {"fatmap-lut", 2424.7f, 171.44f, 9.987f}, // 7 scenes
+    {"quake-subdiv16", 1550.7f, 306.65f, 13.866f}, // 9 scenes
+    {"quake-subdiv8", 1550.7f, 291.29f, 20.227f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
