@@ -280,7 +280,7 @@ T_FRAME   equ 24
 %endmacro
 
 ; a chain of two in order of first row (a tie keeps their order), then its sentinel: never live,
-; never binding (q = %2)
+; never binding (q = %3); %1 the block's field for the chain, %2 the frame's count of it
 %macro TRI_SEAL 3
     mov edi, [ebp + %1]
     mov ecx, [esp + %2]
@@ -377,7 +377,7 @@ S_FRAME   equ 48
 %%done:
 %endmacro
 
-; FixedN<16>::from_double(st0 * 256) into eax, st0 popped (the 32-bit path; else to .refuse)
+; FixedN<16>::from_double(st0 * 256) into eax, st0 popped (the 32-bit path; else to .refuse_pop)
 %macro FIXED_16_16_PER_PIXEL 0
     fmul qword [c_256]
     fmul qword [c_65536]
