@@ -475,18 +475,16 @@ S_FRAME   equ 48
     mov esi, [esp + S_P0]
     mov eax, [esi + %1]
     mov ecx, eax
-    mov esi, [esp + S_P1]
+%assign slot S_P1
+%rep 2                                  ; corners 1 and 2
+    mov esi, [esp + slot]
     mov edx, [esi + %1]
     cmp edx, eax
     cmovl eax, edx
     cmp edx, ecx
     cmovg ecx, edx
-    mov esi, [esp + S_P2]
-    mov edx, [esi + %1]
-    cmp edx, eax
-    cmovl eax, edx
-    cmp edx, ecx
-    cmovg ecx, edx
+%assign slot slot + 4
+%endrep
     mov [ebp + %2], eax
     sar eax, 31
     mov [ebp + %2 + 4], eax
