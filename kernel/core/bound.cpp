@@ -141,9 +141,9 @@ bool fits_16_16(double start, double step, double steps, int32_t size, Wrap wrap
     return magnitude(start) + travel < LIMIT;
 }
 
-void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out) {
+void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out, Input input) {
     for (PreparedSpans& w : out->walked) w.count = PreparedSpans::NOT_WALKED, w.pixels = 0, w.first = 0;
-    out->status = setup_polygon(vertices, count, &out->setup, PLANES_ALL);
+    out->status = setup_polygon(vertices, count, &out->setup, PLANES_ALL, input);
     out->spread_known = false;
 }
 
@@ -293,8 +293,9 @@ void polygon_spread(const PolygonSetup& s, const ClipRect& clip, PolygonSpread* 
     const int64_t min_y = inside(s.min_y, clip.y0, clip.y1), max_y = inside(s.max_y, clip.y0, clip.y1);
     o.lines[0] = double(max_x - min_x) / one + 1;
     o.lines[1] = double(max_y - min_y) / one + 1;
-    const double x_lo = double(floor_div(min_x, SUBPIXEL_ONE)), x_hi = double(floor_div(max_x, SUBPIXEL_ONE));
-    const double y_lo = double(floor_div(min_y, SUBPIXEL_ONE)), y_hi = double(floor_div(max_y, SUBPIXEL_ONE));
+    // (floors by an arithmetic shift: SUBPIXEL_ONE is 2^SUBPIXEL_BITS)
+    const double x_lo = double(min_x >> SUBPIXEL_BITS), x_hi = double(max_x >> SUBPIXEL_BITS);
+    const double y_lo = double(min_y >> SUBPIXEL_BITS), y_hi = double(max_y >> SUBPIXEL_BITS);
     const double ax = s.u_fx.x0, ay = s.u_fx.y0;
     o.reach = larger(magnitude(x_lo - ax), magnitude(x_hi - ax)) + larger(magnitude(y_lo - ay), magnitude(y_hi - ay));
     o.steps_known = false;

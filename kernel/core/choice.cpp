@@ -133,14 +133,14 @@ void prepare_choice(const Budget& budget, const Texture& tex) {
 }
 
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
-                     PreparedPolygon* prepared) {
+                     PreparedPolygon* prepared, Input input) {
     Choice choice;
     for (PreparedSpans& w : prepared->walked) w.count = PreparedSpans::NOT_WALKED;
     prepared->status = SetupStatus::Unsupported;
     const Candidates& list = candidates(tex, target, budget);
     if (list.count == 0) return choice;
     // set up once, for both walkers (the spread and the spans come when a bound asks for them)
-    set_up_polygon(vertices, count, prepared);
+    set_up_polygon(vertices, count, prepared, input);
     if (prepared->status != SetupStatus::Ok) return choice;
     PolygonSize size[2];
     polygon_sizes(prepared->setup, target.clip, size);

@@ -104,9 +104,9 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
 // per polygon, span and pixel among them) is below the cheapest priced and not yet asked; so none
 // that cannot cost less than exact is priced. The polygon is set up once, into *prepared, and walked along a
 // walker only when a bound needs its spans (the chosen mapper draws from its setup, and from its
-// spans when walked).
+// spans when walked). `input`: as setup_polygon takes it.
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
-                     PreparedPolygon* prepared);
+                     PreparedPolygon* prepared, Input input = Input::Any);
 
 // Builds the candidate lists choose_mapper and plan_auto take for a texture at a budget, for
 // either kind of target (linear, planar), where they are not built yet: a scene's load and a change

@@ -7,7 +7,7 @@
 namespace raster {
 
 // |t| and the larger of two, without libm (NaN stays NaN through magnitude: it fails any test).
-inline double magnitude(double t) { return t < 0 ? -t : t; }
+inline double magnitude(double t) { return __builtin_fabs(t); }
 inline double larger(double a, double b) { return a > b ? a : b; }
 
 // The integer nearest x by the FPU's rounding mode, whatever it is (one FIST or CVTSD2SI): within

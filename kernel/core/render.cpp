@@ -64,10 +64,10 @@ SetupStatus draw_with(const Drawer& d, const Vertex* vertices, int count, const 
 }
 
 // auto's choice for the polygon, into *prepared, and the drawing with it (the choice counts as
-// setup); where no mapper draws the polygon, exact's setup says why.
+// setup); where no mapper draws the polygon, exact's setup says why. `input`: as setup_polygon takes it.
 SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& tex, Axis axis, Target& target, RenderStats* stats,
-                            Variant variant, const Budget& budget, PreparedPolygon* prepared) {
-    Choice c = choose_mapper(budget, vertices, count, tex, target, prepared);
+                            Variant variant, const Budget& budget, PreparedPolygon* prepared, Input input) {
+    Choice c = choose_mapper(budget, vertices, count, tex, target, prepared, input);
     probe_lap(stats->probe, Phase::Setup);
     if (!c.mapper) {
         const Axis any = target_supports(target, axis) ? axis : Axis::Columns;  // a walker the target takes
@@ -99,7 +99,7 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
     if (!mapper.chooses) return Drawer::of(mapper, tex, axis, target, stats, variant).draw(vertices, count, input);
     probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
     PreparedPolygon prepared;
-    return choose_and_draw(vertices, count, tex, axis, target, stats, variant, budget, &prepared);
+    return choose_and_draw(vertices, count, tex, axis, target, stats, variant, budget, &prepared, input);
 }
 
 SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
@@ -114,7 +114,7 @@ SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Vari
         }
     }
     PreparedPolygon prepared;
-    return choose_and_draw(vertices, 3, *enveloped.tex, enveloped.axis, *enveloped.target, stats, variant, budget, &prepared);
+    return choose_and_draw(vertices, 3, *enveloped.tex, enveloped.axis, *enveloped.target, stats, variant, budget, &prepared, Input::InRange);
 }
 
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,

@@ -424,7 +424,7 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
         else if (unchosen)
             draw_polygon(v, n, tex, *unchosen, unchosen_axis, target, &stats, variant, DEFAULT_BUDGET, input);
         else
-            draw_polygon(v, n, tex, mapper, axis, target, &stats, variant, frame.budget);
+            draw_polygon(v, n, tex, mapper, axis, target, &stats, variant, frame.budget, input);
         v += n;
     }
     if (watch) watch->drawn();
