@@ -5,7 +5,7 @@
 
 namespace raster {
 
-bool choosable(const Mapper& m) { return !m.chooses && m.bound && m.bound != unbounded; }
+bool choosable(const Mapper& m) { return !m.chooses && !m.own_walker && m.bound && m.bound != unbounded; }
 
 namespace {
 

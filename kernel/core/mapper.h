@@ -177,6 +177,11 @@ struct Mapper {
     // The planes its span routine reads, all draw_with sets up for it (the perspective ones, but
     // for affine's: the affine planes and their 16.16 form cost some 400 instructions a polygon).
     SetupPlanes span_planes = PLANES_PERSPECTIVE;
+    // Where the target takes rows, the walker it draws a polygon along, which it picks itself
+    // polygon by polygon (fast-oriented), from the polygon's setup (any planes) and the clip: asked
+    // for rows it draws along this one (auto prices it so); asked for columns, columns. nullptr:
+    // the walker it is asked for.
+    Axis (*own_walker)(const PolygonSetup& s, const ClipRect& clip) = nullptr;
 };
 
 extern const Mapper MAPPERS[];

@@ -5,34 +5,35 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1089.1f, 357.05f, 40.406f}, // 10 scenes
+    {"affine", 1087.3f, 344.11f, 40.413f}, // 10 scenes
     {"exact", 1024.6f, 311.51f, 80.384f}, // 10 scenes
-    {"persp-subdiv-4", 1024.6f, 321.49f, 94.564f}, // 10 scenes
-    {"persp-subdiv-8", 1024.6f, 379.05f, 61.096f}, // 10 scenes
-    {"persp-subdiv-16", 1024.6f, 420.05f, 44.222f}, // 10 scenes
-    {"persp-subdiv-32", 1024.6f, 441.51f, 35.976f}, // 10 scenes
-    {"constant-depth", 1024.6f, 458.64f, 29.909f}, // 10 scenes
-    {"persp-adaptive-0.5", 1024.6f, 929.37f, 323.183f}, // 10 scenes
-    {"persp-adaptive-1", 1024.6f, 1098.51f, 51.637f}, // 10 scenes
-    {"persp-adaptive-2", 1024.6f, 1115.63f, 44.364f}, // 10 scenes
-    {"persp-adaptive-4", 1024.6f, 1127.79f, 40.123f}, // 10 scenes
-    {"fast-affine", 1140.1f, 158.62f, 4.175f}, // 10 scenes
-    {"fast-columns", 1211.5f, 254.62f, 5.601f}, // 10 scenes
+    {"persp-subdiv-4", 1024.6f, 316.91f, 91.448f}, // 10 scenes
+    {"persp-subdiv-8", 1024.6f, 371.67f, 59.580f}, // 10 scenes
+    {"persp-subdiv-16", 1024.6f, 410.70f, 43.512f}, // 10 scenes
+    {"persp-subdiv-32", 1024.6f, 431.13f, 35.660f}, // 10 scenes
+    {"constant-depth", 1024.6f, 447.45f, 29.883f}, // 10 scenes
+    {"persp-adaptive-0.5", 1024.6f, 829.82f, 316.447f}, // 10 scenes
+    {"persp-adaptive-1", 1024.6f, 996.06f, 51.446f}, // 10 scenes
+    {"persp-adaptive-2", 1024.6f, 1012.91f, 44.286f}, // 10 scenes
+    {"persp-adaptive-4", 1024.6f, 1024.88f, 40.110f}, // 10 scenes
+    {"fast-affine", 1138.3f, 158.62f, 4.175f}, // 10 scenes
+    {"fast-columns", 1209.7f, 254.62f, 5.601f}, // 10 scenes
     {"fast-subdiv-8", 1024.6f, 292.66f, 13.659f}, // 10 scenes
     {"fast-subdiv-16", 1024.6f, 302.42f, 9.735f}, // 10 scenes
     {"fast-subdiv-32", 1024.6f, 307.28f, 7.836f}, // 10 scenes
     {"fast-constant-depth", 1024.6f, 311.62f, 6.277f}, // 10 scenes
     {"fast-adaptive-1", 1024.6f, 334.93f, 9.418f}, // 10 scenes
     {"fast-adaptive-2", 1024.6f, 338.52f, 7.993f}, // 10 scenes
-    {"xsharp-dda", 1560.0f, 379.74f, 38.067f}, // 9 scenes
-    {"xsharp-row-out", 1560.0f, 515.05f, 19.565f}, // 9 scenes
-    {"xsharp-column", 1563.6f, 487.14f, 13.304f}, // 9 scenes
-    {"hecker-steptable", 5404.2f, 0.00f, 636.488f}, // 9 scenes
-    {"fatmap-256", 1807.9f, 167.96f, 13.578f}, // 8 scenes
-    {"fatmap-256-16", 1807.9f, 172.96f, 12.578f}, // 8 scenes
-    {"fatmap-lut", 2424.7f, 171.44f, 9.987f}, // 7 scenes
-    {"quake-subdiv16", 1550.7f, 306.65f, 13.866f}, // 9 scenes
-    {"quake-subdiv8", 1550.7f, 291.29f, 20.227f}, // 9 scenes
+    {"fast-oriented-1", 1208.3f, 363.12f, 7.410f}, // 10 scenes
+    {"xsharp-dda", 1546.0f, 379.68f, 38.063f}, // 9 scenes
+    {"xsharp-row-out", 1546.0f, 514.99f, 19.560f}, // 9 scenes
+    {"xsharp-column", 1549.7f, 487.09f, 13.299f}, // 9 scenes
+    {"hecker-steptable", 5387.8f, 0.00f, 636.487f}, // 9 scenes
+    {"fatmap-256", 1781.3f, 167.83f, 13.575f}, // 8 scenes
+    {"fatmap-256-16", 1781.3f, 172.83f, 12.575f}, // 8 scenes
+    {"fatmap-lut", 2398.1f, 171.31f, 9.982f}, // 7 scenes
+    {"quake-subdiv16", 1546.7f, 306.66f, 13.864f}, // 9 scenes
+    {"quake-subdiv8", 1546.7f, 291.29f, 20.225f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

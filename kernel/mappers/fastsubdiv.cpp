@@ -160,6 +160,62 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
     });
 }
 
+Axis oriented_axis(const PolygonSetup& s, const ClipRect& clip, double room) {
+    const double one = double(SUBPIXEL_ONE);
+    auto inside = [](int64_t lo, int64_t hi, int32_t first, int32_t end) {  // a box's side inside the clip, pixels
+        const int64_t l = int64_t(first) * SUBPIXEL_ONE, h = int64_t(end) * SUBPIXEL_ONE;
+        lo = lo < l ? l : lo, hi = hi > h ? h : hi;
+        return hi > lo ? double(hi - lo) / double(SUBPIXEL_ONE) : 0.0;
+    };
+    const double rows = inside(s.min_y, s.max_y, clip.y0, clip.y1), columns = inside(s.min_x, s.max_x, clip.x0, clip.x1);
+    const double area = double(s.area2) / (2 * one * one), pixels = area < rows * columns ? area : rows * columns;
+    const double q = s.q.a0;
+    if (!(q > 0)) return Axis::Rows;
+    // segments beyond one a line: pixels / h_a = pixels sqrt(|Q_a| / (4 room q))
+    const double scale = pixels / __builtin_sqrt(4 * room * q);
+    const double by_rows = rows * (ORIENTED_LINE + ORIENTED_SEGMENT) + ORIENTED_SEGMENT * scale * __builtin_sqrt(__builtin_fabs(s.q.gx) * one);
+    const double by_columns = columns * (ORIENTED_LINE + ORIENTED_SEGMENT) + ORIENTED_SEGMENT * scale * __builtin_sqrt(__builtin_fabs(s.q.gy) * one);
+    return by_columns < by_rows ? Axis::Columns : Axis::Rows;
+}
+
+template <int QUARTERS>
+Axis fast_oriented_walker(const PolygonSetup& s, const ClipRect& clip) {
+    return oriented_axis(s, clip, fast_adaptive_room(QUARTERS / 4.0));
+}
+
+template <int QUARTERS>
+SetupStatus fast_oriented_draw(const DrawContext& c, const Vertex* vertices, int count) {
+    PolygonSetup own;
+    const PolygonSetup* s = c.setup;
+    if (!s) {
+        const SetupStatus status = setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE, c.input);
+        if (status != SetupStatus::Ok) return status;
+        s = &own;
+    }
+    const Axis axis = c.axis == Axis::Rows ? fast_oriented_walker<QUARTERS>(*s, c.target.clip) : Axis::Columns;
+    EdgeWalker walker(*s, axis, c.target.clip);
+    setup_done(c);
+    const SpanContext context{*s, c.tex, axis, c.loop};
+    Span span;
+    while (walker.next(&span)) {
+        int32_t stride;
+        uint8_t* dst = span_start(c.target, axis, span, &stride);
+        emit(c.stats->probe, c.stats, 1, uint32_t(span.count), [&] { fast_adaptive_span<QUARTERS>(context, span, dst, stride); });
+    }
+    return SetupStatus::Ok;
+}
+
+template <int QUARTERS>
+ErrorBound fast_oriented_bound(const BoundContext& c, const Vertex* vertices, int count) {
+    if (c.axis == Axis::Columns) return fast_adaptive_bound<QUARTERS>(c, vertices, count);
+    PolygonSetup own;
+    const PolygonSetup* s = &own;
+    if (c.prepared && c.prepared->status == SetupStatus::Ok) s = &c.prepared->setup;
+    else if (setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE) != SetupStatus::Ok) return fast_adaptive_bound<QUARTERS>(c, vertices, count);
+    const BoundContext along{c.mapper, c.tex, fast_oriented_walker<QUARTERS>(*s, c.clip), c.clip, c.budget, c.prepared, c.whole_only};
+    return fast_adaptive_bound<QUARTERS>(along, vertices, count);
+}
+
 // The loop's random cases (core/selftest.h): planes from real triangles and extremes (random_planes),
 // rows and columns (strides either way) anywhere on and off the screen, segments of 2 to 512 pixels
 // (512: one a span).
@@ -200,5 +256,8 @@ template void fast_adaptive_span<4>(const SpanContext&, const Span&, uint8_t*, i
 template void fast_adaptive_span<8>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template ErrorBound fast_adaptive_bound<4>(const BoundContext&, const Vertex*, int);
 template ErrorBound fast_adaptive_bound<8>(const BoundContext&, const Vertex*, int);
+template Axis fast_oriented_walker<4>(const PolygonSetup&, const ClipRect&);
+template SetupStatus fast_oriented_draw<4>(const DrawContext&, const Vertex*, int);
+template ErrorBound fast_oriented_bound<4>(const BoundContext&, const Vertex*, int);
 
 }  // namespace raster

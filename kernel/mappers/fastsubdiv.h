@@ -74,6 +74,27 @@ void fast_adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32
 template <int QUARTERS>
 ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, int count);
 
+// fast-oriented-B: fast-adaptive-B, each polygon along the walker where 1/w changes least for
+// the lines it costs (walls by columns, floors and ceilings by rows, and between them whichever
+// oriented_axis counts cheaper), its own polygon driver: a single mapper that draws every polygon
+// along its own line of near-constant depth, as auto does with its candidates. Asked for rows (a
+// target that takes rows: linear) it takes the walker oriented_axis picks; asked for columns (a
+// planar target), columns. Its bound is fast-adaptive-B's along the walker it draws with.
+// oriented_axis counts a line as ORIENTED_LINE instructions and a segment as ORIENTED_SEGMENT
+// (fast-adaptive's per span and per segment, make bench, QEMU icount, rounded), a line of L pixels
+// along axis a as 1 + L / h_a segments, h_a = 2 sqrt(room Q / |Q_a|) (fast_adaptive_shift's rule
+// at Q at the reference vertex), and the polygon's lines and pixels as the cost model does (its box
+// inside the clip, its area): the fewer instructions, rows on a tie.
+constexpr double ORIENTED_LINE = 300, ORIENTED_SEGMENT = 60;
+Axis oriented_axis(const PolygonSetup& s, const ClipRect& clip, double room);
+// fast-oriented-B's walker (Mapper::own_walker)
+template <int QUARTERS>
+Axis fast_oriented_walker(const PolygonSetup& s, const ClipRect& clip);
+template <int QUARTERS>
+SetupStatus fast_oriented_draw(const DrawContext& c, const Vertex* vertices, int count);
+template <int QUARTERS>
+ErrorBound fast_oriented_bound(const BoundContext& c, const Vertex* vertices, int count);
+
 LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
 }  // namespace raster

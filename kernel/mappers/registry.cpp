@@ -87,6 +87,11 @@ const Mapper MAPPERS[] = {
      "as fast-adaptive-1, within 2 footprints",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_adaptive_span<8>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
      fast_adaptive_bound<8>},
+    {"fast-oriented-1", "ours", "fast-adaptive-1 along the walker where 1/w changes least, polygon by polygon (walls by columns, floors by rows)",
+     "as fast-adaptive-1 (within 1 footprint), each polygon by rows or by columns, whichever its 1/w gradient and its lines make "
+     "cheaper (on a Mode X target: columns); exact coverage; textures as fast-affine",
+     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, nullptr, TWIN_AND_ASM(fast_subdiv_loop), fast_oriented_draw<4>, check_fast_subdiv,
+     fast_oriented_bound<4>, false, SPANS_NOT_ASKED, false, PLANES_PERSPECTIVE, fast_oriented_walker<4>},
     {"xsharp-dda", "classic", "Abrash, Black Book listing 57.1 (X-Sharp 21, C)",
      "affine; whole-pixel vertices, X-Sharp's fill convention; half-step prestep, rounds to the nearest texel; cannot wrap",
      NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, nullptr, nullptr, xsharp::draw_dda, nullptr, xsharp::bound_rows},

@@ -1,3 +1,5 @@
+// fast-oriented-B (the end of this file): fast-adaptive-B along the walker it picks, walls by
+// columns and floors by rows.
 // persp-adaptive-B: its runs follow from the bound and the budget. Every run whose chord bound is
 // not within the budget is a single pixel (the chooser could not do better there); a span of
 // constant depth is one run; a looser budget never takes more runs; under strong perspective the
@@ -10,6 +12,7 @@
 #include <random>
 
 #include "kernel/core/bound.h"
+#include "kernel/core/policy.h"
 #include "kernel/mappers/fastsubdiv.h"
 #include "kernel/mappers/subdiv.h"
 #include "tests/unit/raster_helpers.h"
@@ -155,6 +158,79 @@ TEST(FastAdaptive, SegmentsDifferFromSpanToSpanUnderPerspective) {
     }
     EXPECT_GT(polygons, 50);
     EXPECT_GT(varied, polygons / 4) << "segments of one length a polygon: the rule does not follow the depth";
+}
+
+// fast-oriented-1 draws, asked for rows on a linear target, exactly what fast-adaptive-1 draws along
+// the walker fast_oriented_walker picks (the same pixels, spans and bound), and on a planar target
+// what fast-adaptive-1 draws by columns; on random triangles and quads from no perspective to a
+// depth ratio of 1000, texture 64 x 32 tiled.
+TEST(FastOriented, DrawsFastAdaptiveAlongTheWalkerItPicks) {
+    const Mapper& oriented = *find_mapper("fast-oriented-1");
+    const Mapper& adaptive = *find_mapper("fast-adaptive-1");
+    std::vector<uint8_t> texels(64 * 32), bordered(size_t(bordered_bytes(64, 32))), aligned(ALIGNED256_BYTES);
+    generate_texture(TextureKind::Xor, 64, 32, texels.data());
+    Texture tex{texels.data(), 64, 32, Wrap::Repeat};
+    prepare_texture(&tex, bordered.data(), aligned.data());
+    TriangleGen gen(2611u);
+    std::vector<uint8_t> a(SCREEN_PIXELS * 4), b(SCREEN_PIXELS * 4);
+    int drawn = 0, picked[2] = {0, 0};
+    for (int n = 0; n < 600; ++n) {
+        gen.depth_ratio = n % 3 == 0 ? 1 : n % 3 == 1 ? 10 : 1000;
+        std::vector<Vertex> p = gen.triangle();
+        if (n % 2) {  // a quad: the parallelogram on the triangle, 1/w and u/w, v/w planar across it
+            const Vertex &v0 = p[0], &v1 = p[1], &v2 = p[2];
+            const double q = 1 / v0.w + 1 / v2.w - 1 / v1.w;
+            if (q > 0)
+                p.push_back(Vertex{Fixed24_8::from_raw(v0.x.raw + v2.x.raw - v1.x.raw), Fixed24_8::from_raw(v0.y.raw + v2.y.raw - v1.y.raw),
+                                   1 / q, (v0.u / v0.w + v2.u / v2.w - v1.u / v1.w) / q, (v0.v / v0.w + v2.v / v2.w - v1.v / v1.w) / q});
+        }
+        const int count = int(p.size());
+        for (bool planar : {false, true}) {
+            Target ta = ram_target(a.data(), planar), tb = ram_target(b.data(), planar);
+            std::fill(a.begin(), a.end(), 0), std::fill(b.begin(), b.end(), 0);
+            PolygonSetup s;
+            Axis axis = Axis::Columns;
+            if (!planar) {
+                if (setup_polygon(p.data(), count, &s, PLANES_PERSPECTIVE) != SetupStatus::Ok) break;
+                axis = fast_oriented_walker<4>(s, ta.clip);
+                ++picked[int(axis)];
+            }
+            RenderStats sa, sb;
+            const SetupStatus status = draw_polygon(p.data(), count, tex, oriented, planar ? Axis::Columns : Axis::Rows, ta, &sa);
+            EXPECT_EQ(status, draw_polygon(p.data(), count, tex, adaptive, axis, tb, &sb));
+            ASSERT_EQ(a, b) << "polygon " << n << (planar ? " planar" : " linear");
+            EXPECT_EQ(sa.spans, sb.spans);
+            EXPECT_EQ(sa.pixels, sb.pixels);
+            drawn += sa.pixels > 0;
+            const ErrorBound ba = oriented.bound(BoundContext{oriented, tex, planar ? Axis::Columns : Axis::Rows, ta.clip}, p.data(), count);
+            const ErrorBound bb = adaptive.bound(BoundContext{adaptive, tex, axis, ta.clip}, p.data(), count);
+            EXPECT_EQ(ba.draws, bb.draws);
+            EXPECT_EQ(ba.footprint, bb.footprint) << "polygon " << n;
+        }
+        if (HasFailure()) return;
+    }
+    EXPECT_GT(drawn, 600);
+    EXPECT_GT(picked[int(Axis::Rows)], 50);
+    EXPECT_GT(picked[int(Axis::Columns)], 50);
+}
+
+// A wall (1/w changes across it, not down it) goes by columns, a floor (down it, not across it) by
+// rows, whichever walker has the more lines: one segment a line.
+TEST(FastOriented, TakesWallsByColumnsAndFloorsByRows) {
+    const ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    // a wall from w = 1 at x = 20 to w = 10 at x = 300: its edges' y scale with 1/w
+    const std::vector<Vertex> wall{vertex(20, 20, 1, 0, 0), vertex(300, 110, 10, 640, 0), vertex(300, 130, 10, 640, 64),
+                                   vertex(20, 220, 1, 0, 64)};
+    // a floor from w = 10 at y = 125 to w = 1 at y = 235, narrow: fewer columns than rows
+    const std::vector<Vertex> floor{vertex(150, 125, 10, 0, 0), vertex(170, 125, 10, 64, 0), vertex(180, 235, 1, 64, 640),
+                                    vertex(140, 235, 1, 0, 640)};
+    PolygonSetup s;
+    ASSERT_EQ(setup_polygon(wall.data(), 4, &s, PLANES_PERSPECTIVE), SetupStatus::Ok);
+    EXPECT_EQ(s.q.gy, 0.0);
+    EXPECT_EQ(fast_oriented_walker<4>(s, clip), Axis::Columns) << "the wall has fewer rows than columns, but each row needs many segments";
+    ASSERT_EQ(setup_polygon(floor.data(), 4, &s, PLANES_PERSPECTIVE), SetupStatus::Ok);
+    EXPECT_EQ(s.q.gx, 0.0);
+    EXPECT_EQ(fast_oriented_walker<4>(s, clip), Axis::Rows) << "the floor has fewer columns than rows, but each column needs many segments";
 }
 
 }  // namespace
