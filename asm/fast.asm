@@ -4,6 +4,9 @@
 ;   fast_run_loop_asm (fast-affine):     a run of rows, the edge walking included (twin: fast_run_loop):
 ;                                        pixels in pairs, al then ah, one word store a pair, eight
 ;                                        pairs a block, an odd last pixel alone;
+;   fast_table_loop_asm (fast-table):    the same rows, each span read through the polygon's offset
+;                                        table (twin: fast_table_loop): two loads a pixel, one word
+;                                        store a pair, eight pairs a block;
 ;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop): eight pixels a
 ;                                        block, each stored alone (they lie 80 bytes apart).
 ;   The core, its registers and its blocks: asm/core816.inc; [esp]: the entry point.
@@ -80,8 +83,8 @@ L_FRAME   equ 36
     mov [%1 + BOUND_r], ebx
 %endmacro
 
-global fast_run_loop_asm
-fast_run_loop_asm:
+; The run loops' entry: the frame, the block's row state copied into it (.done: no lines).
+%macro RUN_ENTER 0
     LOOP_ENTER L_FRAME
     mov ecx, LOOP_ARG(L_FRAME)
     mov eax, [ecx + RUN_lines]
@@ -95,31 +98,27 @@ fast_run_loop_asm:
     mov [esp + L_U], eax
     mov eax, [ecx + RUN_v_16_16]
     mov [esp + L_V], eax
-    mov eax, [ecx + RUN_texture]
-    mov [esp + L_TEXTURE], eax
-    mov al, [ecx + RUN_du_16_16 + 2]
-    mov ah, [ecx + RUN_dv_16_16 + 2]
-    mov [esp + L_STEPS], ax
-    mov esi, [ecx + RUN_du_16_16]
-    shl esi, 16                         ; du fraction
-    mov ebp, [ecx + RUN_dv_16_16]
-    shl ebp, 16                         ; dv fraction
-.row:
+%endmacro
+
+; A row's start: both bounds stepped, the span clipped (.next_row where it is empty) and tallied;
+; out: ecx the block, eax the first pixel's address, edi the span's pixels, ebx and edx u and v
+; (16.16) at the first pixel.
+%macro ROW_HEAD 0
     mov ecx, [esp + L_ARGS]
     mov edx, [ecx + RUN_lower]
     mov eax, [edx + BOUND_q]            ; the first pixel, before the clip
     STEP_BOUND edx
     cmp eax, [ecx + RUN_clip_lo]
-    jge .lo_inside
+    jge %%lo_inside
     mov eax, [ecx + RUN_clip_lo]
-.lo_inside:
+%%lo_inside:
     mov edx, [ecx + RUN_upper]
     mov edi, [edx + BOUND_q]            ; the last pixel
     STEP_BOUND edx
     cmp edi, [ecx + RUN_clip_hi]
-    jle .hi_inside
+    jle %%hi_inside
     mov edi, [ecx + RUN_clip_hi]
-.hi_inside:
+%%hi_inside:
     sub edi, eax
     jl .next_row                        ; nothing on this row
     inc edi                             ; the span's pixels
@@ -133,6 +132,35 @@ fast_run_loop_asm:
     imul edx, [ecx + RUN_dv_16_16]
     add edx, [esp + L_V]                ; v at the first pixel
     add eax, [esp + L_ROW]              ; its address
+%endmacro
+
+; The next row: u, v and the row's address advance; .row while lines are left.
+%macro ROW_TAIL 0
+    mov ecx, [esp + L_ARGS]
+    mov eax, [ecx + RUN_u_row_16_16]
+    add [esp + L_U], eax
+    mov eax, [ecx + RUN_v_row_16_16]
+    add [esp + L_V], eax
+    mov eax, [ecx + RUN_pitch]
+    add [esp + L_ROW], eax
+    dec dword [esp + L_LINES]
+    jnz .row
+%endmacro
+
+global fast_run_loop_asm
+fast_run_loop_asm:
+    RUN_ENTER
+    mov eax, [ecx + RUN_texture]
+    mov [esp + L_TEXTURE], eax
+    mov al, [ecx + RUN_du_16_16 + 2]
+    mov ah, [ecx + RUN_dv_16_16 + 2]
+    mov [esp + L_STEPS], ax
+    mov esi, [ecx + RUN_du_16_16]
+    shl esi, 16                         ; du fraction
+    mov ebp, [ecx + RUN_dv_16_16]
+    shl ebp, 16                         ; dv fraction
+.row:
+    ROW_HEAD
     mov ecx, edi
     and edi, 1
     mov [esp + L_ODD], edi              ; an odd pixel, drawn after the pairs
@@ -149,15 +177,75 @@ fast_run_loop_asm:
     jz .odd_pixel
     PAIRS_AND_ODD .next_row
 .next_row:
-    mov ecx, [esp + L_ARGS]
-    mov eax, [ecx + RUN_u_row_16_16]
-    add [esp + L_U], eax
-    mov eax, [ecx + RUN_v_row_16_16]
-    add [esp + L_V], eax
-    mov eax, [ecx + RUN_pitch]
-    add [esp + L_ROW], eax
-    dec dword [esp + L_LINES]
-    jnz .row
+    ROW_TAIL
+.done:
+    LOOP_LEAVE L_FRAME
+
+; fast_table_loop_asm: fast-table's run of rows (twin: fast_table_loop): the rows walked as
+; fast_run_loop_asm walks them, each row's span read through the polygon's offset table from its first
+; texel: two offsets, two texels and one word store a pair, eight pairs a block.
+;   esi: the span's first texel   ebp: the table at the block's first pair   edi: destination
+;   ecx: blocks left   ebx, edx: offsets   al, ah: texels
+%macro TPAIR 1                          ; %1: the pair within the block
+    mov ebx, [ebp + 8 * %1]
+    mov edx, [ebp + 8 * %1 + 4]
+    mov al, [esi + ebx]
+    mov ah, [esi + edx]
+    mov [edi + 2 * %1], ax
+%endmacro
+
+global fast_table_loop_asm
+fast_table_loop_asm:
+    RUN_ENTER
+.row:
+    ROW_HEAD
+    shr ebx, 16
+    movzx ebx, bl                       ; u whole & 255
+    shr edx, 8
+    and edx, 0xFF00                     ; (v whole & 255) * 256
+    or ebx, edx
+    mov esi, [ecx + RUN_texture]
+    add esi, ebx                        ; the span's first texel
+    mov ebp, [ecx + RUN_table]
+    mov ecx, edi
+    and edi, 1
+    mov [esp + L_ODD], edi              ; an odd pixel, drawn after the pairs
+    shr ecx, 1                          ; pairs
+    mov edx, ecx
+    neg edx
+    and edx, 7                          ; the first block starts at pair j = (-pairs) mod 8:
+    lea ebx, [edx * 2]
+    sub eax, ebx                        ; the destination 2j bytes back
+    lea ebx, [edx * 8]
+    sub ebp, ebx                        ; the table 2j entries back
+    mov edx, [table_entries + edx * 4]
+    mov [esp + L_ENTRY], edx
+    mov edi, eax
+    add ecx, 7
+    shr ecx, 3                          ; blocks, the first one partial; 0 (ZF): no pair, one pixel
+    jz .odd_pixel
+    jmp [esp + L_ENTRY]
+.block:
+.e0: TPAIR 0
+.e1: TPAIR 1
+.e2: TPAIR 2
+.e3: TPAIR 3
+.e4: TPAIR 4
+.e5: TPAIR 5
+.e6: TPAIR 6
+.e7: TPAIR 7
+    add ebp, 64
+    add edi, 16
+    dec ecx
+    jnz .block
+.odd_pixel:                             ; edi and ebp: just past the pairs
+    cmp dword [esp + L_ODD], 0
+    je .next_row
+    mov ebx, [ebp]
+    mov al, [esi + ebx]
+    mov [edi], al
+.next_row:
+    ROW_TAIL
 .done:
     LOOP_LEAVE L_FRAME
 
@@ -169,6 +257,9 @@ column_entries:
 run_entries:
     dd fast_run_loop_asm.e0, fast_run_loop_asm.e1, fast_run_loop_asm.e2, fast_run_loop_asm.e3
     dd fast_run_loop_asm.e4, fast_run_loop_asm.e5, fast_run_loop_asm.e6, fast_run_loop_asm.e7
+table_entries:
+    dd fast_table_loop_asm.e0, fast_table_loop_asm.e1, fast_table_loop_asm.e2, fast_table_loop_asm.e3
+    dd fast_table_loop_asm.e4, fast_table_loop_asm.e5, fast_table_loop_asm.e6, fast_table_loop_asm.e7
 
 section .text
 

@@ -54,6 +54,7 @@ struct Candidates {
     // costs, with its proof, at least as much in each part of its row as each of them without
     int enveloped_count = 0, enveloped_first = -1;
     bool envelope_cheapest = false;
+    double envelope_pixels = 0;  // the most pixels a triangle may have for it to be the cheaper (EnvelopeSize)
     AutoPlan plan{};  // plan_auto's but the envelope's part
 };
 
@@ -89,16 +90,25 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
         if (m.guarantee.max_error == 0 && m.guarantee.exact_coverage && whole_proof_cost(m) == 0 && !c.walks[k]) c.certain = k;
     }
     // (the certain one's setup may be the cheaper: only its span and pixel costs are weighed, see
-    // ENVELOPE_SETUP_ALLOWANCE)
+    // ENVELOPE_SETUP_ALLOWANCE; one cheaper a pixel: up to the size where it undercuts)
     for (int j = 0; j < c.count; ++j) {
         if (!MAPPERS[c.row[j]].enveloped) continue;
-        if (c.enveloped_count++ == 0) c.enveloped_first = j, c.envelope_cheapest = true;
+        if (c.enveloped_count++ == 0) c.enveloped_first = j, c.envelope_cheapest = true, c.envelope_pixels = 1e300;
         const CostRow own = cost_row(MAPPER_COSTS[c.row[j]]);  // proven for nothing
         for (int k = 0; k < c.count; ++k) {
+            if (MAPPERS[c.row[k]].enveloped) continue;
             const CostRow& other = c.cost[k];
             const bool certain = c.certain >= 0 && c.row[k] == c.row[c.certain];
-            const bool setup = certain ? other.polygon + ENVELOPE_SETUP_ALLOWANCE < own.polygon : other.polygon < own.polygon;
-            if (!MAPPERS[c.row[k]].enveloped && (setup || other.span < own.span || other.pixel < own.pixel)) c.envelope_cheapest = false;
+            // what the other costs more on a triangle of one line to the guards' most (ENVELOPE_REACH
+            // + 1), less the pixels: at least 0; and where it costs less a pixel, the most pixels up
+            // to which what it costs more for the rest is not made up
+            const double polygon = other.polygon + (certain ? ENVELOPE_SETUP_ALLOWANCE : 0) - own.polygon, span = other.span - own.span;
+            const double fixed = polygon + (span < 0 ? span * double(ENVELOPE_REACH + 1) : span);
+            if (fixed < 0) c.envelope_cheapest = false;
+            else if (other.pixel < own.pixel) {
+                const double pixels = fixed / (own.pixel - other.pixel);
+                c.envelope_pixels = pixels < c.envelope_pixels ? pixels : c.envelope_pixels;
+            }
         }
     }
     if (c.certain >= 0) {  // the plan's part that depends on the candidates alone (plan_auto)
@@ -257,6 +267,8 @@ AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& targe
     if (list.enveloped_count == 1 && list.envelope_cheapest && budget_allows(budget, ErrorBound{true, true, envelope_footprint})) {
         plan.enveloped = &MAPPERS[list.row[list.enveloped_first]];
         plan.enveloped_axis = list.axis[list.enveloped_first];
+        const double one = double(SUBPIXEL_ONE);
+        plan.enveloped_area2 = list.envelope_pixels < 1e9 ? int64_t(2 * list.envelope_pixels * one * one) : INT64_MAX;
     }
     return plan;
 }

@@ -135,6 +135,7 @@ struct Guarantee {
 };
 constexpr Guarantee EQUALS_REFERENCE{true, 0, 0};
 constexpr Guarantee EXACT_COVERAGE_FLAT_ONE{true, -1, 1};  // exact coverage; within a texel without perspective
+constexpr Guarantee EXACT_COVERAGE_FLAT_TWO{true, -1, 2};  // exact coverage; within two texels without perspective
 constexpr Guarantee EXACT_COVERAGE{true, -1, -1};
 constexpr Guarantee NO_GUARANTEE{false, -1, -1};           // the classics: what they are
 

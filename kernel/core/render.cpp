@@ -108,7 +108,8 @@ SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Vari
     {
         PolygonSetup setup;
         // (an uncut triangle: in range, as build_frame makes it)
-        if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE, Input::InRange) == SetupStatus::Ok && envelope_guards(setup)) {
+        if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE, Input::InRange) == SetupStatus::Ok && envelope_guards(setup) &&
+            setup.area2 <= enveloped.area2) {
             ++stats->enveloped;
             return draw_with(enveloped, vertices, 3, &setup, nullptr, Input::InRange);
         }

@@ -31,6 +31,7 @@ struct Drawer {
     int32_t row = 0;      // the mapper's registry row (RenderStats::mapper_polygons)
     Axis axis = Axis::Rows;
     bool usable = false;  // it walks the axis, takes the texture and draws into the target
+    int64_t area2 = INT64_MAX;  // auto's envelope (draw_enveloped): the largest doubled area it draws a triangle of
     // `checked`: known usable (plan_auto checked it)
     static Drawer of(const Mapper& mapper, const Texture& tex, Axis axis, Target& target, RenderStats* stats, Variant variant,
                      bool checked = false);
@@ -40,8 +41,9 @@ struct Drawer {
 
 // auto on an uncut triangle of an object whose envelope proves the mapper of `enveloped` (plan_auto,
 // choice.h; the drawer made once an object, checked): the mapper's own setup (affine planes), the
-// envelope's guards on it (envelope_guards), and the mapper drawing from it; where a guard fails,
-// auto's choice as in draw_polygon, with the drawer's texture, axis and target.
+// envelope's guards on it (envelope_guards) and its doubled area within the drawer's area2
+// (AutoPlan::enveloped_area2), and the mapper drawing from it; where one fails, auto's choice as in
+// draw_polygon, with the drawer's texture, axis and target.
 SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget);
 
 // The polygon being drawn, for a fault's report (the kernel's page-fault handler names them): the

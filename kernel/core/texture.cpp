@@ -58,11 +58,11 @@ void make_bordered(const Texture& t, uint8_t* out) {
 }
 
 const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer) {
-    constexpr int32_t GUARD = ALIGNED256_GUARD_ROWS * 256;
-    uintptr_t address = (reinterpret_cast<uintptr_t>(buffer) + GUARD + 0xFFFF) & ~uintptr_t(0xFFFF);
+    constexpr int32_t BEFORE = ALIGNED256_GUARD_BEFORE * 256, AFTER = ALIGNED256_GUARD_AFTER * 256;
+    uintptr_t address = (reinterpret_cast<uintptr_t>(buffer) + BEFORE + 0xFFFF) & ~uintptr_t(0xFFFF);
     uint8_t* block = reinterpret_cast<uint8_t*>(address);
     const int32_t u_mask = t.width - 1, v_mask = t.height - 1;  // (tiles256: the sides divide 256)
-    for (int32_t i = -GUARD; i < 65536 + GUARD; ++i) {
+    for (int32_t i = -BEFORE; i < 65536 + AFTER; ++i) {
         const int32_t at = (i + 65536) & 0xFFFF;
         block[i] = t.texels[((at >> 8) & v_mask) * t.width + (at & u_mask)];
     }

@@ -25,14 +25,19 @@ struct Texture {
     // at an address aligned to 64 KiB (fatmap's loops and ours keep the texel's v:u in the low 16
     // bits of the pointer; a 256 x 256 texture is its one tile): texel (u, v) of the repeating
     // texture at block[(v & 255) * 256 + (u & 255)], since each side divides 256. With
-    // ALIGNED256_GUARD_ROWS more rows before and after that continue the tiling: fatmap's table loop
-    // drifts up to a texel per 256 pixels of the triangle's longest scanline, past the block's
-    // ends. Null when not built.
+    // ALIGNED256_GUARD_BEFORE rows before it and ALIGNED256_GUARD_AFTER after it that continue the
+    // tiling: fatmap's table loop drifts up to a texel per 256 pixels of the triangle's longest
+    // scanline, past the block's ends; fast-table reads a span's texels at the first one's offset
+    // in the block plus offsets below 65536, up to block + 131070. Null when not built.
     const uint8_t* aligned256 = nullptr;
 };
 
-constexpr int32_t ALIGNED256_GUARD_ROWS = 96;
-constexpr int32_t ALIGNED256_BYTES = 3 * 65536;  // a buffer that holds the aligned block with its guard rows
+constexpr int32_t ALIGNED256_GUARD_BEFORE = 96;
+constexpr int32_t ALIGNED256_GUARD_AFTER = 256;
+// a buffer that holds the aligned block with its guard rows (at most 65535 bytes before the block's
+// 64 KiB boundary, its guard rows before it included)
+constexpr int32_t ALIGNED256_BYTES = 4 * 65536;
+static_assert(ALIGNED256_GUARD_BEFORE * 256 + 65535 + 65536 + ALIGNED256_GUARD_AFTER * 256 <= ALIGNED256_BYTES);
 // Whether a texture's sides are powers of two up to 256 (it tiles the 64 KiB block).
 inline bool tiles256(int32_t width, int32_t height) {
     auto pow2 = [](int32_t n) { return n > 0 && n <= 256 && (n & (n - 1)) == 0; };

@@ -5,35 +5,36 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1087.3f, 344.11f, 40.413f}, // 10 scenes
-    {"exact", 1024.6f, 311.51f, 80.384f}, // 10 scenes
-    {"persp-subdiv-4", 1024.6f, 316.91f, 91.448f}, // 10 scenes
-    {"persp-subdiv-8", 1024.6f, 371.67f, 59.580f}, // 10 scenes
-    {"persp-subdiv-16", 1024.6f, 410.70f, 43.512f}, // 10 scenes
-    {"persp-subdiv-32", 1024.6f, 431.13f, 35.660f}, // 10 scenes
-    {"constant-depth", 1024.6f, 447.45f, 29.883f}, // 10 scenes
-    {"persp-adaptive-0.5", 1024.6f, 829.82f, 316.447f}, // 10 scenes
-    {"persp-adaptive-1", 1024.6f, 996.06f, 51.446f}, // 10 scenes
-    {"persp-adaptive-2", 1024.6f, 1012.91f, 44.286f}, // 10 scenes
-    {"persp-adaptive-4", 1024.6f, 1024.88f, 40.110f}, // 10 scenes
-    {"fast-affine", 1138.3f, 158.62f, 4.175f}, // 10 scenes
-    {"fast-columns", 1209.7f, 254.62f, 5.601f}, // 10 scenes
-    {"fast-subdiv-8", 1024.6f, 292.66f, 13.659f}, // 10 scenes
-    {"fast-subdiv-16", 1024.6f, 302.42f, 9.735f}, // 10 scenes
-    {"fast-subdiv-32", 1024.6f, 307.28f, 7.836f}, // 10 scenes
-    {"fast-constant-depth", 1024.6f, 311.62f, 6.277f}, // 10 scenes
-    {"fast-adaptive-1", 1024.6f, 334.93f, 9.418f}, // 10 scenes
-    {"fast-adaptive-2", 1024.6f, 338.52f, 7.993f}, // 10 scenes
-    {"fast-oriented-1", 1208.3f, 363.12f, 7.410f}, // 10 scenes
-    {"xsharp-dda", 1546.0f, 379.68f, 38.063f}, // 9 scenes
-    {"xsharp-row-out", 1546.0f, 514.99f, 19.560f}, // 9 scenes
-    {"xsharp-column", 1549.7f, 487.09f, 13.299f}, // 9 scenes
-    {"hecker-steptable", 5387.8f, 0.00f, 636.487f}, // 9 scenes
-    {"fatmap-256", 1781.3f, 167.83f, 13.575f}, // 8 scenes
-    {"fatmap-256-16", 1781.3f, 172.83f, 12.575f}, // 8 scenes
-    {"fatmap-lut", 2398.1f, 171.31f, 9.982f}, // 7 scenes
-    {"quake-subdiv16", 1546.7f, 306.66f, 13.864f}, // 9 scenes
-    {"quake-subdiv8", 1546.7f, 291.29f, 20.225f}, // 9 scenes
+    {"affine", 1087.3f, 343.65f, 40.474f}, // 10 scenes
+    {"exact", 1024.6f, 311.06f, 80.445f}, // 10 scenes
+    {"persp-subdiv-4", 1024.6f, 316.46f, 91.509f}, // 10 scenes
+    {"persp-subdiv-8", 1024.6f, 371.21f, 59.641f}, // 10 scenes
+    {"persp-subdiv-16", 1024.6f, 410.25f, 43.573f}, // 10 scenes
+    {"persp-subdiv-32", 1024.6f, 430.68f, 35.721f}, // 10 scenes
+    {"constant-depth", 1024.6f, 446.99f, 29.944f}, // 10 scenes
+    {"persp-adaptive-0.5", 1024.6f, 829.37f, 316.508f}, // 10 scenes
+    {"persp-adaptive-1", 1024.6f, 995.60f, 51.506f}, // 10 scenes
+    {"persp-adaptive-2", 1024.6f, 1012.46f, 44.347f}, // 10 scenes
+    {"persp-adaptive-4", 1024.6f, 1024.43f, 40.171f}, // 10 scenes
+    {"fast-affine", 1138.3f, 158.87f, 4.222f}, // 10 scenes
+    {"fast-table", 1372.0f, 159.38f, 1.339f}, // 10 scenes
+    {"fast-columns", 1209.7f, 254.18f, 5.663f}, // 10 scenes
+    {"fast-subdiv-8", 1024.6f, 292.20f, 13.720f}, // 10 scenes
+    {"fast-subdiv-16", 1024.6f, 301.97f, 9.796f}, // 10 scenes
+    {"fast-subdiv-32", 1024.6f, 306.82f, 7.896f}, // 10 scenes
+    {"fast-constant-depth", 1024.6f, 311.17f, 6.338f}, // 10 scenes
+    {"fast-adaptive-1", 1024.6f, 334.48f, 9.478f}, // 10 scenes
+    {"fast-adaptive-2", 1024.6f, 338.07f, 8.053f}, // 10 scenes
+    {"fast-oriented-1", 1208.3f, 362.58f, 7.469f}, // 10 scenes
+    {"xsharp-dda", 1546.0f, 379.12f, 38.146f}, // 9 scenes
+    {"xsharp-row-out", 1546.0f, 514.43f, 19.643f}, // 9 scenes
+    {"xsharp-column", 1549.7f, 486.58f, 13.382f}, // 9 scenes
+    {"hecker-steptable", 5387.8f, 0.00f, 636.509f}, // 9 scenes
+    {"fatmap-256", 1781.3f, 167.21f, 13.686f}, // 8 scenes
+    {"fatmap-256-16", 1781.3f, 172.21f, 12.686f}, // 8 scenes
+    {"fatmap-lut", 2398.1f, 170.63f, 10.111f}, // 7 scenes
+    {"quake-subdiv16", 1546.7f, 306.14f, 13.947f}, // 9 scenes
+    {"quake-subdiv8", 1546.7f, 290.77f, 20.307f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

@@ -31,16 +31,27 @@ const PolygonSetup* set_up(const DrawContext& c, const Vertex* vertices, int cou
 
 }  // namespace
 
+namespace {
+
 // Rows go by runs: a run's rows have one live bound a side, so the run loop walks them itself. A
 // row with a vertex on its centre (two live bounds on a side) is walked by next() and drawn as a
-// run of one row between constant bounds.
-SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
+// run of one row between constant bounds. With an offset table (fast-table), the table for the
+// polygon's longest span is built once, after the walker (what the setup phase counts).
+template <bool TABLE>
+[[gnu::always_inline]] inline SetupStatus draw_runs(const DrawContext& c, const Vertex* vertices, int count) {
     PolygonSetup own;
     SetupStatus status;
     const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
     EdgeWalker walker(s, Axis::Rows, c.target.clip);
     const Planes p(s);
+    int32_t table[TABLE ? TABLE_LIMIT : 1];
+    if constexpr (TABLE) {
+        // the longest span: the pixel centres in the box's width, at most the clip's
+        const int32_t width = c.target.clip.x1 - c.target.clip.x0;
+        const int64_t box = (s.max_x - s.min_x) / SUBPIXEL_ONE + 2;
+        build_offset_table(int32_t(p.udx), int32_t(p.vdx), box < width ? int32_t(box) : width, table);
+    }
     setup_done(c);
     uint32_t drawn[2] = {0, 0};  // spans, pixels
     FastRunArgs a;
@@ -53,6 +64,7 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
     a.du_16_16 = int32_t(p.udx);
     a.dv_16_16 = int32_t(p.vdx);
     a.tally = drawn;
+    if constexpr (TABLE) a.table = table;
     for (;;) {
         int32_t line;
         EdgeBound lone_lower, lone_upper;
@@ -77,6 +89,11 @@ SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
     tally(c.stats, drawn[0], drawn[1]);
     return SetupStatus::Ok;
 }
+
+}  // namespace
+
+SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) { return draw_runs<false>(c, vertices, count); }
+SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int count) { return draw_runs<true>(c, vertices, count); }
 
 // Columns: the walker's spans, one fast_column_loop call each (the map mask set once a column).
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) {
@@ -107,15 +124,19 @@ SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count
     return SetupStatus::Ok;
 }
 
-// The bound (docs/accuracy.md, "Error bounds"): both mappers read the polygon's 16.16 planes, the
-// affine planes rounded at the anchor pixel and in each gradient (half a unit each), so at pixel
+namespace {
+
+// The bound (docs/accuracy.md, "Error bounds"): the three mappers read the polygon's 16.16 planes,
+// the affine planes rounded at the anchor pixel and in each gradient (half a unit each), so at pixel
 // (x, y) they are within (1 + |x - x0| + |y - y0|) / 2^17 of the affine planes; those lines'
 // deviation from the exact mapping as for affine. 256 wraps harmlessly in 16.16, but a gradient
-// of 32768 texels a pixel or more saturates: no bound then.
-ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
+// of 32768 texels a pixel or more saturates: no bound then. fast-table reads a texel at most one
+// more away on each axis (TABLE_U_START): a coordinate `extra` = 1 texel further.
+template <int EXTRA>
+ErrorBound planes_bound(const BoundContext& c, const Vertex* vertices, int count) {
     if (!mapper_accepts(c.mapper, c.tex)) return ErrorBound{false, true, 0};
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
-        return planes_fit_16_16(s) ? spread_planes_bound(p, s, (1 + p.reach) * HALF_ULP_16_16, c.budget) : NO_BOUND;
+        return planes_fit_16_16(s) ? spread_planes_bound(p, s, (1 + p.reach) * HALF_ULP_16_16 + EXTRA, c.budget) : NO_BOUND;
     };
     return bound_by_spans(c, vertices, count, PLANES_ALL, whole, [&](const Span& span, const PolygonSetup& s, bool* fits) {
         SpanLine l = span_line(s, c.axis, span);
@@ -128,17 +149,28 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
             int32_t px = span.x + (c.axis == Axis::Rows ? int32_t(k) : 0), py = span.y + (c.axis == Axis::Rows ? 0 : int32_t(k));
             return double(px > s.u_fx.x0 ? px - s.u_fx.x0 : s.u_fx.x0 - px) + double(py > s.u_fx.y0 ? py - s.u_fx.y0 : s.u_fx.y0 - py);
         };
-        auto piece = [&](double k0, double k1) { return lines_bound(l, a, step, k0, k1, (1 + larger(reach(k0), reach(k1))) * HALF_ULP_16_16); };
+        auto piece = [&](double k0, double k1) {
+            return lines_bound(l, a, step, k0, k1, (1 + larger(reach(k0), reach(k1))) * HALF_ULP_16_16 + EXTRA);
+        };
         return span_bound(c, 0, last, BOUND_PIECE, piece, piece);
     });
 }
+
+}  // namespace
+
+ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) { return planes_bound<0>(c, vertices, count); }
+ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count) { return planes_bound<1>(c, vertices, count); }
 
 }  // namespace raster::fast
 
 namespace raster {
 
-void fast_run_loop(const void* raw) {
-    const auto& a = *static_cast<const FastRunArgs*>(raw);
+namespace {
+
+// The rows of a run as both run loops walk them: span(row, lo, hi, u, v) draws pixels lo..hi of a
+// non-empty row from u, v (16.16) at its first pixel.
+template <typename Span>
+void run_rows(const FastRunArgs& a, Span&& span) {
     uint8_t* row = a.row;
     uint32_t u = a.u_16_16, v = a.v_16_16;
     for (int32_t n = 0; n < a.lines; ++n) {
@@ -147,12 +179,7 @@ void fast_run_loop(const void* raw) {
         a.lower->step();
         a.upper->step();
         if (lo <= hi) {
-            uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);
-            for (int32_t x = lo; x <= hi; ++x) {
-                row[x] = texel256(a.texture, su, sv);
-                su += uint32_t(a.du_16_16);
-                sv += uint32_t(a.dv_16_16);
-            }
+            span(row, lo, hi, u + uint32_t(lo) * uint32_t(a.du_16_16), v + uint32_t(lo) * uint32_t(a.dv_16_16));
             a.tally[0] += 1;
             a.tally[1] += uint32_t(hi - lo + 1);
         }
@@ -160,6 +187,37 @@ void fast_run_loop(const void* raw) {
         u += a.u_row_16_16;
         v += a.v_row_16_16;
     }
+}
+
+}  // namespace
+
+void fast_run_loop(const void* raw) {
+    const auto& a = *static_cast<const FastRunArgs*>(raw);
+    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t su, uint32_t sv) {
+        for (int32_t x = lo; x <= hi; ++x) {
+            row[x] = texel256(a.texture, su, sv);
+            su += uint32_t(a.du_16_16);
+            sv += uint32_t(a.dv_16_16);
+        }
+    });
+}
+
+void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table) {
+    // 16.16 values modulo 2^32: their wholes modulo 256 are the floors' (2^32 is a multiple of 2^24)
+    uint32_t u = TABLE_U_START, v = 0;
+    for (int32_t k = 0; k < length; ++k) {
+        table[k] = int32_t(((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));
+        u += uint32_t(du_16_16);
+        v += uint32_t(dv_16_16);
+    }
+}
+
+void fast_table_loop(const void* raw) {
+    const auto& a = *static_cast<const FastRunArgs*>(raw);
+    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t su, uint32_t sv) {
+        const uint8_t* first = a.texture + (((sv >> 8) & 0xFF00) | ((su >> 16) & 0xFF));
+        for (int32_t x = lo; x <= hi; ++x) row[x] = first[a.table[x - lo]];
+    });
 }
 
 void fast_column_loop(const void* raw) {
@@ -186,11 +244,13 @@ LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32
 
 namespace {
 
-// fast_run_loop's block with the bounds and the tally it updates, which must come out the same.
+// fast_run_loop's block (and fast_table_loop's) with the bounds and the tally it updates, which
+// must come out the same, and the offset table fast_table_loop reads.
 struct RunCase {
     FastRunArgs args;
     EdgeBound lower, upper;
     uint32_t tally[2];
+    int32_t table[TABLE_LIMIT];
 };
 
 }  // namespace
@@ -201,6 +261,7 @@ void move_to_b(RunCase& b, const RunCase& a, const CheckBuffers& buf) {
     b.args.lower = &b.lower;
     b.args.upper = &b.upper;
     b.args.tally = b.tally;
+    b.args.table = b.table;
 }
 
 template <>
@@ -231,6 +292,7 @@ EdgeBound random_bound(Random& r, int32_t pitch) {
 
 }  // namespace
 
+// fast_run_loop's and fast_table_loop's random cases: a run and the offset table of its steps.
 LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<RunCase>(m, other, seed, cases, buf, [&](Random& r, RunCase& c) {
         FastRunArgs& a = c.args;
@@ -253,6 +315,8 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         a.lower = &c.lower;
         a.upper = &c.upper;
         a.tally = c.tally;
+        build_offset_table(a.du_16_16, a.dv_16_16, a.pitch, c.table);  // (a span is at most the pitch)
+        a.table = c.table;
         a.row = buf.a + CHECK_GUARD_BYTES;
         int32_t lines = a.lines > 0 ? a.lines : 0;
         uint32_t pixels = 0;  // what the rows will draw
@@ -267,11 +331,13 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
     });
 }
 
+
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts asm/fast.asm reads (core/asm_offsets.h).
 void fast_offsets() {
     ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
-    ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, texture, u_16_16, v_16_16, u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally)
+    ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, texture, u_16_16, v_16_16, u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally,
+               table)
     ASM_FIELDS(BOUND, EdgeBound, first, last, q, dq, r, dr, d)
     ASM_SIZE(BOUND_SIZE, EdgeBound);
     ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)

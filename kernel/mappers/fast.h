@@ -1,5 +1,6 @@
 // Our fastest affine mappers (repeating textures tiled over 256 x 256): the polygon drivers, the loops'
-// argument blocks, the twins and the NASM loops (asm/fast.asm).
+// argument blocks, the twins and the NASM loops (asm/fast.asm); fast-table, the same runs of rows
+// with the texel offsets along a span precomputed once a polygon.
 #pragma once
 
 #include <stdint.h>
@@ -25,8 +26,24 @@ struct FastRunArgs {
     uint32_t u_row_16_16, v_row_16_16;  // their change from row to row
     int32_t du_16_16, dv_16_16;       // per pixel
     uint32_t* tally;         // tally[0] += the spans drawn, tally[1] += their pixels
+    const int32_t* table;    // fast-table: build_offset_table's, as long as any span of the run (fast-affine: unread)
 };
 void fast_run_loop(const void* args);
+
+// fast-table: the offsets of pixel k of any span from its first pixel's texel in the tiled block,
+// for a polygon whose u and v step by du and dv (16.16) a pixel: table[k] = (floor(k dv) & 255) * 256
+// + (floor(c + k du) & 255), the floors of 16.16 values in exact integer arithmetic, c =
+// TABLE_U_START, k = 0 .. length - 1 (fatmap's table idea: one table a polygon, not a step a pixel).
+// fast_table_loop walks fast_run_loop's rows and reads a span that starts at u0, v0 at pixel k from
+// block + (v0 whole & 255) * 256 + (u0 whole & 255) + table[k]: u's part may pass 255 into the next
+// texel row (the block's guard rows after it continue the tiling, to block + 131070), so the texel
+// read is fast-affine's (floor(u0 + k du), floor(v0 + k dv)) moved by e_u on u, |e_u| <= 1 (the
+// start's fraction against c), and by e_v on v, |e_v| <= 1 (the fraction dropped, 0 or -1, and the
+// carry from u, 0 or +1), modulo 256 (docs/accuracy.md, "The offset table").
+constexpr uint32_t TABLE_U_START = 0x8000;  // half a texel: e_u in {-1, 0, 1}
+constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row: 320 pixels)
+void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table);
+void fast_table_loop(const void* args);
 
 // fast-columns: the same arithmetic down a Mode X column, 80 bytes between pixels; it takes
 // fatmap's block (the 8:16 loops' inputs, a 64 KiB-aligned texture).
@@ -34,6 +51,7 @@ constexpr int32_t MODEX_ROW_BYTES = 80;
 using FastColumnArgs = FatmapArgs;
 void fast_column_loop(const void* args);
 
+// fast_run_loop's and fast_table_loop's random cases (a run and the offset table of its steps)
 LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
@@ -41,13 +59,16 @@ LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32
 
 extern "C" {
 void fast_run_loop_asm(const void* args);
+void fast_table_loop_asm(const void* args);
 void fast_column_loop_asm(const void* args);
 }
 
 namespace raster::fast {
 
-SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count);     // fast-affine
-SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count);  // fast-columns
-ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count);         // both
+SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count);        // fast-affine
+SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int count);  // fast-table
+SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count);     // fast-columns
+ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count);            // fast-affine, fast-columns
+ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count);      // fast-table: a texel more
 
 }  // namespace raster::fast

@@ -56,6 +56,11 @@ const Mapper MAPPERS[] = {
      "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; repeating textures with "
      "power-of-two sides up to 256 (tiled over 256 x 256)",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
+    {"fast-table", "ours", "fast-affine's runs of rows, each span's texels at offsets from its first precomputed once a polygon (fatmap's table idea)",
+     "exact coverage; u, v affine from the polygon's 16.16 planes, each texel within one texel on each axis of fast-affine's "
+     "(the start's fraction and a carry): within two texels without perspective; textures as fast-affine",
+     EXACT_COVERAGE_FLAT_TWO, NEED_TILED256, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_table_loop), fast::draw_table_rows, check_fast_run,
+     fast::table_bound},
     {"fast-columns", "ours", "the same core down Mode X columns, the map mask set once a column",
      "as fast-affine, by columns into Mode X planes",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256 | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_loop),

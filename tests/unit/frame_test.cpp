@@ -334,7 +334,7 @@ TEST(Frame, TexturesPerObjectShareTheirCopies) {
     ASSERT_NE(s.aligned256, nullptr);
     EXPECT_EQ(reinterpret_cast<uintptr_t>(s.aligned256) & 0xFFFF, 0u);
     int wrong = 0;
-    for (int32_t i = -ALIGNED256_GUARD_ROWS * 256; i < 65536 + ALIGNED256_GUARD_ROWS * 256; ++i) {
+    for (int32_t i = -ALIGNED256_GUARD_BEFORE * 256; i < 65536 + ALIGNED256_GUARD_AFTER * 256; ++i) {
         const int32_t u = ((i % 256) + 256) % 256, v = (((i - u) / 256) % 256 + 256) % 256;
         wrong += s.aligned256[i] != s.texels[(v % 32) * 64 + u % 64];
     }
