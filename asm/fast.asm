@@ -8,7 +8,9 @@
 ;                                        table (twin: fast_table_loop): two loads a pixel, one word
 ;                                        store a pair, eight pairs a block;
 ;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop): eight pixels a
-;                                        block, each stored alone (they lie 80 bytes apart).
+;                                        block, each stored alone (they lie 80 bytes apart);
+;   fast_table_column_loop_asm (fast-table-columns): one column through the offset table (twin:
+;                                        fast_table_column_loop): a load, a load and a store a pixel.
 ;   The core, its registers and its blocks: asm/core816.inc; [esp]: the entry point.
 
 bits 32
@@ -52,6 +54,52 @@ fast_column_loop_asm:
     shl eax, 16
     jmp [esp]
     BLOCKS MODEX_ROW_BYTES
+.done:
+    LOOP_LEAVE 4
+
+; fast_table_column_loop_asm: one Mode X column through the polygon's offset table (twin:
+; fast_table_column_loop): pixel n is [esi + table[n]], eight pixels a block, each stored alone.
+%macro TCOL_PIXEL 1                     ; %1: the pixel within the block
+    mov ebx, [ebp + 4 * %1]
+    mov al, [esi + ebx]
+    mov [edi + %1 * MODEX_ROW_BYTES], al
+%endmacro
+
+global fast_table_column_loop_asm
+fast_table_column_loop_asm:
+    LOOP_ENTER 4
+    mov eax, LOOP_ARG(4)
+    mov ecx, [eax + TCOL_count]
+    test ecx, ecx
+    jle .done
+    mov edi, [eax + TCOL_dst]
+    mov esi, [eax + TCOL_source]
+    mov ebp, [eax + TCOL_table]
+    mov edx, ecx
+    neg edx
+    and edx, 7                          ; the first block starts at pixel j = (-count) mod 8:
+    imul ebx, edx, MODEX_ROW_BYTES
+    sub edi, ebx                        ; the destination j rows back
+    lea ebx, [edx * 4]
+    sub ebp, ebx                        ; the table j entries back
+    mov edx, [table_column_entries + edx * 4]
+    mov [esp], edx
+    add ecx, 7
+    shr ecx, 3                          ; blocks, the first one partial
+    jmp [esp]
+.block:
+.e0: TCOL_PIXEL 0
+.e1: TCOL_PIXEL 1
+.e2: TCOL_PIXEL 2
+.e3: TCOL_PIXEL 3
+.e4: TCOL_PIXEL 4
+.e5: TCOL_PIXEL 5
+.e6: TCOL_PIXEL 6
+.e7: TCOL_PIXEL 7
+    add ebp, 32
+    add edi, 8 * MODEX_ROW_BYTES
+    dec ecx
+    jnz .block
 .done:
     LOOP_LEAVE 4
 
@@ -257,6 +305,9 @@ column_entries:
 run_entries:
     dd fast_run_loop_asm.e0, fast_run_loop_asm.e1, fast_run_loop_asm.e2, fast_run_loop_asm.e3
     dd fast_run_loop_asm.e4, fast_run_loop_asm.e5, fast_run_loop_asm.e6, fast_run_loop_asm.e7
+table_column_entries:
+    dd fast_table_column_loop_asm.e0, fast_table_column_loop_asm.e1, fast_table_column_loop_asm.e2, fast_table_column_loop_asm.e3
+    dd fast_table_column_loop_asm.e4, fast_table_column_loop_asm.e5, fast_table_column_loop_asm.e6, fast_table_column_loop_asm.e7
 table_entries:
     dd fast_table_loop_asm.e0, fast_table_loop_asm.e1, fast_table_loop_asm.e2, fast_table_loop_asm.e3
     dd fast_table_loop_asm.e4, fast_table_loop_asm.e5, fast_table_loop_asm.e6, fast_table_loop_asm.e7

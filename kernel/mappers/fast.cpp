@@ -95,27 +95,56 @@ template <bool TABLE>
 SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) { return draw_runs<false>(c, vertices, count); }
 SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int count) { return draw_runs<true>(c, vertices, count); }
 
-// Columns: the walker's spans, one fast_column_loop call each (the map mask set once a column).
-SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) {
+namespace {
+
+template <bool TABLE>
+struct ColumnArgsOf {
+    using type = FastColumnArgs;
+};
+template <>
+struct ColumnArgsOf<true> {
+    using type = FastTableColumnArgs;
+};
+
+// Columns: the walker's spans, one loop call each (the map mask set once a column): fast_column_loop
+// from each column's u and v, or (fast-table-columns) fast_table_column_loop from its first texel
+// through the polygon's offset table along y, built once for its tallest column.
+template <bool TABLE>
+[[gnu::always_inline]] inline SetupStatus draw_column_spans(const DrawContext& c, const Vertex* vertices, int count) {
     PolygonSetup own;
     SetupStatus status;
     const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
     EdgeWalker walker(s, Axis::Columns, c.target.clip);
     const Planes p(s);
+    int32_t table[TABLE ? TABLE_LIMIT : 1];
+    if constexpr (TABLE) {
+        const int32_t height = c.target.clip.y1 - c.target.clip.y0;
+        const int64_t box = (s.max_y - s.min_y) / SUBPIXEL_ONE + 2;
+        build_offset_table(int32_t(p.udy), int32_t(p.vdy), box < height ? int32_t(box) : height, table);
+    }
     setup_done(c);
-    FastColumnArgs a;
-    a.texture = c.tex.aligned256;
-    a.du_16_16 = int32_t(p.udy);
-    a.dv_16_16 = int32_t(p.vdy);
+    typename ColumnArgsOf<TABLE>::type a;
+    if constexpr (TABLE) {
+        a.table = table;
+    } else {
+        a.texture = c.tex.aligned256;
+        a.du_16_16 = int32_t(p.udy);
+        a.dv_16_16 = int32_t(p.vdy);
+    }
     uint32_t spans = 0, pixels = 0;
     Span span;
     while (walker.next(&span)) {
         int32_t stride;
         a.dst = span_start(c.target, Axis::Columns, span, &stride);
         a.count = span.count;
-        a.u_16_16 = int32_t(p.u(span.x, span.y));
-        a.v_16_16 = int32_t(p.v(span.x, span.y));
+        if constexpr (TABLE) {
+            const uint32_t u = p.u(span.x, span.y), v = p.v(span.x, span.y);
+            a.source = c.tex.aligned256 + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));
+        } else {
+            a.u_16_16 = int32_t(p.u(span.x, span.y));
+            a.v_16_16 = int32_t(p.v(span.x, span.y));
+        }
         emit(c, &a, 0, 0);  // counted once for the polygon
         ++spans;
         pixels += uint32_t(span.count);
@@ -123,6 +152,11 @@ SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count
     tally(c.stats, spans, pixels);
     return SetupStatus::Ok;
 }
+
+}  // namespace
+
+SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) { return draw_column_spans<false>(c, vertices, count); }
+SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count) { return draw_column_spans<true>(c, vertices, count); }
 
 namespace {
 
@@ -220,6 +254,11 @@ void fast_table_loop(const void* raw) {
     });
 }
 
+void fast_table_column_loop(const void* raw) {
+    const auto& a = *static_cast<const FastTableColumnArgs*>(raw);
+    for (int32_t n = 0; n < a.count; ++n) a.dst[n * MODEX_ROW_BYTES] = a.source[a.table[n]];
+}
+
 void fast_column_loop(const void* raw) {
     const auto& a = *static_cast<const FastColumnArgs*>(raw);
     uint32_t u = uint32_t(a.u_16_16), v = uint32_t(a.v_16_16);
@@ -238,6 +277,41 @@ LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32
         a.count = random_count(r, 0, 9, 240);
         a.texture = check_aligned_texture(buf);
         random_uv(r, a);
+        return place_span(buf, a, MODEX_ROW_BYTES);
+    });
+}
+
+namespace {
+
+// fast_table_column_loop's block with the table it reads.
+struct TableColumnCase {
+    FastTableColumnArgs args;
+    int32_t table[TABLE_LIMIT];
+};
+
+}  // namespace
+
+template <>
+void move_to_b(TableColumnCase& b, const TableColumnCase& a, const CheckBuffers& buf) {
+    b.args.dst = buf.b + (a.args.dst - buf.a);
+    b.args.table = b.table;
+}
+
+template <>
+const void* check_block(const TableColumnCase& a) {
+    return &a.args;
+}
+
+// Columns of 0 to 240 pixels from a random texel of the block, the table of random steps.
+LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<TableColumnCase>(m, other, seed, cases, buf, [&](Random& r, TableColumnCase& c) {
+        FastTableColumnArgs& a = c.args;
+        a.count = random_count(r, 0, 9, 240);
+        a.source = check_aligned_texture(buf) + (r.next() & 0xFFFF);
+        const int32_t du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        const int32_t dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        build_offset_table(du, dv, a.count, c.table);
+        a.table = c.table;
         return place_span(buf, a, MODEX_ROW_BYTES);
     });
 }
@@ -336,6 +410,7 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
 // The block layouts asm/fast.asm reads (core/asm_offsets.h).
 void fast_offsets() {
     ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
+    ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, texture, u_16_16, v_16_16, u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally,
                table)
     ASM_FIELDS(BOUND, EdgeBound, first, last, q, dq, r, dr, d)

@@ -50,10 +50,16 @@ void fast_table_loop(const void* args);
 constexpr int32_t MODEX_ROW_BYTES = 80;
 using FastColumnArgs = FatmapArgs;
 void fast_column_loop(const void* args);
+// fast-table-columns: a Mode X column through the polygon's offset table along y (as fast-table's
+// rows along x): pixel n, 80 bytes after pixel n - 1, is source[table[n]], source the column's first
+// texel in the tiled block; fatmap-lut's block (the same reading, its stride a row of a plane).
+using FastTableColumnArgs = FatmapLutArgs;
+void fast_table_column_loop(const void* args);
 
 // fast_run_loop's and fast_table_loop's random cases (a run and the offset table of its steps)
 LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
 }  // namespace raster
 
@@ -61,6 +67,7 @@ extern "C" {
 void fast_run_loop_asm(const void* args);
 void fast_table_loop_asm(const void* args);
 void fast_column_loop_asm(const void* args);
+void fast_table_column_loop_asm(const void* args);
 }
 
 namespace raster::fast {
@@ -68,6 +75,7 @@ namespace raster::fast {
 SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count);        // fast-affine
 SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int count);  // fast-table
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count);     // fast-columns
+SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count);  // fast-table-columns
 ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count);            // fast-affine, fast-columns
 ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count);      // fast-table: a texel more
 

@@ -65,6 +65,10 @@ const Mapper MAPPERS[] = {
      "as fast-affine, by columns into Mode X planes",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256 | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_loop),
      fast::draw_columns, check_fast_column, fast::bound, false, SPANS_NOT_ASKED, true},
+    {"fast-table-columns", "ours", "fast-table's offsets down Mode X columns, the map mask set once a column",
+     "as fast-table, by columns into Mode X planes: within two texels without perspective",
+     EXACT_COVERAGE_FLAT_TWO, NEED_TILED256 | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_table_column_loop),
+     fast::draw_table_columns, check_fast_table_column, fast::table_bound},
     {"fast-subdiv-8", "ours", "exact every 8 pixels in x87, the fast 8:16 core between, one NASM loop a span",
      "perspective-correct at every 8th pixel and the last; 16.16 steps from the ends' difference; exact coverage; repeating "
      "textures with power-of-two sides up to 256 (tiled over 256 x 256); rows in pairs, columns a pixel at a time",

@@ -2,6 +2,8 @@
 // algorithm says what it does (docs/mappers.md).
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "kernel/core/policy.h"
 #include "kernel/mappers/classic.h"
 #include "tests/unit/raster_helpers.h"
@@ -326,8 +328,8 @@ TEST(FastAffine, AsAccurateAsTheTextbookAffineMapper) {
     EXPECT_LT(fast_rows.mean_texel_error, fatmap16.mean_texel_error) << "subpixel-correct starts beat fatmap's truncated edges";
 }
 
-// fast-affine, fast-columns and fast-table take any repeating texture with power-of-two sides up to
-// 256 by reading its tiling of the 64 KiB block (fast-table also its guard rows after it): on random triangles over many periods, each draws with a
+// fast-affine, fast-columns and the fast-table pair take any repeating texture with power-of-two
+// sides up to 256 by reading its tiling of the 64 KiB block (fast-table also its guard rows after it): on random triangles over many periods, each draws with a
 // w x h texture exactly the pixels it draws with the 256 x 256 texture that tiles it (built here,
 // independently), with both loops, and no texel further than one from affine's.
 TEST(FastAffine, TakesEveryPowerOfTwoTextureAsItsTiling) {
@@ -344,7 +346,7 @@ TEST(FastAffine, TakesEveryPowerOfTwoTextureAsItsTiling) {
         Texture tex{texels.data(), w, h, Wrap::Repeat}, whole{tiling.data(), 256, 256, Wrap::Repeat};
         prepare_texture(&tex, bordered.data(), aligned.data());
         prepare_texture(&whole, bordered256.data(), aligned256.data());
-        for (const char* name : {"fast-affine", "fast-columns", "fast-table"}) {
+        for (const char* name : {"fast-affine", "fast-columns", "fast-table", "fast-table-columns"}) {
             const Mapper& m = mapper(name);
             ASSERT_TRUE(mapper_accepts(m, tex)) << name << " " << w << "x" << h;
             const Axis axis = home_axis(m);
@@ -375,41 +377,46 @@ TEST(FastAffine, TakesEveryPowerOfTwoTextureAsItsTiling) {
 }
 
 // fast-table draws the pixels fast-affine draws, each texel within one on each axis of fast-affine's
-// (docs/accuracy.md, "The offset table"), and both ways somewhere: on random triangles with texel
-// coordinates over many periods, steps to several texels a pixel, a 16 x 8 texture whose texels
-// name themselves (v * 16 + u), NASM loop and twin.
+// (docs/accuracy.md, "The offset table"), and both ways somewhere; fast-table-columns likewise
+// against fast-columns (a planar target): on random triangles with texel coordinates over many
+// periods, steps to several texels a pixel, a 16 x 8 texture whose texels name themselves
+// (v * 16 + u), NASM loop and twin.
 TEST(FastTable, EachTexelWithinOneOnEachAxisOfFastAffines) {
     std::vector<uint8_t> texels(16 * 8), bordered(size_t(bordered_bytes(16, 8))), aligned(ALIGNED256_BYTES);
     for (int32_t i = 0; i < 16 * 8; ++i) texels[size_t(i)] = uint8_t(i);
     Texture tex{texels.data(), 16, 8, Wrap::Repeat};
     prepare_texture(&tex, bordered.data(), aligned.data());
-    const Mapper &table = mapper("fast-table"), &affine = mapper("fast-affine");
-    TriangleGen gen(3031u);
-    gen.uv_range = 3000;
-    int pixels = 0, moved[2][3] = {};  // [axis][e + 1]
-    constexpr uint8_t EMPTY = 255;
-    for (int n = 0; n < 400; ++n) {
-        const std::vector<Vertex> t = gen.triangle();
-        for (Variant variant : {Variant::Twin, Variant::Asm}) {
-            std::vector<uint8_t> a(SCREEN_PIXELS, EMPTY), b(SCREEN_PIXELS, EMPTY);
-            Target ta = ram_target(a.data(), false), tb = ram_target(b.data(), false);
-            RenderStats sa, sb;
-            ASSERT_EQ(draw_polygon(t.data(), 3, tex, table, Axis::Rows, ta, &sa, variant),
-                      draw_polygon(t.data(), 3, tex, affine, Axis::Rows, tb, &sb, variant));
-            ASSERT_EQ(sa.pixels, sb.pixels);
-            for (size_t i = 0; i < a.size(); ++i) {
-                ASSERT_EQ(a[i] == EMPTY, b[i] == EMPTY) << "triangle " << n << " pixel " << i;
-                if (a[i] == EMPTY) continue;
-                ++pixels;
-                const int du = ((a[i] & 15) - (b[i] & 15) + 16 + 1) % 16 - 1, dv = ((a[i] >> 4) - (b[i] >> 4) + 8 + 1) % 8 - 1;
-                ASSERT_TRUE(du >= -1 && du <= 1 && dv >= -1 && dv <= 1) << "triangle " << n << " pixel " << i << ": " << int(a[i]) << " against " << int(b[i]);
-                ++moved[0][du + 1], ++moved[1][dv + 1];
+    for (const auto& pair : {std::pair{"fast-table", "fast-affine"}, std::pair{"fast-table-columns", "fast-columns"}}) {
+        const Mapper &table = mapper(pair.first), &affine = mapper(pair.second);
+        const Axis axis = home_axis(table);
+        TriangleGen gen(3031u);
+        gen.uv_range = 3000;
+        int pixels = 0, moved[2][3] = {};  // [axis][e + 1]
+        constexpr uint8_t EMPTY = 255;
+        for (int n = 0; n < 400; ++n) {
+            const std::vector<Vertex> t = gen.triangle();
+            for (Variant variant : {Variant::Twin, Variant::Asm}) {
+                std::vector<uint8_t> a(SCREEN_PIXELS, EMPTY), b(SCREEN_PIXELS, EMPTY);
+                Target ta = ram_target(a.data(), ram_planar(table, axis)), tb = ram_target(b.data(), ram_planar(affine, axis));
+                RenderStats sa, sb;
+                ASSERT_EQ(draw_polygon(t.data(), 3, tex, table, axis, ta, &sa, variant),
+                          draw_polygon(t.data(), 3, tex, affine, axis, tb, &sb, variant));
+                ASSERT_EQ(sa.pixels, sb.pixels);
+                for (size_t i = 0; i < a.size(); ++i) {
+                    ASSERT_EQ(a[i] == EMPTY, b[i] == EMPTY) << "triangle " << n << " pixel " << i;
+                    if (a[i] == EMPTY) continue;
+                    ++pixels;
+                    const int du = ((a[i] & 15) - (b[i] & 15) + 16 + 1) % 16 - 1, dv = ((a[i] >> 4) - (b[i] >> 4) + 8 + 1) % 8 - 1;
+                    ASSERT_TRUE(du >= -1 && du <= 1 && dv >= -1 && dv <= 1)
+                        << pair.first << " triangle " << n << " pixel " << i << ": " << int(a[i]) << " against " << int(b[i]);
+                    ++moved[0][du + 1], ++moved[1][dv + 1];
+                }
             }
         }
+        EXPECT_GT(pixels, 100000) << pair.first;
+        for (int t = 0; t < 2; ++t)
+            for (int e = 0; e < 3; ++e) EXPECT_GT(moved[t][e], 0) << pair.first << ": " << (t ? "v" : "u") << " never moved by " << e - 1;
     }
-    EXPECT_GT(pixels, 100000);
-    for (int axis = 0; axis < 2; ++axis)
-        for (int e = 0; e < 3; ++e) EXPECT_GT(moved[axis][e], 0) << "axis " << axis << " never moved by " << e - 1;
 }
 
 }  // namespace
