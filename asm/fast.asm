@@ -21,24 +21,33 @@ bits 32
 
 section .text
 
+; The column loops' entry: the frame, the block (eax), its pixel count (ecx) and destination (edi)
+; from the fields %1_count and %1_dst (.done: no pixels); then the computed entry into blocks of
+; eight pixels for them: the first block starts at pixel j = (-count) mod 8 (left in edx), so the
+; destination moves j rows back and [esp] takes entry j of the table %2; ecx: the blocks, the
+; first one partial.
+%macro COLUMN_ENTER 2
+    LOOP_ENTER 4
+    mov eax, LOOP_ARG(4)
+    mov ecx, [eax + %1_count]
+    test ecx, ecx
+    jle .done
+    mov edi, [eax + %1_dst]
+    mov edx, ecx
+    neg edx
+    and edx, 7
+    imul ebx, edx, MODEX_ROW_BYTES
+    sub edi, ebx
+    mov ebx, [%2 + edx * 4]
+    mov [esp], ebx
+    add ecx, 7
+    shr ecx, 3
+%endmacro
+
 ; fast_column_loop_asm: one column, pixels MODEX_ROW_BYTES apart; the map mask is the caller's.
 global fast_column_loop_asm
 fast_column_loop_asm:
-    LOOP_ENTER 4
-    mov eax, LOOP_ARG(4)
-    mov ecx, [eax + FCOL_count]
-    test ecx, ecx
-    jle .done
-    mov edi, [eax + FCOL_dst]
-    mov edx, ecx
-    neg edx
-    and edx, 7                          ; the first block starts at pixel j = (-count) mod 8
-    imul ebx, edx, MODEX_ROW_BYTES
-    sub edi, ebx                        ; so that pixel j of that block is the first pixel
-    mov edx, [column_entries + edx * 4]
-    mov [esp], edx
-    add ecx, 7
-    shr ecx, 3                          ; blocks, the first one partial
+    COLUMN_ENTER FCOL, column_entries
     mov ebx, [eax + FCOL_texture]
     mov bl, [eax + FCOL_u_16_16 + 2]
     mov bh, [eax + FCOL_v_16_16 + 2]
@@ -67,25 +76,11 @@ fast_column_loop_asm:
 
 global fast_table_column_loop_asm
 fast_table_column_loop_asm:
-    LOOP_ENTER 4
-    mov eax, LOOP_ARG(4)
-    mov ecx, [eax + TCOL_count]
-    test ecx, ecx
-    jle .done
-    mov edi, [eax + TCOL_dst]
+    COLUMN_ENTER TCOL, table_column_entries
     mov esi, [eax + TCOL_source]
     mov ebp, [eax + TCOL_table]
-    mov edx, ecx
-    neg edx
-    and edx, 7                          ; the first block starts at pixel j = (-count) mod 8:
-    imul ebx, edx, MODEX_ROW_BYTES
-    sub edi, ebx                        ; the destination j rows back
     lea ebx, [edx * 4]
-    sub ebp, ebx                        ; the table j entries back
-    mov edx, [table_column_entries + edx * 4]
-    mov [esp], edx
-    add ecx, 7
-    shr ecx, 3                          ; blocks, the first one partial
+    sub ebp, ebx                        ; the table j entries back, as the destination
     jmp [esp]
 .block:
 .e0: TCOL_PIXEL 0
