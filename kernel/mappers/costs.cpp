@@ -17,9 +17,9 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-2", 1024.6f, 1012.46f, 44.347f}, // 10 scenes
     {"persp-adaptive-4", 1024.6f, 1024.43f, 40.171f}, // 10 scenes
     {"fast-affine", 1138.3f, 158.87f, 4.222f}, // 10 scenes
-    {"fast-table", 1372.0f, 159.38f, 1.339f}, // 10 scenes
+    {"fast-table", 1355.0f, 158.92f, 1.349f}, // 10 scenes
     {"fast-columns", 1209.7f, 254.18f, 5.663f}, // 10 scenes
-    {"fast-table-columns", 1417.9f, 250.89f, 2.823f}, // 10 scenes
+    {"fast-table-columns", 1400.9f, 250.67f, 2.827f}, // 10 scenes
     {"fast-subdiv-8", 1024.6f, 292.20f, 13.720f}, // 10 scenes
     {"fast-subdiv-16", 1024.6f, 301.97f, 9.796f}, // 10 scenes
     {"fast-subdiv-32", 1024.6f, 306.82f, 7.896f}, // 10 scenes

@@ -49,8 +49,8 @@ template <bool TABLE>
     if constexpr (TABLE) {
         // the longest span: the pixel centres in the box's width, at most the clip's
         const int32_t width = c.target.clip.x1 - c.target.clip.x0;
-        const int64_t box = (s.max_x - s.min_x) / SUBPIXEL_ONE + 2;
-        build_offset_table(int32_t(p.udx), int32_t(p.vdx), box < width ? int32_t(box) : width, table);
+        const int32_t box = int32_t((s.max_x - s.min_x) >> SUBPIXEL_BITS) + 2;  // (within setup's range: 32 bits)
+        build_offset_table(int32_t(p.udx), int32_t(p.vdx), box < width ? box : width, table);
     }
     setup_done(c);
     uint32_t drawn[2] = {0, 0};  // spans, pixels
@@ -120,8 +120,8 @@ template <bool TABLE>
     int32_t table[TABLE ? TABLE_LIMIT : 1];
     if constexpr (TABLE) {
         const int32_t height = c.target.clip.y1 - c.target.clip.y0;
-        const int64_t box = (s.max_y - s.min_y) / SUBPIXEL_ONE + 2;
-        build_offset_table(int32_t(p.udy), int32_t(p.vdy), box < height ? int32_t(box) : height, table);
+        const int32_t box = int32_t((s.max_y - s.min_y) >> SUBPIXEL_BITS) + 2;
+        build_offset_table(int32_t(p.udy), int32_t(p.vdy), box < height ? box : height, table);
     }
     setup_done(c);
     typename ColumnArgsOf<TABLE>::type a;
