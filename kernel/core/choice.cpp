@@ -50,11 +50,12 @@ struct Candidates {
     bool spans[2 * MAPPER_LIMIT] = {};    // proven_by_spans: asked span by span (after the whole polygon)
     // the least cost a polygon, a span and a pixel of candidates k on: what any of them costs at least
     double least_polygon[2 * MAPPER_LIMIT] = {}, least_span[2 * MAPPER_LIMIT] = {}, least_pixel[2 * MAPPER_LIMIT] = {};
-    // the candidates an object's envelope proves (Mapper::enveloped), and whether every other one
-    // costs, with its proof, at least as much in each part of its row as each of them without
+    // the candidates an object's envelope proves (Mapper::enveloped), whether every other one costs,
+    // with its proof, at least as much as the first of them without on any triangle the guards let
+    // through, and up to how many pixels where one costs less a pixel (AutoPlan::enveloped_area2)
     int enveloped_count = 0, enveloped_first = -1;
     bool envelope_cheapest = false;
-    double envelope_pixels = 0;  // the most pixels a triangle may have for it to be the cheaper (EnvelopeSize)
+    double envelope_pixels = 0;
     AutoPlan plan{};  // plan_auto's but the envelope's part
 };
 

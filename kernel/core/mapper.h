@@ -180,8 +180,8 @@ struct Mapper {
     SetupPlanes span_planes = PLANES_PERSPECTIVE;
     // Where the target takes rows, the walker it draws a polygon along, which it picks itself
     // polygon by polygon (fast-oriented), from the polygon's setup (any planes) and the clip: asked
-    // for rows it draws along this one (auto prices it so); asked for columns, columns. nullptr:
-    // the walker it is asked for.
+    // for rows it draws along this one (its bound too); asked for columns, columns. nullptr: the
+    // walker it is asked for. auto does not take such a mapper as a candidate (choosable).
     Axis (*own_walker)(const PolygonSetup& s, const ClipRect& clip) = nullptr;
 };
 

@@ -219,4 +219,42 @@ TEST(Envelope, AutoDrawsAnEnvelopedObjectAsTheProvenMapperDoes) {
     }
 }
 
+// The plan weighs the enveloped mapper against every other candidate over the triangles the guards
+// let through: where one costs less a pixel (fast-table against fast-affine), the envelope takes
+// triangles only up to the area where that one, proven, would not yet be the cheaper on one line;
+// a larger triangle goes to the choice, a smaller one is drawn by the envelope.
+TEST(Envelope, TakesTrianglesOnlyUpToTheSizeWhereNoOtherCandidateUndercutsIt) {
+    std::vector<uint8_t> texels(64 * 64, 3), bordered(size_t(bordered_bytes(64, 64))), aligned(ALIGNED256_BYTES);
+    Texture tex{texels.data(), 64, 64, Wrap::Repeat};
+    prepare_texture(&tex, bordered.data(), aligned.data());
+    Target target = surface_kind(Surface::Linear);
+    target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    const Budget budget{true, 2, true};
+    const AutoPlan plan = plan_auto(budget, tex, target, 1.0);
+    const Mapper &fast = *find_mapper("fast-affine"), &table = *find_mapper("fast-table");
+    ASSERT_EQ(plan.enveloped, &fast);
+    ASSERT_LT(plan.enveloped_area2, INT64_MAX) << "fast-table costs less a pixel: a limit";
+    // up to the limit, fast-table with its proof costs no less on one line than fast-affine without
+    // (fast-table's line costs about as much: the limit may come from it or a dearer candidate)
+    const double one = double(SUBPIXEL_ONE), pixels = double(plan.enveloped_area2) / (2 * one * one);
+    const CostRow own = cost_row(MAPPER_COSTS[&fast - MAPPERS]), other = proven_cost(table, cost_row(MAPPER_COSTS[&table - MAPPERS]));
+    const double lines = other.span < own.span ? double(ENVELOPE_REACH + 1) : 1;
+    EXPECT_GE(estimate_cost(other, PolygonSize{lines, pixels}), estimate_cost(own, PolygonSize{lines, pixels}) - 1);
+    EXPECT_GT(pixels, 50);
+    // drawn through the envelope below it, chosen above it
+    std::vector<uint8_t> surface(SCREEN_PIXELS);
+    Target t = ram_target(surface.data(), false);
+    const double side = std::sqrt(2 * pixels);  // a right triangle of side s has s^2 / 2 pixels
+    for (double scale : {0.8, 1.25}) {
+        const double s = side * scale;
+        const std::vector<Vertex> tri{vertex(20, 20, 1, 0, 0), vertex(20 + s, 20, 1, 40, 0), vertex(20, 20 + s, 1, 0, 40)};
+        RenderStats stats;
+        Drawer d = Drawer::of(fast, tex, Axis::Rows, t, &stats, Variant::Twin, true);
+        d.area2 = plan.enveloped_area2;
+        EXPECT_EQ(draw_enveloped(d, tri.data(), Variant::Twin, budget), SetupStatus::Ok);
+        EXPECT_EQ(stats.enveloped, scale < 1 ? 1u : 0u) << "a triangle of " << s * s / 2 << " pixels against a limit of " << pixels;
+        EXPECT_EQ(stats.polygons, 1u);
+    }
+}
+
 }  // namespace
