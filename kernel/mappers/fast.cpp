@@ -21,6 +21,34 @@ struct Planes {
     uint32_t v(int32_t x, int32_t y) const { return v0 + uint32_t(x) * vdx + uint32_t(y) * vdy; }
 };
 
+// Whether the texture reads on the polygon as the tiled block does (NEED_TILED256_OR_INSIDE): a
+// repeating texture always; a clamped one where the polygon's affine u and v lie inside it at every
+// pixel it covers, a coordinate `extra` texels further included (fast-table's offsets), with their
+// 16.16 rounding: at the polygon's corners, where the planes take their extremes over it, each
+// evaluated within 4 eps of its terms, the 16.16 value at a pixel of the clip within
+// (1 + |x - x0| + |y - y0|) 2^-17 of the plane (largest at a corner of the clip). There the block's
+// texel (u mod 256, v mod 256) is the texture's (u, v), clamped or not.
+// (Out of line: the drivers ask it only of a clamped texture, one compare a polygon otherwise.)
+[[gnu::noinline]] bool reads_inside(const PolygonSetup& s, const Texture& tex, const ClipRect& clip, double extra) {
+    if (tex.wrap == Wrap::Repeat) return true;
+    constexpr double EPS = 2.220446049250313e-16;
+    const double x0 = double(s.u_fx.x0), y0 = double(s.u_fx.y0);
+    const double reach = larger(magnitude(double(clip.x0) - x0), magnitude(double(clip.x1 - 1) - x0)) +
+                         larger(magnitude(double(clip.y0) - y0), magnitude(double(clip.y1 - 1) - y0));
+    const double rounding = (1 + reach) * HALF_ULP_16_16 * (1 + 1e-9) + extra;
+    for (int i = 0; i < s.edge_count; ++i) {
+        const double x = double(s.edges[i].px - s.ref_x), y = double(s.edges[i].py - s.ref_y);
+        const Plane* planes[2] = {&s.u, &s.v};
+        const double size[2] = {double(tex.width), double(tex.height)};
+        for (int t = 0; t < 2; ++t) {
+            const Plane& p = *planes[t];
+            const double at = p.at(x, y), off = rounding + 4 * EPS * (magnitude(p.a0) + magnitude(p.gx * x) + magnitude(p.gy * y));
+            if (!(at - off >= 0 && at + off < size[t])) return false;
+        }
+    }
+    return true;
+}
+
 // The polygon's setup (affine planes): the one auto made already, else set up here into `own`.
 const PolygonSetup* set_up(const DrawContext& c, const Vertex* vertices, int count, PolygonSetup* own, SetupStatus* status) {
     *status = SetupStatus::Ok;
@@ -43,6 +71,7 @@ template <bool TABLE>
     SetupStatus status;
     const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
+    if (c.tex.wrap == Wrap::Clamp && !reads_inside(s, c.tex, c.target.clip, TABLE ? 1 : 0)) return SetupStatus::Unsupported;
     EdgeWalker walker(s, Axis::Rows, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
@@ -115,6 +144,7 @@ template <bool TABLE>
     SetupStatus status;
     const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
+    if (c.tex.wrap == Wrap::Clamp && !reads_inside(s, c.tex, c.target.clip, TABLE ? 1 : 0)) return SetupStatus::Unsupported;
     EdgeWalker walker(s, Axis::Columns, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
@@ -169,6 +199,12 @@ namespace {
 template <int EXTRA>
 ErrorBound planes_bound(const BoundContext& c, const Vertex* vertices, int count) {
     if (!mapper_accepts(c.mapper, c.tex)) return ErrorBound{false, true, 0};
+    if (c.tex.wrap == Wrap::Clamp) {  // what the drivers refuse (reads_inside), it does not draw
+        PolygonSetup own;
+        const PolygonSetup* s = c.prepared && c.prepared->status == SetupStatus::Ok ? &c.prepared->setup : &own;
+        if ((s != &own || setup_polygon(vertices, count, &own, PLANES_AFFINE) == SetupStatus::Ok) && !reads_inside(*s, c.tex, c.clip, EXTRA))
+            return ErrorBound{false, true, 0};
+    }
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
         return planes_fit_16_16(s) ? spread_planes_bound(p, s, (1 + p.reach) * HALF_ULP_16_16 + EXTRA, c.budget) : NO_BOUND;
     };

@@ -159,7 +159,7 @@ TEST(Bounds, NoMapperExceedsItsBoundOnRandomPolygons) {
         for (int n = 0; n < per_mapper; ++n) {
             size_t t = size_t(n) % std::size(sizes);
             if ((m.needs & NEED_ALIGNED256) && sizes[t] != 256) t = 4;
-            if ((m.needs & NEED_TILED256) && !tiles256(sizes[t], sizes[t])) t = n % 3 == 0 ? 0 : n % 3 == 1 ? 3 : 4;  // 1, 64, 256
+            if ((m.needs & (NEED_TILED256 | NEED_TILED256_OR_INSIDE)) && !tiles256(sizes[t], sizes[t])) t = n % 3 == 0 ? 0 : n % 3 == 1 ? 3 : 4;  // 1, 64, 256
             Wrap wrap = (m.needs & (NEED_ALIGNED256 | NEED_TILED256)) || n % 3 ? Wrap::Repeat : Wrap::Clamp;
             std::vector<uint8_t> bordered(size_t(bordered_bytes(sizes[t], sizes[t]))), aligned(ALIGNED256_BYTES);
             Texture tex{texels[t].data(), sizes[t], sizes[t], wrap};

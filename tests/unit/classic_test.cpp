@@ -2,6 +2,7 @@
 // algorithm says what it does (docs/mappers.md).
 #include <gtest/gtest.h>
 
+#include <string>
 #include <utility>
 
 #include "kernel/core/policy.h"
@@ -416,6 +417,48 @@ TEST(FastTable, EachTexelWithinOneOnEachAxisOfFastAffines) {
         EXPECT_GT(pixels, 100000) << pair.first;
         for (int t = 0; t < 2; ++t)
             for (int e = 0; e < 3; ++e) EXPECT_GT(moved[t][e], 0) << pair.first << ": " << (t ? "v" : "u") << " never moved by " << e - 1;
+    }
+}
+
+// The four affine fast mappers take a clamped texture (power-of-two sides up to 256) polygon by
+// polygon: where the polygon's coordinates lie inside it, with their rounding (and fast-table's
+// texel more), each draws exactly what it draws with the same texture repeating; where they reach
+// an edge it refuses the polygon, and its bound says it does not draw it.
+TEST(FastAffine, TakesAClampedTextureWhereThePolygonLiesInsideIt) {
+    std::vector<uint8_t> texels(64 * 32), bordered(size_t(bordered_bytes(64, 32))), aligned(ALIGNED256_BYTES);
+    for (size_t i = 0; i < texels.size(); ++i) texels[i] = uint8_t(i * 7 + 1);
+    Texture clamped{texels.data(), 64, 32, Wrap::Clamp};
+    prepare_texture(&clamped, bordered.data(), aligned.data());
+    Texture repeating = clamped;
+    repeating.wrap = Wrap::Repeat;
+    auto quad = [](double u0, double v0, double u1, double v1) {
+        return std::vector<Vertex>{vertex(30, 20, 1, u0, v0), vertex(290, 30, 1.5, u1, v0), vertex(280, 220, 1.2, u1, v1), vertex(40, 210, 1, u0, v1)};
+    };
+    const std::vector<Vertex> inside = quad(1.5, 1.5, 62.25, 30.25), edge = quad(0.25, 0.25, 63.75, 31.75), outside = quad(-8, 2, 40, 20);
+    for (const char* name : {"fast-affine", "fast-table", "fast-columns", "fast-table-columns"}) {
+        const Mapper& m = mapper(name);
+        const bool table = std::string(name).find("table") != std::string::npos;
+        const Axis axis = home_axis(m);
+        ASSERT_TRUE(mapper_accepts(m, clamped)) << name;
+        for (const auto* p : {&inside, &edge, &outside}) {
+            std::vector<uint8_t> a(SCREEN_PIXELS, 0), b(SCREEN_PIXELS, 0);
+            Target ta = ram_target(a.data(), ram_planar(m, axis)), tb = ram_target(b.data(), ram_planar(m, axis));
+            RenderStats sa, sb;
+            const SetupStatus status = draw_polygon(p->data(), 4, clamped, m, axis, ta, &sa, Variant::Asm);
+            draw_polygon(p->data(), 4, repeating, m, axis, tb, &sb, Variant::Asm);
+            const bool draws = p == &inside || (p == &edge && !table);
+            const ErrorBound bound = m.bound(BoundContext{m, clamped, axis, ta.clip}, p->data(), 4);
+            EXPECT_EQ(bound.draws, draws) << name;
+            if (draws) {
+                EXPECT_EQ(status, SetupStatus::Ok) << name;
+                EXPECT_GT(sa.pixels, 40000u) << name;
+                EXPECT_TRUE(a == b) << name << ": the clamped texture read as the repeating one";
+            } else {
+                EXPECT_EQ(status, SetupStatus::Unsupported) << name;
+                EXPECT_EQ(sa.pixels, 0u) << name;
+                EXPECT_EQ(sa.rejected, 1u) << name;
+            }
+        }
     }
 }
 

@@ -70,6 +70,9 @@ TEST(Stability, NothingIsWrittenOutsideTheClipAndCoverageHolds) {
                     for (const auto& p : extreme_polygons(uint32_t(size), inside_only ? size : 0))
                         draw_polygon(p.data(), int(p.size()), tex, mapper, axis, surface.target(), &stats);
                     EXPECT_EQ(surface.scan(GUARD).written_outside, 0u) << mapper.name << " texture " << size;
+                    // (a mapper that takes a clamped texture only where the polygon lies inside it
+                    // refuses these, whose coordinates reach its edges and beyond)
+                    if (wrap == Wrap::Clamp && (mapper.needs & NEED_TILED256_OR_INSIDE)) continue;
                     EXPECT_GT(stats.polygons, uint32_t(40 / SANITIZED_SHARE)) << mapper.name;
                     EXPECT_GT(stats.pixels, uint32_t(SCREEN_PIXELS)) << mapper.name << ": the screen-sized triangle at least";
                 }
