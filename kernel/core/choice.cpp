@@ -2,6 +2,7 @@
 #include "kernel/core/choice.h"
 
 #include "kernel/core/policy.h"
+#include "kernel/mappers/fastsubdiv.h"
 
 namespace raster {
 
@@ -57,6 +58,10 @@ struct Candidates {
     bool envelope_cheapest = false;
     double envelope_pixels = 0;
     AutoPlan plan{};  // plan_auto's but the envelope's part
+    // fast-adaptive-1 along each walker, and fast-oriented-1 (which draws it along the walker it
+    // picks, with its own driver): the oriented candidate (choose_mapper); -1: none here
+    int adaptive[2] = {-1, -1};  // [Axis]
+    int oriented_row = -1;       // fast-oriented-1's registry row
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
@@ -80,6 +85,10 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
                 c.row[k] = c.row[k - 1], c.axis[k] = c.axis[k - 1], c.cost[k] = c.cost[k - 1], c.walks[k] = c.walks[k - 1], c.spans[k] = c.spans[k - 1];
             c.row[k] = int16_t(i), c.axis[k] = Axis(a), c.cost[k] = cost, c.walks[k] = bound_walks(m), c.spans[k] = proven_by_spans(m);
         }
+    for (int k = 0; k < c.count; ++k)
+        if (MAPPERS[c.row[k]].span == fast_adaptive_span<4>) c.adaptive[int(c.axis[k])] = k;
+    for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i)
+        if (MAPPERS[i].draw == fast_oriented_draw<4> && mapper_accepts(MAPPERS[i], tex) && MAPPER_COSTS[i].polygon >= 0) c.oriented_row = i;
     for (int k = c.count - 1; k >= 0; --k) {
         const bool last = k == c.count - 1;
         c.least_polygon[k] = last || c.cost[k].polygon < c.least_polygon[k + 1] ? c.cost[k].polygon : c.least_polygon[k + 1];
@@ -223,12 +232,32 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         choice.mapper = &m, choice.axis = list.axis[k], choice.bound = b, choice.by_spans = !whole_only;
         return true;
     };
-    // the cheapest proven by the whole polygon at once (from its vertices: cheap; exact always is);
-    // then the cheaper ones proven span by span, by their cost with the proof's, as long as that is
-    // below the first's
+    // The oriented candidate (a budget from one footprint to below two, where fast-oriented-1 is
+    // within it): fast-adaptive-1 along the walker fast-oriented-1 picks, where its certificate
+    // proves it within 1 from the setup alone, priced by fast-oriented-1's row with no proof. Where it
+    // costs no more than the least any candidate could cost with its proof plus ORIENTED_GATE, it is
+    // the choice, drawn by fast-oriented-1 itself (its driver picks the same walker); else the price
+    // the search must undercut.
+    const Mapper* oriented = nullptr;
+    Axis oriented_walker = Axis::Rows;
+    int32_t oriented_price = NOT_LIVE;
+    if (budget.max_error >= 1 && budget.max_error < 2 && list.oriented_row >= 0) {
+        oriented_walker = target.planar ? Axis::Columns : oriented_axis(prepared->setup, target.clip, fast_adaptive_room(1));
+        const int k = list.adaptive[int(oriented_walker)];
+        if (k >= 0 && fast_adaptive_certain<4>(MAPPERS[list.row[k]], prepared->setup, target.clip, tex, oriented_walker)) {
+            oriented = &MAPPERS[list.oriented_row];
+            const double estimate = estimate_cost(MAPPER_COSTS[list.oriented_row], size[int(oriented_walker)]);
+            if (estimate <= least_cost(0) + ORIENTED_GATE) return Choice{oriented, oriented_walker, ErrorBound{true, true, 1}, false};
+            oriented_price = price_of(estimate);
+        }
+    }
+    // the cheapest proven by the whole polygon at once (from its vertices: cheap; exact always is),
+    // below the oriented candidate's price; then the cheaper ones proven span by span, by their cost
+    // with the proof's, as long as that is below the first's (or the oriented one's)
     int before[2 * MAPPER_LIMIT], n = 0;
-    int32_t ceiling = NOT_LIVE;
+    int32_t ceiling = oriented_price;
     for (int k = next(); k >= 0; k = next()) {
+        if (price[k] >= oriented_price) break;
         if (walks[k]) {
             price[k] = NOT_LIVE;
         } else if (ask(k, true)) {
@@ -243,7 +272,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     }
     for (int k; n > 0 && (k = cheapest(ceiling)) >= 0;)
         if (ask(k, false)) break;
-    return choice;
+    return choice.mapper || !oriented ? choice : Choice{oriented, oriented_walker, ErrorBound{true, true, 1}, false};
 }
 
 double corner_footprint(const Vertex* v) {

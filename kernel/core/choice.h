@@ -129,6 +129,21 @@ void prepare_choice(const Budget& budget, const Texture& tex);
 // 1800, 0.98 (4 bench frames, QEMU icount).
 constexpr double CHOICE_COST = 1800;
 
+// At a budget of one footprint (up to two), auto's oriented candidate: fast-adaptive-1 along the
+// walker fast-oriented-1 picks, proven by its certificate from the setup alone
+// (fast_adaptive_certain: some 550 instructions, against 1100 for the spread a proof starts with).
+// It is taken without a search where, priced by fast-oriented-1's row, it costs no more than
+// ORIENTED_GATE above the least any candidate could cost with its proof (the least polygon, span
+// and pixel costs of all of them: loose, exact's setup with fast-table's pixels); elsewhere the
+// search looks only for a proven candidate cheaper than it. Why so wide a gate: on the ball at one
+// footprint (facets of some 620 pixels, 25 lines) the search cost about 4000 instructions a facet
+// beyond the oriented candidate's path and its choices saved about 1260 in the loops, while the
+// least's gap there is about 9000; on the rotozoom's quad (40000 pixels, a gap of about 285000)
+// it found fast-affine at less than two thirds of the oriented price (make bench, QEMU icount,
+// 2026-11-26: the ball at 1 went from 34.4 to 31.2 draw instructions a pixel, no other row of the
+// six demo scenes by more than 0.5%).
+constexpr double ORIENTED_GATE = 20000;
+
 // How much cheaper the certain candidate's setup a polygon may be than the enveloped mapper's for
 // the envelope still to count as the cheaper on every triangle: exact's setup takes only the
 // perspective planes and is some 360 instructions below fast-affine's, which its dearer lines and

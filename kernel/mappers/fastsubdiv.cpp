@@ -160,6 +160,49 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
     });
 }
 
+template <int QUARTERS>
+bool fast_adaptive_certain(const Mapper& m, const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis) {
+    (void)m;  // (it takes the texture: its sides divide 65536)
+    if (tex.wrap != Wrap::Repeat) return false;
+    // inside the clip: the spread's corners are the vertices (spread_corners)
+    if (s.min_x < int64_t(clip.x0) * SUBPIXEL_ONE || s.max_x > int64_t(clip.x1) * SUBPIXEL_ONE || s.min_y < int64_t(clip.y0) * SUBPIXEL_ONE ||
+        s.max_y > int64_t(clip.y1) * SUBPIXEL_ONE)
+        return false;
+    constexpr double EPS = 2.220446049250313e-16, MARGIN = 1 + 1e-9;
+    // Q at the corners as the spread takes it, and the corners' largest |x| and |y|
+    double q_lo = 0, far_x = 0, far_y = 0;
+    for (int i = 0; i < s.edge_count; ++i) {
+        const double x = double(s.edges[i].px - s.ref_x), y = double(s.edges[i].py - s.ref_y);
+        const double q = s.q.at(x, y);
+        q_lo = i && !(q < q_lo) ? q_lo : q;
+        far_x = larger(far_x, magnitude(x)), far_y = larger(far_y, magnitude(y));
+    }
+    auto terms = [&](const Plane& p) { return (magnitude(p.a0) + magnitude(p.gy) * far_y + magnitude(p.gx) * far_x) * MARGIN; };
+    const double scale_q = terms(s.q);
+    // the spread's Q_min, less twice its widening (its own evaluation of Q may round otherwise),
+    // and Q's terms within 2^26 of it (the whole bound's condition, each corner's terms at most
+    // scale_q)
+    const double q_min = (q_lo - 16 * EPS * scale_q) * (1 - 1e-9);
+    if (!(q_min > 0) || !(scale_q <= q_min * 67108864.0)) return false;
+    const Plane* exact[2] = {&s.pu, &s.pv};
+    const Plane* affine[2] = {&s.u, &s.v};
+    double reference = 0;
+    for (int t = 0; t < 2; ++t) {
+        const double scale_p = terms(*exact[t]), t_abs = scale_p / q_min * MARGIN;  // |P| / Q at every corner, from above
+        const double ref = 2 * (4 * EPS * (scale_p + t_abs * scale_q) / q_min + 2 * EPS * t_abs) * MARGIN;
+        const double evaluation = ref + 4 * EPS * terms(*affine[t]);
+        // chords_fit without the steps: the range of t (at most 2 |t|) and the roundings
+        const double range = (2 * t_abs + 2 * (evaluation + ref)) * MARGIN * MARGIN;
+        // (fits_16_16 with a start of 0, one step and a side dividing 65536: the step below 32767)
+        if (!(range < FAST_ARITHMETIC.chord)) return false;
+        reference = larger(reference, ref);
+    }
+    // the rounding after the longest chord, and the chords of two pixels relative to each pixel's step
+    if (!(FAST_ARITHMETIC.at(FAST_SPAN_LONG - 1) + 2 * reference <= FAST_ADAPTIVE_ROUNDING)) return false;
+    const double qa = magnitude(axis == Axis::Rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
+    return relative_chords_bound(qa / q_min * MARGIN, (FAST_ARITHMETIC.at(1) + 2 * reference) * MARGIN) <= QUARTERS / 4.0;
+}
+
 Axis oriented_axis(const PolygonSetup& s, const ClipRect& clip, double room) {
     const double one = double(SUBPIXEL_ONE);
     auto inside = [](int64_t lo, int64_t hi, int32_t first, int32_t end) {  // a box's side inside the clip, pixels
@@ -256,6 +299,8 @@ template void fast_adaptive_span<4>(const SpanContext&, const Span&, uint8_t*, i
 template void fast_adaptive_span<8>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template ErrorBound fast_adaptive_bound<4>(const BoundContext&, const Vertex*, int);
 template ErrorBound fast_adaptive_bound<8>(const BoundContext&, const Vertex*, int);
+template bool fast_adaptive_certain<4>(const Mapper&, const PolygonSetup&, const ClipRect&, const Texture&, Axis);
+template bool fast_adaptive_certain<8>(const Mapper&, const PolygonSetup&, const ClipRect&, const Texture&, Axis);
 template Axis fast_oriented_walker<4>(const PolygonSetup&, const ClipRect&);
 template SetupStatus fast_oriented_draw<4>(const DrawContext&, const Vertex*, int);
 template ErrorBound fast_oriented_bound<4>(const BoundContext&, const Vertex*, int);

@@ -74,6 +74,18 @@ void fast_adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32
 template <int QUARTERS>
 ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, int count);
 
+// Whether fast-adaptive-B's bound along `axis` is within B on the polygon, from its setup alone
+// (every plane), without the spread: true only where the polygon lies inside the clip (the spread's
+// corners are then its vertices) with a repeating texture the mapper takes, and where what the
+// whole-polygon bound above checks holds for every value the spread could take there: Q and the
+// planes' terms at the corners as the spread evaluates them, |t| at most P's terms over Q's least,
+// the reference's rounding and the range of t from those (docs/accuracy.md, "fast-adaptive's
+// certificate"). Then fast_adaptive_bound<QUARTERS> is within B (tested), so auto may take the
+// mapper unasked. `m` (fast-adaptive-B) takes the texture (mapper_accepts: what choose_mapper's
+// candidates do). About 550 instructions (32-bit host, callgrind) against the spread's 1100.
+template <int QUARTERS>
+bool fast_adaptive_certain(const Mapper& m, const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis);
+
 // fast-oriented-B: fast-adaptive-B, each polygon along the walker where 1/w changes least for
 // the lines it costs (walls by columns, floors and ceilings by rows, and between them whichever
 // oriented_axis counts cheaper), its own polygon driver: a single mapper that draws every polygon

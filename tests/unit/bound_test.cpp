@@ -15,6 +15,7 @@
 #include "kernel/core/bound.h"
 #include "kernel/core/policy.h"
 #include "kernel/core/random.h"
+#include "kernel/mappers/fastsubdiv.h"
 #include "qemu/tools/demo_scenes.h"
 #include "tests/unit/raster_helpers.h"
 
@@ -252,6 +253,55 @@ TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
 // a pixel's deviation is at most X times its step plus r and its step at most its footprint F, its
 // footprint error is ceil(X F + r) / max(1, F) at most; the bound must cover that for every F and
 // reach it (as F comes down to where a texel more first appears).
+// fast-adaptive-1's certificate (auto's oriented candidate): wherever it holds, the mapper's own
+// whole-polygon bound is within one footprint along that walker, and so is the measured error; it
+// holds on many polygons inside the screen and never on one that reaches outside or on a clamped
+// texture. Random polygons of every class, both walkers, textures of 1, 64 and 256 texels.
+TEST(Bounds, FastAdaptiveCertificateImpliesItsBound) {
+    const Mapper& m = *find_mapper("fast-adaptive-1");
+    const ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    const int32_t sizes[] = {1, 64, 256};
+    TriangleGen gen(20261126u);
+    PolygonMeter meters[2] = {PolygonMeter(m, Axis::Rows), PolygonMeter(m, Axis::Columns)};
+    int certified = 0, refused_inside = 0, outside = 0;
+    const int polygons = 1800 / SANITIZED_SHARE;
+    for (int n = 0; n < polygons; ++n) {
+        const int32_t size = sizes[n % 3];
+        std::vector<uint8_t> texels(size_t(size) * size_t(size)), bordered(size_t(bordered_bytes(size, size))), aligned(ALIGNED256_BYTES);
+        generate_texture(TextureKind::Xor, size, size, texels.data());
+        Texture tex{texels.data(), size, size, Wrap::Repeat};
+        prepare_texture(&tex, bordered.data(), aligned.data());
+        const std::vector<Vertex> p = random_polygon(gen, n % 6);
+        const int count = int(p.size());
+        PolygonSetup s;
+        if (setup_polygon(p.data(), count, &s) != SetupStatus::Ok) continue;
+        const bool inside = s.min_x >= 0 && s.min_y >= 0 && s.max_x <= SCREEN_WIDTH * SUBPIXEL_ONE && s.max_y <= SCREEN_HEIGHT * SUBPIXEL_ONE;
+        for (Axis axis : {Axis::Rows, Axis::Columns}) {
+            const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns");
+            Texture clamped = tex;
+            clamped.wrap = Wrap::Clamp;
+            EXPECT_FALSE(fast_adaptive_certain<4>(m, s, clip, clamped, axis)) << what << ": a clamped texture";
+            if (!fast_adaptive_certain<4>(m, s, clip, tex, axis)) {
+                refused_inside += inside, outside += !inside;
+                continue;
+            }
+            EXPECT_TRUE(inside) << what << ": certified, though it reaches outside the clip";
+            ++certified;
+            const ErrorBound whole = m.bound(BoundContext{m, tex, axis, clip, 1.0, nullptr, true}, p.data(), count);
+            EXPECT_TRUE(whole.draws && whole.exact_coverage) << what;
+            EXPECT_LE(whole.footprint, 1.0) << what << ": certified, but its whole-polygon bound is above one footprint";
+            const AccuracyMetrics e = meters[int(axis)].measure(p.data(), count, tex);
+            EXPECT_LE(e.max_footprint_error, 1 + SLACK) << what << ": measured above the certificate's footprint";
+            if (HasFailure()) return;
+        }
+    }
+    std::printf("fast-adaptive-1's certificate: %d of %d polygon-walkers, %d inside the screen refused, %d outside\n", certified,
+                2 * polygons, refused_inside, outside);
+    EXPECT_GT(certified, polygons / 6) << "the certificate holds on many polygons";
+    EXPECT_GT(refused_inside, polygons / 20) << "and not on all of those inside the screen (strong perspective)";
+    EXPECT_GT(outside, 0);
+}
+
 TEST(Bounds, RelativeChordsBoundCoversEveryFootprint) {
     raster::Random rng(4242u);
     auto error_at = [](double x, double r, double f) { return footprint_error(x * f + r, 0, f); };
