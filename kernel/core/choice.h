@@ -59,6 +59,9 @@ inline double estimate_cost(const MapperCost& c, const PolygonSize& s) { return 
 // draw instructions a pixel and every other scene 0.5 to 1.6% the other way: one candidate more
 // to price and ask.)
 bool choosable(const Mapper& m);
+// The mappers auto's choices draw with: the choosable ones, and fast-oriented-1, which draws its
+// oriented candidate (ORIENTED_GATE).
+bool drawn_by_auto(const Mapper& m);
 
 struct Choice {
     const Mapper* mapper = nullptr;  // nullptr: no mapper draws the polygon (degenerate, or refused)

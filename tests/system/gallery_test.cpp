@@ -131,7 +131,7 @@ TEST(Gallery, PagesImagesAndFiguresAgree) {
             if (!row.count("data-share-mapper")) continue;
             const raster::Mapper* m = raster::find_mapper(row.at("data-share-mapper").c_str());
             ASSERT_NE(m, nullptr);
-            EXPECT_TRUE(raster::choosable(*m)) << m->name;
+            EXPECT_TRUE(raster::drawn_by_auto(*m)) << m->name;
             listed[row.at("data-colour")] = number(row, "data-pixels");
             sum += number(row, "data-pixels");
         }
