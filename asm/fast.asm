@@ -226,15 +226,17 @@ fast_run_loop_asm:
 
 ; fast_table_loop_asm: fast-table's run of rows (twin: fast_table_loop): the rows walked as
 ; fast_run_loop_asm walks them, each row's span read through the polygon's offset table from its first
-; texel: two offsets, two texels and one word store a pair, eight pairs a block.
-;   esi: the span's first texel   ebp: the table at the block's first pair   edi: destination
-;   ecx: blocks left   ebx, edx: offsets   al, ah: texels
+; texel: an odd span's first pixel alone (its offset is table[0] = 0), then two offsets, two texels
+; and one word store a pair, eight pairs a block. The pairs are indexed from their ends by ecx, which
+; counts up from minus the blocks' pairs to 0: two instructions a block for the loop.
+;   esi: the span's first texel   ebp, edi: the table and the destination just past the pairs
+;   ecx: -(pairs left in the blocks)   ebx, edx: offsets   al, ah: texels
 %macro TPAIR 1                          ; %1: the pair within the block
-    mov ebx, [ebp + 8 * %1]
-    mov edx, [ebp + 8 * %1 + 4]
+    mov ebx, [ebp + ecx * 8 + 8 * %1]
+    mov edx, [ebp + ecx * 8 + 8 * %1 + 4]
     mov al, [esi + ebx]
     mov ah, [esi + edx]
-    mov [edi + 2 * %1], ax
+    mov [edi + ecx * 2 + 2 * %1], ax
 %endmacro
 
 global fast_table_loop_asm
@@ -250,24 +252,25 @@ fast_table_loop_asm:
     mov esi, [ecx + RUN_texture]
     add esi, ebx                        ; the span's first texel
     mov ebp, [ecx + RUN_table]
+    test edi, 1
+    jz .even
+    mov bl, [esi]                       ; an odd span's first pixel: offset 0
+    mov [eax], bl
+    inc eax
+    add ebp, 4
+.even:
     mov ecx, edi
-    and edi, 1
-    mov [esp + L_ODD], edi              ; an odd pixel, drawn after the pairs
-    shr ecx, 1                          ; pairs
+    shr ecx, 1                          ; pairs (ZF: none)
+    jz .next_row
+    lea ebp, [ebp + ecx * 8]            ; past the pairs' offsets
+    lea edi, [eax + ecx * 2]            ; past their pixels
     mov edx, ecx
     neg edx
-    and edx, 7                          ; the first block starts at pair j = (-pairs) mod 8:
-    lea ebx, [edx * 2]
-    sub eax, ebx                        ; the destination 2j bytes back
-    lea ebx, [edx * 8]
-    sub ebp, ebx                        ; the table 2j entries back
-    mov edx, [table_entries + edx * 4]
-    mov [esp + L_ENTRY], edx
-    mov edi, eax
+    and edx, 7                          ; the first block starts at pair j = (-pairs) mod 8
     add ecx, 7
-    shr ecx, 3                          ; blocks, the first one partial; 0 (ZF): no pair, one pixel
-    jz .odd_pixel
-    jmp [esp + L_ENTRY]
+    and ecx, -8
+    neg ecx                             ; -(pairs + j)
+    jmp [table_entries + edx * 4]
 .block:
 .e0: TPAIR 0
 .e1: TPAIR 1
@@ -277,16 +280,8 @@ fast_table_loop_asm:
 .e5: TPAIR 5
 .e6: TPAIR 6
 .e7: TPAIR 7
-    add ebp, 64
-    add edi, 16
-    dec ecx
+    add ecx, 8
     jnz .block
-.odd_pixel:                             ; edi and ebp: just past the pairs
-    cmp dword [esp + L_ODD], 0
-    je .next_row
-    mov ebx, [ebp]
-    mov al, [esi + ebx]
-    mov [edi], al
 .next_row:
     ROW_TAIL
 .done:
