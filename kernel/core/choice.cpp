@@ -57,7 +57,7 @@ struct Candidates {
     // through, and up to how many pixels where one costs less a pixel (AutoPlan::enveloped_area2)
     int enveloped_count = 0, enveloped_first = -1;
     bool envelope_cheapest = false;
-    double envelope_pixels = 0;
+    double envelope_pixels = 0, envelope_lines = 0;  // (AutoPlan::enveloped_area2, enveloped_extent)
     AutoPlan plan{};  // plan_auto's but the envelope's part
     // fast-adaptive-1 along each walker, and fast-oriented-1 (which draws it along the walker it
     // picks, with its own driver): the oriented candidate (choose_mapper); -1: none here
@@ -104,18 +104,22 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
     // ENVELOPE_SETUP_ALLOWANCE; one cheaper a pixel: up to the size where it undercuts)
     for (int j = 0; j < c.count; ++j) {
         if (!MAPPERS[c.row[j]].enveloped) continue;
-        if (c.enveloped_count++ == 0) c.enveloped_first = j, c.envelope_cheapest = true, c.envelope_pixels = 1e300;
+        if (c.enveloped_count++ == 0)
+            c.enveloped_first = j, c.envelope_cheapest = true, c.envelope_pixels = 1e300, c.envelope_lines = double(ENVELOPE_REACH + 1);
         const CostRow own = cost_row(MAPPER_COSTS[c.row[j]]);  // proven for nothing
         for (int k = 0; k < c.count; ++k) {
             if (MAPPERS[c.row[k]].enveloped) continue;
             const CostRow& other = c.cost[k];
             const bool certain = c.certain >= 0 && c.row[k] == c.row[c.certain];
-            // what the other costs more on a triangle of one line to the guards' most (ENVELOPE_REACH
-            // + 1), less the pixels: at least 0; and where it costs less a pixel, the most pixels up
-            // to which what it costs more for the rest is not made up
+            // what the other costs more on a triangle of one line to the most lines the envelope
+            // takes (the guards' ENVELOPE_REACH + 1, or fewer), less the pixels: at least 0; where it
+            // costs less a line, the lines limited where needed so that they take at most half of
+            // what its setup costs more; and where it costs less a pixel, the most pixels up to
+            // which what it costs more for the rest is not made up
             const double polygon = other.polygon + (certain ? ENVELOPE_SETUP_ALLOWANCE : 0) - own.polygon, span = other.span - own.span;
-            const double fixed = polygon + (span < 0 ? span * double(ENVELOPE_REACH + 1) : span);
-            if (fixed < 0) c.envelope_cheapest = false;
+            if (span < 0 && polygon + span * c.envelope_lines < 0 && polygon > 0) c.envelope_lines = polygon / (2 * -span);
+            const double fixed = polygon + (span < 0 ? span * c.envelope_lines : span);
+            if (fixed < 0 || c.envelope_lines < 1) c.envelope_cheapest = false;
             else if (other.pixel < own.pixel) {
                 const double pixels = fixed / (own.pixel - other.pixel);
                 c.envelope_pixels = pixels < c.envelope_pixels ? pixels : c.envelope_pixels;
@@ -300,6 +304,7 @@ AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& targe
         plan.enveloped_axis = list.axis[list.enveloped_first];
         const double one = double(SUBPIXEL_ONE);
         plan.enveloped_area2 = list.envelope_pixels < 1e9 ? int64_t(2 * list.envelope_pixels * one * one) : INT64_MAX;
+        plan.enveloped_extent = int32_t(list.envelope_lines * one);  // (at most ENVELOPE_REACH + 1 pixels)
     }
     return plan;
 }

@@ -161,10 +161,12 @@ constexpr double ENVELOPE_SETUP_ALLOWANCE = 500;
 //   object's envelope bound in the frame, frame.h), and its walker: where that bound meets the
 //   budget, exactly one candidate is enveloped (Mapper::enveloped), and with no proof to pay it
 //   costs no more than any other candidate with its proof on any triangle the guards let through
-//   (1 to ENVELOPE_REACH + 1 lines) without its pixels (the certain one's setup taken
-//   ENVELOPE_SETUP_ALLOWANCE higher), nor a pixel more, or where one costs less a pixel
+//   (1 to ENVELOPE_REACH + 1 lines, or where one costs less a line, as many as take at most half
+//   of what its setup costs more: enveloped_extent) without its pixels (the certain one's setup
+//   taken ENVELOPE_SETUP_ALLOWANCE higher), nor a pixel more, or where one costs less a pixel
 //   (fast-table), no more on a triangle of up to enveloped_area2 / 2 pixels (its area, subpixels
-//   squared): the choice choose_mapper would make on every such triangle were that proof free. A triangle is drawn so only where it passes the envelope's guards and is no larger
+//   squared): the choice choose_mapper would make on every such triangle were that proof free. A
+//   triangle is drawn so only where it passes the envelope's guards and is no larger
 //   (draw_enveloped, render.h);
 // - the candidate proven for nothing (exact: it promises the reference itself), with its walkers
 //   and cost row, for unchosen_mapper; and whether it is the only one (a budget of 0: every other
@@ -176,6 +178,7 @@ struct AutoPlan {
     const Mapper* enveloped;
     Axis enveloped_axis;
     int64_t enveloped_area2;  // the largest doubled area (subpixels squared) of a triangle drawn so
+    int32_t enveloped_extent;  // and its largest extent across the walker's lines (subpixels: its box's height for rows)
     const Mapper* certain;
     int certain_walkers;
     Axis certain_axes[2];  // in the candidates' order

@@ -83,6 +83,8 @@ SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& te
 Drawer Drawer::of(const Mapper& mapper, const Texture& tex, Axis axis, Target& target, RenderStats* stats, Variant variant, bool checked) {
     Drawer d;
     d.mapper = &mapper, d.tex = &tex, d.target = &target, d.stats = stats, d.axis = axis;
+    d.area2 = INT64_MAX;
+    d.extent_x = d.extent_y = INT32_MAX;
     d.loop = mapper_loop(mapper, variant, target);
     d.row = int32_t(&mapper - MAPPERS);
     d.usable = checked || (mapper_walks(mapper, axis) && mapper_accepts(mapper, tex) && mapper_targets(mapper, target, axis));
@@ -109,7 +111,8 @@ SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Vari
         PolygonSetup setup;
         // (an uncut triangle: in range, as build_frame makes it)
         if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE, Input::InRange) == SetupStatus::Ok && envelope_guards(setup) &&
-            setup.area2 <= enveloped.area2) {
+            setup.area2 <= enveloped.area2 && int32_t(setup.max_y - setup.min_y) <= enveloped.extent_y &&
+            int32_t(setup.max_x - setup.min_x) <= enveloped.extent_x) {
             ++stats->enveloped;
             return draw_with(enveloped, vertices, 3, &setup, nullptr, Input::InRange);
         }

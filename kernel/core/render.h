@@ -21,17 +21,21 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
 // A mapper set to draw with one texture along one axis into one target: what draw_polygon settles
 // before each polygon (whether the mapper takes them at all, and its loop), settled once, for a
 // mapper that does not choose (render_frame keeps them an object: the frame's mapper, or auto's
-// envelope-proven and certain ones).
+// envelope-proven and certain ones). No default member initialisers: render_frame keeps three an
+// object (192) a frame, and only those Drawer::of makes, which sets every field, are read.
 struct Drawer {
-    const Mapper* mapper = nullptr;
-    const Texture* tex = nullptr;
-    Target* target = nullptr;
-    RenderStats* stats = nullptr;
-    LoopFn loop = nullptr;
-    int32_t row = 0;      // the mapper's registry row (RenderStats::mapper_polygons)
-    Axis axis = Axis::Rows;
-    bool usable = false;  // it walks the axis, takes the texture and draws into the target
-    int64_t area2 = INT64_MAX;  // auto's envelope (draw_enveloped): the largest doubled area it draws a triangle of
+    const Mapper* mapper;
+    const Texture* tex;
+    Target* target;
+    RenderStats* stats;
+    LoopFn loop;
+    int32_t row;   // the mapper's registry row (RenderStats::mapper_polygons)
+    Axis axis;
+    bool usable;   // it walks the axis, takes the texture and draws into the target
+    int64_t area2;   // auto's envelope (draw_enveloped): the largest doubled area it draws a triangle of (else INT64_MAX)
+    // and the largest extents of its box (subpixels; else INT32_MAX): across its lines, the other
+    // unlimited (an uncut triangle's box, within ENVELOPE_REACH pixels, fits in 32 bits)
+    int32_t extent_x, extent_y;
     // `checked`: known usable (plan_auto checked it)
     static Drawer of(const Mapper& mapper, const Texture& tex, Axis axis, Target& target, RenderStats* stats, Variant variant,
                      bool checked = false);
@@ -41,8 +45,9 @@ struct Drawer {
 
 // auto on an uncut triangle of an object whose envelope proves the mapper of `enveloped` (plan_auto,
 // choice.h; the drawer made once an object, checked): the mapper's own setup (affine planes), the
-// envelope's guards on it (envelope_guards) and its doubled area within the drawer's area2
-// (AutoPlan::enveloped_area2), and the mapper drawing from it; where one fails, auto's choice as in
+// envelope's guards on it (envelope_guards), its doubled area within the drawer's area2 and its
+// extent across its lines within its extent (AutoPlan::enveloped_area2, enveloped_extent), and the
+// mapper drawing from it; where one fails, auto's choice as in
 // draw_polygon, with the drawer's texture, axis and target.
 SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget);
 

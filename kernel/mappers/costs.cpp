@@ -17,7 +17,7 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-2", 1024.6f, 1012.46f, 44.347f}, // 10 scenes
     {"persp-adaptive-4", 1024.6f, 1024.43f, 40.171f}, // 10 scenes
     {"fast-affine", 1141.3f, 159.11f, 4.218f}, // 10 scenes
-    {"fast-table", 1359.0f, 158.92f, 1.349f}, // 10 scenes
+    {"fast-table", 1359.0f, 149.70f, 1.280f}, // 10 scenes
     {"fast-columns", 1212.7f, 253.51f, 5.677f}, // 10 scenes
     {"fast-table-columns", 1403.9f, 250.67f, 2.828f}, // 10 scenes
     {"fast-subdiv-8", 1024.6f, 292.20f, 13.720f}, // 10 scenes

@@ -221,8 +221,9 @@ TEST(Envelope, AutoDrawsAnEnvelopedObjectAsTheProvenMapperDoes) {
 
 // The plan weighs the enveloped mapper against every other candidate over the triangles the guards
 // let through: where one costs less a pixel (fast-table against fast-affine), the envelope takes
-// triangles only up to the area where that one, proven, would not yet be the cheaper on one line;
-// a larger triangle goes to the choice, a smaller one is drawn by the envelope.
+// triangles only up to the area where that one, proven, would not yet be the cheaper on one line,
+// and where one costs less a line, only up to as many lines as take half of what its setup costs
+// more; a larger or taller triangle goes to the choice, a smaller one is drawn by the envelope.
 TEST(Envelope, TakesTrianglesOnlyUpToTheSizeWhereNoOtherCandidateUndercutsIt) {
     std::vector<uint8_t> texels(64 * 64, 3), bordered(size_t(bordered_bytes(64, 64))), aligned(ALIGNED256_BYTES);
     Texture tex{texels.data(), 64, 64, Wrap::Repeat};
@@ -238,9 +239,12 @@ TEST(Envelope, TakesTrianglesOnlyUpToTheSizeWhereNoOtherCandidateUndercutsIt) {
     // (fast-table's line costs about as much: the limit may come from it or a dearer candidate)
     const double one = double(SUBPIXEL_ONE), pixels = double(plan.enveloped_area2) / (2 * one * one);
     const CostRow own = cost_row(MAPPER_COSTS[&fast - MAPPERS]), other = proven_cost(table, cost_row(MAPPER_COSTS[&table - MAPPERS]));
-    const double lines = other.span < own.span ? double(ENVELOPE_REACH + 1) : 1;
+    // (where fast-table's line costs less, at the most lines the envelope takes)
+    ASSERT_LE(plan.enveloped_extent, (ENVELOPE_REACH + 1) * SUBPIXEL_ONE);
+    const double lines = other.span < own.span ? double(plan.enveloped_extent) / one : 1;
     EXPECT_GE(estimate_cost(other, PolygonSize{lines, pixels}), estimate_cost(own, PolygonSize{lines, pixels}) - 1);
     EXPECT_GT(pixels, 50);
+    EXPECT_GT(lines, 50);
     // drawn through the envelope below it, chosen above it
     std::vector<uint8_t> surface(SCREEN_PIXELS);
     Target t = ram_target(surface.data(), false);
@@ -251,9 +255,24 @@ TEST(Envelope, TakesTrianglesOnlyUpToTheSizeWhereNoOtherCandidateUndercutsIt) {
         RenderStats stats;
         Drawer d = Drawer::of(fast, tex, Axis::Rows, t, &stats, Variant::Twin, true);
         d.area2 = plan.enveloped_area2;
+        d.extent_y = plan.enveloped_extent;
         EXPECT_EQ(draw_enveloped(d, tri.data(), Variant::Twin, budget), SetupStatus::Ok);
         EXPECT_EQ(stats.enveloped, scale < 1 ? 1u : 0u) << "a triangle of " << s * s / 2 << " pixels against a limit of " << pixels;
         EXPECT_EQ(stats.polygons, 1u);
+    }
+    // a sliver two pixels wide, below the area limit, about the line limit
+    if (plan.enveloped_extent < (ENVELOPE_REACH + 1) * SUBPIXEL_ONE) {
+        for (double scale : {0.8, 1.25}) {
+            const double h = lines * scale;
+            ASSERT_LT(h, pixels);
+            const std::vector<Vertex> tri{vertex(20, 10, 1, 0, 0), vertex(22, 10, 1, 4, 0), vertex(20, 10 + h, 1, 0, 40)};
+            RenderStats stats;
+            Drawer d = Drawer::of(fast, tex, Axis::Rows, t, &stats, Variant::Twin, true);
+            d.area2 = plan.enveloped_area2;
+            d.extent_y = plan.enveloped_extent;
+            EXPECT_EQ(draw_enveloped(d, tri.data(), Variant::Twin, budget), SetupStatus::Ok);
+            EXPECT_EQ(stats.enveloped, scale < 1 ? 1u : 0u) << "a sliver of " << h << " lines against a limit of " << lines;
+        }
     }
 }
 
