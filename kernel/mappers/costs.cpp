@@ -5,37 +5,37 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1087.3f, 343.65f, 40.474f}, // 10 scenes
-    {"exact", 1024.6f, 311.06f, 80.445f}, // 10 scenes
-    {"persp-subdiv-4", 1024.6f, 316.46f, 91.509f}, // 10 scenes
-    {"persp-subdiv-8", 1024.6f, 371.21f, 59.641f}, // 10 scenes
-    {"persp-subdiv-16", 1024.6f, 410.25f, 43.573f}, // 10 scenes
-    {"persp-subdiv-32", 1024.6f, 430.68f, 35.721f}, // 10 scenes
-    {"constant-depth", 1024.6f, 446.99f, 29.944f}, // 10 scenes
-    {"persp-adaptive-0.5", 1024.6f, 829.37f, 316.508f}, // 10 scenes
-    {"persp-adaptive-1", 1024.6f, 995.60f, 51.507f}, // 10 scenes
-    {"persp-adaptive-2", 1024.6f, 1012.46f, 44.347f}, // 10 scenes
-    {"persp-adaptive-4", 1024.6f, 1024.43f, 40.171f}, // 10 scenes
-    {"fast-affine", 1141.3f, 159.11f, 4.218f}, // 10 scenes
-    {"fast-table", 1359.0f, 149.70f, 1.280f}, // 10 scenes
-    {"fast-columns", 1212.7f, 253.51f, 5.677f}, // 10 scenes
-    {"fast-table-columns", 1403.9f, 250.67f, 2.828f}, // 10 scenes
-    {"fast-subdiv-8", 1024.6f, 292.20f, 13.720f}, // 10 scenes
-    {"fast-subdiv-16", 1024.6f, 301.97f, 9.796f}, // 10 scenes
-    {"fast-subdiv-32", 1024.6f, 306.82f, 7.896f}, // 10 scenes
-    {"fast-constant-depth", 1024.6f, 311.17f, 6.338f}, // 10 scenes
-    {"fast-adaptive-1", 1024.6f, 334.48f, 9.478f}, // 10 scenes
-    {"fast-adaptive-2", 1024.6f, 338.07f, 8.054f}, // 10 scenes
-    {"fast-oriented-1", 1208.3f, 362.58f, 7.469f}, // 10 scenes
-    {"xsharp-dda", 1546.0f, 379.12f, 38.146f}, // 9 scenes
-    {"xsharp-row-out", 1546.0f, 514.43f, 19.644f}, // 9 scenes
-    {"xsharp-column", 1549.7f, 486.58f, 13.382f}, // 9 scenes
-    {"hecker-steptable", 5387.8f, 0.00f, 636.509f}, // 9 scenes
-    {"fatmap-256", 1781.3f, 167.21f, 13.688f}, // 8 scenes
-    {"fatmap-256-16", 1781.3f, 172.21f, 12.688f}, // 8 scenes
-    {"fatmap-lut", 2398.1f, 170.62f, 10.114f}, // 7 scenes
-    {"quake-subdiv16", 1546.7f, 306.14f, 13.947f}, // 9 scenes
-    {"quake-subdiv8", 1546.7f, 290.77f, 20.308f}, // 9 scenes
+    {"affine", 1087.3f, 343.82f, 40.365f}, // 10 scenes
+    {"exact", 1024.6f, 311.23f, 80.336f}, // 10 scenes
+    {"persp-subdiv-4", 1024.6f, 316.63f, 91.400f}, // 10 scenes
+    {"persp-subdiv-8", 1024.6f, 371.38f, 59.532f}, // 10 scenes
+    {"persp-subdiv-16", 1024.6f, 410.41f, 43.464f}, // 10 scenes
+    {"persp-subdiv-32", 1024.6f, 430.85f, 35.612f}, // 10 scenes
+    {"constant-depth", 1024.6f, 447.16f, 29.835f}, // 10 scenes
+    {"persp-adaptive-0.5", 1024.6f, 829.53f, 316.399f}, // 10 scenes
+    {"persp-adaptive-1", 1024.6f, 995.77f, 51.397f}, // 10 scenes
+    {"persp-adaptive-2", 1024.6f, 1012.63f, 44.238f}, // 10 scenes
+    {"persp-adaptive-4", 1024.6f, 1024.60f, 40.062f}, // 10 scenes
+    {"fast-affine", 1141.3f, 159.27f, 4.108f}, // 10 scenes
+    {"fast-table", 1359.0f, 149.87f, 1.170f}, // 10 scenes
+    {"fast-columns", 1212.7f, 253.69f, 5.567f}, // 10 scenes
+    {"fast-table-columns", 1403.9f, 250.85f, 2.717f}, // 10 scenes
+    {"fast-subdiv-8", 1024.6f, 292.37f, 13.611f}, // 10 scenes
+    {"fast-subdiv-16", 1024.6f, 302.14f, 9.687f}, // 10 scenes
+    {"fast-subdiv-32", 1024.6f, 306.99f, 7.787f}, // 10 scenes
+    {"fast-constant-depth", 1024.6f, 311.34f, 6.228f}, // 10 scenes
+    {"fast-adaptive-1", 1024.6f, 334.65f, 9.369f}, // 10 scenes
+    {"fast-adaptive-2", 1024.6f, 338.24f, 7.944f}, // 10 scenes
+    {"fast-oriented-1", 1208.3f, 362.77f, 7.361f}, // 10 scenes
+    {"xsharp-dda", 1546.0f, 379.44f, 37.994f}, // 9 scenes
+    {"xsharp-row-out", 1546.0f, 514.75f, 19.491f}, // 9 scenes
+    {"xsharp-column", 1549.7f, 486.89f, 13.229f}, // 9 scenes
+    {"hecker-steptable", 5387.8f, 0.00f, 636.437f}, // 9 scenes
+    {"fatmap-256", 1781.3f, 167.61f, 13.490f}, // 8 scenes
+    {"fatmap-256-16", 1781.3f, 172.61f, 12.490f}, // 8 scenes
+    {"fatmap-lut", 2398.1f, 171.15f, 9.883f}, // 7 scenes
+    {"quake-subdiv16", 1546.7f, 306.44f, 13.795f}, // 9 scenes
+    {"quake-subdiv8", 1546.7f, 291.07f, 20.156f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
