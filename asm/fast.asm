@@ -6,7 +6,7 @@
 ;                                        pairs a block, an odd last pixel alone;
 ;   fast_table_loop_asm (fast-table):    the same rows, each span read through the polygon's offset
 ;                                        table (twin: fast_table_loop): two loads a pixel, one word
-;                                        store a pair, eight pairs a block;
+;                                        store a pair, sixteen pairs a block;
 ;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop): eight pixels a
 ;                                        block, each stored alone (they lie 80 bytes apart);
 ;   fast_table_column_loop_asm (fast-table-columns): one column through the offset table (twin:
@@ -143,11 +143,9 @@ L_FRAME   equ 36
     mov [esp + L_V], eax
 %endmacro
 
-; A row's start: both bounds stepped, the span clipped (.next_row where it is empty) and tallied;
-; out: ecx the block, eax the first pixel's address, edi the span's pixels, ebx and edx u and v
-; (16.16) at the first pixel.
+; A row's start (ecx: the block, as RUN_ENTER and ROW_TAIL leave it): both bounds stepped, the span
+; clipped (.next_row where it is empty) and tallied; out: eax the first pixel's x, edi the span's pixels.
 %macro ROW_HEAD 0
-    mov ecx, [esp + L_ARGS]
     mov edx, [ecx + RUN_lower]
     mov eax, [edx + BOUND_q]            ; the first pixel, before the clip
     STEP_BOUND edx
@@ -168,6 +166,10 @@ L_FRAME   equ 36
     mov edx, [ecx + RUN_tally]
     inc dword [edx]
     add [edx + 4], edi
+%endmacro
+
+; After ROW_HEAD, fast-affine's: ebx and edx u and v (16.16) at the first pixel, eax its address.
+%macro ROW_UV 0
     mov ebx, eax
     imul ebx, [ecx + RUN_du_16_16]
     add ebx, [esp + L_U]                ; u at the first pixel
@@ -177,7 +179,7 @@ L_FRAME   equ 36
     add eax, [esp + L_ROW]              ; its address
 %endmacro
 
-; The next row: u, v and the row's address advance; .row while lines are left.
+; The next row: u, v and the row's address advance; .row while lines are left, ecx the block.
 %macro ROW_TAIL 0
     mov ecx, [esp + L_ARGS]
     mov eax, [ecx + RUN_u_row_16_16]
@@ -204,6 +206,7 @@ fast_run_loop_asm:
     shl ebp, 16                         ; dv fraction
 .row:
     ROW_HEAD
+    ROW_UV
     mov ecx, edi
     and edi, 1
     mov [esp + L_ODD], edi              ; an odd pixel, drawn after the pairs
@@ -225,11 +228,12 @@ fast_run_loop_asm:
     LOOP_LEAVE L_FRAME
 
 ; fast_table_loop_asm: fast-table's run of rows (twin: fast_table_loop): the rows walked as
-; fast_run_loop_asm walks them, each row's span read through the polygon's offset table from its first
-; texel: an odd span's first pixel alone (its offset is table[0] = 0), then two offsets, two texels
-; and one word store a pair, eight pairs a block. The pairs are indexed from their ends by ecx, which
-; counts up from minus the blocks' pairs to 0: two instructions a block for the loop.
-;   esi: the span's first texel   ebp, edi: the table and the destination just past the pairs
+; fast_run_loop_asm walks them, each row's pixel x read through the polygon's offset table, table[x],
+; from the texel of the row's pixel at which the table starts (u and v there: no multiply a row): an
+; odd span's first pixel alone, then two offsets, two texels and one word store a pair, sixteen
+; pairs a block. The pairs are indexed from their ends by ecx, which counts up from minus the
+; blocks' pairs to 0: two instructions a block for the loop.
+;   esi: the texel of the table's first pixel   ebp, edi: the table and the destination past the pairs
 ;   ecx: -(pairs left in the blocks)   ebx, edx: offsets   al, ah: texels
 %macro TPAIR 1                          ; %1: the pair within the block
     mov ebx, [ebp + ecx * 8 + 8 * %1]
@@ -244,17 +248,22 @@ fast_table_loop_asm:
     RUN_ENTER
 .row:
     ROW_HEAD
+    mov ebx, [esp + L_U]
     shr ebx, 16
     movzx ebx, bl                       ; u whole & 255
+    mov edx, [esp + L_V]
     shr edx, 8
     and edx, 0xFF00                     ; (v whole & 255) * 256
     or ebx, edx
     mov esi, [ecx + RUN_texture]
-    add esi, ebx                        ; the span's first texel
+    add esi, ebx                        ; the texel of the table's first pixel
     mov ebp, [ecx + RUN_table]
+    lea ebp, [ebp + eax * 4]            ; the span's first pixel's offset
+    add eax, [esp + L_ROW]              ; its address
     test edi, 1
     jz .even
-    mov bl, [esi]                       ; an odd span's first pixel: offset 0
+    mov ebx, [ebp]                      ; an odd span's first pixel alone
+    mov bl, [esi + ebx]
     mov [eax], bl
     inc eax
     add ebp, 4
@@ -266,9 +275,9 @@ fast_table_loop_asm:
     lea edi, [eax + ecx * 2]            ; past their pixels
     mov edx, ecx
     neg edx
-    and edx, 7                          ; the first block starts at pair j = (-pairs) mod 8
-    add ecx, 7
-    and ecx, -8
+    and edx, 15                         ; the first block starts at pair j = (-pairs) mod 16
+    add ecx, 15
+    and ecx, -16
     neg ecx                             ; -(pairs + j)
     jmp [table_entries + edx * 4]
 .block:
@@ -280,7 +289,15 @@ fast_table_loop_asm:
 .e5: TPAIR 5
 .e6: TPAIR 6
 .e7: TPAIR 7
-    add ecx, 8
+.e8: TPAIR 8
+.e9: TPAIR 9
+.e10: TPAIR 10
+.e11: TPAIR 11
+.e12: TPAIR 12
+.e13: TPAIR 13
+.e14: TPAIR 14
+.e15: TPAIR 15
+    add ecx, 16
     jnz .block
 .next_row:
     ROW_TAIL
@@ -301,6 +318,8 @@ table_column_entries:
 table_entries:
     dd fast_table_loop_asm.e0, fast_table_loop_asm.e1, fast_table_loop_asm.e2, fast_table_loop_asm.e3
     dd fast_table_loop_asm.e4, fast_table_loop_asm.e5, fast_table_loop_asm.e6, fast_table_loop_asm.e7
+    dd fast_table_loop_asm.e8, fast_table_loop_asm.e9, fast_table_loop_asm.e10, fast_table_loop_asm.e11
+    dd fast_table_loop_asm.e12, fast_table_loop_asm.e13, fast_table_loop_asm.e14, fast_table_loop_asm.e15
 
 section .text
 

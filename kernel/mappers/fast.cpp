@@ -75,11 +75,14 @@ template <bool TABLE>
     EdgeWalker walker(s, Axis::Rows, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
+    int32_t table_x = 0;  // fast-table: the pixel its offsets start at, at or left of every span's first
     if constexpr (TABLE) {
-        // the longest span: the pixel centres in the box's width, at most the clip's
-        const int32_t width = c.target.clip.x1 - c.target.clip.x0;
-        const int32_t box = int32_t((s.max_x - s.min_x) >> SUBPIXEL_BITS) + 2;  // (within setup's range: 32 bits)
-        build_offset_table(int32_t(p.udx), int32_t(p.vdx), box < width ? box : width, table);
+        // from the box's first pixel (a pixel whose centre lies at or right of min_x is at or right
+        // of floor(min_x)) inside the clip to its last (at most floor(max_x)) inside it
+        const int32_t box_lo = int32_t(s.min_x >> SUBPIXEL_BITS), box_hi = int32_t(s.max_x >> SUBPIXEL_BITS);  // (setup's range: 32 bits)
+        table_x = box_lo > c.target.clip.x0 ? box_lo : c.target.clip.x0;
+        const int32_t last = box_hi < c.target.clip.x1 - 1 ? box_hi : c.target.clip.x1 - 1;
+        if (last >= table_x) build_offset_table(int32_t(p.udx), int32_t(p.vdx), last - table_x + 1, table + table_x);
     }
     setup_done(c);
     uint32_t drawn[2] = {0, 0};  // spans, pixels
@@ -111,8 +114,8 @@ template <bool TABLE>
             line = span.y;
         }
         a.row = c.target.base + line * c.target.pitch;
-        a.u_16_16 = p.u(0, line);
-        a.v_16_16 = p.v(0, line);
+        a.u_16_16 = p.u(table_x, line);  // (fast-affine: at pixel 0)
+        a.v_16_16 = p.v(table_x, line);
         emit(c, &a, 0, 0);  // the run loop counts what it draws
     }
     tally(c.stats, drawn[0], drawn[1]);
@@ -238,7 +241,7 @@ namespace raster {
 namespace {
 
 // The rows of a run as both run loops walk them: span(row, lo, hi, u, v) draws pixels lo..hi of a
-// non-empty row from u, v (16.16) at its first pixel.
+// non-empty row, u and v (16.16) the row's as FastRunArgs gives them.
 template <typename Span>
 void run_rows(const FastRunArgs& a, Span&& span) {
     uint8_t* row = a.row;
@@ -249,7 +252,7 @@ void run_rows(const FastRunArgs& a, Span&& span) {
         a.lower->step();
         a.upper->step();
         if (lo <= hi) {
-            span(row, lo, hi, u + uint32_t(lo) * uint32_t(a.du_16_16), v + uint32_t(lo) * uint32_t(a.dv_16_16));
+            span(row, lo, hi, u, v);
             a.tally[0] += 1;
             a.tally[1] += uint32_t(hi - lo + 1);
         }
@@ -263,7 +266,8 @@ void run_rows(const FastRunArgs& a, Span&& span) {
 
 void fast_run_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
-    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t su, uint32_t sv) {
+    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
+        uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
         for (int32_t x = lo; x <= hi; ++x) {
             row[x] = texel256(a.texture, su, sv);
             su += uint32_t(a.du_16_16);
@@ -284,9 +288,9 @@ void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int3
 
 void fast_table_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
-    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t su, uint32_t sv) {
-        const uint8_t* first = a.texture + (((sv >> 8) & 0xFF00) | ((su >> 16) & 0xFF));
-        for (int32_t x = lo; x <= hi; ++x) row[x] = first[a.table[x - lo]];
+    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
+        const uint8_t* origin = a.texture + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));  // the table's first pixel's texel
+        for (int32_t x = lo; x <= hi; ++x) row[x] = origin[a.table[x]];
     });
 }
 
@@ -425,7 +429,9 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         a.lower = &c.lower;
         a.upper = &c.upper;
         a.tally = c.tally;
-        build_offset_table(a.du_16_16, a.dv_16_16, a.pitch, c.table);  // (a span is at most the pitch)
+        // (fast-table: the offsets from a pixel at or left of clip_lo to the pitch's end)
+        const int32_t table_x = r.range(0, a.clip_lo);
+        build_offset_table(a.du_16_16, a.dv_16_16, a.pitch - table_x, c.table + table_x);
         a.table = c.table;
         a.row = buf.a + CHECK_GUARD_BYTES;
         int32_t lines = a.lines > 0 ? a.lines : 0;

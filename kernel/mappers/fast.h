@@ -22,11 +22,11 @@ struct FastRunArgs {
     EdgeBound* lower;        // stepped in place, once a row
     EdgeBound* upper;
     const uint8_t* texture;  // tiled over 256 x 256, aligned to 64 KiB
-    uint32_t u_16_16, v_16_16;        // at pixel 0 of the first row
+    uint32_t u_16_16, v_16_16;        // at pixel 0 of the first row (fast-table: at the table's first pixel)
     uint32_t u_row_16_16, v_row_16_16;  // their change from row to row
     int32_t du_16_16, dv_16_16;       // per pixel
     uint32_t* tally;         // tally[0] += the spans drawn, tally[1] += their pixels
-    const int32_t* table;    // fast-table: build_offset_table's, as long as any span of the run (fast-affine: unread)
+    const int32_t* table;    // fast-table: table[x] the offset of pixel x (fast-affine: unread)
 };
 void fast_run_loop(const void* args);
 
@@ -34,12 +34,14 @@ void fast_run_loop(const void* args);
 // for a polygon whose u and v step by du and dv (16.16) a pixel: table[k] = (floor(k dv) & 255) * 256
 // + (floor(c + k du) & 255), the floors of 16.16 values in exact integer arithmetic, c =
 // TABLE_U_START, k = 0 .. length - 1 (fatmap's table idea: one table a polygon, not a step a pixel).
-// fast_table_loop walks fast_run_loop's rows and reads a span that starts at u0, v0 at pixel k from
-// block + (v0 whole & 255) * 256 + (u0 whole & 255) + table[k]: u's part may pass 255 into the next
-// texel row (the block's guard rows after it continue the tiling, to block + 131070), so the texel
-// read is fast-affine's (floor(u0 + k du), floor(v0 + k dv)) moved by e_u on u, |e_u| <= 1 (the
-// start's fraction against c), and by e_v on v, |e_v| <= 1 (the fraction dropped, 0 or -1, and the
-// carry from u, 0 or +1), modulo 256 (docs/accuracy.md, "The offset table").
+// fast_table_loop walks fast_run_loop's rows and reads pixel x0 + k of a row whose u and v are u0,
+// v0 at pixel x0, the pixel the polygon's table starts at (at or left of every span's first pixel:
+// the table written from table + x0), from block + (v0 whole & 255) * 256 + (u0 whole & 255) +
+// table[x0 + k]: no multiply a row. u's part may pass 255 into the next texel row (the block's
+// guard rows after it continue the tiling, to block + 131070), so the texel read is fast-affine's
+// (floor(u0 + k du), floor(v0 + k dv)) moved by e_u on u, |e_u| <= 1 (the start's fraction against
+// c), and by e_v on v, |e_v| <= 1 (the fraction dropped, 0 or -1, and the carry from u, 0 or +1),
+// modulo 256 (docs/accuracy.md, "The offset table").
 constexpr uint32_t TABLE_U_START = 0x8000;  // half a texel: e_u in {-1, 0, 1}
 constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row: 320 pixels)
 void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table);
