@@ -144,22 +144,27 @@ L_FRAME   equ 36
 %endmacro
 
 ; A row's start (ecx: the block, as RUN_ENTER and ROW_TAIL leave it): both bounds stepped, the span
-; clipped (.next_row where it is empty) and tallied; out: eax the first pixel's x, edi the span's pixels.
-%macro ROW_HEAD 0
+; clipped (%1 = 1; 0: a run the block says lies inside the clip, RUN_inside) (.next_row where it is
+; empty) and tallied; out: eax the first pixel's x, edi the span's pixels.
+%macro ROW_HEAD 1
     mov edx, [ecx + RUN_lower]
     mov eax, [edx + BOUND_q]            ; the first pixel, before the clip
     STEP_BOUND edx
+%if %1
     cmp eax, [ecx + RUN_clip_lo]
     jge %%lo_inside
     mov eax, [ecx + RUN_clip_lo]
 %%lo_inside:
+%endif
     mov edx, [ecx + RUN_upper]
     mov edi, [edx + BOUND_q]            ; the last pixel
     STEP_BOUND edx
+%if %1
     cmp edi, [ecx + RUN_clip_hi]
     jle %%hi_inside
     mov edi, [ecx + RUN_clip_hi]
 %%hi_inside:
+%endif
     sub edi, eax
     jl .next_row                        ; nothing on this row
     inc edi                             ; the span's pixels
@@ -192,26 +197,17 @@ L_FRAME   equ 36
     jnz .row
 %endmacro
 
-global fast_run_loop_asm
-fast_run_loop_asm:
-    RUN_ENTER
-    mov eax, [ecx + RUN_texture]
-    mov [esp + L_TEXTURE], eax
-    mov al, [ecx + RUN_du_16_16 + 2]
-    mov ah, [ecx + RUN_dv_16_16 + 2]
-    mov [esp + L_STEPS], ax
-    mov esi, [ecx + RUN_du_16_16]
-    shl esi, 16                         ; du fraction
-    mov ebp, [ecx + RUN_dv_16_16]
-    shl ebp, 16                         ; dv fraction
+; fast_run_loop_asm's rows from .row, clipped (%1 = 1) or not (0), the pairs entered through the
+; table %2; then the frame freed.
+%macro RUN_ROWS 2
 .row:
-    ROW_HEAD
+    ROW_HEAD %1
     ROW_UV
     mov ecx, edi
     and edi, 1
     mov [esp + L_ODD], edi              ; an odd pixel, drawn after the pairs
     shr ecx, 1                          ; pairs
-    PAIR_ENTRY eax, edi, run_entries    ; blocks, the first one partial; 0 (ZF): no pair, one pixel
+    PAIR_ENTRY eax, edi, %2             ; blocks, the first one partial; 0 (ZF): no pair, one pixel
     mov edi, eax
     mov eax, ebx                        ; (mov and ror leave ZF as shr set it)
     ror eax, 16                         ; u: fraction in the high half, whole in al
@@ -226,6 +222,27 @@ fast_run_loop_asm:
     ROW_TAIL
 .done:
     LOOP_LEAVE L_FRAME
+%endmacro
+
+global fast_run_loop_asm
+fast_run_loop_asm:
+    RUN_ENTER
+    mov eax, [ecx + RUN_texture]
+    mov [esp + L_TEXTURE], eax
+    mov al, [ecx + RUN_du_16_16 + 2]
+    mov ah, [ecx + RUN_dv_16_16 + 2]
+    mov [esp + L_STEPS], ax
+    mov esi, [ecx + RUN_du_16_16]
+    shl esi, 16                         ; du fraction
+    mov ebp, [ecx + RUN_dv_16_16]
+    shl ebp, 16                         ; dv fraction
+    cmp dword [ecx + RUN_inside], 0
+    jne fast_run_inside.row
+    RUN_ROWS 1, run_entries
+; the same rows of a run inside the clip, without its compares (a label of its own: its own .row,
+; .block and entries)
+fast_run_inside:
+    RUN_ROWS 0, run_inside_entries
 
 ; fast_table_loop_asm: fast-table's run of rows (twin: fast_table_loop): the rows walked as
 ; fast_run_loop_asm walks them, each row's pixel x read through the polygon's offset table, table[x],
@@ -243,20 +260,15 @@ fast_run_loop_asm:
     mov [edi + ecx * 2 + 2 * %1], ax
 %endmacro
 
-global fast_table_loop_asm
-fast_table_loop_asm:
-    RUN_ENTER
+; fast_table_loop_asm's rows from .row, clipped (%1 = 1) or not (0), the pairs entered through the
+; table %2; then the frame freed.
+%macro TABLE_ROWS 2
 .row:
-    ROW_HEAD
-    mov ebx, [esp + L_U]
-    shr ebx, 16
-    movzx ebx, bl                       ; u whole & 255
-    mov edx, [esp + L_V]
-    shr edx, 8
-    and edx, 0xFF00                     ; (v whole & 255) * 256
-    or ebx, edx
-    mov esi, [ecx + RUN_texture]
-    add esi, ebx                        ; the texel of the table's first pixel
+    ROW_HEAD %1
+    mov ebx, [ecx + RUN_texture]        ; (64 KiB-aligned: its low half 0)
+    mov bl, [esp + L_U + 2]             ; u whole & 255
+    mov bh, [esp + L_V + 2]             ; v whole & 255
+    mov esi, ebx                        ; the texel of the table's first pixel
     mov ebp, [ecx + RUN_table]
     lea ebp, [ebp + eax * 4]            ; the span's first pixel's offset
     add eax, [esp + L_ROW]              ; its address
@@ -279,7 +291,7 @@ fast_table_loop_asm:
     add ecx, 15
     and ecx, -16
     neg ecx                             ; -(pairs + j)
-    jmp [table_entries + edx * 4]
+    jmp [%2 + edx * 4]
 .block:
 .e0: TPAIR 0
 .e1: TPAIR 1
@@ -303,6 +315,16 @@ fast_table_loop_asm:
     ROW_TAIL
 .done:
     LOOP_LEAVE L_FRAME
+%endmacro
+
+global fast_table_loop_asm
+fast_table_loop_asm:
+    RUN_ENTER
+    cmp dword [ecx + RUN_inside], 0
+    jne fast_table_inside.row
+    TABLE_ROWS 1, table_entries
+fast_table_inside:
+    TABLE_ROWS 0, table_inside_entries
 
 section .rodata
 align 4
@@ -312,6 +334,9 @@ column_entries:
 run_entries:
     dd fast_run_loop_asm.e0, fast_run_loop_asm.e1, fast_run_loop_asm.e2, fast_run_loop_asm.e3
     dd fast_run_loop_asm.e4, fast_run_loop_asm.e5, fast_run_loop_asm.e6, fast_run_loop_asm.e7
+run_inside_entries:
+    dd fast_run_inside.e0, fast_run_inside.e1, fast_run_inside.e2, fast_run_inside.e3
+    dd fast_run_inside.e4, fast_run_inside.e5, fast_run_inside.e6, fast_run_inside.e7
 table_column_entries:
     dd fast_table_column_loop_asm.e0, fast_table_column_loop_asm.e1, fast_table_column_loop_asm.e2, fast_table_column_loop_asm.e3
     dd fast_table_column_loop_asm.e4, fast_table_column_loop_asm.e5, fast_table_column_loop_asm.e6, fast_table_column_loop_asm.e7
@@ -320,6 +345,11 @@ table_entries:
     dd fast_table_loop_asm.e4, fast_table_loop_asm.e5, fast_table_loop_asm.e6, fast_table_loop_asm.e7
     dd fast_table_loop_asm.e8, fast_table_loop_asm.e9, fast_table_loop_asm.e10, fast_table_loop_asm.e11
     dd fast_table_loop_asm.e12, fast_table_loop_asm.e13, fast_table_loop_asm.e14, fast_table_loop_asm.e15
+table_inside_entries:
+    dd fast_table_inside.e0, fast_table_inside.e1, fast_table_inside.e2, fast_table_inside.e3
+    dd fast_table_inside.e4, fast_table_inside.e5, fast_table_inside.e6, fast_table_inside.e7
+    dd fast_table_inside.e8, fast_table_inside.e9, fast_table_inside.e10, fast_table_inside.e11
+    dd fast_table_inside.e12, fast_table_inside.e13, fast_table_inside.e14, fast_table_inside.e15
 
 section .text
 

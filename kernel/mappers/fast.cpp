@@ -97,6 +97,8 @@ template <bool TABLE>
     a.dv_16_16 = int32_t(p.vdx);
     a.tally = drawn;
     if constexpr (TABLE) a.table = table;
+    // (a pixel whose centre lies in the box [min_x, max_x] lies in [x0, x1) where the box does)
+    a.inside = s.min_x >= int64_t(c.target.clip.x0) * SUBPIXEL_ONE && s.max_x <= int64_t(c.target.clip.x1) * SUBPIXEL_ONE;
     for (;;) {
         int32_t line;
         EdgeBound lone_lower, lone_upper;
@@ -418,6 +420,17 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         c.lower = random_bound(r, a.pitch);
         c.upper = random_bound(r, a.pitch);
         if (r.below(2)) c.upper.q = c.lower.q + r.range(0, a.pitch), c.upper.dq = c.lower.dq + r.range(-2, 2);  // a real-looking span
+        // a third of the runs inside the clip (RUN_inside: its rows up to the first that leaves it)
+        const bool inside = r.below(3) == 0 && a.clip_lo <= a.clip_hi;
+        if (inside) {
+            c.lower.q = r.range(a.clip_lo, a.clip_hi), c.lower.dq = r.range(-2, 2);
+            c.upper.q = r.range(c.lower.q, a.clip_hi), c.upper.dq = c.lower.dq + r.range(-2, 2);
+            EdgeBound lo = c.lower, hi = c.upper;
+            int32_t n = 0;
+            for (; n < a.lines && (lo.q > hi.q || (lo.q >= a.clip_lo && hi.q <= a.clip_hi)); ++n) lo.step(), hi.step();
+            a.lines = n;
+        }
+        a.inside = inside ? 1 : 0;
         a.texture = check_aligned_texture(buf);
         a.u_16_16 = r.next();
         a.v_16_16 = r.next();
@@ -454,7 +467,7 @@ void fast_offsets() {
     ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
     ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, texture, u_16_16, v_16_16, u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally,
-               table)
+               table, inside)
     ASM_FIELDS(BOUND, EdgeBound, first, last, q, dq, r, dr, d)
     ASM_SIZE(BOUND_SIZE, EdgeBound);
     ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)

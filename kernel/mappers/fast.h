@@ -27,6 +27,9 @@ struct FastRunArgs {
     int32_t du_16_16, dv_16_16;       // per pixel
     uint32_t* tally;         // tally[0] += the spans drawn, tally[1] += their pixels
     const int32_t* table;    // fast-table: table[x] the offset of pixel x (fast-affine: unread)
+    // Nonzero: every row whose bounds are in order lies within clip_lo..clip_hi (the polygon's box
+    // lies inside the clip), so the NASM loops need not clip (the twins clip all the same)
+    int32_t inside;
 };
 void fast_run_loop(const void* args);
 
