@@ -16,8 +16,8 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-1", 1024.6f, 995.77f, 51.397f}, // 10 scenes
     {"persp-adaptive-2", 1024.6f, 1012.63f, 44.238f}, // 10 scenes
     {"persp-adaptive-4", 1024.6f, 1024.60f, 40.062f}, // 10 scenes
-    {"fast-affine", 1141.3f, 158.01f, 4.112f}, // 10 scenes
-    {"fast-table", 1328.3f, 148.23f, 1.074f}, // 10 scenes
+    {"fast-affine", 1139.3f, 158.13f, 4.048f}, // 10 scenes
+    {"fast-table", 1330.3f, 144.27f, 0.992f}, // 10 scenes
     {"fast-columns", 1212.7f, 253.69f, 5.567f}, // 10 scenes
     {"fast-table-columns", 1403.9f, 250.85f, 2.717f}, // 10 scenes
     {"fast-subdiv-8", 1024.6f, 292.37f, 13.611f}, // 10 scenes
