@@ -82,6 +82,7 @@ template <bool TABLE>
         const int32_t box_lo = int32_t(s.min_x >> SUBPIXEL_BITS), box_hi = int32_t(s.max_x >> SUBPIXEL_BITS);  // (setup's range: 32 bits)
         table_x = box_lo > c.target.clip.x0 ? box_lo : c.target.clip.x0;
         const int32_t last = box_hi < c.target.clip.x1 - 1 ? box_hi : c.target.clip.x1 - 1;
+        if (last >= TABLE_LIMIT) return SetupStatus::Unsupported;  // (a target wider than any screen: never here)
         if (last >= table_x) build_offset_table(int32_t(p.udx), int32_t(p.vdx), last - table_x + 1, table + table_x);
     }
     setup_done(c);
