@@ -256,7 +256,8 @@ TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
 // fast-adaptive-1's certificate (auto's oriented candidate): wherever it holds, the mapper's own
 // whole-polygon bound is within one footprint along that walker, and so is the measured error; it
 // holds on many polygons inside the screen and never on one that reaches outside or on a clamped
-// texture. Random polygons of every class, both walkers, textures of 1, 64 and 256 texels.
+// texture. Random polygons of every class, both walkers, textures of 1, 64 and 256 texels (make
+// test 1800, make bounds MODEXLAB_BOUND_POLYGONS).
 TEST(Bounds, FastAdaptiveCertificateImpliesItsBound) {
     const Mapper& m = *find_mapper("fast-adaptive-1");
     const ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
@@ -264,7 +265,7 @@ TEST(Bounds, FastAdaptiveCertificateImpliesItsBound) {
     TriangleGen gen(20261126u);
     PolygonMeter meters[2] = {PolygonMeter(m, Axis::Rows), PolygonMeter(m, Axis::Columns)};
     int certified = 0, refused_inside = 0, outside = 0;
-    const int polygons = 1800 / SANITIZED_SHARE;
+    const int polygons = std::max(1800 / SANITIZED_SHARE, polygons_per_mapper());
     for (int n = 0; n < polygons; ++n) {
         const int32_t size = sizes[n % 3];
         std::vector<uint8_t> texels(size_t(size) * size_t(size)), bordered(size_t(bordered_bytes(size, size))), aligned(ALIGNED256_BYTES);
