@@ -328,28 +328,12 @@ fast_table_inside:
 
 section .rodata
 align 4
-column_entries:
-    dd fast_column_loop_asm.e0, fast_column_loop_asm.e1, fast_column_loop_asm.e2, fast_column_loop_asm.e3
-    dd fast_column_loop_asm.e4, fast_column_loop_asm.e5, fast_column_loop_asm.e6, fast_column_loop_asm.e7
-run_entries:
-    dd fast_run_loop_asm.e0, fast_run_loop_asm.e1, fast_run_loop_asm.e2, fast_run_loop_asm.e3
-    dd fast_run_loop_asm.e4, fast_run_loop_asm.e5, fast_run_loop_asm.e6, fast_run_loop_asm.e7
-run_inside_entries:
-    dd fast_run_inside.e0, fast_run_inside.e1, fast_run_inside.e2, fast_run_inside.e3
-    dd fast_run_inside.e4, fast_run_inside.e5, fast_run_inside.e6, fast_run_inside.e7
-table_column_entries:
-    dd fast_table_column_loop_asm.e0, fast_table_column_loop_asm.e1, fast_table_column_loop_asm.e2, fast_table_column_loop_asm.e3
-    dd fast_table_column_loop_asm.e4, fast_table_column_loop_asm.e5, fast_table_column_loop_asm.e6, fast_table_column_loop_asm.e7
-table_entries:
-    dd fast_table_loop_asm.e0, fast_table_loop_asm.e1, fast_table_loop_asm.e2, fast_table_loop_asm.e3
-    dd fast_table_loop_asm.e4, fast_table_loop_asm.e5, fast_table_loop_asm.e6, fast_table_loop_asm.e7
-    dd fast_table_loop_asm.e8, fast_table_loop_asm.e9, fast_table_loop_asm.e10, fast_table_loop_asm.e11
-    dd fast_table_loop_asm.e12, fast_table_loop_asm.e13, fast_table_loop_asm.e14, fast_table_loop_asm.e15
-table_inside_entries:
-    dd fast_table_inside.e0, fast_table_inside.e1, fast_table_inside.e2, fast_table_inside.e3
-    dd fast_table_inside.e4, fast_table_inside.e5, fast_table_inside.e6, fast_table_inside.e7
-    dd fast_table_inside.e8, fast_table_inside.e9, fast_table_inside.e10, fast_table_inside.e11
-    dd fast_table_inside.e12, fast_table_inside.e13, fast_table_inside.e14, fast_table_inside.e15
+    ENTRIES column_entries, fast_column_loop_asm, 8
+    ENTRIES run_entries, fast_run_loop_asm, 8
+    ENTRIES run_inside_entries, fast_run_inside, 8
+    ENTRIES table_column_entries, fast_table_column_loop_asm, 8
+    ENTRIES table_entries, fast_table_loop_asm, 16
+    ENTRIES table_inside_entries, fast_table_inside, 16
 
 section .text
 

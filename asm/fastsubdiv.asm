@@ -334,9 +334,5 @@ fast_subdiv_short:
 
 section .rodata
 align 4
-pair_entries:
-    dd fast_subdiv_loop_asm.e0, fast_subdiv_loop_asm.e1, fast_subdiv_loop_asm.e2, fast_subdiv_loop_asm.e3
-    dd fast_subdiv_loop_asm.e4, fast_subdiv_loop_asm.e5, fast_subdiv_loop_asm.e6, fast_subdiv_loop_asm.e7
-column_entries:
-    dd fast_subdiv_column_asm.e0, fast_subdiv_column_asm.e1, fast_subdiv_column_asm.e2, fast_subdiv_column_asm.e3
-    dd fast_subdiv_column_asm.e4, fast_subdiv_column_asm.e5, fast_subdiv_column_asm.e6, fast_subdiv_column_asm.e7
+    ENTRIES pair_entries, fast_subdiv_loop_asm, 8
+    ENTRIES column_entries, fast_subdiv_column_asm, 8
