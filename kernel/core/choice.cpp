@@ -248,8 +248,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     int32_t oriented_price = NOT_LIVE;
     if (budget.max_error >= 1 && budget.max_error < 2 && list.oriented_row >= 0) {
         oriented_walker = target.planar ? Axis::Columns : oriented_axis(prepared->setup, target.clip, fast_adaptive_room(1));
-        const int k = list.adaptive[int(oriented_walker)];
-        if (k >= 0 && fast_adaptive_certain<4>(MAPPERS[list.row[k]], prepared->setup, target.clip, tex, oriented_walker)) {
+        if (list.adaptive[int(oriented_walker)] >= 0 && fast_adaptive_certain<4>(prepared->setup, target.clip, tex, oriented_walker)) {
             oriented = &MAPPERS[list.oriented_row];
             const double estimate = estimate_cost(MAPPER_COSTS[list.oriented_row], size[int(oriented_walker)]);
             if (estimate <= least_cost(0) + ORIENTED_GATE) return Choice{oriented, oriented_walker, ErrorBound{true, true, 1}, false};

@@ -161,8 +161,8 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
 }
 
 template <int QUARTERS>
-bool fast_adaptive_certain(const Mapper& m, const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis) {
-    (void)m;  // (it takes the texture: its sides divide 65536)
+bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis) {
+    // (the mapper takes the texture: its sides divide 65536)
     if (tex.wrap != Wrap::Repeat) return false;
     // inside the clip: the spread's corners are the vertices (spread_corners)
     if (s.min_x < int64_t(clip.x0) * SUBPIXEL_ONE || s.max_x > int64_t(clip.x1) * SUBPIXEL_ONE || s.min_y < int64_t(clip.y0) * SUBPIXEL_ONE ||
@@ -299,8 +299,8 @@ template void fast_adaptive_span<4>(const SpanContext&, const Span&, uint8_t*, i
 template void fast_adaptive_span<8>(const SpanContext&, const Span&, uint8_t*, int32_t);
 template ErrorBound fast_adaptive_bound<4>(const BoundContext&, const Vertex*, int);
 template ErrorBound fast_adaptive_bound<8>(const BoundContext&, const Vertex*, int);
-template bool fast_adaptive_certain<4>(const Mapper&, const PolygonSetup&, const ClipRect&, const Texture&, Axis);
-template bool fast_adaptive_certain<8>(const Mapper&, const PolygonSetup&, const ClipRect&, const Texture&, Axis);
+template bool fast_adaptive_certain<4>(const PolygonSetup&, const ClipRect&, const Texture&, Axis);
+template bool fast_adaptive_certain<8>(const PolygonSetup&, const ClipRect&, const Texture&, Axis);
 template Axis fast_oriented_walker<4>(const PolygonSetup&, const ClipRect&);
 template SetupStatus fast_oriented_draw<4>(const DrawContext&, const Vertex*, int);
 template ErrorBound fast_oriented_bound<4>(const BoundContext&, const Vertex*, int);

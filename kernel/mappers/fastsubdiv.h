@@ -81,10 +81,11 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
 // planes' terms at the corners as the spread evaluates them, |t| at most P's terms over Q's least,
 // the reference's rounding and the range of t from those (docs/accuracy.md, "fast-adaptive's
 // certificate"). Then fast_adaptive_bound<QUARTERS> is within B (tested), so auto may take the
-// mapper unasked. `m` (fast-adaptive-B) takes the texture (mapper_accepts: what choose_mapper's
-// candidates do). About 550 instructions (32-bit host, callgrind) against the spread's 1100.
+// mapper unasked. The caller's to ensure fast-adaptive-B takes the texture (mapper_accepts: what
+// choose_mapper's candidates do). About 550 instructions (32-bit host, callgrind) against the
+// spread's 1100.
 template <int QUARTERS>
-bool fast_adaptive_certain(const Mapper& m, const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis);
+bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis);
 
 // fast-oriented-B: fast-adaptive-B, each polygon along the walker where 1/w changes least for
 // the lines it costs (walls by columns, floors and ceilings by rows, and between them whichever

@@ -281,8 +281,8 @@ TEST(Bounds, FastAdaptiveCertificateImpliesItsBound) {
             const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns");
             Texture clamped = tex;
             clamped.wrap = Wrap::Clamp;
-            EXPECT_FALSE(fast_adaptive_certain<4>(m, s, clip, clamped, axis)) << what << ": a clamped texture";
-            if (!fast_adaptive_certain<4>(m, s, clip, tex, axis)) {
+            EXPECT_FALSE(fast_adaptive_certain<4>(s, clip, clamped, axis)) << what << ": a clamped texture";
+            if (!fast_adaptive_certain<4>(s, clip, tex, axis)) {
                 refused_inside += inside, outside += !inside;
                 continue;
             }

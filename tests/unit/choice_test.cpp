@@ -126,7 +126,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 // with its proof, else only a cheaper proven one is chosen
                 const bool one = b.max_error >= 1 && b.max_error < 2;
                 const Axis walker = surface == Surface::Planar ? Axis::Columns : fast_oriented_walker<4>(setup, target.clip);
-                const bool certified = one && fast_adaptive_certain<4>(adaptive, setup, target.clip, tex, walker);
+                const bool certified = one && fast_adaptive_certain<4>(setup, target.clip, tex, walker);
                 const double estimate = certified ? estimate_cost(MAPPER_COSTS[&oriented - MAPPERS], sizes[int(walker)]) : 1e300;
                 double chosen, slack = 0;
                 if (c.mapper == &oriented) {
