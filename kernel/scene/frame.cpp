@@ -28,18 +28,6 @@ void project(const P& p, Fixed24_8* x, Fixed24_8* y) {
     *y = snap(120.0 - 120.0 * (p.y / p.w));
 }
 
-// Twice the signed area of a face in clip space, as seen from the eye: the sum over its fan of
-// det[A, B, C] with rows (x, y, w). Positive: the face's front (counter-clockwise in a right-handed
-// world) is toward the eye, for any w, so faces reaching behind the eye are culled correctly too.
-double facing(const ClipPoint* const* c, int n) {
-    double sum = 0;
-    for (int k = 1; k + 1 < n; ++k) {
-        const ClipPoint &a = *c[0], &b = *c[k], &d = *c[k + 1];
-        sum += (a.x * (b.y * d.w - b.w * d.y) - a.y * (b.x * d.w - b.w * d.x)) + a.w * (b.x * d.y - b.y * d.x);
-    }
-    return sum;
-}
-
 // Signed distance to clip plane `plane` (inside: >= 0).
 double distance(const ClipVertex& p, int plane, double near, double far) {
     switch (plane) {
@@ -239,8 +227,12 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
     const View view = View::of(world.camera, time);
     const double near = world.camera.near, far = world.camera.far;
 
-    // every object's positions in clip space; every face that might show, with its depth
+    // every face that might show, with its depth: culled first, by its plane and the eye in its
+    // mesh's coordinates (the sign of the eye's distance from the plane: a scale is positive, so the
+    // placement keeps the front), and only then its corners in clip space, each position
+    // transformed and projected at its first use in the frame (a face culled needs none of them)
     int32_t first_position[MAX_WORLD_OBJECTS];
+    constexpr uint8_t UNSEEN = 0xFF;  // an outcode no position has: not yet transformed (codes are 6 bits)
     int32_t used = 0, entries = 0;
     for (int32_t o = 0; o < world.object_count; ++o) {
         const Object& object = world.objects[o];
@@ -254,36 +246,41 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         }
         first_position[o] = used;
         const Placement place = Placement::of(object, time);
-        double nearest = far;  // the least w of a position inside every plane (the corners of uncut faces)
-        for (int32_t i = 0; i < mesh.position_count; ++i) {
-            const ClipPoint p = view.clip(place.apply(world.positions[mesh.first_position + i]));
-            const uint8_t code = outcode(p, near, far);
-            scratch->positions[used + i] = p;
-            scratch->outcodes[used + i] = code;
-            // projected once here rather than at every corner that shares it (faces inside every
-            // plane take their corners from here; a clipped face's corners are projected below)
-            if (code == 0) {
-                project(p, &scratch->screen_x[used + i], &scratch->screen_y[used + i]);
-                nearest = p.w < nearest ? p.w : nearest;
-            }
-        }
-        f.envelope[o] = envelope_bound(object_envelope(world, o, place, view, nearest));
+        const Vec3 eye = place.unapply(view.eye);
+        const bool cull = object.cull == Cull::Back;
+        // the object's positions in the scratch arrays by their index in the world
+        const int32_t base = used - mesh.first_position;
+        ClipPoint* positions = scratch->positions + base;
+        uint8_t* codes = scratch->outcodes + base;
+        Fixed24_8 *screen_x = scratch->screen_x + base, *screen_y = scratch->screen_y + base;
+        __builtin_memset(scratch->outcodes + used, UNSEEN, size_t(mesh.position_count));
         used += mesh.position_count;
+        double nearest = far;  // the least w of a position inside every plane (the corners of uncut faces)
         for (int32_t k = 0; k < mesh.face_count; ++k) {
             const Face& face = world.faces[mesh.first_face + k];
-            const ClipPoint* c[MAX_FACE_CORNERS];  // (pointers: a copy of each corner cost 40 instructions)
+            if (cull && !(dot(face.normal, eye) > face.offset)) {
+                ++f.stats.culled;
+                continue;
+            }
             uint8_t all = 0x3F, any = 0;  // planes every corner is outside; planes some corner is
             double depth = 0;
             for (int32_t i = 0; i < face.count; ++i) {
-                int32_t at = first_position[o] + world.corners[face.first_corner + i].position - mesh.first_position;
-                c[i] = &scratch->positions[at];
-                depth += c[i]->w;
-                all &= scratch->outcodes[at];
-                any |= scratch->outcodes[at];
-            }
-            if (object.cull == Cull::Back && !(facing(c, face.count) > 0)) {
-                ++f.stats.culled;
-                continue;
+                const int32_t at = world.corners[face.first_corner + i].position;
+                if (codes[at] == UNSEEN) {
+                    const ClipPoint p = view.clip(place.apply(world.positions[at]));
+                    positions[at] = p;
+                    codes[at] = outcode(p, near, far);
+                    // projected once here rather than at every corner that shares it (faces inside
+                    // every plane take their corners from here; a clipped face's corners are
+                    // projected below)
+                    if (codes[at] == 0) {
+                        project(p, &screen_x[at], &screen_y[at]);
+                        nearest = p.w < nearest ? p.w : nearest;
+                    }
+                }
+                depth += positions[at].w;
+                all &= codes[at];
+                any |= codes[at];
             }
             if (all) {
                 ++f.stats.outside;
@@ -295,6 +292,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             }
             scratch->entries[entries++] = FrameScratch::Entry{depth / face.count, o, k, any != 0};
         }
+        f.envelope[o] = envelope_bound(object_envelope(world, o, place, view, nearest));
     }
     const int32_t* order = painter_order(scratch, entries);
 

@@ -102,13 +102,21 @@ struct Placement {
     Vec3 position;
     static Placement of(const Object& object, double time);
     Vec3 apply(Vec3 p) const { return rotation.apply(scale * p) + position; }
+    // A world point in the mesh's coordinates: apply's inverse (the rotation's transpose as its
+    // inverse, within roundings).
+    Vec3 unapply(Vec3 p) const {
+        const Vec3 d = p - position;
+        const double(&m)[3][3] = rotation.m;
+        return (1 / scale) * Vec3{(m[0][0] * d.x + m[1][0] * d.y) + m[2][0] * d.z, (m[0][1] * d.x + m[1][1] * d.y) + m[2][1] * d.z,
+                                  (m[0][2] * d.x + m[1][2] * d.y) + m[2][2] * d.z};
+    }
 };
 
 void build_frame(const World& world, int32_t frame, Frame* out, FrameScratch* scratch);
 
 // The object's envelope in a frame (TriangleEnvelope, docs/accuracy.md "The object's envelope"):
-// its mesh's measures at its placement, `nearest` the least w of its positions inside every clip
-// plane.
+// its mesh's measures at its placement, `nearest` at most the least w of the positions inside every
+// clip plane that are corners of its faces drawn (build_frame: those of the faces not culled).
 TriangleEnvelope object_envelope(const World& world, int32_t object, const Placement& place, const View& view, double nearest);
 
 // Clips a convex polygon (in clip space) against the view volume: w >= near, w <= far,

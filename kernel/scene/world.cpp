@@ -179,7 +179,7 @@ bool face_line(Parser& p, const StrView* w, size_t n) {
                               .u(uint32_t(m.position_count)).s(") and vt (1..").u(uint32_t(m.uv_count)).s(") lines so far"));
         world.corners[world.corner_count + int32_t(k)] = Corner{m.first_position + v - 1, m.first_uv + t - 1};
     }
-    world.faces[world.face_count++] = Face{world.corner_count, int32_t(corners)};
+    world.faces[world.face_count++] = Face{world.corner_count, int32_t(corners), Vec3{}, 0};  // (its plane: measure_mesh)
     world.corner_count += int32_t(corners);
     ++m.face_count;
     return true;
@@ -277,9 +277,21 @@ bool camera_line(Parser& p, const StrView* w, size_t n) {
     return p.fail(Fmt().s("unknown line '").s(w[0]).s("' in the camera (position, target, up, fov, near, far, key, end)"));
 }
 
-// The mesh's measures for the envelope (Mesh): over its triangles, and its positions.
-void measure_mesh(const World& world, Mesh* m) {
+// The mesh's measures for the envelope (Mesh): over its triangles, and its positions; and each
+// face's plane (Face).
+void measure_mesh(World& world, Mesh* m) {
     m->measured = true;
+    for (int32_t k = 0; k < m->face_count; ++k) {
+        Face& face = world.faces[m->first_face + k];
+        const Corner* c = world.corners + face.first_corner;
+        Vec3 n;
+        for (int32_t i = 0; i < face.count; ++i) {
+            const Vec3 a = world.positions[c[i].position], b = world.positions[c[i + 1 < face.count ? i + 1 : 0].position];
+            n.x += (a.y - b.y) * (a.z + b.z), n.y += (a.z - b.z) * (a.x + b.x), n.z += (a.x - b.x) * (a.y + b.y);
+        }
+        face.normal = n;
+        face.offset = dot(n, world.positions[c[0].position]);
+    }
     for (int32_t i = 0; i < m->position_count; ++i) m->radius = larger(m->radius, length(world.positions[m->first_position + i]));
     for (int32_t k = 0; k < m->face_count; ++k) {
         const Face& face = world.faces[m->first_face + k];

@@ -60,10 +60,14 @@ struct Mesh {
 };
 
 // A convex planar face: `count` corners from `first_corner` on, counter-clockwise seen from its
-// front (right-handed, the OBJ convention).
+// front (right-handed, the OBJ convention). Its plane in its mesh's coordinates, measured once the
+// mesh is read (measure_mesh): `normal` (Newell's, toward the front; not unit) and `offset`, the
+// normal's product with the first corner: a point p lies in front where dot(normal, p) > offset.
 struct Face {
     int32_t first_corner = 0;
     int32_t count = 0;
+    Vec3 normal;
+    double offset = 0;
 };
 
 struct Corner {
