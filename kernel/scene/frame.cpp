@@ -324,16 +324,24 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             continue;
         }
         Vertex* corners = f.vertices + f.vertex_count;
-        for (int i = 0; i < n; ++i) {
-            if (entry.cut) {
+        if (entry.cut) {
+            for (int i = 0; i < n; ++i) {
                 const ClipVertex& p = clipped[i];
                 corners[i] = Vertex{{}, {}, p.w, p.u, p.v};
                 project(p, &corners[i].x, &corners[i].y);
-            } else {  // its corners as projected above
-                const Corner& corner = world.corners[face.first_corner + i];
-                const int32_t at = base + corner.position;
-                corners[i] = Vertex{scratch->screen_x[at], scratch->screen_y[at], scratch->positions[at].w,
-                                    world.uvs[corner.uv].u * texture.width, world.uvs[corner.uv].v * texture.height};
+            }
+        } else {  // its corners as projected above
+            const Corner* corner = world.corners + face.first_corner;
+            const double width = texture.width, height = texture.height;
+            const Fixed24_8 *screen_x = scratch->screen_x + base, *screen_y = scratch->screen_y + base;
+            const ClipPoint* positions = scratch->positions + base;
+            for (int i = 0; i < n; ++i) {
+                const int32_t at = corner[i].position;
+                const TexCoord& uv = world.uvs[corner[i].uv];
+                Vertex& v = corners[i];
+                v.x = screen_x[at], v.y = screen_y[at];
+                v.w = positions[at].w;
+                v.u = uv.u * width, v.v = uv.v * height;
             }
         }
         f.polygon_size[f.polygon_count] = uint8_t(n);
