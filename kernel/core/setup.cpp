@@ -182,13 +182,6 @@ bool vertices_in_range(const Vertex* vertices, int count) {
     return true;
 }
 
-SetupStatus setup_polygon(const Vertex* in, int count, PolygonSetup* out, SetupPlanes planes, Input input) {
-#if defined(MODEXLAB_ASM_LOOPS)
-    if (count == 3 && planes == PLANES_AFFINE && input == Input::InRange && setup_triangle_affine_asm(in, out)) return SetupStatus::Ok;
-#endif
-    return setup_polygon_cpp(in, count, out, planes, input);
-}
-
 SetupStatus setup_polygon_cpp(const Vertex* in, int count, PolygonSetup* out, SetupPlanes planes, Input input) {
     if (count > MAX_POLYGON_VERTICES) return SetupStatus::TooManyVertices;
     if (count < 3) return SetupStatus::Degenerate;

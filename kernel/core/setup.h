@@ -110,18 +110,26 @@ enum class Input : uint8_t { Any, InRange };
 // Whether every vertex is within the limits above (NaN and infinities are not).
 bool vertices_in_range(const Vertex* vertices, int count);
 
-// Orients the polygon, drops repeated vertices, checks range (unless the input is InRange) and
-// convexity, builds the edges and the planes. Any input is safe: on anything but Ok, `out` must
-// not be drawn.
-SetupStatus setup_polygon(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL, Input input = Input::Any);
-// The same in C++ alone. Where the NASM loops are built in (the kernel, the 32-bit host
-// programs), setup_polygon takes a triangle in range with affine planes only (the fast mappers' on
-// a frame's uncut faces) through setup_triangle_affine_asm (asm/fast.asm), whose twin this is:
-// it writes the same fields with the same bits, or returns 0 and leaves the triangle to C++.
+// setup_polygon's work in C++ alone (what setup_polygon below does with every polygon the NASM
+// routine does not take).
 SetupStatus setup_polygon_cpp(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL, Input input = Input::Any);
 #if defined(MODEXLAB_ASM_LOOPS)
 extern "C" int setup_triangle_affine_asm(const Vertex* in, PolygonSetup* out);
 #endif
+
+// Orients the polygon, drops repeated vertices, checks range (unless the input is InRange) and
+// convexity, builds the edges and the planes. Any input is safe: on anything but Ok, `out` must
+// not be drawn. Where the NASM loops are built in (the kernel, the 32-bit host programs), a
+// triangle in range with affine planes only (the fast mappers' on a frame's uncut faces) goes
+// through setup_triangle_affine_asm (asm/fast.asm), whose twin setup_polygon_cpp is: it writes the
+// same fields with the same bits, or returns 0 and leaves the triangle to C++. (Inline: the fast
+// drivers' calls, their planes and input known, go straight to the NASM.)
+inline SetupStatus setup_polygon(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL, Input input = Input::Any) {
+#if defined(MODEXLAB_ASM_LOOPS)
+    if (count == 3 && planes == PLANES_AFFINE && input == Input::InRange && setup_triangle_affine_asm(vertices, out)) return SetupStatus::Ok;
+#endif
+    return setup_polygon_cpp(vertices, count, out, planes, input);
+}
 
 // Whether the pixel centre (x + 0.5, y + 0.5) is inside: the definition the walkers implement.
 bool covers(const PolygonSetup& s, int32_t x, int32_t y);
