@@ -10,7 +10,7 @@ namespace {
 // `setup`: the polygon set up already (every plane, for a mapper without its own driver), or
 // nullptr; `walked`: its spans along the axis when auto walked them (count below 0: not), or
 // nullptr. `input`: as setup.h says, for the setup done here or by the mapper's driver.
-SetupStatus draw_with(const Drawer& d, const Vertex* vertices, int count, const PolygonSetup* setup, const PreparedSpans* walked,
+[[gnu::always_inline]] inline SetupStatus draw_with(const Drawer& d, const Vertex* vertices, int count, const PolygonSetup* setup, const PreparedSpans* walked,
                       Input input) {
     RenderStats* stats = d.stats;
     if (!d.usable) {
