@@ -53,41 +53,6 @@ void EdgeBound::init(I m, I divisor, I increment) {
     dr = uint32_t(increment) - uint32_t(dq) * d;
 }
 
-EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) : axis_(axis) {
-    const bool rows = axis == Axis::Rows;
-    // (the box is within setup's range, 2^22 subpixels: 32 bits hold it and its sides)
-    const int32_t min_x = int32_t(s.min_x), min_y = int32_t(s.min_y), max_x = int32_t(s.max_x), max_y = int32_t(s.max_y);
-    // lines whose centre lies within the bounding box, inside the clip rectangle
-    int32_t first = first_line(rows ? min_y : min_x);
-    int32_t last = last_line(rows ? max_y : max_x);
-    const int32_t clip_lo = rows ? clip.y0 : clip.x0, clip_hi = (rows ? clip.y1 : clip.x1) - 1;
-    if (first < clip_lo) first = clip_lo;
-    if (last > clip_hi) last = clip_hi;
-    minor_lo_ = rows ? clip.x0 : clip.y0;
-    minor_hi_ = (rows ? clip.x1 : clip.y1) - 1;
-    line_ = first;
-    last_line_ = first - 1;  // empty (and the bounds never looked at) until proven otherwise
-    if (first > last) return;
-    // A polygon whose box is under 64 pixels a side is walked in 32 bits, its coordinates taken
-    // from the pixel corner at or below its box (every product and numerator below 2^30; on i686
-    // 64-bit products and divisions are several instructions or a libgcc call each). The bounds
-    // come out the same: moving the polygon and the pixel grid by whole pixels moves each bound's
-    // quotient by as many pixels and leaves its remainder.
-    constexpr int32_t SMALL = 64 << SUBPIXEL_BITS;
-    // (a triangle by its own build: most polygons of a mesh are small triangles)
-    if (max_x - min_x < SMALL && max_y - min_y < SMALL) {
-        const int32_t ox = min_x >> SUBPIXEL_BITS, oy = min_y >> SUBPIXEL_BITS;  // (floors)
-        if (s.edge_count == 3 && rows)
-            build_triangle<true>(s, first, last, ox, oy);
-        else if (s.edge_count == 3)
-            build_triangle<false>(s, first, last, ox, oy);
-        else
-            build<int32_t>(s, first, last, ox, oy);
-    } else {
-        build<int64_t>(s, first, last, 0, 0);
-    }
-}
-
 template <typename I>
 void EdgeWalker::build(const PolygonSetup& s, I first, I last, int64_t origin_x, int64_t origin_y) {
     const int edges = s.edge_count;
@@ -280,5 +245,11 @@ void EdgeWalker::build_triangle(const PolygonSetup& s, int32_t first, int32_t la
 #endif
     if (triangle_bounds<ROWS>(s.edges, &first, &last, origin_x, origin_y, lower_, upper_)) line_ = first, last_line_ = last;
 }
+
+// (the constructor, inline in walk.h, takes these)
+template void EdgeWalker::build<int32_t>(const PolygonSetup&, int32_t, int32_t, int64_t, int64_t);
+template void EdgeWalker::build<int64_t>(const PolygonSetup&, int64_t, int64_t, int64_t, int64_t);
+template void EdgeWalker::build_triangle<true>(const PolygonSetup&, int32_t, int32_t, int32_t, int32_t);
+template void EdgeWalker::build_triangle<false>(const PolygonSetup&, int32_t, int32_t, int32_t, int32_t);
 
 }  // namespace raster
