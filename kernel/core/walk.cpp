@@ -246,7 +246,12 @@ void EdgeWalker::build_triangle(const PolygonSetup& s, int32_t first, int32_t la
     if (triangle_bounds<ROWS>(s.edges, &first, &last, origin_x, origin_y, lower_, upper_)) line_ = first, last_line_ = last;
 }
 
-// (the constructor, inline in walk.h, takes these)
+EdgeWalker::EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) : axis_(axis) {
+    if (axis == Axis::Rows) init<true>(s, clip);
+    else init<false>(s, clip);
+}
+
+// (the inline constructor takes these)
 template void EdgeWalker::build<int32_t>(const PolygonSetup&, int32_t, int32_t, int64_t, int64_t);
 template void EdgeWalker::build<int64_t>(const PolygonSetup&, int64_t, int64_t, int64_t, int64_t);
 template void EdgeWalker::build_triangle<true>(const PolygonSetup&, int32_t, int32_t, int32_t, int32_t);

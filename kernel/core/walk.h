@@ -57,43 +57,14 @@ extern "C" int triangle_rows_asm(const TriangleRowsArgs* a);
 
 class EdgeWalker {
 public:
-    // (Inline: a driver's walker, its axis known, costs no call and no test of the axis.)
-    EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip) : axis_(axis) {
-        const bool rows = axis == Axis::Rows;
-        // (the box is within setup's range, 2^22 subpixels: 32 bits hold it and its sides)
-        const int32_t min_x = int32_t(s.min_x), min_y = int32_t(s.min_y), max_x = int32_t(s.max_x), max_y = int32_t(s.max_y);
-        // lines whose centre lies within the bounding box (the first at or after its low side, the
-        // last at or before its high side: ceil and floor of (p - 128) / 256, as arithmetic shifts),
-        // inside the clip rectangle
-        constexpr int32_t HALF = int32_t(SUBPIXEL_HALF), ONE = int32_t(SUBPIXEL_ONE);
-        int32_t first = ((rows ? min_y : min_x) - HALF + ONE - 1) >> SUBPIXEL_BITS;
-        int32_t last = ((rows ? max_y : max_x) - HALF) >> SUBPIXEL_BITS;
-        const int32_t clip_lo = rows ? clip.y0 : clip.x0, clip_hi = (rows ? clip.y1 : clip.x1) - 1;
-        if (first < clip_lo) first = clip_lo;
-        if (last > clip_hi) last = clip_hi;
-        minor_lo_ = rows ? clip.x0 : clip.y0;
-        minor_hi_ = (rows ? clip.x1 : clip.y1) - 1;
-        line_ = first;
-        last_line_ = first - 1;  // empty (and the bounds never looked at) until proven otherwise
-        if (first > last) return;
-        // A polygon whose box is under 64 pixels a side is walked in 32 bits, its coordinates taken
-        // from the pixel corner at or below its box (every product and numerator below 2^30; on
-        // i686 64-bit products and divisions are several instructions or a libgcc call each). The
-        // bounds come out the same: moving the polygon and the pixel grid by whole pixels moves
-        // each bound's quotient by as many pixels and leaves its remainder.
-        constexpr int32_t SMALL = 64 << SUBPIXEL_BITS;
-        // (a triangle by its own build: most polygons of a mesh are small triangles)
-        if (max_x - min_x < SMALL && max_y - min_y < SMALL) {
-            const int32_t ox = min_x >> SUBPIXEL_BITS, oy = min_y >> SUBPIXEL_BITS;  // (floors)
-            if (s.edge_count == 3 && rows)
-                build_triangle<true>(s, first, last, ox, oy);
-            else if (s.edge_count == 3)
-                build_triangle<false>(s, first, last, ox, oy);
-            else
-                build<int32_t>(s, first, last, ox, oy);
-        } else {
-            build<int64_t>(s, first, last, 0, 0);
-        }
+    EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip);
+    // The same with the axis known where it is written: inline, no call and no test of the axis (a
+    // fast driver's walker; the constructor above is this out of line).
+    template <Axis AXIS>
+    struct Along {};
+    template <Axis AXIS>
+    EdgeWalker(const PolygonSetup& s, Along<AXIS>, const ClipRect& clip) : axis_(AXIS) {
+        init<AXIS == Axis::Rows>(s, clip);
     }
 
     // The next non-empty span, in increasing row (or column) order; false when done. (Inline: it
@@ -141,6 +112,46 @@ public:
 
 private:
     using Bound = EdgeBound;
+    // The constructors' work.
+    template <bool ROWS>
+    void init(const PolygonSetup& s, const ClipRect& clip) {
+        constexpr bool rows = ROWS;
+        // (the box is within setup's range, 2^22 subpixels: 32 bits hold it and its sides)
+        const int32_t min_x = int32_t(s.min_x), min_y = int32_t(s.min_y), max_x = int32_t(s.max_x), max_y = int32_t(s.max_y);
+        // lines whose centre lies within the bounding box (the first at or after its low side, the
+        // last at or before its high side: ceil and floor of (p - 128) / 256, as arithmetic shifts),
+        // inside the clip rectangle
+        constexpr int32_t HALF = int32_t(SUBPIXEL_HALF), ONE = int32_t(SUBPIXEL_ONE);
+        int32_t first = ((rows ? min_y : min_x) - HALF + ONE - 1) >> SUBPIXEL_BITS;
+        int32_t last = ((rows ? max_y : max_x) - HALF) >> SUBPIXEL_BITS;
+        const int32_t clip_lo = rows ? clip.y0 : clip.x0, clip_hi = (rows ? clip.y1 : clip.x1) - 1;
+        if (first < clip_lo) first = clip_lo;
+        if (last > clip_hi) last = clip_hi;
+        minor_lo_ = rows ? clip.x0 : clip.y0;
+        minor_hi_ = (rows ? clip.x1 : clip.y1) - 1;
+        line_ = first;
+        last_line_ = first - 1;  // empty (and the bounds never looked at) until proven otherwise
+        if (first > last) return;
+        // A polygon whose box is under 64 pixels a side is walked in 32 bits, its coordinates taken
+        // from the pixel corner at or below its box (every product and numerator below 2^30; on
+        // i686 64-bit products and divisions are several instructions or a libgcc call each). The
+        // bounds come out the same: moving the polygon and the pixel grid by whole pixels moves
+        // each bound's quotient by as many pixels and leaves its remainder.
+        constexpr int32_t SMALL = 64 << SUBPIXEL_BITS;
+        // (a triangle by its own build: most polygons of a mesh are small triangles)
+        if (max_x - min_x < SMALL && max_y - min_y < SMALL) {
+            const int32_t ox = min_x >> SUBPIXEL_BITS, oy = min_y >> SUBPIXEL_BITS;  // (floors)
+            if (s.edge_count == 3 && rows)
+                build_triangle<true>(s, first, last, ox, oy);
+            else if (s.edge_count == 3)
+                build_triangle<false>(s, first, last, ox, oy);
+            else
+                build<int32_t>(s, first, last, ox, oy);
+        } else {
+            build<int64_t>(s, first, last, 0, 0);
+        }
+    }
+
     // Sorts by first line, then seals the list with a sentinel that is never live and never binds.
     static void seal(Bound* list, int32_t count, int32_t never);
     // The bounds of lines first..last (clipped), in integers of type I, coordinates taken relative

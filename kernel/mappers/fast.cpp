@@ -72,7 +72,7 @@ template <bool TABLE>
     const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
     if (c.tex.wrap == Wrap::Clamp && !reads_inside(s, c.tex, c.target.clip, TABLE ? 1 : 0)) return SetupStatus::Unsupported;
-    EdgeWalker walker(s, Axis::Rows, c.target.clip);
+    EdgeWalker walker(s, EdgeWalker::Along<Axis::Rows>{}, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
     int32_t table_x = 0;  // fast-table: the pixel its offsets start at, at or left of every span's first
@@ -151,7 +151,7 @@ template <bool TABLE>
     const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
     if (c.tex.wrap == Wrap::Clamp && !reads_inside(s, c.tex, c.target.clip, TABLE ? 1 : 0)) return SetupStatus::Unsupported;
-    EdgeWalker walker(s, Axis::Columns, c.target.clip);
+    EdgeWalker walker(s, EdgeWalker::Along<Axis::Columns>{}, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
     if constexpr (TABLE) {
