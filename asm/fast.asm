@@ -346,8 +346,8 @@ T_OMAJ    equ 0                         ; origin_y * 256
 T_OMIN    equ 4                         ; origin_x * 256
 T_FIRST   equ 8                         ; the rows, relative to origin_y
 T_LAST    equ 12
-T_NLOWER  equ 16                        ; bounds in each chain so far
-T_NUPPER  equ 20
+T_LOWER   equ 16                        ; where each chain's next bound goes
+T_UPPER   equ 20
 T_FRAME   equ 24
 
 ; one edge: esi the edges, ebp the block
@@ -376,23 +376,18 @@ T_FRAME   equ 24
     ; its place: going up (dy < 0) a lower bound, down an upper one
     test ebx, ebx
     js %%lower
-    mov edi, [esp + T_NUPPER]
-    inc dword [esp + T_NUPPER]
-    imul edi, edi, BOUND_SIZE
-    add edi, [ebp + TRI_upper]
+    mov edi, [esp + T_UPPER]
+    add dword [esp + T_UPPER], BOUND_SIZE
     jmp %%placed
 %%lower:
-    mov edi, [esp + T_NLOWER]
-    inc dword [esp + T_NLOWER]
-    imul edi, edi, BOUND_SIZE
-    add edi, [ebp + TRI_lower]
+    mov edi, [esp + T_LOWER]
+    add dword [esp + T_LOWER], BOUND_SIZE
 %%placed:
-    push edx
-    add edx, [ebp + TRI_origin_y]
-    mov [edi + BOUND_first], edx
     add ecx, [ebp + TRI_origin_y]
     mov [edi + BOUND_last], ecx
-    pop edx
+    mov ecx, edx
+    add ecx, [ebp + TRI_origin_y]
+    mov [edi + BOUND_first], ecx
     ; B at row lo: dmin * (lo * 256 + 128 - pmaj) - dmaj * (128 - pmin)
     shl edx, 8
     add edx, 128
@@ -445,11 +440,12 @@ T_FRAME   equ 24
 %endmacro
 
 ; a chain of two in order of first row (a tie keeps their order), then its sentinel: never live,
-; never binding (q = %3); %1 the block's field for the chain, %2 the frame's count of it
+; never binding (q = %3); %1 the block's field for the chain, %2 the frame's pointer past its last
 %macro TRI_SEAL 3
     mov edi, [ebp + %1]
-    mov ecx, [esp + %2]
-    cmp ecx, 2
+    mov ecx, [esp + %2]                 ; (where the sentinel goes)
+    lea eax, [edi + 2 * BOUND_SIZE]
+    cmp ecx, eax
     jne %%sentinel
     mov eax, [edi + BOUND_first]
     cmp eax, [edi + BOUND_SIZE + BOUND_first]
@@ -463,15 +459,13 @@ T_FRAME   equ 24
 %assign off off + 4
 %endrep
 %%sentinel:
-    imul ecx, ecx, BOUND_SIZE
-    add edi, ecx
-    mov dword [edi + BOUND_first], 0x7FFFFFFF
-    mov dword [edi + BOUND_last], 0x7FFFFFFF
-    mov dword [edi + BOUND_q], %3
-    mov dword [edi + BOUND_dq], 0
-    mov dword [edi + BOUND_r], 0
-    mov dword [edi + BOUND_dr], 0
-    mov dword [edi + BOUND_d], 1
+    mov dword [ecx + BOUND_first], 0x7FFFFFFF
+    mov dword [ecx + BOUND_last], 0x7FFFFFFF
+    mov dword [ecx + BOUND_q], %3
+    mov dword [ecx + BOUND_dq], 0
+    mov dword [ecx + BOUND_r], 0
+    mov dword [ecx + BOUND_dr], 0
+    mov dword [ecx + BOUND_d], 1
 %endmacro
 
 global triangle_rows_asm
@@ -486,8 +480,10 @@ triangle_rows_asm:
     je .done
     cmp [esi + 2 * EDGE_SIZE + EDGE_dy], eax
     je .done
-    mov [esp + T_NLOWER], eax
-    mov [esp + T_NUPPER], eax
+    mov eax, [ebp + TRI_lower]
+    mov [esp + T_LOWER], eax
+    mov eax, [ebp + TRI_upper]
+    mov [esp + T_UPPER], eax
     mov eax, [ebp + TRI_origin_y]
     mov edx, [ebp + TRI_first]
     sub edx, eax
@@ -503,8 +499,8 @@ triangle_rows_asm:
     TRI_EDGE 0
     TRI_EDGE 1
     TRI_EDGE 2
-    TRI_SEAL TRI_lower, T_NLOWER, 0x80000000
-    TRI_SEAL TRI_upper, T_NUPPER, 0x7FFFFFFF
+    TRI_SEAL TRI_lower, T_LOWER, 0x80000000
+    TRI_SEAL TRI_upper, T_UPPER, 0x7FFFFFFF
     mov eax, 1
 .done:
     LOOP_LEAVE T_FRAME
@@ -542,10 +538,10 @@ S_FRAME   equ 48
 %%done:
 %endmacro
 
-; FixedN<16>::from_double(st0 * 256) into eax, st0 popped (the 32-bit path; else to .refuse_pop)
+; FixedN<16>::from_double(st0 * 256) into eax, st0 popped (the 32-bit path; else to .refuse_pop);
+; the two scalings, by 256 and by 65536, as one by 2^24 (powers of two: the same product, exactly)
 %macro FIXED_16_16_PER_PIXEL 0
-    fmul qword [c_256]
-    fmul qword [c_65536]
+    fmul qword [c_2_24]
     fadd qword [c_half]
     fld st0
     fabs
@@ -684,27 +680,8 @@ setup_triangle_affine_asm:
     LOOP_ENTER S_FRAME
     mov esi, LOOP_ARG(S_FRAME)          ; in
     mov ebp, [esp + S_FRAME + 24]       ; out
-    ; a corner repeated: degenerate (C++ says so)
-    mov eax, [esi + VERT_x]
-    mov edx, [esi + VERT_y]
-    cmp eax, [esi + VERT_SIZE + VERT_x]
-    jne .one_two
-    cmp edx, [esi + VERT_SIZE + VERT_y]
-    je .refuse
-.one_two:
-    cmp eax, [esi + 2 * VERT_SIZE + VERT_x]
-    jne .two_three
-    cmp edx, [esi + 2 * VERT_SIZE + VERT_y]
-    je .refuse
-.two_three:
-    mov eax, [esi + VERT_SIZE + VERT_x]
-    cmp eax, [esi + 2 * VERT_SIZE + VERT_x]
-    jne .area
-    mov eax, [esi + VERT_SIZE + VERT_y]
-    cmp eax, [esi + 2 * VERT_SIZE + VERT_y]
-    je .refuse
-.area:
-    ; twice the signed area, (b - a) x (c - a), in 64 bits; clockwise (y down) when positive
+    ; twice the signed area, (b - a) x (c - a), in 64 bits; clockwise (y down) when positive. A
+    ; corner repeated makes it exactly 0, refused below as no area (C++ says degenerate).
     mov ecx, [esi + VERT_x]
     mov ebx, [esi + VERT_y]
     mov eax, [esi + VERT_SIZE + VERT_x]
@@ -778,7 +755,7 @@ setup_triangle_affine_asm:
 
 section .rodata
 align 8
-c_256:          dq 256.0
+c_2_24:         dq 16777216.0
 c_65536:        dq 65536.0
 c_half:         dq 0.5
 c_small_floor:  dq 2147483647.0

@@ -38,7 +38,9 @@ TEST(SetupTriangle, NasmMatchesTheTwinBitForBit) {
             v[1] = Vertex{Fixed24_8::from_double(x0 + legs), Fixed24_8::from_double(y0), 1, u0 + step(), v0 + step()};
             v[2] = Vertex{Fixed24_8::from_double(x0), Fixed24_8::from_double(y0 + legs), 1, u0 + step(), v0 + step()};
         }
-        if (n % 50 == 0) v[2] = v[0];                                           // a corner repeated
+        if (n % 50 == 0) v[2] = v[0];                                           // a corner repeated,
+        if (n % 50 == 17) v[1] = v[0];                                          // each pair of them
+        if (n % 50 == 33) v[2] = v[1];
         if (n % 51 == 0) v[2].x.raw = 2 * v[1].x.raw - v[0].x.raw, v[2].y.raw = 2 * v[1].y.raw - v[0].y.raw;  // on a line
         if (!vertices_in_range(v, 3)) continue;
         PolygonSetup a, b;
