@@ -5,37 +5,37 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1087.3f, 343.82f, 40.365f}, // 10 scenes
-    {"exact", 1024.6f, 311.23f, 80.336f}, // 10 scenes
-    {"persp-subdiv-4", 1024.6f, 316.63f, 91.400f}, // 10 scenes
-    {"persp-subdiv-8", 1024.6f, 371.38f, 59.532f}, // 10 scenes
-    {"persp-subdiv-16", 1024.6f, 410.41f, 43.464f}, // 10 scenes
-    {"persp-subdiv-32", 1024.6f, 430.85f, 35.612f}, // 10 scenes
-    {"constant-depth", 1024.6f, 447.16f, 29.835f}, // 10 scenes
-    {"persp-adaptive-0.5", 1024.6f, 829.53f, 316.399f}, // 10 scenes
-    {"persp-adaptive-1", 1024.6f, 995.77f, 51.397f}, // 10 scenes
-    {"persp-adaptive-2", 1024.6f, 1012.63f, 44.238f}, // 10 scenes
-    {"persp-adaptive-4", 1024.6f, 1024.60f, 40.062f}, // 10 scenes
-    {"fast-affine", 1139.3f, 158.13f, 4.048f}, // 10 scenes
-    {"fast-table", 1330.3f, 144.27f, 0.992f}, // 10 scenes
-    {"fast-columns", 1212.7f, 253.69f, 5.567f}, // 10 scenes
-    {"fast-table-columns", 1403.9f, 250.85f, 2.717f}, // 10 scenes
-    {"fast-subdiv-8", 1024.6f, 292.37f, 13.611f}, // 10 scenes
-    {"fast-subdiv-16", 1024.6f, 302.14f, 9.687f}, // 10 scenes
-    {"fast-subdiv-32", 1024.6f, 306.99f, 7.787f}, // 10 scenes
-    {"fast-constant-depth", 1024.6f, 311.34f, 6.228f}, // 10 scenes
-    {"fast-adaptive-1", 1024.6f, 334.65f, 9.369f}, // 10 scenes
-    {"fast-adaptive-2", 1024.6f, 338.24f, 7.944f}, // 10 scenes
-    {"fast-oriented-1", 1208.3f, 362.77f, 7.361f}, // 10 scenes
-    {"xsharp-dda", 1546.0f, 379.44f, 37.994f}, // 9 scenes
-    {"xsharp-row-out", 1546.0f, 514.75f, 19.491f}, // 9 scenes
-    {"xsharp-column", 1549.7f, 486.89f, 13.229f}, // 9 scenes
-    {"hecker-steptable", 5387.8f, 0.00f, 636.437f}, // 9 scenes
-    {"fatmap-256", 1781.3f, 167.61f, 13.490f}, // 8 scenes
-    {"fatmap-256-16", 1781.3f, 172.61f, 12.490f}, // 8 scenes
-    {"fatmap-lut", 2398.1f, 171.15f, 9.883f}, // 7 scenes
-    {"quake-subdiv16", 1546.7f, 306.44f, 13.795f}, // 9 scenes
-    {"quake-subdiv8", 1546.7f, 291.07f, 20.156f}, // 9 scenes
+    {"affine", 1050.3f, 346.91f, 40.363f}, // 10 scenes
+    {"exact", 1007.0f, 314.32f, 80.334f}, // 10 scenes
+    {"persp-subdiv-4", 1007.0f, 319.72f, 91.398f}, // 10 scenes
+    {"persp-subdiv-8", 1007.0f, 374.47f, 59.530f}, // 10 scenes
+    {"persp-subdiv-16", 1007.0f, 413.51f, 43.462f}, // 10 scenes
+    {"persp-subdiv-32", 1007.0f, 433.94f, 35.610f}, // 10 scenes
+    {"constant-depth", 1007.0f, 450.25f, 29.833f}, // 10 scenes
+    {"persp-adaptive-0.5", 1007.0f, 832.63f, 316.397f}, // 10 scenes
+    {"persp-adaptive-1", 1007.0f, 998.86f, 51.395f}, // 10 scenes
+    {"persp-adaptive-2", 1007.0f, 1015.72f, 44.236f}, // 10 scenes
+    {"persp-adaptive-4", 1007.0f, 1027.69f, 40.060f}, // 10 scenes
+    {"fast-affine", 1039.4f, 156.51f, 4.080f}, // 10 scenes
+    {"fast-table", 1247.0f, 142.42f, 1.028f}, // 10 scenes
+    {"fast-columns", 1136.4f, 253.25f, 5.576f}, // 10 scenes
+    {"fast-table-columns", 1344.2f, 249.74f, 2.741f}, // 10 scenes
+    {"fast-subdiv-8", 1007.0f, 295.46f, 13.609f}, // 10 scenes
+    {"fast-subdiv-16", 1007.0f, 305.23f, 9.685f}, // 10 scenes
+    {"fast-subdiv-32", 1007.0f, 310.08f, 7.785f}, // 10 scenes
+    {"fast-constant-depth", 1007.0f, 314.43f, 6.226f}, // 10 scenes
+    {"fast-adaptive-1", 1007.0f, 337.74f, 9.367f}, // 10 scenes
+    {"fast-adaptive-2", 1007.0f, 341.33f, 7.942f}, // 10 scenes
+    {"fast-oriented-1", 1165.3f, 361.38f, 7.379f}, // 10 scenes
+    {"xsharp-dda", 1515.0f, 378.08f, 38.003f}, // 9 scenes
+    {"xsharp-row-out", 1515.0f, 513.39f, 19.501f}, // 9 scenes
+    {"xsharp-column", 1518.7f, 485.71f, 13.233f}, // 9 scenes
+    {"hecker-steptable", 5328.9f, 0.00f, 636.391f}, // 9 scenes
+    {"fatmap-256", 1726.7f, 166.05f, 13.525f}, // 8 scenes
+    {"fatmap-256-16", 1726.7f, 171.05f, 12.525f}, // 8 scenes
+    {"fatmap-lut", 2343.5f, 169.57f, 9.919f}, // 7 scenes
+    {"quake-subdiv16", 1496.7f, 305.32f, 13.804f}, // 9 scenes
+    {"quake-subdiv8", 1496.7f, 289.95f, 20.165f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
