@@ -110,7 +110,10 @@ L_V       equ 20
 L_TEXTURE equ 24
 L_STEPS   equ 28                        ; a word: du whole, dv whole
 L_ODD     equ 32                        ; 1: the row's pixels are odd, the last drawn alone
-L_FRAME   equ 36
+L_LOWER   equ 36                        ; the run's bounds
+L_UPPER   equ 40
+L_NEXT    equ 44                        ; the next run's rows (0 or less: none, or taken)
+L_FRAME   equ 48
 
 ; steps bound [%1] one line: q += dq, r += dr, and one more on q when r reaches d. Clobbers ebx.
 %macro STEP_BOUND 1
@@ -135,6 +138,12 @@ L_FRAME   equ 36
     jle .done
     mov [esp + L_ARGS], ecx
     mov [esp + L_LINES], eax
+    mov eax, [ecx + RUN_lower]
+    mov [esp + L_LOWER], eax
+    mov eax, [ecx + RUN_upper]
+    mov [esp + L_UPPER], eax
+    mov eax, [ecx + RUN_next_lines]
+    mov [esp + L_NEXT], eax
     mov eax, [ecx + RUN_row]
     mov [esp + L_ROW], eax
     mov eax, [ecx + RUN_u_16_16]
@@ -147,7 +156,7 @@ L_FRAME   equ 36
 ; clipped (%1 = 1; 0: a run the block says lies inside the clip, RUN_inside) (.next_row where it is
 ; empty) and tallied; out: eax the first pixel's x, edi the span's pixels.
 %macro ROW_HEAD 1
-    mov edx, [ecx + RUN_lower]
+    mov edx, [esp + L_LOWER]
     mov eax, [edx + BOUND_q]            ; the first pixel, before the clip
     STEP_BOUND edx
 %if %1
@@ -156,7 +165,7 @@ L_FRAME   equ 36
     mov eax, [ecx + RUN_clip_lo]
 %%lo_inside:
 %endif
-    mov edx, [ecx + RUN_upper]
+    mov edx, [esp + L_UPPER]
     mov edi, [edx + BOUND_q]            ; the last pixel
     STEP_BOUND edx
 %if %1
@@ -184,7 +193,8 @@ L_FRAME   equ 36
     add eax, [esp + L_ROW]              ; its address
 %endmacro
 
-; The next row: u, v and the row's address advance; .row while lines are left, ecx the block.
+; The next row: u, v and the row's address advance; .row while lines are left, then the next run's
+; rows once where the block has one; ecx the block.
 %macro ROW_TAIL 0
     mov ecx, [esp + L_ARGS]
     mov eax, [ecx + RUN_u_row_16_16]
@@ -195,6 +205,16 @@ L_FRAME   equ 36
     add [esp + L_ROW], eax
     dec dword [esp + L_LINES]
     jnz .row
+    mov eax, [esp + L_NEXT]
+    test eax, eax
+    jle .done
+    mov [esp + L_LINES], eax
+    mov dword [esp + L_NEXT], 0
+    mov eax, [ecx + RUN_next_lower]
+    mov [esp + L_LOWER], eax
+    mov eax, [ecx + RUN_next_upper]
+    mov [esp + L_UPPER], eax
+    jmp .row
 %endmacro
 
 ; fast_run_loop_asm's rows from .row, clipped (%1 = 1) or not (0), the pairs entered through the

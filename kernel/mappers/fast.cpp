@@ -61,9 +61,10 @@ const PolygonSetup* set_up(const DrawContext& c, const Vertex* vertices, int cou
 
 namespace {
 
-// Rows go by runs: a run's rows have one live bound a side, so the run loop walks them itself. A
-// row with a vertex on its centre (two live bounds on a side) is walked by next() and drawn as a
-// run of one row between constant bounds. With an offset table (fast-table), the table for the
+// Rows go by runs: a run's rows have one live bound a side, so the run loop walks them itself, two
+// runs a call where the second follows at once (a triangle's, but where a vertex lies on a row's
+// centre). A row with a vertex on its centre (two live bounds on a side) is walked by next() and
+// drawn as a run of one row between constant bounds. With an offset table (fast-table), the table for the
 // polygon's longest span is built once, after the walker (what the setup phase counts).
 template <bool TABLE>
 [[gnu::always_inline]] inline SetupStatus draw_runs(const DrawContext& c, const Vertex* vertices, int count) {
@@ -101,11 +102,15 @@ template <bool TABLE>
     // (a pixel whose centre lies in the box [min_x, max_x] lies in [x0, x1) where the box does)
     a.inside = s.min_x >= int64_t(c.target.clip.x0) * SUBPIXEL_ONE && s.max_x <= int64_t(c.target.clip.x1) * SUBPIXEL_ONE;
     for (;;) {
-        int32_t line;
+        int32_t line, next_line;
         EdgeBound lone_lower, lone_upper;
         a.lines = walker.run(&line, &a.lower, &a.upper);
+        a.next_lines = 0;
         if (a.lines > 0) {
             walker.skip(a.lines);
+            // the run after it, where one follows at once, in the same call (a triangle's two)
+            a.next_lines = walker.run(&next_line, &a.next_lower, &a.next_upper);
+            walker.skip(a.next_lines);
         } else {
             Span span;
             if (!walker.next(&span)) break;
@@ -243,25 +248,30 @@ namespace raster {
 
 namespace {
 
-// The rows of a run as both run loops walk them: span(row, lo, hi, u, v) draws pixels lo..hi of a
-// non-empty row, u and v (16.16) the row's as FastRunArgs gives them.
+// The rows of a run, and of the next one where there is one, as both run loops walk them:
+// span(row, lo, hi, u, v) draws pixels lo..hi of a non-empty row, u and v (16.16) the row's as
+// FastRunArgs gives them.
 template <typename Span>
 void run_rows(const FastRunArgs& a, Span&& span) {
     uint8_t* row = a.row;
     uint32_t u = a.u_16_16, v = a.v_16_16;
-    for (int32_t n = 0; n < a.lines; ++n) {
-        int32_t lo = a.lower->q > a.clip_lo ? a.lower->q : a.clip_lo;
-        int32_t hi = a.upper->q < a.clip_hi ? a.upper->q : a.clip_hi;
-        a.lower->step();
-        a.upper->step();
-        if (lo <= hi) {
-            span(row, lo, hi, u, v);
-            a.tally[0] += 1;
-            a.tally[1] += uint32_t(hi - lo + 1);
+    if (a.lines <= 0) return;
+    EdgeBound *lower = a.lower, *upper = a.upper;
+    for (int32_t lines = a.lines, part = 0; part < 2; ++part, lines = a.next_lines, lower = a.next_lower, upper = a.next_upper) {
+        for (int32_t n = 0; n < lines; ++n) {
+            int32_t lo = lower->q > a.clip_lo ? lower->q : a.clip_lo;
+            int32_t hi = upper->q < a.clip_hi ? upper->q : a.clip_hi;
+            lower->step();
+            upper->step();
+            if (lo <= hi) {
+                span(row, lo, hi, u, v);
+                a.tally[0] += 1;
+                a.tally[1] += uint32_t(hi - lo + 1);
+            }
+            row += a.pitch;
+            u += a.u_row_16_16;
+            v += a.v_row_16_16;
         }
-        row += a.pitch;
-        u += a.u_row_16_16;
-        v += a.v_row_16_16;
     }
 }
 
@@ -365,7 +375,7 @@ namespace {
 // must come out the same, and the offset table fast_table_loop reads.
 struct RunCase {
     FastRunArgs args;
-    EdgeBound lower, upper;
+    EdgeBound lower, upper, next_lower, next_upper;
     uint32_t tally[2];
     int32_t table[TABLE_LIMIT];
 };
@@ -377,6 +387,8 @@ void move_to_b(RunCase& b, const RunCase& a, const CheckBuffers& buf) {
     b.args.row = buf.b + (a.args.row - buf.a);
     b.args.lower = &b.lower;
     b.args.upper = &b.upper;
+    b.args.next_lower = &b.next_lower;
+    b.args.next_upper = &b.next_upper;
     b.args.tally = b.tally;
     b.args.table = b.table;
 }
@@ -384,7 +396,8 @@ void move_to_b(RunCase& b, const RunCase& a, const CheckBuffers& buf) {
 template <>
 bool same_results(const RunCase& a, const RunCase& b) {
     auto same = [](const EdgeBound& x, const EdgeBound& y) { return x.q == y.q && x.r == y.r; };
-    return same(a.lower, b.lower) && same(a.upper, b.upper) && a.tally[0] == b.tally[0] && a.tally[1] == b.tally[1];
+    return same(a.lower, b.lower) && same(a.upper, b.upper) && same(a.next_lower, b.next_lower) && same(a.next_upper, b.next_upper) &&
+           a.tally[0] == b.tally[0] && a.tally[1] == b.tally[1];
 }
 
 template <>
@@ -415,22 +428,29 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         FastRunArgs& a = c.args;
         // rows of up to 330 bytes; 240 of them fit the buffer with its guards
         a.pitch = r.below(2) ? 320 : r.range(1, 330);
-        a.lines = r.below(8) == 0 ? r.range(0, 3) : r.range(1, 240);
         a.clip_lo = r.range(0, a.pitch - 1);
         a.clip_hi = r.below(8) == 0 ? a.clip_lo - 1 : r.range(a.clip_lo, a.pitch - 1);  // sometimes nothing
-        c.lower = random_bound(r, a.pitch);
-        c.upper = random_bound(r, a.pitch);
-        if (r.below(2)) c.upper.q = c.lower.q + r.range(0, a.pitch), c.upper.dq = c.lower.dq + r.range(-2, 2);  // a real-looking span
         // a third of the runs inside the clip (RUN_inside: its rows up to the first that leaves it)
         const bool inside = r.below(3) == 0 && a.clip_lo <= a.clip_hi;
-        if (inside) {
-            c.lower.q = r.range(a.clip_lo, a.clip_hi), c.lower.dq = r.range(-2, 2);
-            c.upper.q = r.range(c.lower.q, a.clip_hi), c.upper.dq = c.lower.dq + r.range(-2, 2);
-            EdgeBound lo = c.lower, hi = c.upper;
+        // a run's bounds and its rows, up to `most` (inside: up to the first row that leaves the clip)
+        auto run = [&](EdgeBound& lower, EdgeBound& upper, int32_t most) {
+            lower = random_bound(r, a.pitch);
+            upper = random_bound(r, a.pitch);
+            if (r.below(2)) upper.q = lower.q + r.range(0, a.pitch), upper.dq = lower.dq + r.range(-2, 2);  // a real-looking span
+            if (!inside) return most;
+            lower.q = r.range(a.clip_lo, a.clip_hi), lower.dq = r.range(-2, 2);
+            upper.q = r.range(lower.q, a.clip_hi), upper.dq = lower.dq + r.range(-2, 2);
+            EdgeBound lo = lower, hi = upper;
             int32_t n = 0;
-            for (; n < a.lines && (lo.q > hi.q || (lo.q >= a.clip_lo && hi.q <= a.clip_hi)); ++n) lo.step(), hi.step();
-            a.lines = n;
-        }
+            for (; n < most && (lo.q > hi.q || (lo.q >= a.clip_lo && hi.q <= a.clip_hi)); ++n) lo.step(), hi.step();
+            return n;
+        };
+        a.lines = run(c.lower, c.upper, r.below(8) == 0 ? r.range(0, 3) : r.range(1, 240));
+        // half of them with a next run right after (a polygon's second run in the same call), the
+        // rows of both within 240; sometimes none said by 0 or less
+        const int32_t room = 240 - (a.lines > 0 ? a.lines : 0);
+        a.next_lines = r.below(2) ? 0 : run(c.next_lower, c.next_upper, r.below(4) == 0 || room < 1 ? r.range(-1, room < 3 ? room : 3) : r.range(1, room));
+        if (a.next_lines == 0) c.next_lower = c.next_upper = EdgeBound::constant(0);
         a.inside = inside ? 1 : 0;
         a.texture = check_aligned_texture(buf);
         a.u_16_16 = r.next();
@@ -442,21 +462,25 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         c.tally[0] = c.tally[1] = 0;
         a.lower = &c.lower;
         a.upper = &c.upper;
+        a.next_lower = &c.next_lower;
+        a.next_upper = &c.next_upper;
         a.tally = c.tally;
         // (fast-table: the offsets from a pixel at or left of clip_lo to the pitch's end)
         const int32_t table_x = r.range(0, a.clip_lo);
         build_offset_table(a.du_16_16, a.dv_16_16, a.pitch - table_x, c.table + table_x);
         a.table = c.table;
         a.row = buf.a + CHECK_GUARD_BYTES;
-        int32_t lines = a.lines > 0 ? a.lines : 0;
         uint32_t pixels = 0;  // what the rows will draw
-        EdgeBound lo = c.lower, hi = c.upper;
-        for (int32_t n = 0; n < lines; ++n) {
-            int32_t x0 = lo.q > a.clip_lo ? lo.q : a.clip_lo, x1 = hi.q < a.clip_hi ? hi.q : a.clip_hi;
-            if (x0 <= x1) pixels += uint32_t(x1 - x0 + 1);
-            lo.step();
-            hi.step();
-        }
+        int32_t lines = 0;
+        auto count = [&](EdgeBound lo, EdgeBound hi, int32_t rows) {
+            for (int32_t n = 0; n < rows; ++n, ++lines) {
+                int32_t x0 = lo.q > a.clip_lo ? lo.q : a.clip_lo, x1 = hi.q < a.clip_hi ? hi.q : a.clip_hi;
+                if (x0 <= x1) pixels += uint32_t(x1 - x0 + 1);
+                lo.step();
+                hi.step();
+            }
+        };
+        if (a.lines > 0) count(c.lower, c.upper, a.lines), count(c.next_lower, c.next_upper, a.next_lines);
         return CheckWindow{0, CHECK_GUARD_BYTES + size_t(lines) * size_t(a.pitch) + CHECK_GUARD_BYTES, pixels};
     });
 }
@@ -467,8 +491,8 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
 void fast_offsets() {
     ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
     ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
-    ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, texture, u_16_16, v_16_16, u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally,
-               table, inside)
+    ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16, v_16_16,
+               u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside)
     ASM_FIELDS(BOUND, EdgeBound, first, last, q, dq, r, dr, d)
     ASM_SIZE(BOUND_SIZE, EdgeBound);
     ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)

@@ -21,6 +21,12 @@ struct FastRunArgs {
     int32_t clip_lo, clip_hi;
     EdgeBound* lower;        // stepped in place, once a row
     EdgeBound* upper;
+    // Then next_lines rows more (0 or less: none) right after them, between next_lower and
+    // next_upper: a polygon's next run in the same call, row, u and v stepping on (drawn only where
+    // `lines` is at least 1)
+    int32_t next_lines;
+    EdgeBound* next_lower;
+    EdgeBound* next_upper;
     const uint8_t* texture;  // tiled over 256 x 256, aligned to 64 KiB
     uint32_t u_16_16, v_16_16;        // at pixel 0 of the first row (fast-table: at the table's first pixel)
     uint32_t u_row_16_16, v_row_16_16;  // their change from row to row
