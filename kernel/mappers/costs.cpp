@@ -16,8 +16,8 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-1", 1007.0f, 998.86f, 51.395f}, // 10 scenes
     {"persp-adaptive-2", 1007.0f, 1015.72f, 44.236f}, // 10 scenes
     {"persp-adaptive-4", 1007.0f, 1027.69f, 40.060f}, // 10 scenes
-    {"fast-affine", 1039.4f, 156.51f, 4.080f}, // 10 scenes
-    {"fast-table", 1247.0f, 142.42f, 1.028f}, // 10 scenes
+    {"fast-affine", 1040.4f, 149.27f, 4.235f}, // 10 scenes
+    {"fast-table", 1245.0f, 137.37f, 1.140f}, // 10 scenes
     {"fast-columns", 1136.4f, 253.25f, 5.576f}, // 10 scenes
     {"fast-table-columns", 1344.2f, 249.74f, 2.741f}, // 10 scenes
     {"fast-subdiv-8", 1007.0f, 295.46f, 13.609f}, // 10 scenes
