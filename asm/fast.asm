@@ -138,18 +138,7 @@ L_FRAME   equ 48
     jle .done
     mov [esp + L_ARGS], ecx
     mov [esp + L_LINES], eax
-    mov eax, [ecx + RUN_lower]
-    mov [esp + L_LOWER], eax
-    mov eax, [ecx + RUN_upper]
-    mov [esp + L_UPPER], eax
-    mov eax, [ecx + RUN_next_lines]
-    mov [esp + L_NEXT], eax
-    mov eax, [ecx + RUN_row]
-    mov [esp + L_ROW], eax
-    mov eax, [ecx + RUN_u_16_16]
-    mov [esp + L_U], eax
-    mov eax, [ecx + RUN_v_16_16]
-    mov [esp + L_V], eax
+    FRAME_COPY ecx, RUN_lower, L_LOWER, RUN_upper, L_UPPER, RUN_next_lines, L_NEXT, RUN_row, L_ROW, RUN_u_16_16, L_U, RUN_v_16_16, L_V
 %endmacro
 
 ; A row's start (ecx: the block, as RUN_ENTER and ROW_TAIL leave it): both bounds stepped, the span

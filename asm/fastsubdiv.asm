@@ -142,10 +142,7 @@ section .text
     mov [esp + L_LEFT], eax
     dec eax
     mov [esp + L_LAST], eax
-    mov eax, [edx + FSUB_dst]
-    mov [esp + L_DST], eax
-    mov eax, [edx + FSUB_texture]
-    mov [esp + L_TEXTURE], eax
+    FRAME_COPY edx, FSUB_dst, L_DST, FSUB_texture, L_TEXTURE
     mov ecx, [edx + FSUB_shift]
     mov [esp + L_SHIFT], ecx
     mov eax, [edx + FSUB_stride]
