@@ -141,6 +141,12 @@ std::vector<std::string> pages() {
     return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Pages, GalleryBrowser, testing::ValuesIn(pages()), [](const testing::TestParamInfo<std::string>& i) { return i.param; });
+// (a test's name takes letters, digits and underscores: ball-256's page is the test ending /ball_256)
+INSTANTIATE_TEST_SUITE_P(Pages, GalleryBrowser, testing::ValuesIn(pages()), [](const testing::TestParamInfo<std::string>& i) {
+    std::string name = i.param;
+    for (char& c : name)
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) c = '_';
+    return name;
+});
 
 }  // namespace
