@@ -248,11 +248,11 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         const Placement place = Placement::of(object, time);
         const Vec3 eye = place.unapply(view.eye);
         const bool cull = object.cull == Cull::Back;
-        // the object's positions in the scratch arrays by their index in the world
+        // the object's positions in the scratch arrays: a world position's index plus `base` (an
+        // index, not a pointer moved by it: base may be below 0)
         const int32_t base = used - mesh.first_position;
-        ClipPoint* positions = scratch->positions + base;
-        uint8_t* codes = scratch->outcodes + base;
-        Fixed24_8 *screen_x = scratch->screen_x + base, *screen_y = scratch->screen_y + base;
+        ClipPoint* positions = scratch->positions;
+        uint8_t* codes = scratch->outcodes;
         __builtin_memset(scratch->outcodes + used, UNSEEN, size_t(mesh.position_count));
         used += mesh.position_count;
         double nearest = far;  // the least w of a position inside every plane (the corners of uncut faces)
@@ -265,16 +265,16 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             uint8_t all = 0x3F, any = 0;  // planes every corner is outside; planes some corner is
             double depth = 0;
             for (int32_t i = 0; i < face.count; ++i) {
-                const int32_t at = world.corners[face.first_corner + i].position;
+                const int32_t position = world.corners[face.first_corner + i].position, at = base + position;
                 if (codes[at] == UNSEEN) {
-                    const ClipPoint p = view.clip(place.apply(world.positions[at]));
+                    const ClipPoint p = view.clip(place.apply(world.positions[position]));
                     positions[at] = p;
                     codes[at] = outcode(p, near, far);
                     // projected once here rather than at every corner that shares it (faces inside
                     // every plane take their corners from here; a clipped face's corners are
                     // projected below)
                     if (codes[at] == 0) {
-                        project(p, &screen_x[at], &screen_y[at]);
+                        project(p, &scratch->screen_x[at], &scratch->screen_y[at]);
                         nearest = p.w < nearest ? p.w : nearest;
                     }
                 }
@@ -333,10 +333,10 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         } else {  // its corners as projected above
             const Corner* corner = world.corners + face.first_corner;
             const double width = texture.width, height = texture.height;
-            const Fixed24_8 *screen_x = scratch->screen_x + base, *screen_y = scratch->screen_y + base;
-            const ClipPoint* positions = scratch->positions + base;
+            const Fixed24_8 *screen_x = scratch->screen_x, *screen_y = scratch->screen_y;
+            const ClipPoint* positions = scratch->positions;
             for (int i = 0; i < n; ++i) {
-                const int32_t at = corner[i].position;
+                const int32_t at = base + corner[i].position;
                 const TexCoord& uv = world.uvs[corner[i].uv];
                 Vertex& v = corners[i];
                 v.x = screen_x[at], v.y = screen_y[at];
