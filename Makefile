@@ -366,7 +366,7 @@ test-gallery: deps
 # (make test runs 600 of them) and on every demo scene (docs/accuracy.md, "Error bounds").
 BOUND_POLYGONS ?= 100000
 bounds: deps
-	@$(MAKE) -s -j$(NPROC) $(TESTS)
+	@$(MAKE) -s -j$(NPROC) $(TESTS) $(FREEDOOM_TEXTURES)
 	MODEXLAB_BOUND_POLYGONS=$(BOUND_POLYGONS) $(TESTS) --gtest_filter='Bounds.*:Envelope.*'
 
 # `make fuzz-protocol`: random and mutated commands and uploads to a booted kernel, a marker
