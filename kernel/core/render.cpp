@@ -10,8 +10,8 @@ namespace {
 // `setup`: the polygon set up already (every plane, for a mapper without its own driver), or
 // nullptr; `walked`: its spans along the axis when auto walked them (count below 0: not), or
 // nullptr. `input`: as setup.h says, for the setup done here or by the mapper's driver.
-[[gnu::always_inline]] inline SetupStatus draw_with(const Drawer& d, const Vertex* vertices, int count, const PolygonSetup* setup, const PreparedSpans* walked,
-                      Input input) {
+[[gnu::always_inline]] inline SetupStatus draw_with(const Drawer& d, const Vertex* vertices, int count, const PolygonSetup* setup,
+                                                    const PreparedSpans* walked, Input input) {
     RenderStats* stats = d.stats;
     if (!d.usable) {
         ++stats->rejected;

@@ -449,7 +449,8 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         // half of them with a next run right after (a polygon's second run in the same call), the
         // rows of both within 240; sometimes none said by 0 or less
         const int32_t room = 240 - (a.lines > 0 ? a.lines : 0);
-        a.next_lines = r.below(2) ? 0 : run(c.next_lower, c.next_upper, r.below(4) == 0 || room < 1 ? r.range(-1, room < 3 ? room : 3) : r.range(1, room));
+        const int32_t most = r.below(4) == 0 || room < 1 ? r.range(-1, room < 3 ? room : 3) : r.range(1, room);
+        a.next_lines = r.below(2) ? 0 : run(c.next_lower, c.next_upper, most);
         if (a.next_lines == 0) c.next_lower = c.next_upper = EdgeBound::constant(0);
         a.inside = inside ? 1 : 0;
         a.texture = check_aligned_texture(buf);
