@@ -231,7 +231,10 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
     // mesh's coordinates (the sign of the eye's distance from the plane: a scale is positive, so the
     // placement keeps the front), and only then its corners in clip space, each position
     // transformed and projected at its first use in the frame (a face culled needs none of them)
-    int32_t first_position[MAX_WORLD_OBJECTS];
+    // each object's base (a world position's index plus it: the position's in the scratch arrays)
+    // and texture's size, for the faces' corners
+    int32_t bases[MAX_WORLD_OBJECTS];
+    double sizes[MAX_WORLD_OBJECTS][2];
     constexpr uint8_t UNSEEN = 0xFF;  // an outcode no position has: not yet transformed (codes are 6 bits)
     int32_t used = 0, entries = 0;
     for (int32_t o = 0; o < world.object_count; ++o) {
@@ -240,17 +243,17 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         f.stats.faces += uint32_t(mesh.face_count);
         if (used + mesh.position_count > MAX_FRAME_POSITIONS) {
             f.stats.overflow += uint32_t(mesh.face_count);
-            first_position[o] = -1;
             f.envelope[o] = EnvelopeBound{};
             continue;
         }
-        first_position[o] = used;
         const Placement place = Placement::of(object, time);
         const Vec3 eye = place.unapply(view.eye);
         const bool cull = object.cull == Cull::Back;
         // the object's positions in the scratch arrays: a world position's index plus `base` (an
         // index, not a pointer moved by it: base may be below 0)
         const int32_t base = used - mesh.first_position;
+        const WorldTexture& texture = world.textures[object.texture];
+        bases[o] = base, sizes[o][0] = texture.width, sizes[o][1] = texture.height;
         ClipPoint* positions = scratch->positions;
         uint8_t* codes = scratch->outcodes;
         __builtin_memset(scratch->outcodes + used, UNSEEN, size_t(mesh.position_count));
@@ -290,7 +293,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
                 ++f.stats.overflow;
                 continue;
             }
-            scratch->entries[entries++] = FrameScratch::Entry{depth / face.count, o, k, any != 0};
+            scratch->entries[entries++] = FrameScratch::Entry{depth / face.count, o, mesh.first_face + k, any != 0};
         }
         f.envelope[o] = envelope_bound(object_envelope(world, o, place, view, nearest));
     }
@@ -298,11 +301,9 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
 
     for (int32_t e = 0; e < entries; ++e) {
         const FrameScratch::Entry& entry = scratch->entries[order[e]];
-        const Object& object = world.objects[entry.object];
-        const Mesh& mesh = world.meshes[object.mesh];
-        const WorldTexture& texture = world.textures[object.texture];
-        const Face& face = world.faces[mesh.first_face + entry.face];
-        const int32_t base = first_position[entry.object] - mesh.first_position;
+        const Face& face = world.faces[entry.face];
+        const int32_t base = bases[entry.object];
+        const double width = sizes[entry.object][0], height = sizes[entry.object][1];
         int n = face.count;
         ClipVertex clipped[MAX_FACE_CORNERS + 6];
         if (entry.cut) {  // (a face inside every plane is its own clipped polygon)
@@ -310,7 +311,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             for (int32_t i = 0; i < n; ++i) {
                 const Corner& corner = world.corners[face.first_corner + i];
                 const ClipPoint& p = scratch->positions[base + corner.position];
-                c[i] = ClipVertex{p.x, p.y, p.w, world.uvs[corner.uv].u * texture.width, world.uvs[corner.uv].v * texture.height};
+                c[i] = ClipVertex{p.x, p.y, p.w, world.uvs[corner.uv].u * width, world.uvs[corner.uv].v * height};
             }
             n = clip_polygon(c, face.count, near, far, clipped);
             if (n < 3) {
@@ -332,7 +333,6 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             }
         } else {  // its corners as projected above
             const Corner* corner = world.corners + face.first_corner;
-            const double width = texture.width, height = texture.height;
             const Fixed24_8 *screen_x = scratch->screen_x, *screen_y = scratch->screen_y;
             const ClipPoint* positions = scratch->positions;
             for (int i = 0; i < n; ++i) {

@@ -69,7 +69,7 @@ struct FrameScratch {
     Fixed24_8 screen_x[MAX_FRAME_POSITIONS], screen_y[MAX_FRAME_POSITIONS];  // projected, where the outcode is 0
     struct Entry {
         double depth;  // mean w of the face's corners (finite)
-        int32_t object, face;
+        int32_t object, face;  // face: its index in World::faces
         bool cut;      // some corner outside some plane: to be clipped
     } entries[MAX_FRAME_POLYGONS];
     // painter_order's two buffers: each entry's key (its depth's bits, in halves) and index
