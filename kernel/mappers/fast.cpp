@@ -64,8 +64,8 @@ namespace {
 // Rows go by runs: a run's rows have one live bound a side, so the run loop walks them itself, two
 // runs a call where the second follows at once (a triangle's, but where a vertex lies on a row's
 // centre). A row with a vertex on its centre (two live bounds on a side) is walked by next() and
-// drawn as a run of one row between constant bounds. With an offset table (fast-table), the table for the
-// polygon's longest span is built once, after the walker (what the setup phase counts).
+// drawn as a run of one row between constant bounds. With an offset table (fast-table), the table
+// for the polygon's longest span is built once, after the walker (what the setup phase counts).
 template <bool TABLE>
 [[gnu::always_inline]] inline SetupStatus draw_runs(const DrawContext& c, const Vertex* vertices, int count) {
     PolygonSetup own;
@@ -102,7 +102,7 @@ template <bool TABLE>
     // (a pixel whose centre lies in the box [min_x, max_x] lies in [x0, x1) where the box does)
     a.inside = s.min_x >= int64_t(c.target.clip.x0) * SUBPIXEL_ONE && s.max_x <= int64_t(c.target.clip.x1) * SUBPIXEL_ONE;
     for (;;) {
-        int32_t line, next_line;
+        int32_t line, next_line;  // (next_line: line + a.lines, runs being contiguous; run() writes it)
         EdgeBound lone_lower, lone_upper;
         a.lines = walker.run(&line, &a.lower, &a.upper);
         a.next_lines = 0;

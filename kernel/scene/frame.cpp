@@ -227,12 +227,13 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
     const View view = View::of(world.camera, time);
     const double near = world.camera.near, far = world.camera.far;
 
-    // every face that might show, with its depth: culled first, by its plane and the eye in its
+    // Every face that might show, with its depth: culled first, by its plane and the eye in its
     // mesh's coordinates (the sign of the eye's distance from the plane: a scale is positive, so the
     // placement keeps the front), and only then its corners in clip space, each position
-    // transformed and projected at its first use in the frame (a face culled needs none of them)
-    // each object's base (a world position's index plus it: the position's in the scratch arrays)
-    // and texture's size, for the faces' corners
+    // transformed and projected at its first use in the frame (a face culled needs none of them).
+    // Each object's base (a world position's index plus it: that position's index in the scratch
+    // arrays; an index, not a pointer moved by it: it may be below 0) and its texture's size, for
+    // the corners written below.
     int32_t bases[MAX_WORLD_OBJECTS];
     double sizes[MAX_WORLD_OBJECTS][2];
     constexpr uint8_t UNSEEN = 0xFF;  // an outcode no position has: not yet transformed (codes are 6 bits)
@@ -249,12 +250,10 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         const Placement place = Placement::of(object, time);
         const Vec3 eye = place.unapply(view.eye);
         const bool cull = object.cull == Cull::Back;
-        // the object's positions in the scratch arrays: a world position's index plus `base` (an
-        // index, not a pointer moved by it: base may be below 0)
         const int32_t base = used - mesh.first_position;
         const WorldTexture& texture = world.textures[object.texture];
         bases[o] = base, sizes[o][0] = texture.width, sizes[o][1] = texture.height;
-        ClipPoint* positions = scratch->positions;
+        ClipPoint* positions = scratch->positions;  // (by `at` below: base + the world's index)
         uint8_t* codes = scratch->outcodes;
         __builtin_memset(scratch->outcodes + used, UNSEEN, size_t(mesh.position_count));
         used += mesh.position_count;
