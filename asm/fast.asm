@@ -359,8 +359,8 @@ T_LOWER   equ 16                        ; where each chain's next bound goes
 T_UPPER   equ 20
 T_FRAME   equ 24
 
-; one edge: esi the edges, ebp the block
-%macro TRI_EDGE 1
+; one edge: esi the edges, %2 and %3 the origin's x and y (operands)
+%macro TRI_EDGE 3
 %define E(f) [esi + (%1) * EDGE_SIZE + EDGE_ %+ f]
     mov eax, E(py)
     sub eax, [esp + T_OMAJ]             ; pmaj: the start, relative
@@ -392,10 +392,10 @@ T_FRAME   equ 24
     mov edi, [esp + T_LOWER]
     add dword [esp + T_LOWER], BOUND_SIZE
 %%placed:
-    add ecx, [ebp + TRI_origin_y]
+    add ecx, %3
     mov [edi + BOUND_last], ecx
     mov ecx, edx
-    add ecx, [ebp + TRI_origin_y]
+    add ecx, %3
     mov [edi + BOUND_first], ecx
     ; B at row lo: dmin * (lo * 256 + 128 - pmaj) - dmaj * (128 - pmin)
     shl edx, 8
@@ -431,7 +431,7 @@ T_FRAME   equ 24
     dec eax
     add edx, ebx
 %%q:
-    add eax, [ebp + TRI_origin_x]
+    add eax, %2
     mov [edi + BOUND_q], eax
     mov [edi + BOUND_r], edx
     mov eax, ecx
@@ -449,9 +449,10 @@ T_FRAME   equ 24
 %endmacro
 
 ; a chain of two in order of first row (a tie keeps their order), then its sentinel: never live,
-; never binding (q = %3); %1 the block's field for the chain, %2 the frame's pointer past its last
+; never binding (q = %3); %1 the instruction that puts the chain's start in edi, %2 the frame's
+; pointer past its last
 %macro TRI_SEAL 3
-    mov edi, [ebp + %1]
+    %1
     mov ecx, [esp + %2]                 ; (where the sentinel goes)
     lea eax, [edi + 2 * BOUND_SIZE]
     cmp ecx, eax
@@ -477,18 +478,29 @@ T_FRAME   equ 24
     mov dword [ecx + BOUND_d], 1
 %endmacro
 
+; the chains of the triangle whose edges are at esi, the frame's slots set (T_LOWER and T_UPPER
+; the chains' starts); to %1 (eax 0) where an edge lies along a row; %2 and %3 the origin's x and y
+; (operands), %4 and %5 the instructions that put the lower and the upper chain's start in edi
+%macro TRI_ROWS 5
+    xor eax, eax
+    cmp [esi + EDGE_dy], eax
+    je %1
+    cmp [esi + EDGE_SIZE + EDGE_dy], eax
+    je %1
+    cmp [esi + 2 * EDGE_SIZE + EDGE_dy], eax
+    je %1
+    TRI_EDGE 0, %2, %3
+    TRI_EDGE 1, %2, %3
+    TRI_EDGE 2, %2, %3
+    TRI_SEAL {%4}, T_LOWER, 0x80000000
+    TRI_SEAL {%5}, T_UPPER, 0x7FFFFFFF
+%endmacro
+
 global triangle_rows_asm
 triangle_rows_asm:
     LOOP_ENTER T_FRAME
     mov ebp, LOOP_ARG(T_FRAME)
     mov esi, [ebp + TRI_edges]
-    xor eax, eax
-    cmp [esi + EDGE_dy], eax
-    je .done
-    cmp [esi + EDGE_SIZE + EDGE_dy], eax
-    je .done
-    cmp [esi + 2 * EDGE_SIZE + EDGE_dy], eax
-    je .done
     mov eax, [ebp + TRI_lower]
     mov [esp + T_LOWER], eax
     mov eax, [ebp + TRI_upper]
@@ -505,14 +517,47 @@ triangle_rows_asm:
     mov eax, [ebp + TRI_origin_x]
     shl eax, 8
     mov [esp + T_OMIN], eax
-    TRI_EDGE 0
-    TRI_EDGE 1
-    TRI_EDGE 2
-    TRI_SEAL TRI_lower, T_LOWER, 0x80000000
-    TRI_SEAL TRI_upper, T_UPPER, 0x7FFFFFFF
+    TRI_ROWS .done, {[ebp + TRI_origin_x]}, {[ebp + TRI_origin_y]}, {mov edi, [ebp + TRI_lower]}, {mov edi, [ebp + TRI_upper]}
     mov eax, 1
 .done:
     LOOP_LEAVE T_FRAME
+
+; run_from (walk.h) on the chains, cursors esi (lower) and edi (upper), from row ecx to at most
+; the frame's R_LAST: the cursors moved to the live bounds, eax the run's last row; to %1 where a
+; side has two live bounds on row ecx. edx is lost.
+R_LAST    equ T_FRAME                   ; the last row, absolute
+R_FRAME   equ T_FRAME + 4
+; one side of RUN_FROM: its cursor %1 moved on to the bound live on row ecx
+%macro RUN_LIVE 1
+%%scan:
+    cmp [%1 + BOUND_last], ecx
+    jge %%live
+    add %1, BOUND_SIZE
+    jmp %%scan
+%%live:
+%endmacro
+
+; one side of RUN_FROM, its cursor %1 on its live bound: eax down to that bound's last row and to
+; the row before the next bound's first; to %2 where that one is live on row ecx too
+%macro RUN_END 2
+    mov edx, [%1 + BOUND_last]
+    cmp edx, eax
+    cmovl eax, edx
+    mov edx, [%1 + BOUND_SIZE + BOUND_first]
+    cmp edx, ecx
+    jle %2
+    dec edx                             ; (a sentinel's INT32_MAX: no wrap)
+    cmp edx, eax
+    cmovl eax, edx
+%endmacro
+
+%macro RUN_FROM 1
+    RUN_LIVE esi
+    RUN_LIVE edi
+    mov eax, [esp + R_LAST]
+    RUN_END esi, %1
+    RUN_END edi, %1
+%endmacro
 
 ; setup_triangle_affine_asm(const Vertex* in, PolygonSetup* out): setup_polygon's work on a triangle
 ; whose corners are in range (Input::InRange), affine planes only (PLANES_AFFINE), for the fast
@@ -520,8 +565,8 @@ triangle_rows_asm:
 ; top-left rule, the box, the u and v planes in x87 double arithmetic (53-bit precision, the
 ; kernel's), operation for operation as plane_through, and their 16.16 form as finish_setup makes
 ; it. Returns 1, or 0 with `out` in an unspecified state where C++ must do it: a repeated corner or
-; no area (degenerate), or a value off its 32-bit path (a 16.16 step of 32768 texels a pixel or
-; more, an anchor value outside [0, 16384) texels).
+; no area (degenerate), or a value off its 32-bit path (a 16.16 step whose floor leaves int32,
+; 32768 texels a pixel or more either way, an anchor value outside [0, 16384) texels).
 S_P0      equ 0                         ; the corners in clockwise order
 S_P1      equ 4
 S_P2      equ 8
@@ -533,33 +578,28 @@ S_AX      equ 28                        ; the anchor pixel's centre relative to 
 S_AY      equ 32
 S_TMP     equ 36
 S_D       equ 40                        ; twice the area, as a double
-S_FRAME   equ 48
+S_CW      equ 48                        ; the caller's x87 control word (rounding to nearest)
+S_CW_DOWN equ 52                        ; the same rounding down
+S_FRAME   equ 56
 
-; floor(st0) by the 32-bit path (floor_small), into eax; st0 popped. The caller checked |st0| < 2^31 - 1.
-%macro FLOOR_SMALL 0
-    fist dword [esp + S_TMP]            ; the nearest integer (round-to-nearest, as lrint)
+; floor(st0) into eax, st0 popped: FISTP rounding down, the rest of the arithmetic to nearest as
+; before; 0x80000000 where the floor is outside int32 or st0 is NaN (the integer indefinite)
+%macro FLOOR_DOWN 0
+    fldcw [esp + S_CW_DOWN]
+    fistp dword [esp + S_TMP]
+    fldcw [esp + S_CW]
     mov eax, [esp + S_TMP]
-    fild dword [esp + S_TMP]
-    fcomip st0, st1                     ; t against x
-    fstp st0
-    jbe %%done                          ; t <= x
-    dec eax
-%%done:
 %endmacro
 
-; FixedN<16>::from_double(st0 * 256) into eax, st0 popped (the 32-bit path; else to .refuse_pop);
-; the two scalings, by 256 and by 65536, as one by 2^24 (powers of two: the same product, exactly)
+; FixedN<16>::from_double(st0 * 256) into eax, st0 popped: its floor of st0 * 256 * 65536 + 1/2
+; wherever that lies in int32 (there both of its paths give it), else to .refuse (a NaN too); the
+; two scalings, by 256 and by 65536, as one by 2^24 (powers of two: the same product, exactly)
 %macro FIXED_16_16_PER_PIXEL 0
     fmul qword [c_2_24]
     fadd qword [c_half]
-    fld st0
-    fabs
-    fcomp qword [c_small_floor]
-    fnstsw ax
-    sahf
-    jae .refuse_pop                     ; not below 2^31 - 1
-    jp .refuse_pop                      ; (NaN: unordered)
-    FLOOR_SMALL
+    FLOOR_DOWN
+    cmp eax, 0x80000000
+    je .refuse
 %endmacro
 
 ; one plane (the corners' u or v at %1, the plane at %2) and its 16.16 form (at %3): esi, edi, edx
@@ -609,7 +649,7 @@ S_FRAME   equ 48
     jae .refuse_pop                     ; at or above 16384
     fmul qword [c_65536]
     fadd qword [c_half]
-    FLOOR_SMALL
+    FLOOR_DOWN                          ; (in [0, 2^30]: no indefinite)
     mov [ebp + %3 + FIX_at], eax
 %endmacro
 
@@ -684,11 +724,9 @@ S_FRAME   equ 48
     mov [esp + %5], ecx
 %endmacro
 
-global setup_triangle_affine_asm
-setup_triangle_affine_asm:
-    LOOP_ENTER S_FRAME
-    mov esi, LOOP_ARG(S_FRAME)          ; in
-    mov ebp, [esp + S_FRAME + 24]       ; out
+; setup_polygon's work on the triangle whose corners are at esi into the setup at ebp (above);
+; to .refuse (.refuse_pop with a value on the x87 stack) where C++ must do it
+%macro SETUP_TRIANGLE 0
     ; twice the signed area, (b - a) x (c - a), in 64 bits; clockwise (y down) when positive. A
     ; corner repeated makes it exactly 0, refused below as no area (C++ says degenerate).
     mov ecx, [esi + VERT_x]
@@ -749,10 +787,24 @@ setup_triangle_affine_asm:
     mov [ebp + PS_ref_y], eax
     sar eax, 31
     mov [ebp + PS_ref_y + 4], eax
+    ; the control words for FLOOR_DOWN: the caller's, and with its rounding field (bits 10-11) 01
+    fnstcw [esp + S_CW]
+    mov eax, [esp + S_CW]
+    and eax, 0xF3FF
+    or eax, 0x0400
+    mov [esp + S_CW_DOWN], eax
     SETUP_AXIS VERT_x, S_XB, S_XC, FIX_x0, S_AX
     SETUP_AXIS VERT_y, S_YB, S_YC, FIX_y0, S_AY
     AFFINE_PLANE VERT_u, PS_u, PS_u_fx
     AFFINE_PLANE VERT_v, PS_v, PS_v_fx
+%endmacro
+
+global setup_triangle_affine_asm
+setup_triangle_affine_asm:
+    LOOP_ENTER S_FRAME
+    mov esi, LOOP_ARG(S_FRAME)          ; in
+    mov ebp, [esp + S_FRAME + 24]       ; out
+    SETUP_TRIANGLE
     mov eax, 1
     jmp .done
 .refuse_pop:
@@ -762,10 +814,168 @@ setup_triangle_affine_asm:
 .done:
     LOOP_LEAVE S_FRAME
 
+; fast_triangle_asm(FastTriangleArgs* a): a triangle in range for the fast run loops, its setup and
+; its walk's set-up in one call (twin: fast_triangle, kernel/mappers/fast.cpp): SETUP_TRIANGLE, then
+; the rows whose centre lies in its box inside the target's clip (box_lines), their chains
+; (TRI_ROWS, the box under 64 pixels a side) and their two runs (RUN_FROM), and the run loop's block
+; from them: the runs, the first row's address, the pitch and the clip's columns, u and v at pixel
+; 0 of the row, the steps, `inside`. Returns 1; 2 with only the setup written where the walker must
+; walk it; 0 where C++ must set it up.
+F_LINE    equ R_FRAME                   ; the first row
+F_OX      equ F_LINE + 4                ; the chains' origin (TRI_ROWS)
+F_OY      equ F_LINE + 8
+F_FRAME   equ S_FRAME > F_OY + 4 ? S_FRAME : F_OY + 4   ; (the setup's frame, then the walk's)
+
+; the u or v plane at %1 of the setup at esi, into the block at ebx at row ecx, pixel 0 (%2, at the
+; block's %3 and %4 the steps across and down): FixedPlane::value(0, row), modulo 2^32
+%macro RUN_PLANE 4
+    mov eax, ecx
+    sub eax, [esi + %1 + FIX_y0]
+    mov edx, [esi + %1 + FIX_dy]
+    mov [ebx + %4], edx
+    imul eax, edx
+    add eax, [esi + %1 + FIX_at]
+    mov edx, [esi + %1 + FIX_dx]
+    mov [ebx + %3], edx
+    imul edx, [esi + %1 + FIX_x0]
+    sub eax, edx
+    mov [ebx + %2], eax
+%endmacro
+
+global fast_triangle_asm
+fast_triangle_asm:
+    LOOP_ENTER F_FRAME
+    mov ebx, LOOP_ARG(F_FRAME)
+    mov esi, [ebx + FTRI_in]
+    mov ebp, [ebx + FTRI_setup]
+    SETUP_TRIANGLE
+    mov esi, ebp                        ; the setup
+    mov ebp, LOOP_ARG(F_FRAME)
+    ; the rows whose centre lies in the box, inside the clip (box_lines)
+    mov eax, [esi + PS_min_y]
+    lea ecx, [eax + 127]
+    sar ecx, 8
+    mov edi, [ebp + FTRI_target]
+    mov edx, [edi + TGT_clip + CLIP_y0]
+    cmp ecx, edx
+    cmovl ecx, edx
+    mov edx, [esi + PS_max_y]
+    mov ebx, edx
+    sub edx, 128
+    sar edx, 8
+    mov edi, [edi + TGT_clip + CLIP_y1]
+    dec edi
+    cmp edx, edi
+    cmovg edx, edi
+    cmp ecx, edx
+    jg .empty
+    mov [esp + F_LINE], ecx
+    mov [esp + R_LAST], edx
+    ; the box under 64 pixels a side (small_box)
+    sub ebx, eax
+    cmp ebx, 64 << 8
+    jge .walk
+    mov ebx, [esi + PS_min_x]
+    mov edi, [esi + PS_max_x]
+    sub edi, ebx
+    cmp edi, 64 << 8
+    jge .walk
+    ; the chains (TRI_ROWS, from the pixel corner at or below the box)
+    sar ebx, 8
+    mov [esp + F_OX], ebx
+    shl ebx, 8
+    mov [esp + T_OMIN], ebx
+    sar eax, 8
+    mov [esp + F_OY], eax
+    sub ecx, eax
+    mov [esp + T_FIRST], ecx
+    sub edx, eax
+    mov [esp + T_LAST], edx
+    shl eax, 8
+    mov [esp + T_OMAJ], eax
+    lea eax, [ebp + FTRI_lower]
+    mov [esp + T_LOWER], eax
+    lea eax, [ebp + FTRI_upper]
+    mov [esp + T_UPPER], eax
+    add esi, PS_edges
+    TRI_ROWS .walk, {[esp + F_OX]}, {[esp + F_OY]}, {lea edi, [ebp + FTRI_lower]}, {lea edi, [ebp + FTRI_upper]}
+    ; the first run, then the second from the row after it, which must end at the last
+    mov ebx, [ebp + FTRI_run]
+    lea esi, [ebp + FTRI_lower]
+    lea edi, [ebp + FTRI_upper]
+    mov ecx, [esp + F_LINE]
+    RUN_FROM .walk
+    mov [ebx + RUN_lower], esi
+    mov [ebx + RUN_upper], edi
+    mov edx, eax
+    sub edx, ecx
+    inc edx
+    mov [ebx + RUN_lines], edx
+    lea ecx, [eax + 1]
+    cmp ecx, [esp + R_LAST]
+    jg .one
+    RUN_FROM .walk
+    cmp eax, [esp + R_LAST]
+    jne .walk                           ; (a third run: not a triangle's)
+    lea edx, [eax + 1]
+    sub edx, ecx
+    jmp .next
+.one:                                   ; no second run
+    xor edx, edx
+    xor esi, esi
+    xor edi, edi
+.next:
+    mov [ebx + RUN_next_lines], edx
+    mov [ebx + RUN_next_lower], esi
+    mov [ebx + RUN_next_upper], edi
+    ; the first row, the clip's columns, u and v at pixel 0 of the row, the steps
+    mov esi, [ebp + FTRI_setup]
+    mov edi, [ebp + FTRI_target]
+    mov ecx, [esp + F_LINE]
+    mov eax, [edi + TGT_pitch]
+    mov [ebx + RUN_pitch], eax
+    imul eax, ecx
+    add eax, [edi + TGT_base]
+    mov [ebx + RUN_row], eax
+    mov eax, [edi + TGT_clip + CLIP_x0]
+    mov [ebx + RUN_clip_lo], eax
+    mov eax, [edi + TGT_clip + CLIP_x1]
+    dec eax
+    mov [ebx + RUN_clip_hi], eax
+    RUN_PLANE PS_u_fx, RUN_u_16_16, RUN_du_16_16, RUN_u_row_16_16
+    RUN_PLANE PS_v_fx, RUN_v_16_16, RUN_dv_16_16, RUN_v_row_16_16
+    ; inside: the box within the clip's columns (min_x >= x0 * 256, max_x <= x1 * 256)
+    xor eax, eax
+    mov edx, [edi + TGT_clip + CLIP_x0]
+    shl edx, 8
+    cmp [esi + PS_min_x], edx
+    jl .inside
+    mov edx, [edi + TGT_clip + CLIP_x1]
+    shl edx, 8
+    cmp [esi + PS_max_x], edx
+    setle al
+.inside:
+    mov [ebx + RUN_inside], eax
+    mov eax, 1
+    jmp .done
+.empty:                                 ; no row: `lines` 0 alone
+    mov ebx, [ebp + FTRI_run]
+    mov dword [ebx + RUN_lines], 0
+    mov eax, 1
+    jmp .done
+.walk:
+    mov eax, 2
+    jmp .done
+.refuse_pop:
+    fstp st0
+.refuse:
+    xor eax, eax
+.done:
+    LOOP_LEAVE F_FRAME
+
 section .rodata
 align 8
 c_2_24:         dq 16777216.0
 c_65536:        dq 65536.0
 c_half:         dq 0.5
-c_small_floor:  dq 2147483647.0
 c_16384:        dq 16384.0

@@ -54,12 +54,7 @@ namespace {
         }
     }
     probe_lap(probe, Phase::Walk);
-    if (status == SetupStatus::Ok) {
-        ++stats->polygons;
-        ++stats->mapper_polygons[d.row];
-        stats->mapper_pixels[d.row] += stats->pixels - pixels_before;
-    } else if (status == SetupStatus::Degenerate) ++stats->skipped;
-    else ++stats->rejected;
+    count_polygon(stats, d.row, status, pixels_before);
     return status;
 }
 
@@ -88,6 +83,7 @@ Drawer Drawer::of(const Mapper& mapper, const Texture& tex, Axis axis, Target& t
     d.loop = mapper_loop(mapper, variant, target);
     d.row = int32_t(&mapper - MAPPERS);
     d.usable = checked || (mapper_walks(mapper, axis) && mapper_accepts(mapper, tex) && mapper_targets(mapper, target, axis));
+    d.own = d.usable && mapper.draw;
     return d;
 }
 

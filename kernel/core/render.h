@@ -39,9 +39,33 @@ struct Drawer {
     // `checked`: known usable (plan_auto checked it)
     static Drawer of(const Mapper& mapper, const Texture& tex, Axis axis, Target& target, RenderStats* stats, Variant variant,
                      bool checked = false);
+    bool own;      // usable, and the mapper has its own driver (draw_own)
     // draw_polygon with this mapper, texture, axis and target
     SetupStatus draw(const Vertex* vertices, int count, Input input = Input::Any) const;
+    // The same where `own`, inline: straight to the mapper's driver (a frame's loop).
+    SetupStatus draw_own(const Vertex* vertices, int count, Input input) const;
 };
+
+// Counts a polygon drawn (or not) with `row`'s mapper: its pixels those the statistics gained from
+// `pixels_before`. Every drawing of a polygon ends here.
+inline void count_polygon(RenderStats* stats, int32_t row, SetupStatus status, uint32_t pixels_before) {
+    if (status == SetupStatus::Ok) {
+        ++stats->polygons;
+        ++stats->mapper_polygons[row];
+        stats->mapper_pixels[row] += stats->pixels - pixels_before;
+    } else if (status == SetupStatus::Degenerate) ++stats->skipped;
+    else ++stats->rejected;
+}
+
+inline SetupStatus Drawer::draw_own(const Vertex* vertices, int count, Input input) const {
+    Probe* probe = stats->probe;
+    probe_lap(probe, Phase::Walk);  // what came before the polygon: the caller's loop
+    const uint32_t pixels_before = stats->pixels;
+    const SetupStatus status = mapper->draw(DrawContext{*tex, axis, *target, stats, loop, nullptr, input}, vertices, count);
+    probe_lap(probe, Phase::Walk);
+    count_polygon(stats, row, status, pixels_before);
+    return status;
+}
 
 // auto on an uncut triangle of an object whose envelope proves the mapper of `enveloped` (plan_auto,
 // choice.h; the drawer made once an object, checked): the mapper's own setup (affine planes), the

@@ -232,6 +232,33 @@ bool triangle_rows(const TriangleRowsArgs* a) {
     return triangle_bounds<true>(a->edges, &first, &last, a->origin_x, a->origin_y, a->lower, a->upper);
 }
 
+bool triangle_runs(TriangleRunsArgs* a) {
+    const PolygonSetup& s = *a->setup;
+    const int32_t min_x = int32_t(s.min_x), min_y = int32_t(s.min_y), max_x = int32_t(s.max_x), max_y = int32_t(s.max_y);
+    int32_t first, last;
+    box_lines(min_y, max_y, a->clip_lo, a->clip_hi, &first, &last);
+    a->line = first;
+    a->lines = a->next_lines = 0;
+    a->run_lower = a->run_upper = a->next_lower = a->next_upper = nullptr;
+    if (first > last) return true;
+    if (!small_box(min_x, min_y, max_x, max_y)) return false;
+    const TriangleRowsArgs rows{s.edges, first, last, min_x >> SUBPIXEL_BITS, min_y >> SUBPIXEL_BITS, a->lower, a->upper};
+    if (!triangle_rows(&rows)) return false;
+    EdgeBound *lo = a->lower, *hi = a->upper;
+    const int32_t lines = run_from(&lo, &hi, first, last);
+    if (lines == 0) return false;
+    const int32_t next = first + lines;
+    int32_t next_lines = 0;
+    if (next <= last) {
+        a->next_lower = lo, a->next_upper = hi;  // (then moved on to the second run's bounds)
+        next_lines = run_from(&a->next_lower, &a->next_upper, next, last);
+        if (next_lines != last - next + 1) return false;  // (0, or a third run: not a triangle's)
+    }
+    a->lines = lines, a->next_lines = next_lines;
+    a->run_lower = lo, a->run_upper = hi;
+    return true;
+}
+
 template <bool ROWS>
 void EdgeWalker::build_triangle(const PolygonSetup& s, int32_t first, int32_t last, int32_t origin_x, int32_t origin_y) {
 #if defined(MODEXLAB_ASM_LOOPS)

@@ -55,6 +55,66 @@ bool triangle_rows(const TriangleRowsArgs* a);
 extern "C" int triangle_rows_asm(const TriangleRowsArgs* a);
 #endif
 
+// The lines whose centre lies within a box's sides lo..hi along them (subpixels; the first at or
+// after lo, the last at or before hi: ceil and floor of (p - 128) / 256, as arithmetic shifts),
+// inside the clip's clip_lo..clip_hi; first > last where none.
+inline void box_lines(int32_t lo, int32_t hi, int32_t clip_lo, int32_t clip_hi, int32_t* first, int32_t* last) {
+    constexpr int32_t HALF = int32_t(SUBPIXEL_HALF), ONE = int32_t(SUBPIXEL_ONE);
+    *first = (lo - HALF + ONE - 1) >> SUBPIXEL_BITS;
+    *last = (hi - HALF) >> SUBPIXEL_BITS;
+    if (*first < clip_lo) *first = clip_lo;
+    if (*last > clip_hi) *last = clip_hi;
+}
+// Whether a box is under 64 pixels a side: the walkers' 32-bit builds (EdgeWalker's constructor).
+inline bool small_box(int32_t min_x, int32_t min_y, int32_t max_x, int32_t max_y) {
+    constexpr int32_t SMALL = 64 << SUBPIXEL_BITS;
+    return max_x - min_x < SMALL && max_y - min_y < SMALL;
+}
+
+// A run from `line` on (EdgeWalker::run's work, on chains built as the walker builds them): each
+// cursor moved to its side's bound live on `line`; the lines from `line` on (at most to `last`)
+// where each side keeps that one live bound, or 0 where a side has two live on `line` (a vertex on
+// its centre). The cursors and the sentinels stop the scans, as in tightest().
+inline int32_t run_from(EdgeBound** lower, EdgeBound** upper, int32_t line, int32_t last) {
+    EdgeBound* lo = *lower;
+    while (lo->last < line) ++lo;
+    *lower = lo;
+    EdgeBound* hi = *upper;
+    while (hi->last < line) ++hi;
+    *upper = hi;
+    if (lo[1].first <= line || hi[1].first <= line) return 0;
+    int32_t end = last;
+    if (lo->last < end) end = lo->last;
+    if (hi->last < end) end = hi->last;
+    if (lo[1].first - 1 < end) end = lo[1].first - 1;  // (sentinels: first = INT32_MAX)
+    if (hi[1].first - 1 < end) end = hi[1].first - 1;
+    return end - line + 1;
+}
+
+// A set-up triangle's rows as the fast drivers walk them, in one call: EdgeWalker's work on it
+// (the rows whose centre lies in its box, inside the clip; the 32-bit chains of a box under 64
+// pixels a side) and then its runs (run_from), at most two.
+struct TriangleRunsArgs {
+    const PolygonSetup* setup;  // a triangle's (edge_count 3)
+    int32_t clip_lo, clip_hi;   // the clip's rows, inclusive
+    EdgeBound* lower;           // room for three each: the chains
+    EdgeBound* upper;
+    // Out, where 1 is returned: `lines` rows from `line` between run_lower and run_upper, then
+    // next_lines rows between next_lower and next_upper (a triangle's two runs); `lines` 0: no row
+    // to walk; next_lines 0: no second run. The pointers of an absent run are null.
+    int32_t line, lines;
+    EdgeBound* run_lower;
+    EdgeBound* run_upper;
+    int32_t next_lines;
+    EdgeBound* next_lower;
+    EdgeBound* next_upper;
+};
+// True with the runs, or false where EdgeWalker must walk the triangle (its box 64 pixels or more
+// a side, an edge along a row, a vertex on a row's centre between two edges of a side), the
+// outputs and the chains then unspecified. (The fast drivers' NASM routine fast_triangle_asm does
+// this after the setup: its twin calls this.)
+bool triangle_runs(TriangleRunsArgs* a);
+
 class EdgeWalker {
 public:
     EdgeWalker(const PolygonSetup& s, Axis axis, const ClipRect& clip);
@@ -88,22 +148,12 @@ public:
     // when the current line has two live bounds on a side (walk it with next()) or the walk is done.
     int32_t run(int32_t* line, EdgeBound** lower, EdgeBound** upper) {
         if (line_ > last_line_) return 0;
-        EdgeBound* lo = lower_cur_;
-        while (lo->last < line_) ++lo;
-        lower_cur_ = lo;
-        EdgeBound* hi = upper_cur_;
-        while (hi->last < line_) ++hi;
-        upper_cur_ = hi;
-        if (lo[1].first <= line_ || hi[1].first <= line_) return 0;
-        int32_t end = last_line_;
-        if (lo->last < end) end = lo->last;
-        if (hi->last < end) end = hi->last;
-        if (lo[1].first - 1 < end) end = lo[1].first - 1;  // (sentinels: first = INT32_MAX)
-        if (hi[1].first - 1 < end) end = hi[1].first - 1;
+        const int32_t lines = run_from(&lower_cur_, &upper_cur_, line_, last_line_);
+        if (lines == 0) return 0;
         *line = line_;
-        *lower = lo;
-        *upper = hi;
-        return end - line_ + 1;
+        *lower = lower_cur_;
+        *upper = upper_cur_;
+        return lines;
     }
     void skip(int32_t lines) { line_ += lines; }
     // The clip rectangle across a line, inclusive.
@@ -118,15 +168,8 @@ private:
         constexpr bool rows = ROWS;
         // (the box is within setup's range, 2^22 subpixels: 32 bits hold it and its sides)
         const int32_t min_x = int32_t(s.min_x), min_y = int32_t(s.min_y), max_x = int32_t(s.max_x), max_y = int32_t(s.max_y);
-        // lines whose centre lies within the bounding box (the first at or after its low side, the
-        // last at or before its high side: ceil and floor of (p - 128) / 256, as arithmetic shifts),
-        // inside the clip rectangle
-        constexpr int32_t HALF = int32_t(SUBPIXEL_HALF), ONE = int32_t(SUBPIXEL_ONE);
-        int32_t first = ((rows ? min_y : min_x) - HALF + ONE - 1) >> SUBPIXEL_BITS;
-        int32_t last = ((rows ? max_y : max_x) - HALF) >> SUBPIXEL_BITS;
-        const int32_t clip_lo = rows ? clip.y0 : clip.x0, clip_hi = (rows ? clip.y1 : clip.x1) - 1;
-        if (first < clip_lo) first = clip_lo;
-        if (last > clip_hi) last = clip_hi;
+        int32_t first, last;
+        box_lines(rows ? min_y : min_x, rows ? max_y : max_x, rows ? clip.y0 : clip.x0, (rows ? clip.y1 : clip.x1) - 1, &first, &last);
         minor_lo_ = rows ? clip.x0 : clip.y0;
         minor_hi_ = (rows ? clip.x1 : clip.y1) - 1;
         line_ = first;
@@ -137,9 +180,8 @@ private:
         // i686 64-bit products and divisions are several instructions or a libgcc call each). The
         // bounds come out the same: moving the polygon and the pixel grid by whole pixels moves
         // each bound's quotient by as many pixels and leaves its remainder.
-        constexpr int32_t SMALL = 64 << SUBPIXEL_BITS;
         // (a triangle by its own build: most polygons of a mesh are small triangles)
-        if (max_x - min_x < SMALL && max_y - min_y < SMALL) {
+        if (small_box(min_x, min_y, max_x, max_y)) {
             const int32_t ox = min_x >> SUBPIXEL_BITS, oy = min_y >> SUBPIXEL_BITS;  // (floors)
             if (s.edge_count == 3 && rows)
                 build_triangle<true>(s, first, last, ox, oy);

@@ -49,6 +49,14 @@ struct Planes {
     return true;
 }
 
+// The run loop's `inside`: whether the box lies within the clip's columns (a pixel whose centre lies
+// in the box [min_x, max_x] lies in [x0, x1) where the box does; the box, within setup's range, and
+// the clip's sides in subpixels within 32 bits).
+inline int32_t inside_columns(const PolygonSetup& s, const ClipRect& clip) {
+    constexpr int32_t ONE = int32_t(SUBPIXEL_ONE);
+    return int32_t(s.min_x) >= clip.x0 * ONE && int32_t(s.max_x) <= clip.x1 * ONE;
+}
+
 // The polygon's setup (affine planes): the one auto made already, else set up here into `own`.
 const PolygonSetup* set_up(const DrawContext& c, const Vertex* vertices, int count, PolygonSetup* own, SetupStatus* status) {
     *status = SetupStatus::Ok;
@@ -61,20 +69,38 @@ const PolygonSetup* set_up(const DrawContext& c, const Vertex* vertices, int cou
 
 namespace {
 
+// The triangle's set-up in one call (fast_triangle's, or its NASM routine's where built in).
+inline int set_up_triangle(FastTriangleArgs* t) {
+#if defined(MODEXLAB_ASM_LOOPS)
+    return fast_triangle_asm(t);
+#else
+    return fast_triangle(t);
+#endif
+}
+
 // Rows go by runs: a run's rows have one live bound a side, so the run loop walks them itself, two
 // runs a call where the second follows at once (a triangle's, but where a vertex lies on a row's
-// centre). A row with a vertex on its centre (two live bounds on a side) is walked by next() and
-// drawn as a run of one row between constant bounds. With an offset table (fast-table), the table
-// for the polygon's longest span is built once, after the walker (what the setup phase counts).
+// centre). A frame's uncut triangle is set up with its runs and the loop's block in one call
+// (set_up_triangle); any other polygon, and a triangle that call leaves, by setup_polygon and the
+// walker, where a row with a vertex on its centre (two live bounds on a side) is walked by next()
+// and drawn as a run of one row between constant bounds. With an offset table (fast-table), the
+// table for the polygon's longest span is built once, after the walk's set-up (what the setup
+// phase counts).
 template <bool TABLE>
 [[gnu::always_inline]] inline SetupStatus draw_runs(const DrawContext& c, const Vertex* vertices, int count) {
+    FastRunArgs a;
+    a.texture = c.tex.aligned256;
     PolygonSetup own;
-    SetupStatus status;
-    const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
+    FastTriangleArgs t;  // (the chains' room, and its outputs written by the call)
+    int taken = 0;       // set_up_triangle's answer, 0: not asked
+    if (count == 3 && !c.setup && c.input == Input::InRange) {
+        t.in = vertices, t.setup = &own, t.run = &a, t.target = &c.target;
+        taken = set_up_triangle(&t);
+    }
+    SetupStatus status = SetupStatus::Ok;
+    const PolygonSetup& s = taken ? own : *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
     if (c.tex.wrap == Wrap::Clamp && !reads_inside(s, c.tex, c.target.clip, TABLE ? 1 : 0)) return SetupStatus::Unsupported;
-    EdgeWalker walker(s, EdgeWalker::Along<Axis::Rows>{}, c.target.clip);
-    const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
     int32_t table_x = 0;  // fast-table: the pixel its offsets start at, at or left of every span's first
     if constexpr (TABLE) {
@@ -84,47 +110,57 @@ template <bool TABLE>
         table_x = box_lo > c.target.clip.x0 ? box_lo : c.target.clip.x0;
         const int32_t last = box_hi < c.target.clip.x1 - 1 ? box_hi : c.target.clip.x1 - 1;
         if (last >= TABLE_LIMIT) return SetupStatus::Unsupported;  // (a target wider than any screen: never here)
-        if (last >= table_x) build_offset_table(int32_t(p.udx), int32_t(p.vdx), last - table_x + 1, table + table_x);
+        if (last >= table_x) build_offset_table(s.u_fx.dx, s.v_fx.dx, last - table_x + 1, table + table_x);
+        a.table = table;
     }
-    setup_done(c);
     uint32_t drawn[2] = {0, 0};  // spans, pixels
-    FastRunArgs a;
-    a.pitch = c.target.pitch;
-    a.clip_lo = walker.minor_lo();
-    a.clip_hi = walker.minor_hi();
-    a.texture = c.tex.aligned256;
-    a.u_row_16_16 = p.udy;
-    a.v_row_16_16 = p.vdy;
-    a.du_16_16 = int32_t(p.udx);
-    a.dv_16_16 = int32_t(p.vdx);
     a.tally = drawn;
-    if constexpr (TABLE) a.table = table;
-    // (a pixel whose centre lies in the box [min_x, max_x] lies in [x0, x1) where the box does)
-    a.inside = s.min_x >= int64_t(c.target.clip.x0) * SUBPIXEL_ONE && s.max_x <= int64_t(c.target.clip.x1) * SUBPIXEL_ONE;
-    for (;;) {
-        int32_t line, next_line;  // (next_line: line + a.lines, runs being contiguous; run() writes it)
-        EdgeBound lone_lower, lone_upper;
-        a.lines = walker.run(&line, &a.lower, &a.upper);
-        a.next_lines = 0;
+    if (taken == 1) {
+        setup_done(c);
         if (a.lines > 0) {
-            walker.skip(a.lines);
-            // the run after it, where one follows at once, in the same call (a triangle's two)
-            a.next_lines = walker.run(&next_line, &a.next_lower, &a.next_upper);
-            walker.skip(a.next_lines);
-        } else {
-            Span span;
-            if (!walker.next(&span)) break;
-            lone_lower = EdgeBound::constant(span.x);
-            lone_upper = EdgeBound::constant(span.x + span.count - 1);
-            a.lower = &lone_lower;
-            a.upper = &lone_upper;
-            a.lines = 1;
-            line = span.y;
+            if constexpr (TABLE) {  // u and v at the table's first pixel, not at pixel 0
+                a.u_16_16 += uint32_t(table_x) * uint32_t(a.du_16_16);
+                a.v_16_16 += uint32_t(table_x) * uint32_t(a.dv_16_16);
+            }
+            emit(c, &a, 0, 0);  // the run loop counts what it draws
         }
-        a.row = c.target.base + line * c.target.pitch;
-        a.u_16_16 = p.u(table_x, line);  // (fast-affine: at pixel 0)
-        a.v_16_16 = p.v(table_x, line);
-        emit(c, &a, 0, 0);  // the run loop counts what it draws
+    } else {
+        EdgeWalker walker(s, EdgeWalker::Along<Axis::Rows>{}, c.target.clip);
+        const Planes p(s);
+        setup_done(c);
+        a.pitch = c.target.pitch;
+        a.clip_lo = walker.minor_lo();
+        a.clip_hi = walker.minor_hi();
+        a.u_row_16_16 = p.udy;
+        a.v_row_16_16 = p.vdy;
+        a.du_16_16 = int32_t(p.udx);
+        a.dv_16_16 = int32_t(p.vdx);
+        a.inside = inside_columns(s, c.target.clip);
+        for (;;) {
+            int32_t line, next_line;  // (next_line: line + a.lines, runs being contiguous; run() writes it)
+            EdgeBound lone_lower, lone_upper;
+            a.lines = walker.run(&line, &a.lower, &a.upper);
+            a.next_lines = 0;
+            if (a.lines > 0) {
+                walker.skip(a.lines);
+                // the run after it, where one follows at once, in the same call (a triangle's two)
+                a.next_lines = walker.run(&next_line, &a.next_lower, &a.next_upper);
+                walker.skip(a.next_lines);
+            } else {
+                Span span;
+                if (!walker.next(&span)) break;
+                lone_lower = EdgeBound::constant(span.x);
+                lone_upper = EdgeBound::constant(span.x + span.count - 1);
+                a.lower = &lone_lower;
+                a.upper = &lone_upper;
+                a.lines = 1;
+                line = span.y;
+            }
+            a.row = c.target.base + line * c.target.pitch;
+            a.u_16_16 = p.u(table_x, line);  // (fast-affine: at pixel 0)
+            a.v_16_16 = p.v(table_x, line);
+            emit(c, &a, 0, 0);  // the run loop counts what it draws
+        }
     }
     tally(c.stats, drawn[0], drawn[1]);
     return SetupStatus::Ok;
@@ -276,6 +312,29 @@ void run_rows(const FastRunArgs& a, Span&& span) {
 }
 
 }  // namespace
+
+int fast_triangle(FastTriangleArgs* a) {
+    if (setup_polygon_cpp(a->in, 3, a->setup, PLANES_AFFINE, Input::InRange) != SetupStatus::Ok) return 0;
+    const PolygonSetup& s = *a->setup;
+    const Target& target = *a->target;
+    TriangleRunsArgs t;
+    t.setup = &s, t.clip_lo = target.clip.y0, t.clip_hi = target.clip.y1 - 1, t.lower = a->lower, t.upper = a->upper;
+    if (!triangle_runs(&t)) return 2;
+    FastRunArgs& r = *a->run;
+    r.lines = t.lines;
+    if (t.lines == 0) return 1;
+    r.lower = t.run_lower, r.upper = t.run_upper;
+    r.next_lines = t.next_lines, r.next_lower = t.next_lower, r.next_upper = t.next_upper;
+    r.pitch = target.pitch;
+    r.clip_lo = target.clip.x0, r.clip_hi = target.clip.x1 - 1;
+    r.row = target.base + t.line * target.pitch;
+    r.u_16_16 = uint32_t(s.u_fx.value(0, t.line));
+    r.v_16_16 = uint32_t(s.v_fx.value(0, t.line));
+    r.u_row_16_16 = uint32_t(s.u_fx.dy), r.v_row_16_16 = uint32_t(s.v_fx.dy);
+    r.du_16_16 = s.u_fx.dx, r.dv_16_16 = s.v_fx.dx;
+    r.inside = fast::inside_columns(s, target.clip);
+    return 1;
+}
 
 void fast_run_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
@@ -499,6 +558,9 @@ void fast_offsets() {
     ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)
     ASM_SIZE(EDGE_SIZE, Edge);
     ASM_FIELDS(TRI, TriangleRowsArgs, edges, first, last, origin_x, origin_y, lower, upper)
+    ASM_FIELDS(FTRI, FastTriangleArgs, in, setup, run, target, lower, upper)
+    ASM_FIELDS(TGT, Target, base, pitch, clip)
+    ASM_FIELDS(CLIP, ClipRect, x0, y0, x1, y1)
     ASM_FIELDS(VERT, Vertex, x, y, u, v)
     ASM_SIZE(VERT_SIZE, Vertex);
     ASM_FIELDS(PS, PolygonSetup, edge_count, edges, area2, ref_x, ref_y, min_x, min_y, max_x, max_y, u, v, u_fx, v_fx)

@@ -39,6 +39,26 @@ struct FastRunArgs {
 };
 void fast_run_loop(const void* args);
 
+// A triangle in range (a frame's uncut face) drawn by a run loop, set up and its walk set up in one
+// call: setup_polygon's work (PLANES_AFFINE, Input::InRange) into `setup`, then triangle_runs on it
+// (the target's clip), and the run loop's block from them: lines, and where it is not 0 (a row to
+// walk) row, pitch, the clip's columns, the runs, u and v at pixel 0 of the first row, their steps
+// and `inside` (texture, tally and table are the caller's). Returns 1; 2 where only the setup is
+// written (the walker walks it: triangle_runs says no); 0 where setup_polygon must set it up (the
+// NASM routine leaves some triangles to C++). The twin, fast_triangle, sets up every triangle in
+// C++; fast_triangle_asm (asm/fast.asm) is the NASM routine.
+struct FastTriangleArgs {
+    const Vertex* in;
+    PolygonSetup* setup;
+    FastRunArgs* run;
+    const Target* target;  // linear
+    EdgeBound lower[3], upper[3];  // the chains
+};
+int fast_triangle(FastTriangleArgs* a);
+#if defined(MODEXLAB_ASM_LOOPS)
+extern "C" int fast_triangle_asm(FastTriangleArgs* a);
+#endif
+
 // fast-table: the offsets of pixel k of any span from its first pixel's texel in the tiled block,
 // for a polygon whose u and v step by du and dv (16.16) a pixel: table[k] = (floor(k dv) & 255) * 256
 // + (floor(c + k du) & 255), the floors of 16.16 values in exact integer arithmetic, c =

@@ -423,9 +423,11 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
         const Mapper* unchosen = nullptr;
         // an uncut face's corners are within setup's limits (Frame::polygon_whole)
         const Input input = frame.polygon_whole[i] ? Input::InRange : Input::Any;
-        if (!mapper.chooses)
-            drawers[object].draw(v, n, input);
-        else if (plan.enveloped && frame.polygon_whole[i] && n == 3)
+        if (!mapper.chooses) {
+            const Drawer& d = drawers[object];
+            if (d.own) d.draw_own(v, n, input);
+            else d.draw(v, n, input);
+        } else if (plan.enveloped && frame.polygon_whole[i] && n == 3)
             draw_enveloped(drawers[object], v, variant, frame.budget);
         else if ((unchosen = unchosen_mapper(plan, v, n, target.clip, &unchosen_axis)) && unchosen == plan.certain)
             certain[object][int(unchosen_axis)].draw(v, n, input);

@@ -128,11 +128,12 @@ namespace {
 // The walker takes polygons under 64 pixels a side in 32 bits, relative to their box's pixel
 // corner, and larger ones in 64 bits: each walks exactly the pixels covers() accepts, by rows and
 // by columns, anywhere in the coordinate range (the clip moved to the polygon), with the run loop's
-// view of the bounds (run/skip, stepping them) the same as next()'s; polygons on either side of
-// the 64-pixel line, on and off the half-pixel grid.
+// view of the bounds (run/skip, stepping them) the same as next()'s, and a triangle's runs from
+// triangle_runs (where it takes them) the same again; polygons on either side of the 64-pixel
+// line, on and off the half-pixel grid.
 TEST(FillRule, BothWidthsOfTheWalkerCoverExactlyTheCoveredPixels) {
     TriangleGen gen(20261124u);
-    int small = 0, large = 0;
+    int small = 0, large = 0, runs = 0;
     for (int n = 0; n < 3000 / SANITIZED_SHARE; ++n) {
         const double size = n % 2 ? gen.uniform(0.2, 63.9) : gen.uniform(60, 140);
         const double cx = gen.uniform(-16000, 16000), cy = gen.uniform(-16000, 16000);
@@ -174,17 +175,34 @@ TEST(FillRule, BothWidthsOfTheWalkerCoverExactlyTheCoveredPixels) {
                 }
                 r.skip(lines);
             }
+            // a triangle's rows from triangle_runs (the fast drivers'), where it takes them
+            std::vector<int> fused(seen.size(), 0);
+            EdgeBound lower[3], upper[3];
+            TriangleRunsArgs t{&s, clip.y0, clip.y1 - 1, lower, upper, 0, 0, nullptr, nullptr, 0, nullptr, nullptr};
+            const bool taken = axis == Axis::Rows && s.edge_count == 3 && triangle_runs(&t);
+            if (taken) {
+                ++runs;
+                const int32_t lines[2] = {t.lines, t.lines > 0 ? t.next_lines : 0};
+                EdgeBound* bounds[2][2] = {{t.run_lower, t.run_upper}, {t.next_lower, t.next_upper}};
+                for (int32_t run = 0, line = t.line; run < 2; ++run)
+                    for (int32_t l = 0; l < lines[run]; ++l, ++line, bounds[run][0]->step(), bounds[run][1]->step()) {
+                        const int32_t a = std::max(bounds[run][0]->q, clip.x0), b = std::min(bounds[run][1]->q, clip.x1 - 1);
+                        for (int32_t m = a; m <= b; ++m) mark(fused, m, line);
+                    }
+            }
             for (int32_t y = y0; y < y1; ++y)
                 for (int32_t x = x0; x < x1; ++x) {
                     const bool inside = covers(s, x, y) && x >= clip.x0 && x < clip.x1 && y >= clip.y0 && y < clip.y1;
                     const size_t k = size_t(y - y0) * size_t(x1 - x0) + size_t(x - x0);
                     ASSERT_EQ(seen[k], inside ? 1 : 0) << "polygon " << n << (axis == Axis::Rows ? " rows" : " columns") << " at " << x << "," << y;
                     ASSERT_EQ(stepped[k], seen[k]) << "polygon " << n << " run loop at " << x << "," << y;
+                    ASSERT_EQ(fused[k], taken ? seen[k] : 0) << "polygon " << n << " triangle_runs at " << x << "," << y;
                 }
         }
     }
     EXPECT_GT(small, 500 / SANITIZED_SHARE);
     EXPECT_GT(large, 500 / SANITIZED_SHARE);
+    EXPECT_GT(runs, 300 / SANITIZED_SHARE) << "small triangles walked by triangle_runs";
 }
 
 }  // namespace
