@@ -5,37 +5,37 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1050.3f, 346.91f, 40.363f}, // 10 scenes
-    {"exact", 1007.0f, 314.32f, 80.334f}, // 10 scenes
-    {"persp-subdiv-4", 1007.0f, 319.72f, 91.398f}, // 10 scenes
-    {"persp-subdiv-8", 1007.0f, 374.47f, 59.530f}, // 10 scenes
-    {"persp-subdiv-16", 1007.0f, 413.51f, 43.462f}, // 10 scenes
-    {"persp-subdiv-32", 1007.0f, 433.94f, 35.610f}, // 10 scenes
-    {"constant-depth", 1007.0f, 450.25f, 29.833f}, // 10 scenes
-    {"persp-adaptive-0.5", 1007.0f, 832.63f, 316.397f}, // 10 scenes
-    {"persp-adaptive-1", 1007.0f, 998.86f, 51.395f}, // 10 scenes
-    {"persp-adaptive-2", 1007.0f, 1015.72f, 44.236f}, // 10 scenes
-    {"persp-adaptive-4", 1007.0f, 1027.69f, 40.060f}, // 10 scenes
-    {"fast-affine", 1040.4f, 149.27f, 4.235f}, // 10 scenes
-    {"fast-table", 1245.0f, 137.37f, 1.140f}, // 10 scenes
-    {"fast-columns", 1136.4f, 253.25f, 5.576f}, // 10 scenes
-    {"fast-table-columns", 1344.2f, 249.74f, 2.741f}, // 10 scenes
-    {"fast-subdiv-8", 1007.0f, 295.46f, 13.609f}, // 10 scenes
-    {"fast-subdiv-16", 1007.0f, 305.23f, 9.685f}, // 10 scenes
-    {"fast-subdiv-32", 1007.0f, 310.08f, 7.785f}, // 10 scenes
-    {"fast-constant-depth", 1007.0f, 314.43f, 6.226f}, // 10 scenes
-    {"fast-adaptive-1", 1007.0f, 337.74f, 9.367f}, // 10 scenes
-    {"fast-adaptive-2", 1007.0f, 341.33f, 7.942f}, // 10 scenes
-    {"fast-oriented-1", 1165.3f, 361.38f, 7.379f}, // 10 scenes
-    {"xsharp-dda", 1515.0f, 378.08f, 38.003f}, // 9 scenes
-    {"xsharp-row-out", 1515.0f, 513.39f, 19.501f}, // 9 scenes
-    {"xsharp-column", 1518.7f, 485.71f, 13.233f}, // 9 scenes
-    {"hecker-steptable", 5328.9f, 0.00f, 636.391f}, // 9 scenes
-    {"fatmap-256", 1726.7f, 166.05f, 13.525f}, // 8 scenes
-    {"fatmap-256-16", 1726.7f, 171.05f, 12.525f}, // 8 scenes
-    {"fatmap-lut", 2343.5f, 169.57f, 9.919f}, // 7 scenes
-    {"quake-subdiv16", 1496.7f, 305.32f, 13.804f}, // 9 scenes
-    {"quake-subdiv8", 1496.7f, 289.95f, 20.165f}, // 9 scenes
+    {"affine", 1027.3f, 348.76f, 40.328f}, // 10 scenes
+    {"exact", 1008.8f, 316.17f, 80.299f}, // 10 scenes
+    {"persp-subdiv-4", 1008.8f, 321.57f, 91.364f}, // 10 scenes
+    {"persp-subdiv-8", 1008.8f, 376.32f, 59.496f}, // 10 scenes
+    {"persp-subdiv-16", 1008.8f, 415.36f, 43.428f}, // 10 scenes
+    {"persp-subdiv-32", 1008.8f, 435.79f, 35.576f}, // 10 scenes
+    {"constant-depth", 1008.8f, 452.10f, 29.799f}, // 10 scenes
+    {"persp-adaptive-0.5", 1008.8f, 834.47f, 316.363f}, // 10 scenes
+    {"persp-adaptive-1", 1008.8f, 1000.71f, 51.361f}, // 10 scenes
+    {"persp-adaptive-2", 1008.8f, 1017.57f, 44.202f}, // 10 scenes
+    {"persp-adaptive-4", 1008.8f, 1029.54f, 40.025f}, // 10 scenes
+    {"fast-affine", 1042.5f, 109.40f, 5.136f}, // 10 scenes
+    {"fast-table", 1241.2f, 96.90f, 2.054f}, // 10 scenes
+    {"fast-columns", 1115.5f, 250.35f, 5.641f}, // 10 scenes
+    {"fast-table-columns", 1322.3f, 247.06f, 2.801f}, // 10 scenes
+    {"fast-subdiv-8", 1008.8f, 297.31f, 13.575f}, // 10 scenes
+    {"fast-subdiv-16", 1008.8f, 307.08f, 9.651f}, // 10 scenes
+    {"fast-subdiv-32", 1008.8f, 311.93f, 7.751f}, // 10 scenes
+    {"fast-constant-depth", 1008.8f, 316.27f, 6.193f}, // 10 scenes
+    {"fast-adaptive-1", 1008.8f, 339.59f, 9.333f}, // 10 scenes
+    {"fast-adaptive-2", 1008.8f, 343.18f, 7.909f}, // 10 scenes
+    {"fast-oriented-1", 1168.0f, 358.04f, 7.425f}, // 10 scenes
+    {"xsharp-dda", 1518.0f, 375.07f, 38.067f}, // 9 scenes
+    {"xsharp-row-out", 1518.0f, 510.38f, 19.565f}, // 9 scenes
+    {"xsharp-column", 1521.7f, 483.11f, 13.287f}, // 9 scenes
+    {"hecker-steptable", 5331.9f, 0.00f, 636.293f}, // 9 scenes
+    {"fatmap-256", 1729.5f, 162.97f, 13.627f}, // 8 scenes
+    {"fatmap-256-16", 1729.5f, 167.97f, 12.627f}, // 8 scenes
+    {"fatmap-lut", 2346.3f, 166.46f, 10.031f}, // 7 scenes
+    {"quake-subdiv16", 1501.6f, 302.52f, 13.863f}, // 9 scenes
+    {"quake-subdiv8", 1501.6f, 287.16f, 20.224f}, // 9 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
