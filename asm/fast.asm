@@ -851,6 +851,7 @@ fast_triangle_asm:
     SETUP_TRIANGLE
     mov esi, ebp                        ; the setup
     mov ebp, LOOP_ARG(F_FRAME)
+.runs:                                  ; (fast_triangle_runs_asm joins here: esi the setup, ebp the block)
     ; the rows whose centre lies in the box, inside the clip (box_lines)
     mov eax, [esi + PS_min_y]
     lea ecx, [eax + 127]
@@ -972,6 +973,16 @@ fast_triangle_asm:
     xor eax, eax
 .done:
     LOOP_LEAVE F_FRAME
+
+; fast_triangle_runs_asm(FastTriangleArgs* a): the same for a triangle set up already (`setup` read,
+; any plane set but the 16.16 ones unread): from the rows on (twin: fast_triangle_runs). Returns 1,
+; or 2 where the walker must walk it.
+global fast_triangle_runs_asm
+fast_triangle_runs_asm:
+    LOOP_ENTER F_FRAME
+    mov ebp, LOOP_ARG(F_FRAME)
+    mov esi, [ebp + FTRI_setup]
+    jmp fast_triangle_asm.runs
 
 section .rodata
 align 8

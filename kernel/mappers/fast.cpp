@@ -69,7 +69,8 @@ const PolygonSetup* set_up(const DrawContext& c, const Vertex* vertices, int cou
 
 namespace {
 
-// The triangle's set-up in one call (fast_triangle's, or its NASM routine's where built in).
+// The triangle's set-up in one call (fast_triangle's, or its NASM routine's where built in), and
+// the same from the rows on (fast_triangle_runs').
 inline int set_up_triangle(FastTriangleArgs* t) {
 #if defined(MODEXLAB_ASM_LOOPS)
     return fast_triangle_asm(t);
@@ -77,11 +78,19 @@ inline int set_up_triangle(FastTriangleArgs* t) {
     return fast_triangle(t);
 #endif
 }
+inline int walk_triangle(FastTriangleArgs* t) {
+#if defined(MODEXLAB_ASM_LOOPS)
+    return fast_triangle_runs_asm(t);
+#else
+    return fast_triangle_runs(t);
+#endif
+}
 
 // Rows go by runs: a run's rows have one live bound a side, so the run loop walks them itself, two
 // runs a call where the second follows at once (a triangle's, but where a vertex lies on a row's
 // centre). A frame's uncut triangle is set up with its runs and the loop's block in one call
-// (set_up_triangle); any other polygon, and a triangle that call leaves, by setup_polygon and the
+// (set_up_triangle), any other triangle's runs and block come from one call after its setup
+// (walk_triangle); any other polygon, and a triangle those leave, goes by setup_polygon and the
 // walker, where a row with a vertex on its centre (two live bounds on a side) is walked by next()
 // and drawn as a run of one row between constant bounds. With an offset table (fast-table), the
 // table for the polygon's longest span is built once, after the walk's set-up (what the setup
@@ -92,14 +101,16 @@ template <bool TABLE>
     a.texture = c.tex.aligned256;
     PolygonSetup own;
     FastTriangleArgs t;  // (the chains' room, and its outputs written by the call)
-    int taken = 0;       // set_up_triangle's answer, 0: not asked
-    if (count == 3 && !c.setup && c.input == Input::InRange) {
-        t.in = vertices, t.setup = &own, t.run = &a, t.target = &c.target;
-        taken = set_up_triangle(&t);
-    }
+    t.in = vertices, t.setup = &own, t.run = &a, t.target = &c.target;
+    int taken = 0;  // set_up_triangle's or walk_triangle's answer, 0: neither has taken it
+    if (count == 3 && !c.setup && c.input == Input::InRange) taken = set_up_triangle(&t);
     SetupStatus status = SetupStatus::Ok;
     const PolygonSetup& s = taken ? own : *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
+    if (!taken && s.edge_count == 3) {  // a triangle set up already (auto's), or by setup_polygon
+        t.setup = const_cast<PolygonSetup*>(&s);  // (read only)
+        taken = walk_triangle(&t);
+    }
     if (c.tex.wrap == Wrap::Clamp && !reads_inside(s, c.tex, c.target.clip, TABLE ? 1 : 0)) return SetupStatus::Unsupported;
     int32_t table[TABLE ? TABLE_LIMIT : 1];
     int32_t table_x = 0;  // fast-table: the pixel its offsets start at, at or left of every span's first
@@ -315,6 +326,10 @@ void run_rows(const FastRunArgs& a, Span&& span) {
 
 int fast_triangle(FastTriangleArgs* a) {
     if (setup_polygon_cpp(a->in, 3, a->setup, PLANES_AFFINE, Input::InRange) != SetupStatus::Ok) return 0;
+    return fast_triangle_runs(a);
+}
+
+int fast_triangle_runs(FastTriangleArgs* a) {
     const PolygonSetup& s = *a->setup;
     const Target& target = *a->target;
     TriangleRunsArgs t;

@@ -47,16 +47,21 @@ void fast_run_loop(const void* args);
 // written (the walker walks it: triangle_runs says no); 0 where setup_polygon must set it up (the
 // NASM routine leaves some triangles to C++). The twin, fast_triangle, sets up every triangle in
 // C++; fast_triangle_asm (asm/fast.asm) is the NASM routine.
+// fast_triangle_runs is the same from the rows on, for a triangle set up already (`setup` read, its
+// 16.16 planes among what it holds: auto's, or setup_polygon's on a polygon of three corners after
+// any check): 1, or 2 for the walker. Twin and NASM as above (fast_triangle_runs_asm).
 struct FastTriangleArgs {
     const Vertex* in;
-    PolygonSetup* setup;
+    PolygonSetup* setup;  // (fast_triangle_runs: read, never written)
     FastRunArgs* run;
     const Target* target;  // linear
     EdgeBound lower[3], upper[3];  // the chains
 };
 int fast_triangle(FastTriangleArgs* a);
+int fast_triangle_runs(FastTriangleArgs* a);
 #if defined(MODEXLAB_ASM_LOOPS)
 extern "C" int fast_triangle_asm(FastTriangleArgs* a);
+extern "C" int fast_triangle_runs_asm(FastTriangleArgs* a);
 #endif
 
 // fast-table: the offsets of pixel k of any span from its first pixel's texel in the tiled block,

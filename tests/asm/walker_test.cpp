@@ -67,11 +67,12 @@ TEST(TriangleRows, NasmMatchesTheTwinBitForBit) {
 // along the rows, texture coordinates from 0 to beyond the 16.16 range, and the clip cutting the
 // rows and columns now and then: where the NASM routine sets the triangle up, the same answer and
 // every byte of the setup, the chains and the run loop's block the same (each run's bounds at the
-// same place in its chain); where it leaves it to C++, setup_triangle_affine_asm leaves it too.
+// same place in its chain); where it leaves it to C++, setup_triangle_affine_asm leaves it too, and
+// from C++'s setup fast_triangle_runs_asm and its twin fast_triangle_runs agree as above.
 TEST(FastTriangle, NasmMatchesTheTwinBitForBit) {
     std::mt19937 rng(20261127u);
     auto any = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
-    int walked = 0, drawn = 0, two = 0, empty = 0, left = 0;
+    int walked = 0, drawn = 0, two = 0, empty = 0, left = 0, runs_alone = 0;
     static uint8_t screen[1];
     for (int n = 0; n < 200000; ++n) {
         const double size = n % 3 == 0 ? any(0.2, 4) : n % 11 == 0 ? any(50, 90) : any(0.2, 63.9);
@@ -103,13 +104,22 @@ TEST(FastTriangle, NasmMatchesTheTwinBitForBit) {
             PolygonSetup alone;
             ASSERT_EQ(setup_triangle_affine_asm(v, &alone), 0) << "triangle " << n;
             ++left;
-            continue;
+            // from the rows on (fast_triangle_runs), on the C++ setup
+            if (setup_polygon_cpp(v, 3, &setup[0], PLANES_AFFINE, Input::InRange) != SetupStatus::Ok) continue;
+            setup[1] = setup[0];
+            const int by_twin = fast_triangle_runs(&t[0]);
+            ASSERT_EQ(fast_triangle_runs_asm(&t[1]), by_twin) << "triangle " << n;
+            ASSERT_EQ(std::memcmp(&setup[0], &setup[1], sizeof setup[0]), 0) << "triangle " << n << ": the setup, read only";
+            if (by_twin == 2) continue;
+            ++runs_alone;
         }
-        ASSERT_EQ(fast_triangle(&t[0]), by_nasm) << "triangle " << n;
-        ASSERT_EQ(std::memcmp(&setup[0], &setup[1], sizeof setup[0]), 0) << "triangle " << n << ": the setup";
-        if (by_nasm == 2) {
-            ++walked;
-            continue;
+        else {
+            ASSERT_EQ(fast_triangle(&t[0]), by_nasm) << "triangle " << n;
+            ASSERT_EQ(std::memcmp(&setup[0], &setup[1], sizeof setup[0]), 0) << "triangle " << n << ": the setup";
+            if (by_nasm == 2) {
+                ++walked;
+                continue;
+            }
         }
         ASSERT_EQ(std::memcmp(t[0].lower, t[1].lower, sizeof t[0].lower), 0) << "triangle " << n << ": lower bounds";
         ASSERT_EQ(std::memcmp(t[0].upper, t[1].upper, sizeof t[0].upper), 0) << "triangle " << n << ": upper bounds";
@@ -125,6 +135,7 @@ TEST(FastTriangle, NasmMatchesTheTwinBitForBit) {
     EXPECT_GT(drawn, 60000);
     EXPECT_GT(walked, 20000) << "large boxes, edges along a row, vertices on a row's centre";
     EXPECT_GT(left, 5000) << "triangles setup_polygon sets up in C++";
+    EXPECT_GT(runs_alone, 5000) << "of those, triangles walked from the rows on";
     EXPECT_GT(two, 30000) << "triangles in two runs";
     EXPECT_GT(empty, 1000) << "triangles between rows' centres, or clipped away";
 }
