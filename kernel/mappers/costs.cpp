@@ -16,8 +16,8 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-1", 1008.8f, 1000.71f, 51.361f}, // 10 scenes
     {"persp-adaptive-2", 1008.8f, 1017.57f, 44.202f}, // 10 scenes
     {"persp-adaptive-4", 1008.8f, 1029.54f, 40.025f}, // 10 scenes
-    {"fast-affine", 1042.5f, 109.40f, 5.136f}, // 10 scenes
-    {"fast-table", 1241.2f, 96.90f, 2.054f}, // 10 scenes
+    {"fast-affine", 1045.6f, 109.18f, 5.136f}, // 10 scenes
+    {"fast-table", 1239.2f, 96.67f, 2.058f}, // 10 scenes
     {"fast-columns", 1115.5f, 250.35f, 5.641f}, // 10 scenes
     {"fast-table-columns", 1322.3f, 247.06f, 2.801f}, // 10 scenes
     {"fast-subdiv-8", 1008.8f, 297.31f, 13.575f}, // 10 scenes
