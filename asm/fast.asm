@@ -6,7 +6,8 @@
 ;                                        pairs a block, an odd last pixel alone;
 ;   fast_table_loop_asm (fast-table):    the same rows, each span read through the polygon's offset
 ;                                        table (twin: fast_table_loop): two loads a pixel, one word
-;                                        store a pair, sixteen pairs a block;
+;                                        store a pair, sixteen pairs a block; from the tiled block or
+;                                        a stacked copy (textures above 256 a side);
 ;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop): eight pixels a
 ;                                        block, each stored alone (they lie 80 bytes apart);
 ;   fast_table_column_loop_asm (fast-table-columns): one column through the offset table (twin:
@@ -270,14 +271,25 @@ fast_run_inside:
 %endmacro
 
 ; fast_table_loop_asm's rows from .row, clipped (%1 = 1) or not (0), the pairs entered through the
-; table %2; then the frame freed.
-%macro TABLE_ROWS 2
+; table %2, from the tiled block (%3 = 0) or a stacked copy (1); then the frame freed.
+%macro TABLE_ROWS 3
 .row:
     ROW_HEAD %1
+%if %3
+    ; (a dword from a value's whole, its high half: the masks, below 65536, keep the whole's bits)
+    mov esi, [esp + L_V + 2]
+    and esi, [ecx + RUN_v_mask]
+    imul esi, [ecx + RUN_width]         ; (v whole & v_mask) * width
+    mov ebx, [esp + L_U + 2]
+    and ebx, [ecx + RUN_u_mask]
+    add esi, ebx
+    add esi, [ecx + RUN_texture]        ; the texel of the table's first pixel
+%else
     mov ebx, [ecx + RUN_texture]        ; (64 KiB-aligned: its low half 0)
     mov bl, [esp + L_U + 2]             ; u whole & 255
     mov bh, [esp + L_V + 2]             ; v whole & 255
     mov esi, ebx                        ; the texel of the table's first pixel
+%endif
     mov ebp, [ecx + RUN_table]
     lea ebp, [ebp + eax * 4]            ; the span's first pixel's offset
     add eax, [esp + L_ROW]              ; its address
@@ -329,11 +341,20 @@ fast_run_inside:
 global fast_table_loop_asm
 fast_table_loop_asm:
     RUN_ENTER
+    cmp dword [ecx + RUN_stacked], 0
+    jne fast_table_stacked
     cmp dword [ecx + RUN_inside], 0
     jne fast_table_inside.row
-    TABLE_ROWS 1, table_entries
+    TABLE_ROWS 1, table_entries, 0
 fast_table_inside:
-    TABLE_ROWS 0, table_inside_entries
+    TABLE_ROWS 0, table_inside_entries, 0
+; the same from a stacked copy (RUN_stacked), clipped or not (labels of their own)
+fast_table_stacked:
+    cmp dword [ecx + RUN_inside], 0
+    jne fast_table_stacked_inside.row
+    TABLE_ROWS 1, table_stacked_entries, 1
+fast_table_stacked_inside:
+    TABLE_ROWS 0, table_stacked_inside_entries, 1
 
 section .rodata
 align 4
@@ -343,6 +364,8 @@ align 4
     ENTRIES table_column_entries, fast_table_column_loop_asm, 8
     ENTRIES table_entries, fast_table_loop_asm, 16
     ENTRIES table_inside_entries, fast_table_inside, 16
+    ENTRIES table_stacked_entries, fast_table_stacked, 16
+    ENTRIES table_stacked_inside_entries, fast_table_stacked_inside, 16
 
 section .text
 

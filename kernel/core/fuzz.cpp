@@ -135,8 +135,8 @@ FuzzStats fuzz_mapper(const Mapper& mapper, uint32_t seed, uint32_t count, const
         target.clip = FUZZ_CLIP;
         const int32_t smaller_side = tex.width < tex.height ? tex.width : tex.height;
         // texture coordinates inside the texture for the classics, and on a clamped texture for the
-        // mappers that draw it only so (NEED_TILED256_OR_INSIDE: they refuse the rest)
-        const bool inside = classic || (tex.wrap == Wrap::Clamp && (mapper.needs & NEED_TILED256_OR_INSIDE));
+        // mappers that draw it only so (NEED_TILED256_OR_INSIDE, NEED_POW2_OR_INSIDE: they refuse the rest)
+        const bool inside = classic || (tex.wrap == Wrap::Clamp && (mapper.needs & (NEED_TILED256_OR_INSIDE | NEED_POW2_OR_INSIDE)));
         RandomPolygons polygons(pick.next(), classic ? CLASSIC_LIMIT : MAX_COORD_PIXELS, inside ? smaller_side : 0);
         const uint32_t batch = count - f.tried < FUZZ_BATCH ? count - f.tried : FUZZ_BATCH;
         for (uint32_t i = 0; i < batch; ++i) {

@@ -39,6 +39,9 @@ enum Need : uint32_t {
     // sides powers of two up to 256 with the tiled copy, repeating, or clamped where the polygon's
     // texture coordinates lie inside the texture (the mapper refuses the others: texture_inside)
     NEED_TILED256_OR_INSIDE = 1 << 6,
+    // the same with sides powers of two up to 1024, those above 256 read from the stacked copy
+    // (Texture::stacked: fast-table's offsets)
+    NEED_POW2_OR_INSIDE = 1 << 7,
 };
 // Each need's name (the `mappers` reply) and its words (error messages), in one table.
 struct NeedName {
@@ -50,7 +53,7 @@ extern const NeedName NEED_NAMES[];
 extern const int NEED_NAME_COUNT;
 // The needs a scene can fail to meet (its textures, its coordinates); the texture copies are always
 // prepared (policy.h) and the target is the caller's choice.
-constexpr uint32_t SCENE_NEEDS = NEED_INSIDE | NEED_ALIGNED256 | NEED_TILED256 | NEED_TILED256_OR_INSIDE;
+constexpr uint32_t SCENE_NEEDS = NEED_INSIDE | NEED_ALIGNED256 | NEED_TILED256 | NEED_TILED256_OR_INSIDE | NEED_POW2_OR_INSIDE;
 // The words of the needs in `needs`, comma-separated.
 void describe_needs(lib::Fmt& out, uint32_t needs);
 
@@ -198,12 +201,15 @@ inline bool texture_tiled256(const Texture& t) { return tiles256(t.width, t.heig
 inline bool texture_aligned256(const Texture& t) { return texture_tiled256(t) && t.width == 256 && t.height == 256; }
 // Whether the texture meets NEED_TILED256_OR_INSIDE (a clamped one: its polygons checked one by one).
 inline bool texture_tiled256_any_wrap(const Texture& t) { return tiles256(t.width, t.height) && t.aligned256; }
+// Whether the texture meets NEED_POW2_OR_INSIDE (its table block built).
+inline bool texture_pow2_any_wrap(const Texture& t) { return texture_tiled256_any_wrap(t) || (stacks(t.width, t.height) && t.stacked); }
 
 inline bool mapper_accepts(const Mapper& m, const Texture& t) {
     if ((m.needs & NEED_BORDERED) && !t.bordered) return false;
     if ((m.needs & NEED_ALIGNED256) && !texture_aligned256(t)) return false;
     if ((m.needs & NEED_TILED256) && !texture_tiled256(t)) return false;
     if ((m.needs & NEED_TILED256_OR_INSIDE) && !texture_tiled256_any_wrap(t)) return false;
+    if ((m.needs & NEED_POW2_OR_INSIDE) && !texture_pow2_any_wrap(t)) return false;
     return true;
 }
 

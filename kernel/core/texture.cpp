@@ -69,6 +69,13 @@ const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer) {
     return block;
 }
 
+const uint8_t* make_stacked(const Texture& t, uint8_t* out) {
+    const int32_t bytes = t.width * t.height;
+    for (int32_t copy = 0; copy < 2; ++copy)
+        for (int32_t i = 0; i < bytes; ++i) out[copy * bytes + i] = t.texels[i];
+    return out;
+}
+
 void generate_texture(TextureKind kind, int32_t width, int32_t height, uint8_t* out) {
     for (int32_t v = 0; v < height; ++v) {
         for (int32_t u = 0; u < width; ++u) {

@@ -30,6 +30,13 @@ struct Texture {
     // scanline, past the block's ends; fast-table reads a span's texels at the first one's offset
     // in the block plus offsets below 65536, up to block + 131070. Null when not built.
     const uint8_t* aligned256 = nullptr;
+    // For textures whose sides are powers of two up to 1024 with one above 256 (they do not tile the
+    // 64 KiB block): the texture twice, one copy below the other (width x 2 height texels, width
+    // bytes a row), so that texel (u mod width, v mod height) of the repeating texture plus an offset
+    // (k mod height) * width + (j mod width) is read at block + (that sum): below 2 width height, a
+    // column beyond the row's end the next row's (fast-table's offsets, TableBlock). Null when not
+    // built.
+    const uint8_t* stacked = nullptr;
 };
 
 constexpr int32_t ALIGNED256_GUARD_BEFORE = 96;
@@ -48,6 +55,36 @@ inline bool tiles256(int32_t width, int32_t height) {
 inline uint8_t texel256(const uint8_t* block, uint32_t u, uint32_t v) { return block[((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF)]; }
 // Builds the aligned copy inside `buffer` (ALIGNED256_BYTES, any alignment) and returns the block.
 const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer);
+
+// Whether a texture's sides are powers of two up to MAX_TEXTURE_SIZE, one above 256 (the stacked copy).
+inline bool stacks(int32_t width, int32_t height) {
+    auto pow2 = [](int32_t n) { return n > 0 && n <= MAX_TEXTURE_SIZE && (n & (n - 1)) == 0; };
+    return pow2(width) && pow2(height) && !tiles256(width, height);
+}
+constexpr int32_t stacked_bytes(int32_t width, int32_t height) { return 2 * width * height; }
+// Builds the stacked copy into `out` (stacked_bytes(width, height)) and returns it.
+const uint8_t* make_stacked(const Texture& t, uint8_t* out);
+
+// Where fast-table reads a repeating texture with power-of-two sides (the tiled block, or the
+// stacked copy): texel (u mod width, v mod height) at block + ((v mod height) << shift) + (u mod
+// width), u_mask = width - 1, v_mask = height - 1; for the tiled block width and height are 256 (its
+// tiles repeat the texture).
+struct TableBlock {
+    const uint8_t* block;
+    uint32_t u_mask, v_mask;
+    int32_t shift;
+    // The block's address for 16.16 coordinates u and v (their wholes taken modulo the sides).
+    const uint8_t* at(uint32_t u, uint32_t v) const { return block + ((((v >> 16) & v_mask) << shift) | ((u >> 16) & u_mask)); }
+};
+// The texture's table block: the tiled one where it is built, else the stacked one (block null:
+// neither).
+inline TableBlock table_block(const Texture& t) {
+    if (t.aligned256) return TableBlock{t.aligned256, 255, 255, 8};
+    if (!t.stacked) return TableBlock{nullptr, 0, 0, 0};
+    int32_t shift = 0;
+    while ((1 << shift) < t.width) ++shift;
+    return TableBlock{t.stacked, uint32_t(t.width - 1), uint32_t(t.height - 1), shift};
+}
 
 inline int32_t bordered_pitch(const Texture& t) { return t.width + 2; }
 inline int32_t bordered_bytes(int32_t width, int32_t height) { return (width + 2) * (height + 2); }

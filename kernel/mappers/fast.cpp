@@ -49,6 +49,36 @@ struct Planes {
     return true;
 }
 
+// build_offset_table's work: 16.16 values modulo 2^32, whose wholes modulo a power of two up to
+// 65536 are the floors' (2^32 is a multiple of 2^32 / 65536); the tiled block's by shifts alone, the
+// stacked copy's by masks and a shift (out of line: a driver's registers stay as they were for the
+// tiled one).
+inline void offset_table256(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table) {
+    uint32_t u = TABLE_U_START, v = 0;
+    for (int32_t k = 0; k < length; ++k) {
+        table[k] = int32_t(((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));
+        u += uint32_t(du_16_16);
+        v += uint32_t(dv_16_16);
+    }
+}
+[[gnu::noinline]] void offset_table_stacked(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
+    uint32_t u = TABLE_U_START, v = 0;
+    for (int32_t k = 0; k < length; ++k) {
+        table[k] = int32_t((((v >> 16) & block.v_mask) << block.shift) | ((u >> 16) & block.u_mask));
+        u += uint32_t(du_16_16);
+        v += uint32_t(dv_16_16);
+    }
+}
+inline void offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
+    if (block.u_mask != 255 || block.v_mask != 255 || block.shift != 8) offset_table_stacked(du_16_16, dv_16_16, length, table, block);  // (256 x 256 is tiled)
+    else offset_table256(du_16_16, dv_16_16, length, table);
+}
+// A driver's: the tiled block's without looking further where the texture has no stacked copy.
+inline void offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const Texture& tex) {
+    if (tex.stacked) offset_table_stacked(du_16_16, dv_16_16, length, table, table_block(tex));
+    else offset_table256(du_16_16, dv_16_16, length, table);
+}
+
 // The run loop's `inside`: whether the box lies within the clip's columns (a pixel whose centre lies
 // in the box [min_x, max_x] lies in [x0, x1) where the box does; the box, within setup's range, and
 // the clip's sides in subpixels within 32 bits).
@@ -98,7 +128,6 @@ inline int walk_triangle(FastTriangleArgs* t) {
 template <bool TABLE>
 [[gnu::always_inline]] inline SetupStatus draw_runs(const DrawContext& c, const Vertex* vertices, int count) {
     FastRunArgs a;
-    a.texture = c.tex.aligned256;
     PolygonSetup own;
     FastTriangleArgs t;  // (the chains' room, and its outputs written by the call)
     t.in = vertices, t.setup = &own, t.run = &a, t.target = &c.target;
@@ -121,8 +150,16 @@ template <bool TABLE>
         table_x = box_lo > c.target.clip.x0 ? box_lo : c.target.clip.x0;
         const int32_t last = box_hi < c.target.clip.x1 - 1 ? box_hi : c.target.clip.x1 - 1;
         if (last >= TABLE_LIMIT) return SetupStatus::Unsupported;  // (a target wider than any screen: never here)
-        if (last >= table_x) build_offset_table(s.u_fx.dx, s.v_fx.dx, last - table_x + 1, table + table_x);
+        if (last >= table_x) offset_table(s.u_fx.dx, s.v_fx.dx, last - table_x + 1, table + table_x, c.tex);
         a.table = table;
+        a.texture = c.tex.aligned256;
+        a.stacked = c.tex.stacked != nullptr;  // (a texture has the one or the other)
+        if (a.stacked) {
+            const TableBlock block = table_block(c.tex);
+            a.texture = block.block, a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.width = 1 << block.shift;
+        }
+    } else {
+        a.texture = c.tex.aligned256;
     }
     uint32_t drawn[2] = {0, 0};  // spans, pixels
     a.tally = drawn;
@@ -196,7 +233,7 @@ struct ColumnArgsOf<true> {
 // Columns: the walker's spans, one loop call each (the map mask set once a column): fast_column_loop
 // from each column's u and v, or (fast-table-columns) fast_table_column_loop from its first texel
 // through the polygon's offset table along y, built once for its tallest column.
-template <bool TABLE>
+template <bool TABLE, bool STACKED = false>  // STACKED: fast-table-columns on a stacked copy
 [[gnu::always_inline]] inline SetupStatus draw_column_spans(const DrawContext& c, const Vertex* vertices, int count) {
     PolygonSetup own;
     SetupStatus status;
@@ -206,10 +243,11 @@ template <bool TABLE>
     EdgeWalker walker(s, EdgeWalker::Along<Axis::Columns>{}, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
+    const TableBlock block = STACKED ? table_block(c.tex) : TableBlock{};
     if constexpr (TABLE) {
         const int32_t height = c.target.clip.y1 - c.target.clip.y0;
         const int32_t box = int32_t((s.max_y - s.min_y) >> SUBPIXEL_BITS) + 2;
-        build_offset_table(int32_t(p.udy), int32_t(p.vdy), box < height ? box : height, table);
+        offset_table(int32_t(p.udy), int32_t(p.vdy), box < height ? box : height, table, c.tex);
     }
     setup_done(c);
     typename ColumnArgsOf<TABLE>::type a;
@@ -228,7 +266,7 @@ template <bool TABLE>
         a.count = span.count;
         if constexpr (TABLE) {
             const uint32_t u = p.u(span.x, span.y), v = p.v(span.x, span.y);
-            a.source = c.tex.aligned256 + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));
+            a.source = STACKED ? block.at(u, v) : c.tex.aligned256 + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));  // (the tiled block's by shifts)
         } else {
             a.u_16_16 = int32_t(p.u(span.x, span.y));
             a.v_16_16 = int32_t(p.v(span.x, span.y));
@@ -244,7 +282,9 @@ template <bool TABLE>
 }  // namespace
 
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) { return draw_column_spans<false>(c, vertices, count); }
-SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count) { return draw_column_spans<true>(c, vertices, count); }
+SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count) {
+    return c.tex.stacked ? draw_column_spans<true, true>(c, vertices, count) : draw_column_spans<true>(c, vertices, count);
+}
 
 namespace {
 
@@ -363,20 +403,16 @@ void fast_run_loop(const void* raw) {
     });
 }
 
-void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table) {
-    // 16.16 values modulo 2^32: their wholes modulo 256 are the floors' (2^32 is a multiple of 2^24)
-    uint32_t u = TABLE_U_START, v = 0;
-    for (int32_t k = 0; k < length; ++k) {
-        table[k] = int32_t(((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));
-        u += uint32_t(du_16_16);
-        v += uint32_t(dv_16_16);
-    }
+void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
+    fast::offset_table(du_16_16, dv_16_16, length, table, block);
 }
 
 void fast_table_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
     run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
-        const uint8_t* origin = a.texture + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));  // the table's first pixel's texel
+        // the table's first pixel's texel (the tiled block's by shifts)
+        const uint8_t* origin = a.stacked ? a.texture + ((v >> 16) & a.v_mask) * uint32_t(a.width) + ((u >> 16) & a.u_mask)
+                                          : a.texture + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));
         for (int32_t x = lo; x <= hi; ++x) row[x] = origin[a.table[x]];
     });
 }
@@ -429,15 +465,33 @@ const void* check_block(const TableColumnCase& a) {
     return &a.args;
 }
 
-// Columns of 0 to 240 pixels from a random texel of the block, the table of random steps.
+namespace {
+
+// A table block over the check's texels: the tiled one, or a third of the time a stacked copy of
+// random power-of-two sides up to 1024, one above 256, within the buffer (2 W H at most its bytes).
+TableBlock random_table_block(Random& r, const CheckBuffers& buf) {
+    if (r.below(3) != 0) return TableBlock{check_aligned_texture(buf), 255, 255, 8};
+    int32_t w = 0, h = 0;
+    do {
+        w = 1 << r.range(0, 10), h = 1 << r.range(0, 10);
+    } while (!stacks(w, h) || size_t(stacked_bytes(w, h)) > CHECK_TEXEL_BYTES);
+    int32_t shift = 0;
+    while ((1 << shift) < w) ++shift;
+    return TableBlock{buf.texels, uint32_t(w - 1), uint32_t(h - 1), shift};
+}
+
+}  // namespace
+
+// Columns of 0 to 240 pixels from a random texel of a table block, the table of random steps.
 LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<TableColumnCase>(m, other, seed, cases, buf, [&](Random& r, TableColumnCase& c) {
         FastTableColumnArgs& a = c.args;
         a.count = random_count(r, 0, 9, 240);
-        a.source = check_aligned_texture(buf) + (r.next() & 0xFFFF);
+        const TableBlock block = random_table_block(r, buf);
+        a.source = block.at(r.next(), r.next());
         const int32_t du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
         const int32_t dv = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
-        build_offset_table(du, dv, a.count, c.table);
+        build_offset_table(du, dv, a.count, c.table, block);
         a.table = c.table;
         return place_span(buf, a, MODEX_ROW_BYTES);
     });
@@ -527,7 +581,12 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         a.next_lines = r.below(2) ? 0 : run(c.next_lower, c.next_upper, most);
         if (a.next_lines == 0) c.next_lower = c.next_upper = EdgeBound::constant(0);
         a.inside = inside ? 1 : 0;
-        a.texture = check_aligned_texture(buf);
+        // fast-table's block: the tiled one, or a stacked copy (fast-affine reads the tiled one)
+        const TableBlock block = random_table_block(r, buf);
+        a.texture = block.block;
+        a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.width = 1 << block.shift;
+        a.stacked = block.block != check_aligned_texture(buf);
+        if (m.twin != fast_table_loop) a.texture = check_aligned_texture(buf);
         a.u_16_16 = r.next();
         a.v_16_16 = r.next();
         a.u_row_16_16 = r.next();
@@ -542,7 +601,7 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         a.tally = c.tally;
         // (fast-table: the offsets from a pixel at or left of clip_lo to the pitch's end)
         const int32_t table_x = r.range(0, a.clip_lo);
-        build_offset_table(a.du_16_16, a.dv_16_16, a.pitch - table_x, c.table + table_x);
+        build_offset_table(a.du_16_16, a.dv_16_16, a.pitch - table_x, c.table + table_x, block);
         a.table = c.table;
         a.row = buf.a + CHECK_GUARD_BYTES;
         uint32_t pixels = 0;  // what the rows will draw
@@ -567,7 +626,7 @@ void fast_offsets() {
     ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
     ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16, v_16_16,
-               u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside)
+               u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside, stacked, u_mask, v_mask, width)
     ASM_FIELDS(BOUND, EdgeBound, first, last, q, dq, r, dr, d)
     ASM_SIZE(BOUND_SIZE, EdgeBound);
     ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)

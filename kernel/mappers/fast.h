@@ -27,7 +27,7 @@ struct FastRunArgs {
     int32_t next_lines;
     EdgeBound* next_lower;
     EdgeBound* next_upper;
-    const uint8_t* texture;  // tiled over 256 x 256, aligned to 64 KiB
+    const uint8_t* texture;  // tiled over 256 x 256, aligned to 64 KiB (fast-table: its table block's)
     uint32_t u_16_16, v_16_16;        // at pixel 0 of the first row (fast-table: at the table's first pixel)
     uint32_t u_row_16_16, v_row_16_16;  // their change from row to row
     int32_t du_16_16, dv_16_16;       // per pixel
@@ -36,6 +36,13 @@ struct FastRunArgs {
     // Nonzero: every row whose bounds are in order lies within clip_lo..clip_hi (the polygon's box
     // lies inside the clip), so the NASM loops need not clip (the twins clip all the same)
     int32_t inside;
+    // fast-table: its table block (TableBlock). `stacked` nonzero where it is the stacked copy: a
+    // row's first texel at texture + ((v whole & v_mask) * width) + (u whole & u_mask), the three
+    // read only then; else the tiled block's (v whole & 255) * 256 + (u whole & 255), which the NASM
+    // loop takes by bl and bh
+    int32_t stacked;
+    uint32_t u_mask, v_mask;
+    int32_t width;
 };
 void fast_run_loop(const void* args);
 
@@ -64,21 +71,23 @@ extern "C" int fast_triangle_asm(FastTriangleArgs* a);
 extern "C" int fast_triangle_runs_asm(FastTriangleArgs* a);
 #endif
 
-// fast-table: the offsets of pixel k of any span from its first pixel's texel in the tiled block,
-// for a polygon whose u and v step by du and dv (16.16) a pixel: table[k] = (floor(k dv) & 255) * 256
-// + (floor(c + k du) & 255), the floors of 16.16 values in exact integer arithmetic, c =
+// fast-table: the offsets of pixel k of any span from its first pixel's texel in the texture's
+// table block (TableBlock: the tiled one, W = H = 256, or the stacked copy, W x H its sides), for a
+// polygon whose u and v step by du and dv (16.16) a pixel: table[k] = (floor(k dv) & (H - 1)) * W +
+// (floor(c + k du) & (W - 1)), the floors of 16.16 values in exact integer arithmetic, c =
 // TABLE_U_START, k = 0 .. length - 1 (fatmap's table idea: one table a polygon, not a step a pixel).
 // fast_table_loop walks fast_run_loop's rows and reads pixel x0 + k of a row whose u and v are u0,
 // v0 at pixel x0, the pixel the polygon's table starts at (at or left of every span's first pixel:
-// the table written from table + x0), from block + (v0 whole & 255) * 256 + (u0 whole & 255) +
-// table[x0 + k]: no multiply a row. u's part may pass 255 into the next texel row (the block's
-// guard rows after it continue the tiling, to block + 131070), so the texel read is fast-affine's
-// (floor(u0 + k du), floor(v0 + k dv)) moved by e_u on u, |e_u| <= 1 (the start's fraction against
-// c), and by e_v on v, |e_v| <= 1 (the fraction dropped, 0 or -1, and the carry from u, 0 or +1),
-// modulo 256 (docs/accuracy.md, "The offset table").
+// the table written from table + x0), from block + (v0 whole & (H - 1)) * W + (u0 whole & (W - 1))
+// + table[x0 + k]: no multiply a row on the tiled block. u's part may pass W - 1 into the next
+// texel row (the tiled block's guard rows after it continue the tiling, to block + 131070; the
+// stacked copy's second copy, below 2 W H), so the texel read is fast-affine's (floor(u0 + k du),
+// floor(v0 + k dv)) moved by e_u on u, |e_u| <= 1 (the start's fraction against c), and by e_v on
+// v, |e_v| <= 1 (the fraction dropped, 0 or -1, and the carry from u, 0 or +1), modulo the sides
+// (docs/accuracy.md, "The offset table").
 constexpr uint32_t TABLE_U_START = 0x8000;  // half a texel: e_u in {-1, 0, 1}
 constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row: 320 pixels)
-void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table);
+void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block);
 void fast_table_loop(const void* args);
 
 // fast-columns: the same arithmetic down a Mode X column, 80 bytes between pixels; it takes
@@ -88,7 +97,7 @@ using FastColumnArgs = FatmapArgs;
 void fast_column_loop(const void* args);
 // fast-table-columns: a Mode X column through the polygon's offset table along y (as fast-table's
 // rows along x): pixel n, 80 bytes after pixel n - 1, is source[table[n]], source the column's first
-// texel in the tiled block; fatmap-lut's block (the same reading, its stride a row of a plane).
+// texel in the table block; fatmap-lut's block (the same reading, its stride a row of a plane).
 using FastTableColumnArgs = FatmapLutArgs;
 void fast_table_column_loop(const void* args);
 

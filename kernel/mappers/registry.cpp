@@ -58,8 +58,9 @@ const Mapper MAPPERS[] = {
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-table", "ours", "fast-affine's runs of rows, each span's texels at offsets from its first precomputed once a polygon (fatmap's table idea)",
      "exact coverage; u, v affine from the polygon's 16.16 planes, each texel within one texel on each axis of fast-affine's "
-     "(the start's fraction and a carry): within two texels without perspective; textures as fast-affine",
-     EXACT_COVERAGE_FLAT_TWO, NEED_TILED256_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_table_loop), fast::draw_table_rows, check_fast_run,
+     "(the start's fraction and a carry): within two texels without perspective; textures with power-of-two sides up to "
+     "1024, repeating or with the polygon's coordinates inside (up to 256 tiled over 256 x 256, larger ones stacked)",
+     EXACT_COVERAGE_FLAT_TWO, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_table_loop), fast::draw_table_rows, check_fast_run,
      fast::table_bound},
     {"fast-columns", "ours", "the same core down Mode X columns, the map mask set once a column",
      "as fast-affine, by columns into Mode X planes",
@@ -67,7 +68,7 @@ const Mapper MAPPERS[] = {
      fast::draw_columns, check_fast_column, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-table-columns", "ours", "fast-table's offsets down Mode X columns, the map mask set once a column",
      "as fast-table, by columns into Mode X planes: within two texels without perspective",
-     EXACT_COVERAGE_FLAT_TWO, NEED_TILED256_OR_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_table_column_loop),
+     EXACT_COVERAGE_FLAT_TWO, NEED_POW2_OR_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_table_column_loop),
      fast::draw_table_columns, check_fast_table_column, fast::table_bound},
     {"fast-subdiv-8", "ours", "exact every 8 pixels in x87, the fast 8:16 core between, one NASM loop a span",
      "perspective-correct at every 8th pixel and the last; 16.16 steps from the ends' difference; exact coverage; repeating "
@@ -154,6 +155,8 @@ const NeedName NEED_NAMES[] = {
     {NEED_TILED256, "pow2-repeat", "a repeating texture with power-of-two sides up to 256"},
     {NEED_TILED256_OR_INSIDE, "pow2-repeat-or-inside",
      "a texture with power-of-two sides up to 256, repeating or with the polygon's coordinates inside it"},
+    {NEED_POW2_OR_INSIDE, "pow2-1024-repeat-or-inside",
+     "a texture with power-of-two sides up to 1024, repeating or with the polygon's coordinates inside it"},
 };
 const int NEED_NAME_COUNT = sizeof(NEED_NAMES) / sizeof(NEED_NAMES[0]);
 

@@ -131,6 +131,7 @@ struct TextureSet {
     static constexpr size_t BORDERED_BYTES = size_t(MAX_TEXEL_POOL) + 2 * MAX_WORLD_TEXTURES * 2 * (MAX_TEXTURE_SIZE + 2);
     uint8_t bordered[BORDERED_BYTES];
     uint8_t aligned[MAX_WORLD_TEXTURES][ALIGNED256_BYTES];
+    uint8_t stacked[2 * size_t(MAX_TEXEL_POOL)];  // the stacked copies (at most twice the texels)
 };
 void build_texture_set(const World& world, TextureSet* out);
 

@@ -122,10 +122,11 @@ struct HostSurface {
 // A texture with the copies the mappers read (prepare_texture).
 struct HostTexture {
     Texture texture;
-    std::vector<uint8_t> bordered, aligned;
+    std::vector<uint8_t> bordered, aligned, stacked;
     explicit HostTexture(const Texture& t)
-        : texture(t), bordered(size_t(bordered_bytes(t.width, t.height))), aligned(ALIGNED256_BYTES) {
-        prepare_texture(&texture, bordered.data(), aligned.data());
+        : texture(t), bordered(size_t(bordered_bytes(t.width, t.height))), aligned(ALIGNED256_BYTES),
+          stacked(stacks(t.width, t.height) ? size_t(stacked_bytes(t.width, t.height)) : 0) {
+        prepare_texture(&texture, bordered.data(), aligned.data(), stacked.data());
     }
 };
 

@@ -420,6 +420,61 @@ TEST(FastTable, EachTexelWithinOneOnEachAxisOfFastAffines) {
     }
 }
 
+// fast-table and fast-table-columns take textures with a side above 256 (powers of two up to
+// 1024) through their stacked copy: every pixel fast-affine's arithmetic would draw, its texel
+// within one on each axis of fast-affine's (the 16.16 planes' floors at the pixel, modulo the sides:
+// one of the nine around it), on random triangles over many periods, a texture of random texels
+// (a wrong row, stride or mask reads some other texel), NASM loop and twin; and with the stacked
+// copy left out (prepare_texture's null) they refuse such a texture.
+TEST(FastTable, TakesTexturesAbove256ByTheStackedCopy) {
+    const int32_t sides[][2] = {{512, 512}, {1024, 64}, {64, 1024}, {1024, 1024}, {512, 2}, {256, 512}};
+    TriangleGen gen(20261127u);
+    gen.uv_range = 3000;
+    for (const auto& side : sides) {
+        const int32_t w = side[0], h = side[1];
+        std::vector<uint8_t> texels(size_t(w) * size_t(h)), bordered(size_t(bordered_bytes(w, h))), aligned(ALIGNED256_BYTES),
+            stacked(size_t(stacked_bytes(w, h)));
+        for (uint8_t& t : texels) t = uint8_t(gen.rng() % 255);  // (255: the empty pixel)
+        Texture tex{texels.data(), w, h, Wrap::Repeat}, alone = tex;
+        prepare_texture(&alone, bordered.data(), aligned.data());
+        prepare_texture(&tex, bordered.data(), aligned.data(), stacked.data());
+        for (const char* name : {"fast-table", "fast-table-columns"}) {
+            const Mapper& m = mapper(name);
+            EXPECT_FALSE(mapper_accepts(m, alone)) << name << ": no stacked copy";
+            ASSERT_TRUE(mapper_accepts(m, tex)) << name << " " << w << "x" << h;
+            const Axis axis = home_axis(m);
+            for (Variant variant : {Variant::Twin, Variant::Asm}) {
+                int pixels = 0;
+                for (int n = 0; n < 120; ++n) {
+                    const std::vector<Vertex> t = gen.triangle();
+                    std::vector<uint8_t> a(SCREEN_PIXELS, 255), planar(SCREEN_PIXELS);
+                    const bool is_planar = ram_planar(m, axis);
+                    Target target = ram_target(a.data(), is_planar);
+                    RenderStats stats;
+                    if (draw_polygon(t.data(), 3, tex, m, axis, target, &stats, variant) != SetupStatus::Ok) continue;
+                    PolygonSetup s;
+                    ASSERT_EQ(setup_polygon(t.data(), 3, &s, PLANES_AFFINE), SetupStatus::Ok);
+                    if (is_planar) linear_from_planar(a.data(), planar.data()), a.swap(planar);
+                    for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
+                        for (int32_t x = 0; x < SCREEN_WIDTH; ++x) {
+                            const uint8_t got = a[size_t(y) * SCREEN_WIDTH + size_t(x)];
+                            ASSERT_EQ(got != 255, covers(s, x, y)) << name << " triangle " << n << " at " << x << "," << y;
+                            if (got == 255) continue;
+                            ++pixels;
+                            const int32_t fu = int32_t(uint32_t(s.u_fx.value(x, y)) >> 16), fv = int32_t(uint32_t(s.v_fx.value(x, y)) >> 16);
+                            bool near = false;
+                            for (int32_t ev = -1; ev <= 1; ++ev)
+                                for (int32_t eu = -1; eu <= 1; ++eu)
+                                    near = near || texels[size_t((fv + ev) & (h - 1)) * size_t(w) + size_t((fu + eu) & (w - 1))] == got;
+                            ASSERT_TRUE(near) << name << " " << w << "x" << h << " triangle " << n << " at " << x << "," << y;
+                        }
+                }
+                EXPECT_GT(pixels, 20000) << name << " " << w << "x" << h;
+            }
+        }
+    }
+}
+
 // The four affine fast mappers take a clamped texture (power-of-two sides up to 256) polygon by
 // polygon: where the polygon's coordinates lie inside it, with their rounding (and fast-table's
 // texel more), each draws exactly what it draws with the same texture repeating; where they reach
