@@ -5,37 +5,37 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1027.3f, 348.76f, 40.328f}, // 10 scenes
-    {"exact", 1008.8f, 316.17f, 80.299f}, // 10 scenes
-    {"persp-subdiv-4", 1008.8f, 321.57f, 91.364f}, // 10 scenes
-    {"persp-subdiv-8", 1008.8f, 376.32f, 59.496f}, // 10 scenes
-    {"persp-subdiv-16", 1008.8f, 415.36f, 43.428f}, // 10 scenes
-    {"persp-subdiv-32", 1008.8f, 435.79f, 35.576f}, // 10 scenes
-    {"constant-depth", 1008.8f, 452.10f, 29.799f}, // 10 scenes
-    {"persp-adaptive-0.5", 1008.8f, 834.47f, 316.363f}, // 10 scenes
-    {"persp-adaptive-1", 1008.8f, 1000.71f, 51.361f}, // 10 scenes
-    {"persp-adaptive-2", 1008.8f, 1017.57f, 44.202f}, // 10 scenes
-    {"persp-adaptive-4", 1008.8f, 1029.54f, 40.025f}, // 10 scenes
-    {"fast-affine", 1045.6f, 109.18f, 5.136f}, // 10 scenes
-    {"fast-table", 1239.2f, 96.67f, 2.058f}, // 10 scenes
-    {"fast-columns", 1115.5f, 250.35f, 5.641f}, // 10 scenes
-    {"fast-table-columns", 1322.3f, 247.06f, 2.801f}, // 10 scenes
-    {"fast-subdiv-8", 1008.8f, 297.31f, 13.575f}, // 10 scenes
+    {"affine", 1029.6f, 348.75f, 40.331f}, // 11 scenes
+    {"exact", 1011.0f, 316.15f, 80.305f}, // 11 scenes
+    {"persp-subdiv-4", 1011.0f, 321.53f, 91.378f}, // 11 scenes
+    {"persp-subdiv-8", 1011.0f, 376.26f, 59.517f}, // 11 scenes
+    {"persp-subdiv-16", 1011.0f, 415.28f, 43.456f}, // 11 scenes
+    {"persp-subdiv-32", 1011.0f, 435.71f, 35.603f}, // 11 scenes
+    {"constant-depth", 1011.0f, 452.10f, 29.800f}, // 11 scenes
+    {"persp-adaptive-0.5", 1011.0f, 908.51f, 290.044f}, // 11 scenes
+    {"persp-adaptive-1", 1011.0f, 999.57f, 51.766f}, // 11 scenes
+    {"persp-adaptive-2", 1011.0f, 1016.72f, 44.502f}, // 11 scenes
+    {"persp-adaptive-4", 1011.0f, 1029.51f, 40.036f}, // 11 scenes
+    {"fast-affine", 1041.5f, 108.72f, 5.144f}, // 10 scenes
+    {"fast-table", 1251.0f, 96.66f, 2.062f}, // 11 scenes
+    {"fast-columns", 1113.5f, 249.91f, 5.651f}, // 10 scenes
+    {"fast-table-columns", 1339.6f, 246.58f, 2.823f}, // 11 scenes
+    {"fast-subdiv-8", 1008.8f, 297.31f, 13.576f}, // 10 scenes
     {"fast-subdiv-16", 1008.8f, 307.08f, 9.651f}, // 10 scenes
-    {"fast-subdiv-32", 1008.8f, 311.93f, 7.751f}, // 10 scenes
+    {"fast-subdiv-32", 1008.8f, 311.93f, 7.752f}, // 10 scenes
     {"fast-constant-depth", 1008.8f, 316.27f, 6.193f}, // 10 scenes
-    {"fast-adaptive-1", 1008.8f, 339.59f, 9.333f}, // 10 scenes
+    {"fast-adaptive-1", 1008.8f, 339.58f, 9.334f}, // 10 scenes
     {"fast-adaptive-2", 1008.8f, 343.18f, 7.909f}, // 10 scenes
-    {"fast-oriented-1", 1168.0f, 358.04f, 7.425f}, // 10 scenes
-    {"xsharp-dda", 1518.0f, 375.07f, 38.067f}, // 9 scenes
-    {"xsharp-row-out", 1518.0f, 510.38f, 19.565f}, // 9 scenes
-    {"xsharp-column", 1521.7f, 483.11f, 13.287f}, // 9 scenes
-    {"hecker-steptable", 5331.9f, 0.00f, 636.293f}, // 9 scenes
-    {"fatmap-256", 1729.5f, 162.97f, 13.627f}, // 8 scenes
-    {"fatmap-256-16", 1729.5f, 167.97f, 12.627f}, // 8 scenes
-    {"fatmap-lut", 2346.3f, 166.46f, 10.031f}, // 7 scenes
-    {"quake-subdiv16", 1501.6f, 302.52f, 13.863f}, // 9 scenes
-    {"quake-subdiv8", 1501.6f, 287.16f, 20.224f}, // 9 scenes
+    {"fast-oriented-1", 1166.0f, 357.49f, 7.433f}, // 10 scenes
+    {"xsharp-dda", 1516.3f, 376.65f, 37.424f}, // 10 scenes
+    {"xsharp-row-out", 1516.3f, 511.91f, 18.936f}, // 10 scenes
+    {"xsharp-column", 1520.0f, 484.56f, 12.608f}, // 10 scenes
+    {"hecker-steptable", 5329.3f, 0.00f, 613.875f}, // 10 scenes
+    {"fatmap-256", 1727.7f, 162.44f, 13.642f}, // 8 scenes
+    {"fatmap-256-16", 1727.7f, 167.44f, 12.642f}, // 8 scenes
+    {"fatmap-lut", 2344.5f, 165.93f, 10.048f}, // 7 scenes
+    {"quake-subdiv16", 1501.9f, 302.03f, 13.882f}, // 10 scenes
+    {"quake-subdiv8", 1501.9f, 286.69f, 20.235f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

@@ -288,19 +288,29 @@ std::string mesh() {
            "frames 360\n";
 }
 
-std::string cube_scene(bool all256) {
+enum class CubeTextures { Mixed, All256, Above256 };
+
+std::string cube_scene(CubeTextures sizes) {
     const char* textures[6] = {"checks", "grid", "cells", "bits", "shades", "big"};
     std::string out =
-        all256 ? "modexlab-scene 2\n"
-                 "# The cube with its six textures all 256 x 256 (the same kinds), so that fatmap's loops, which\n"
-                 "# take only that size, draw every face: every mapper draws all of it.\n"
-                 "texture checks checker 256 256\ntexture grid grid 256 256\ntexture cells numbered 256 256\n"
-                 "texture bits xor 256 256\ntexture shades gradient 256 256\ntexture big checker 256 256\n"
-               : "modexlab-scene 2\n"
-                 "# A cube, six faces, six textures of six sizes and kinds (two of them 256 x 256, for the\n"
-                 "# mappers that need it), spinning about a tilted axis.\n"
-                 "texture checks checker 32 32\ntexture grid grid 64 64\ntexture cells numbered 128 128\n"
-                 "texture bits xor 256 256\ntexture shades gradient 128 64\ntexture big checker 256 256\n";
+        sizes == CubeTextures::All256
+            ? "modexlab-scene 2\n"
+              "# The cube with its six textures all 256 x 256 (the same kinds), so that fatmap's loops, which\n"
+              "# take only that size, draw every face: every mapper draws all of it.\n"
+              "texture checks checker 256 256\ntexture grid grid 256 256\ntexture cells numbered 256 256\n"
+              "texture bits xor 256 256\ntexture shades gradient 256 256\ntexture big checker 256 256\n"
+        : sizes == CubeTextures::Above256
+            ? "modexlab-scene 2\n"
+              "# The cube with its six textures above 256 a side (the same kinds, powers of two up to 1024),\n"
+              "# which fast-table reads through their stacked copies: the mappers that take only the tiled\n"
+              "# 256 x 256 block refuse it.\n"
+              "texture checks checker 1024 1024\ntexture grid grid 512 512\ntexture cells numbered 1024 256\n"
+              "texture bits xor 256 1024\ntexture shades gradient 1024 64\ntexture big checker 512 512\n"
+            : "modexlab-scene 2\n"
+              "# A cube, six faces, six textures of six sizes and kinds (two of them 256 x 256, for the\n"
+              "# mappers that need it), spinning about a tilted axis.\n"
+              "texture checks checker 32 32\ntexture grid grid 64 64\ntexture cells numbered 128 128\n"
+              "texture bits xor 256 256\ntexture shades gradient 128 64\ntexture big checker 256 256\n";
     const P3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     for (int f = 0; f < 6; ++f) {
         MeshMaker m(std::string("face") + char('1' + f));
@@ -345,8 +355,9 @@ std::string freedoom_scene(bool all256) {
 
 std::string ball() { return ball_scene(false); }
 std::string ball_256() { return ball_scene(true); }
-std::string cube() { return cube_scene(false); }
-std::string cube_256() { return cube_scene(true); }
+std::string cube() { return cube_scene(CubeTextures::Mixed); }
+std::string cube_256() { return cube_scene(CubeTextures::All256); }
+std::string cube_1024() { return cube_scene(CubeTextures::Above256); }
 std::string freedoom() { return freedoom_scene(false); }
 std::string freedoom_256() { return freedoom_scene(true); }
 
@@ -362,6 +373,7 @@ const std::vector<DemoScene>& demo_scenes() {
         {"mesh", "a closed torus of 4096 triangles, spans of 2 pixels on average: the setup-bound case", mesh},
         {"cube", "six faces, six textures of different kinds and sizes", cube},
         {"cube-256", "the cube with its six textures at 256 x 256: every mapper draws all of it", cube_256},
+        {"cube-1024", "the cube with its six textures above 256 a side, up to 1024: fast-table's stacked copies", cube_1024},
         {"freedoom", "the corridor in Freedoom's textures and palette (image files, a scene palette)", freedoom},
         {"freedoom-256", "the Freedoom corridor, textures tiled to 256 x 256, faces cut at their periods: every mapper draws all of it", freedoom_256},
     };
