@@ -998,8 +998,8 @@ fast_triangle_asm:
     LOOP_LEAVE F_FRAME
 
 ; fast_triangle_runs_asm(FastTriangleArgs* a): the same for a triangle set up already (`setup` read,
-; any plane set but the 16.16 ones unread): from the rows on (twin: fast_triangle_runs). Returns 1,
-; or 2 where the walker must walk it.
+; of its planes the 16.16 ones only): from the rows on (twin: fast_triangle_runs). Returns 1, or 2
+; where the walker must walk it.
 global fast_triangle_runs_asm
 fast_triangle_runs_asm:
     LOOP_ENTER F_FRAME
