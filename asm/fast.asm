@@ -3,11 +3,13 @@
 ; pointer to the 64 KiB-aligned texture whose bh:bl is the texel's v:u.
 ;   fast_run_loop_asm (fast-affine):     a run of rows, the edge walking included (twin: fast_run_loop):
 ;                                        pixels in pairs, al then ah, one word store a pair, eight
-;                                        pairs a block, an odd last pixel alone;
+;                                        pairs a block, an odd last pixel alone; on a doubled copy
+;                                        (textures above 256 a side) a texel pointer stepped by
+;                                        the fractions' carries, as Quake's d_draw16.s steps its own;
 ;   fast_table_loop_asm (fast-table):    the same rows, each span read through the polygon's offset
 ;                                        table (twin: fast_table_loop): two loads a pixel, one word
 ;                                        store a pair, sixteen pairs a block; from the tiled block or
-;                                        a stacked copy (textures above 256 a side);
+;                                        a doubled copy (textures above 256 a side);
 ;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop): eight pixels a
 ;                                        block, each stored alone (they lie 80 bytes apart);
 ;   fast_table_column_loop_asm (fast-table-columns): one column through the offset table (twin:
@@ -114,7 +116,11 @@ L_ODD     equ 32                        ; 1: the row's pixels are odd, the last 
 L_LOWER   equ 36                        ; the run's bounds
 L_UPPER   equ 40
 L_NEXT    equ 44                        ; the next run's rows (0 or less: none, or taken)
-L_FRAME   equ 48
+L_DVF     equ 48                        ; on a doubled copy: dv fraction (high half)
+L_DSTEP   equ 52                        ; the pointer's step a pixel, with a carry from v (a row more)
+L_DSTEP0  equ 56                        ; and without
+L_BLOCKS  equ 60                        ; the blocks left
+L_FRAME   equ 64
 
 ; steps bound [%1] one line: q += dq, r += dr, and one more on q when r reaches d. Clobbers ebx.
 %macro STEP_BOUND 1
@@ -239,6 +245,8 @@ fast_run_loop_asm:
     RUN_ENTER
     mov eax, [ecx + RUN_texture]
     mov [esp + L_TEXTURE], eax
+    cmp dword [ecx + RUN_doubled], 0
+    jne fast_run_doubled
     mov al, [ecx + RUN_du_16_16 + 2]
     mov ah, [ecx + RUN_dv_16_16 + 2]
     mov [esp + L_STEPS], ax
@@ -253,6 +261,95 @@ fast_run_loop_asm:
 ; .block and entries)
 fast_run_inside:
     RUN_ROWS 0, run_inside_entries
+
+; fast_run_loop_asm's rows on a doubled copy (RUN_doubled: textures above 256 a side): the same
+; rows, the span's texels read through a pointer into the copy that steps as Quake's d_draw16.s
+; steps its own (no wrap: u and v come less their window's corner, and the window fits the copy):
+; v's carry picks a step with a row more or without, u's adds one by adc; pixels in pairs, al then
+; ah, one word store a pair, eight pairs a block, an odd last pixel alone.
+;   esi: the texel   ebx 31..16: u fraction   edx 31..16: v fraction   ebp 31..16: du fraction
+;   [esp + L_DVF]: dv fraction   ecx: 0 or -1 (v's carry)   edi: destination   al, ah: texels
+%macro DPAIR 1                          ; %1: the pair's offset within the block
+    mov al, [esi]
+    add edx, [esp + L_DVF]
+    sbb ecx, ecx
+    add ebx, ebp
+    adc esi, [esp + L_DSTEP0 + ecx * 4]
+    mov ah, [esi]
+    add edx, [esp + L_DVF]
+    sbb ecx, ecx
+    add ebx, ebp
+    adc esi, [esp + L_DSTEP0 + ecx * 4]
+    mov [edi + %1], ax
+%endmacro
+
+; the doubled copy's rows from .row, clipped (%1 = 1) or not (0), the pairs entered through the
+; table %2; then the frame freed.
+%macro DOUBLED_ROWS 2
+.row:
+    ROW_HEAD %1
+    ROW_UV
+    mov esi, edx
+    shr esi, 16
+    imul esi, [ecx + RUN_block_pitch]   ; the row in the copy
+    mov ecx, ebx
+    shr ecx, 16
+    add esi, ecx                        ; and the column
+    add esi, [esp + L_TEXTURE]          ; the first pixel's texel
+    shl ebx, 16                         ; u fraction
+    shl edx, 16                         ; v fraction
+    mov ecx, edi
+    and edi, 1
+    mov [esp + L_ODD], edi              ; an odd pixel, drawn after the pairs
+    shr ecx, 1                          ; pairs
+    PAIR_ENTRY eax, edi, %2             ; blocks, the first one partial; 0 (ZF): no pair, one pixel
+    mov [esp + L_BLOCKS], ecx
+    mov edi, eax                        ; (the movs leave ZF as shr set it)
+    jz .odd_pixel
+    jmp [esp + L_ENTRY]
+.block:
+.e0: DPAIR 0
+.e1: DPAIR 2
+.e2: DPAIR 4
+.e3: DPAIR 6
+.e4: DPAIR 8
+.e5: DPAIR 10
+.e6: DPAIR 12
+.e7: DPAIR 14
+    add edi, 16
+    dec dword [esp + L_BLOCKS]
+    jnz .block
+.odd_pixel:                             ; edi: just past the pairs
+    cmp dword [esp + L_ODD], 0
+    je .next_row
+    mov al, [esi]
+    mov [edi], al
+.next_row:
+    ROW_TAIL
+.done:
+    LOOP_LEAVE L_FRAME
+%endmacro
+
+fast_run_doubled:
+    mov ebp, [ecx + RUN_du_16_16]
+    shl ebp, 16                         ; du fraction
+    mov eax, [ecx + RUN_dv_16_16]
+    shl eax, 16
+    mov [esp + L_DVF], eax              ; dv fraction
+    mov eax, [ecx + RUN_dv_16_16]
+    sar eax, 16
+    imul eax, [ecx + RUN_block_pitch]
+    mov edx, [ecx + RUN_du_16_16]
+    sar edx, 16
+    add eax, edx                        ; dv's whole rows and du's whole columns
+    mov [esp + L_DSTEP0], eax
+    add eax, [ecx + RUN_block_pitch]
+    mov [esp + L_DSTEP], eax
+    cmp dword [ecx + RUN_inside], 0
+    jne fast_run_doubled_inside.row
+    DOUBLED_ROWS 1, run_doubled_entries
+fast_run_doubled_inside:
+    DOUBLED_ROWS 0, run_doubled_inside_entries
 
 ; fast_table_loop_asm: fast-table's run of rows (twin: fast_table_loop): the rows walked as
 ; fast_run_loop_asm walks them, each row's pixel x read through the polygon's offset table, table[x],
@@ -271,7 +368,7 @@ fast_run_inside:
 %endmacro
 
 ; fast_table_loop_asm's rows from .row, clipped (%1 = 1) or not (0), the pairs entered through the
-; table %2, from the tiled block (%3 = 0) or a stacked copy (1); then the frame freed.
+; table %2, from the tiled block (%3 = 0) or a doubled copy (1); then the frame freed.
 %macro TABLE_ROWS 3
 .row:
     ROW_HEAD %1
@@ -279,7 +376,7 @@ fast_run_inside:
     ; (a dword from a value's whole, its high half: the masks, below 65536, keep the whole's bits)
     mov esi, [esp + L_V + 2]
     and esi, [ecx + RUN_v_mask]
-    imul esi, [ecx + RUN_width]         ; (v whole & v_mask) * width
+    imul esi, [ecx + RUN_block_pitch]   ; (v whole & v_mask) * pitch
     mov ebx, [esp + L_U + 2]
     and ebx, [ecx + RUN_u_mask]
     add esi, ebx
@@ -341,31 +438,33 @@ fast_run_inside:
 global fast_table_loop_asm
 fast_table_loop_asm:
     RUN_ENTER
-    cmp dword [ecx + RUN_stacked], 0
-    jne fast_table_stacked
+    cmp dword [ecx + RUN_doubled], 0
+    jne fast_table_doubled
     cmp dword [ecx + RUN_inside], 0
     jne fast_table_inside.row
     TABLE_ROWS 1, table_entries, 0
 fast_table_inside:
     TABLE_ROWS 0, table_inside_entries, 0
-; the same from a stacked copy (RUN_stacked), clipped or not (labels of their own)
-fast_table_stacked:
+; the same from a doubled copy (RUN_doubled), clipped or not (labels of their own)
+fast_table_doubled:
     cmp dword [ecx + RUN_inside], 0
-    jne fast_table_stacked_inside.row
-    TABLE_ROWS 1, table_stacked_entries, 1
-fast_table_stacked_inside:
-    TABLE_ROWS 0, table_stacked_inside_entries, 1
+    jne fast_table_doubled_inside.row
+    TABLE_ROWS 1, table_doubled_entries, 1
+fast_table_doubled_inside:
+    TABLE_ROWS 0, table_doubled_inside_entries, 1
 
 section .rodata
 align 4
     ENTRIES column_entries, fast_column_loop_asm, 8
     ENTRIES run_entries, fast_run_loop_asm, 8
     ENTRIES run_inside_entries, fast_run_inside, 8
+    ENTRIES run_doubled_entries, fast_run_doubled, 8
+    ENTRIES run_doubled_inside_entries, fast_run_doubled_inside, 8
     ENTRIES table_column_entries, fast_table_column_loop_asm, 8
     ENTRIES table_entries, fast_table_loop_asm, 16
     ENTRIES table_inside_entries, fast_table_inside, 16
-    ENTRIES table_stacked_entries, fast_table_stacked, 16
-    ENTRIES table_stacked_inside_entries, fast_table_stacked_inside, 16
+    ENTRIES table_doubled_entries, fast_table_doubled, 16
+    ENTRIES table_doubled_inside_entries, fast_table_doubled_inside, 16
 
 section .text
 

@@ -19,13 +19,13 @@ raster::Texture g_texture;
 // texture and the texture's copies (each placed to end where its buffer ends), the RAM surfaces.
 constexpr size_t TEXELS_BYTES = size_t(raster::MAX_TEXTURE_SIZE) * raster::MAX_TEXTURE_SIZE;
 constexpr size_t BORDERED_BYTES = size_t(raster::MAX_TEXTURE_SIZE + 2) * (raster::MAX_TEXTURE_SIZE + 2);
-constexpr size_t STACKED_BYTES = size_t(raster::stacked_bytes(raster::MAX_TEXTURE_SIZE, raster::MAX_TEXTURE_SIZE));
+constexpr size_t DOUBLED_BYTES = size_t(raster::doubled_bytes(raster::MAX_TEXTURE_SIZE, raster::MAX_TEXTURE_SIZE));
 struct Buffers {
     raster::Scene* scene = guard::take_object<raster::Scene>("screen-space scene");
     uint8_t* texels = guard::take(TEXELS_BYTES, "screen-space texture");
     uint8_t* bordered = guard::take(BORDERED_BYTES, "screen-space texture (bordered copy)");
     uint8_t* aligned = guard::take(raster::ALIGNED256_BYTES, "screen-space texture (aligned copy)");
-    uint8_t* stacked = guard::take(STACKED_BYTES, "screen-space texture (stacked copy)");
+    uint8_t* doubled = guard::take(DOUBLED_BYTES, "screen-space texture (doubled copy)");
     uint8_t* linear = guard::take(raster::SCREEN_PIXELS, "RAM surface (linear)");
     uint8_t* planes = guard::take(raster::SCREEN_PIXELS, "RAM surface (planar)");
 };
@@ -46,7 +46,7 @@ bool load(const char* text, size_t length, raster::ParseError* error) {
     raster::generate_texture(sc.texture_kind, sc.texture_width, sc.texture_height, at);
     g_texture = raster::Texture{at, sc.texture_width, sc.texture_height, sc.wrap};
     raster::prepare_texture(&g_texture, b.bordered + BORDERED_BYTES - size_t(raster::bordered_bytes(sc.texture_width, sc.texture_height)),
-                            b.aligned, b.stacked + STACKED_BYTES - size_t(raster::stacked_bytes(sc.texture_width, sc.texture_height)));
+                            b.aligned, b.doubled + DOUBLED_BYTES - size_t(raster::doubled_bytes(sc.texture_width, sc.texture_height)));
     raster::prepare_choice(raster::DEFAULT_BUDGET, g_texture);  // auto's candidates, before any render
     g_loaded = true;
     return true;

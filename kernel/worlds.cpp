@@ -24,7 +24,7 @@ bool g_overridden = false;
 raster::Budget g_override;
 char g_name[raster::MAX_FILE_NAME];
 
-// Copies each texture of the world, and its bordered, aligned and stacked copies, to buffers of their own that
+// Copies each texture of the world, and its bordered, aligned and doubled copies, to buffers of their own that
 // end against a guard page, and points the objects' textures at them (a texture's copies are shared
 // by the objects that use it). The last world's buffers are given back first (transient: the
 // buffers kept for the boot are never touched).
@@ -47,13 +47,13 @@ void place_textures() {
                 t.bordered = at;
             }
             if (built.aligned256) t.aligned256 = raster::make_aligned256(built, guard::take_transient(raster::ALIGNED256_BYTES, "world texture (aligned copy)", name));
-            if (built.stacked)
-                t.stacked = raster::make_stacked(built, guard::take_transient(size_t(raster::stacked_bytes(built.width, built.height)), "world texture (stacked copy)", name));
+            if (raster::wants_doubled(built))  // (the set keeps none: built here only)
+                t.doubled = raster::make_doubled(built, guard::take_transient(size_t(raster::doubled_bytes(built.width, built.height)), "world texture (doubled copy)", name));
         }
         g_textures.objects[o].texels = t.texels;
         g_textures.objects[o].bordered = t.bordered;
         g_textures.objects[o].aligned256 = t.aligned256;
-        g_textures.objects[o].stacked = t.stacked;
+        g_textures.objects[o].doubled = t.doubled;
     }
 }
 

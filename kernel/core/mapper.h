@@ -39,8 +39,8 @@ enum Need : uint32_t {
     // sides powers of two up to 256 with the tiled copy, repeating, or clamped where the polygon's
     // texture coordinates lie inside the texture (the mapper refuses the others: texture_inside)
     NEED_TILED256_OR_INSIDE = 1 << 6,
-    // the same with sides powers of two up to 1024, those above 256 read from the stacked copy
-    // (Texture::stacked: fast-table's offsets)
+    // the same with sides powers of two up to 1024, those above 256 read from the doubled copy
+    // (Texture::doubled: fast-table's offsets)
     NEED_POW2_OR_INSIDE = 1 << 7,
 };
 // Each need's name (the `mappers` reply) and its words (error messages), in one table.
@@ -202,7 +202,7 @@ inline bool texture_aligned256(const Texture& t) { return texture_tiled256(t) &&
 // Whether the texture meets NEED_TILED256_OR_INSIDE (a clamped one: its polygons checked one by one).
 inline bool texture_tiled256_any_wrap(const Texture& t) { return tiles256(t.width, t.height) && t.aligned256; }
 // Whether the texture meets NEED_POW2_OR_INSIDE (its table block built).
-inline bool texture_pow2_any_wrap(const Texture& t) { return texture_tiled256_any_wrap(t) || (stacks(t.width, t.height) && t.stacked); }
+inline bool texture_pow2_any_wrap(const Texture& t) { return texture_tiled256_any_wrap(t) || (gets_doubled(t.width, t.height) && t.doubled); }
 
 inline bool mapper_accepts(const Mapper& m, const Texture& t) {
     if ((m.needs & NEED_BORDERED) && !t.bordered) return false;

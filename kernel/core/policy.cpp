@@ -33,11 +33,11 @@ Target ram_target(uint8_t* pixels, bool planar) {
     return planar ? planar_target(pixels) : linear_target(pixels, SCREEN_WIDTH, SCREEN_HEIGHT, SCREEN_WIDTH);
 }
 
-void prepare_texture(Texture* t, uint8_t* bordered, uint8_t* aligned, uint8_t* stacked) {
+void prepare_texture(Texture* t, uint8_t* bordered, uint8_t* aligned, uint8_t* doubled) {
     make_bordered(*t, bordered);
     t->bordered = bordered;
     t->aligned256 = wants_aligned256(*t) ? make_aligned256(*t, aligned) : nullptr;
-    t->stacked = stacked && wants_stacked(*t) ? make_stacked(*t, stacked) : nullptr;
+    t->doubled = doubled && wants_doubled(*t) ? make_doubled(*t, doubled) : nullptr;
 }
 
 }  // namespace raster

@@ -69,10 +69,11 @@ const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer) {
     return block;
 }
 
-const uint8_t* make_stacked(const Texture& t, uint8_t* out) {
-    const int32_t bytes = t.width * t.height;
-    for (int32_t copy = 0; copy < 2; ++copy)
-        for (int32_t i = 0; i < bytes; ++i) out[copy * bytes + i] = t.texels[i];
+const uint8_t* make_doubled(const Texture& t, uint8_t* out) {
+    const int32_t pitch = doubled_pitch(t.width), rows = 2 * t.height + 2 * DOUBLED_LEAD;
+    for (int32_t r = 0; r < rows; ++r)
+        for (int32_t c = 0; c < pitch; ++c)
+            out[r * pitch + c] = t.texels[((r - DOUBLED_LEAD) & (t.height - 1)) * t.width + ((c - DOUBLED_LEAD) & (t.width - 1))];
     return out;
 }
 

@@ -31,12 +31,16 @@ struct Texture {
     // in the block plus offsets below 65536, up to block + 131070. Null when not built.
     const uint8_t* aligned256 = nullptr;
     // For textures whose sides are powers of two up to 1024 with one above 256 (they do not tile the
-    // 64 KiB block): the texture twice, one copy below the other (width x 2 height texels, width
-    // bytes a row), so that texel (u mod width, v mod height) of the repeating texture plus an offset
-    // (k mod height) * width + (j mod width) is read at block + (that sum): below 2 width height, a
-    // column beyond the row's end the next row's (fast-table's offsets, TableBlock). Null when not
-    // built.
-    const uint8_t* stacked = nullptr;
+    // 64 KiB block): the repeating texture over (2 width + 2 DOUBLED_LEAD) x (2 height + 2
+    // DOUBLED_LEAD) texels, doubled_pitch(width) bytes a row, at row r and column c texel ((c -
+    // DOUBLED_LEAD) mod width, (r - DOUBLED_LEAD) mod height): twice the texture each way from its
+    // origin, the texel (0, 0) at row and column DOUBLED_LEAD, and a few texels before and after
+    // (make_doubled). Two
+    // readers: fast-table's offsets from the origin (TableBlock), whose sums of two wholes taken
+    // modulo the sides stay below 2 width and 2 height; fast-affine's texel pointer, which walks a
+    // polygon whose coordinates span at most the sides and a few texels without wrapping
+    // (fast::doubled_window). Null when not built.
+    const uint8_t* doubled = nullptr;
 };
 
 constexpr int32_t ALIGNED256_GUARD_BEFORE = 96;
@@ -56,34 +60,40 @@ inline uint8_t texel256(const uint8_t* block, uint32_t u, uint32_t v) { return b
 // Builds the aligned copy inside `buffer` (ALIGNED256_BYTES, any alignment) and returns the block.
 const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer);
 
-// Whether a texture's sides are powers of two up to MAX_TEXTURE_SIZE, one above 256 (the stacked copy).
-inline bool stacks(int32_t width, int32_t height) {
+// Whether a texture's sides are powers of two up to MAX_TEXTURE_SIZE, one above 256 (the doubled copy).
+inline bool gets_doubled(int32_t width, int32_t height) {
     auto pow2 = [](int32_t n) { return n > 0 && n <= MAX_TEXTURE_SIZE && (n & (n - 1)) == 0; };
     return pow2(width) && pow2(height) && !tiles256(width, height);
 }
-constexpr int32_t stacked_bytes(int32_t width, int32_t height) { return 2 * width * height; }
-// Builds the stacked copy into `out` (stacked_bytes(width, height)) and returns it.
-const uint8_t* make_stacked(const Texture& t, uint8_t* out);
+// The doubled copy's columns and rows before its origin, and as many after twice the sides: a
+// polygon whose coordinates reach a little below a multiple of the side, or a period and a little
+// above one, still fits a window of it (fast::doubled_window: a face that maps the texture once,
+// with its rounding).
+constexpr int32_t DOUBLED_LEAD = 8;
+constexpr int32_t doubled_pitch(int32_t width) { return 2 * width + 2 * DOUBLED_LEAD; }
+constexpr int32_t doubled_bytes(int32_t width, int32_t height) { return doubled_pitch(width) * (2 * height + 2 * DOUBLED_LEAD); }
+// The doubled copy's origin, its texel (0, 0).
+inline const uint8_t* doubled_origin(const uint8_t* doubled, int32_t width) { return doubled + DOUBLED_LEAD * doubled_pitch(width) + DOUBLED_LEAD; }
+// Builds the doubled copy into `out` (doubled_bytes(width, height)) and returns it.
+const uint8_t* make_doubled(const Texture& t, uint8_t* out);
 
 // Where fast-table reads a repeating texture with power-of-two sides (the tiled block, or the
-// stacked copy): texel (u mod width, v mod height) at block + ((v mod height) << shift) + (u mod
-// width), u_mask = width - 1, v_mask = height - 1; for the tiled block width and height are 256 (its
+// doubled copy): texel (u mod width, v mod height) at block + (v mod height) * pitch + (u mod width),
+// u_mask = width - 1, v_mask = height - 1; for the tiled block width, height and pitch are 256 (its
 // tiles repeat the texture).
 struct TableBlock {
     const uint8_t* block;
     uint32_t u_mask, v_mask;
-    int32_t shift;
+    int32_t pitch;
     // The block's address for 16.16 coordinates u and v (their wholes taken modulo the sides).
-    const uint8_t* at(uint32_t u, uint32_t v) const { return block + ((((v >> 16) & v_mask) << shift) | ((u >> 16) & u_mask)); }
+    const uint8_t* at(uint32_t u, uint32_t v) const { return block + ((v >> 16) & v_mask) * uint32_t(pitch) + ((u >> 16) & u_mask); }
 };
-// The texture's table block: the tiled one where it is built, else the stacked one (block null:
+// The texture's table block: the tiled one where it is built, else the doubled one (block null:
 // neither).
 inline TableBlock table_block(const Texture& t) {
-    if (t.aligned256) return TableBlock{t.aligned256, 255, 255, 8};
-    if (!t.stacked) return TableBlock{nullptr, 0, 0, 0};
-    int32_t shift = 0;
-    while ((1 << shift) < t.width) ++shift;
-    return TableBlock{t.stacked, uint32_t(t.width - 1), uint32_t(t.height - 1), shift};
+    if (t.aligned256) return TableBlock{t.aligned256, 255, 255, 256};
+    if (!t.doubled) return TableBlock{nullptr, 0, 0, 0};
+    return TableBlock{doubled_origin(t.doubled, t.width), uint32_t(t.width - 1), uint32_t(t.height - 1), doubled_pitch(t.width)};
 }
 
 inline int32_t bordered_pitch(const Texture& t) { return t.width + 2; }

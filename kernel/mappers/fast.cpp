@@ -21,38 +21,82 @@ struct Planes {
     uint32_t v(int32_t x, int32_t y) const { return v0 + uint32_t(x) * vdx + uint32_t(y) * vdy; }
 };
 
-// Whether the texture reads on the polygon as the tiled block does (NEED_TILED256_OR_INSIDE): a
-// repeating texture always; a clamped one where the polygon's affine u and v lie inside it at every
-// pixel it covers, a coordinate `extra` texels further included (fast-table's offsets), with their
-// 16.16 rounding: at the polygon's corners, where the planes take their extremes over it, each
-// evaluated within 4 eps of its terms, the 16.16 value at a pixel of the clip within
-// (1 + |x - x0| + |y - y0|) 2^-17 of the plane (largest at a corner of the clip). There the block's
-// texel (u mod 256, v mod 256) is the texture's (u, v), clamped or not.
-// (Out of line: the drivers ask it only of a clamped texture, one compare a polygon otherwise.)
-[[gnu::noinline]] bool reads_inside(const PolygonSetup& s, const Texture& tex, const ClipRect& clip, double extra) {
-    if (tex.wrap == Wrap::Repeat) return true;
+// The range of the polygon's 16.16 u and v (t = 0, 1) over the pixels of the clip it covers, each
+// widened by `extra` texels: at the polygon's corners, where the planes take their extremes over it,
+// each evaluated within 4 eps of its terms, the 16.16 value at a pixel of the clip within
+// (1 + |x - x0| + |y - y0|) 2^-17 of the plane (largest at a corner of the clip). NaN where a corner's
+// value is (lo and hi then fail every compare).
+void plane_ranges(const PolygonSetup& s, const ClipRect& clip, double extra, double lo[2], double hi[2]) {
     constexpr double EPS = 2.220446049250313e-16;
     const double x0 = double(s.u_fx.x0), y0 = double(s.u_fx.y0);
     const double reach = larger(magnitude(double(clip.x0) - x0), magnitude(double(clip.x1 - 1) - x0)) +
                          larger(magnitude(double(clip.y0) - y0), magnitude(double(clip.y1 - 1) - y0));
     const double rounding = (1 + reach) * HALF_ULP_16_16 * (1 + 1e-9) + extra;
-    for (int i = 0; i < s.edge_count; ++i) {
-        const double x = double(s.edges[i].px - s.ref_x), y = double(s.edges[i].py - s.ref_y);
-        const Plane* planes[2] = {&s.u, &s.v};
-        const double size[2] = {double(tex.width), double(tex.height)};
-        for (int t = 0; t < 2; ++t) {
-            const Plane& p = *planes[t];
+    const Plane* planes[2] = {&s.u, &s.v};
+    for (int t = 0; t < 2; ++t) {
+        const Plane& p = *planes[t];
+        for (int i = 0; i < s.edge_count; ++i) {
+            const double x = double(s.edges[i].px - s.ref_x), y = double(s.edges[i].py - s.ref_y);
             const double at = p.at(x, y), off = rounding + 4 * EPS * (magnitude(p.a0) + magnitude(p.gx * x) + magnitude(p.gy * y));
-            if (!(at - off >= 0 && at + off < size[t])) return false;
+            const double l = at - off, h = at + off;
+            if (!(l == l && h == h)) {  // (NaN from then on)
+                lo[t] = hi[t] = l + h;
+                break;
+            }
+            if (i == 0 || l < lo[t]) lo[t] = l;
+            if (i == 0 || h > hi[t]) hi[t] = h;
         }
     }
+}
+
+// Whether the texture reads on the polygon as the tiled block does (NEED_TILED256_OR_INSIDE): a
+// repeating texture always; a clamped one where the polygon's affine u and v lie inside it at every
+// pixel it covers, a coordinate `extra` texels further included (fast-table's offsets), with their
+// 16.16 rounding (plane_ranges). There the block's texel (u mod 256, v mod 256) is the texture's (u,
+// v), clamped or not; so is the doubled copy's.
+// (Out of line: the drivers ask it only of a clamped texture, one compare a polygon otherwise.)
+[[gnu::noinline]] bool reads_inside(const PolygonSetup& s, const Texture& tex, const ClipRect& clip, double extra) {
+    if (tex.wrap == Wrap::Repeat) return true;
+    double lo[2], hi[2];
+    plane_ranges(s, clip, extra, lo, hi);
+    return lo[0] >= 0 && hi[0] < double(tex.width) && lo[1] >= 0 && hi[1] < double(tex.height);
+}
+
+}  // namespace
+
+// fast-affine on a doubled copy: the corner of the window of the copy that its texel pointer walks
+// on the polygon without wrapping, as 16.16 values to take from u and v (their wholes then the
+// texel's column and row in the copy). The floors of u over the pixels lie in [f, g] (plane_ranges).
+// The copy's columns are texels a - L .. a + 2 width + L - 1 (L = DOUBLED_LEAD) for a multiple a of
+// the width, the largest with a - L <= f, so texel t's column is t - (a - L), which holds t mod
+// width; then g < a + 2 width + L fits the copy, always where g - f <= width + 2 L. A face that maps
+// the texture once, [0, width], has f = -1 and g = width with its rounding (a = 0); where its affine
+// planes overshoot at a corner, as a quad's fourth may by a fifth of the side, f down to -width - L
+// (a = -width) or g up to 2 width + L - 1 (a = 0) still fit. The same for v. False where the polygon
+// spans more (fast-affine then reads the texture itself by masks), or its range is not a finite one
+// within int32.
+bool doubled_window(const PolygonSetup& s, const Texture& tex, const ClipRect& clip, uint32_t* u_base, uint32_t* v_base) {
+    double lo[2], hi[2];
+    plane_ranges(s, clip, 0, lo, hi);
+    const int32_t sides[2] = {tex.width, tex.height};
+    uint32_t bases[2];
+    for (int t = 0; t < 2; ++t) {
+        if (!(lo[t] > -SMALL_FLOOR && hi[t] < SMALL_FLOOR)) return false;
+        const int32_t f = floor_small(lo[t]), g = floor_small(hi[t]);
+        const int32_t a = (f + DOUBLED_LEAD) & -sides[t];  // (a power of two: the multiple at or below)
+        if (int64_t(g) - a >= 2 * sides[t] + DOUBLED_LEAD) return false;
+        bases[t] = uint32_t(a - DOUBLED_LEAD) << 16;
+    }
+    *u_base = bases[0], *v_base = bases[1];  // (only where it fits: the caller's 0 otherwise)
     return true;
 }
 
+namespace {
+
 // build_offset_table's work: 16.16 values modulo 2^32, whose wholes modulo a power of two up to
 // 65536 are the floors' (2^32 is a multiple of 2^32 / 65536); the tiled block's by shifts alone, the
-// stacked copy's by masks and a shift. The tiled one inline, as it was (out of line, the mesh's
-// tables of a few entries paid a call: 25 instructions a polygon); the stacked one out of line
+// doubled copy's by masks and a shift. The tiled one inline, as it was (out of line, the mesh's
+// tables of a few entries paid a call: 25 instructions a polygon); the doubled one out of line
 // (both inline in one function, the tiled loop spilled a register: 200 a polygon more on the
 // corridor's long tables).
 inline void offset_table256(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table) {
@@ -63,23 +107,23 @@ inline void offset_table256(int32_t du_16_16, int32_t dv_16_16, int32_t length, 
         v += uint32_t(dv_16_16);
     }
 }
-[[gnu::noinline]] void offset_table_stacked(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
+[[gnu::noinline]] void offset_table_doubled(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
     uint32_t u = TABLE_U_START, v = 0;
     for (int32_t k = 0; k < length; ++k) {
-        table[k] = int32_t((((v >> 16) & block.v_mask) << block.shift) | ((u >> 16) & block.u_mask));
+        table[k] = int32_t(((v >> 16) & block.v_mask) * uint32_t(block.pitch) + ((u >> 16) & block.u_mask));
         u += uint32_t(du_16_16);
         v += uint32_t(dv_16_16);
     }
 }
-// Whether a table block is a stacked copy (any other than the tiled block's 256 x 256).
-inline bool is_stacked(const TableBlock& block) { return block.u_mask != 255 || block.v_mask != 255 || block.shift != 8; }
+// Whether a table block is a doubled copy (any other than the tiled block's 256 x 256).
+inline bool is_doubled(const TableBlock& block) { return block.pitch != 256; }
 inline void offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
-    if (is_stacked(block)) offset_table_stacked(du_16_16, dv_16_16, length, table, block);
+    if (is_doubled(block)) offset_table_doubled(du_16_16, dv_16_16, length, table, block);
     else offset_table256(du_16_16, dv_16_16, length, table);
 }
-// A driver's: the tiled block's without looking further where the texture has no stacked copy.
+// A driver's: the tiled block's without looking further where the texture has no doubled copy.
 inline void offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const Texture& tex) {
-    if (tex.stacked) offset_table_stacked(du_16_16, dv_16_16, length, table, table_block(tex));
+    if (tex.doubled) offset_table_doubled(du_16_16, dv_16_16, length, table, table_block(tex));
     else offset_table256(du_16_16, dv_16_16, length, table);
 }
 
@@ -120,6 +164,20 @@ inline int walk_triangle(FastTriangleArgs* t) {
 #endif
 }
 
+// A run's block drawn (the run loop counts what it draws): by the context's loop, or where
+// fast-affine's polygon spans more of a doubled copy than its window (FastRunArgs::doubled 2) by
+// fast_run_loop_wrapping (DOUBLED: only fast-affine's driver on a doubled copy asks).
+// (The wrapping loop's call out of line, as cold: inline, it cost the mesh's triangles some 25
+// instructions each.)
+[[gnu::noinline, gnu::cold]] void run_wrapping(const DrawContext& c, const FastRunArgs& a) {
+    emit(c.stats->probe, c.stats, 0, 0, [&] { fast_run_loop_wrapping(a); });
+}
+template <bool DOUBLED>
+[[gnu::always_inline]] inline void run(const DrawContext& c, const FastRunArgs& a) {
+    if (DOUBLED && a.doubled == 2) run_wrapping(c, a);
+    else emit(c, &a, 0, 0);
+}
+
 // Rows go by runs: a run's rows have one live bound a side, so the run loop walks them itself, two
 // runs a call where the second follows at once (a triangle's, but where a vertex lies on a row's
 // centre). A frame's uncut triangle is set up with its runs and the loop's block in one call
@@ -129,7 +187,7 @@ inline int walk_triangle(FastTriangleArgs* t) {
 // and drawn as a run of one row between constant bounds. With an offset table (fast-table), the
 // table for the polygon's longest span is built once, after the walk's set-up (what the setup
 // phase counts).
-template <bool TABLE>
+template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-affine on a texture's doubled copy
 [[gnu::always_inline]] inline SetupStatus draw_runs(const DrawContext& c, const Vertex* vertices, int count) {
     FastRunArgs a;
     PolygonSetup own;
@@ -145,6 +203,7 @@ template <bool TABLE>
         taken = walk_triangle(&t);
     }
     if (c.tex.wrap == Wrap::Clamp && !reads_inside(s, c.tex, c.target.clip, TABLE ? 1 : 0)) return SetupStatus::Unsupported;
+    uint32_t u_base = 0, v_base = 0;  // fast-affine on a doubled copy: its window's corner, from u and v
     int32_t table[TABLE ? TABLE_LIMIT : 1];
     int32_t table_x = 0;  // fast-table: the pixel its offsets start at, at or left of every span's first
     if constexpr (TABLE) {
@@ -157,13 +216,22 @@ template <bool TABLE>
         if (last >= table_x) offset_table(s.u_fx.dx, s.v_fx.dx, last - table_x + 1, table + table_x, c.tex);
         a.table = table;
         a.texture = c.tex.aligned256;
-        a.stacked = c.tex.stacked != nullptr;  // (a texture has the one or the other)
-        if (a.stacked) {
+        a.doubled = c.tex.doubled != nullptr;  // (a texture has the one or the other)
+        if (a.doubled) {
             const TableBlock block = table_block(c.tex);
-            a.texture = block.block, a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.width = 1 << block.shift;
+            a.texture = block.block, a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.block_pitch = block.pitch;
         }
     } else {
         a.texture = c.tex.aligned256;
+        a.doubled = 0;
+        if constexpr (DOUBLED) {
+            if (doubled_window(s, c.tex, c.target.clip, &u_base, &v_base)) {
+                a.texture = c.tex.doubled, a.block_pitch = doubled_pitch(c.tex.width), a.doubled = 1;
+            } else {  // the texture itself, wrapped by masks (fast_run_loop_wrapping)
+                a.texture = c.tex.texels, a.block_pitch = c.tex.width, a.u_mask = uint32_t(c.tex.width - 1), a.v_mask = uint32_t(c.tex.height - 1);
+                a.doubled = 2;
+            }
+        }
     }
     uint32_t drawn[2] = {0, 0};  // spans, pixels
     a.tally = drawn;
@@ -173,8 +241,11 @@ template <bool TABLE>
             if constexpr (TABLE) {  // u and v at the table's first pixel, not at pixel 0
                 a.u_16_16 += uint32_t(table_x) * uint32_t(a.du_16_16);
                 a.v_16_16 += uint32_t(table_x) * uint32_t(a.dv_16_16);
+            } else if constexpr (DOUBLED) {
+                a.u_16_16 -= u_base;
+                a.v_16_16 -= v_base;
             }
-            emit(c, &a, 0, 0);  // the run loop counts what it draws
+            run<DOUBLED>(c, a);
         }
     } else {
         EdgeWalker walker(s, EdgeWalker::Along<Axis::Rows>{}, c.target.clip);
@@ -209,9 +280,9 @@ template <bool TABLE>
                 line = span.y;
             }
             a.row = c.target.base + line * c.target.pitch;
-            a.u_16_16 = p.u(table_x, line);  // (fast-affine: at pixel 0)
-            a.v_16_16 = p.v(table_x, line);
-            emit(c, &a, 0, 0);  // the run loop counts what it draws
+            a.u_16_16 = p.u(table_x, line) - u_base;  // (fast-affine: at pixel 0)
+            a.v_16_16 = p.v(table_x, line) - v_base;
+            run<DOUBLED>(c, a);
         }
     }
     tally(c.stats, drawn[0], drawn[1]);
@@ -220,7 +291,20 @@ template <bool TABLE>
 
 }  // namespace
 
-SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) { return draw_runs<false>(c, vertices, count); }
+namespace {
+
+// fast-affine on a texture's doubled copy, its own instantiation (out of line: the tiled block's
+// triangles pay one compare for it)
+[[gnu::noinline]] SetupStatus draw_rows_doubled(const DrawContext& c, const Vertex* vertices, int count) {
+    return draw_runs<false, true>(c, vertices, count);
+}
+
+}  // namespace
+
+SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
+    if (c.tex.doubled) [[unlikely]] return draw_rows_doubled(c, vertices, count);  // (a texture has the one or the other)
+    return draw_runs<false>(c, vertices, count);
+}
 SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int count) { return draw_runs<true>(c, vertices, count); }
 
 namespace {
@@ -237,7 +321,7 @@ struct ColumnArgsOf<true> {
 // Columns: the walker's spans, one loop call each (the map mask set once a column): fast_column_loop
 // from each column's u and v, or (fast-table-columns) fast_table_column_loop from its first texel
 // through the polygon's offset table along y, built once for its tallest column.
-template <bool TABLE, bool STACKED = false>  // STACKED: fast-table-columns on a stacked copy
+template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-table-columns on a doubled copy
 [[gnu::always_inline]] inline SetupStatus draw_column_spans(const DrawContext& c, const Vertex* vertices, int count) {
     PolygonSetup own;
     SetupStatus status;
@@ -247,7 +331,7 @@ template <bool TABLE, bool STACKED = false>  // STACKED: fast-table-columns on a
     EdgeWalker walker(s, EdgeWalker::Along<Axis::Columns>{}, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
-    const TableBlock block = STACKED ? table_block(c.tex) : TableBlock{};
+    const TableBlock block = DOUBLED ? table_block(c.tex) : TableBlock{};
     if constexpr (TABLE) {
         const int32_t height = c.target.clip.y1 - c.target.clip.y0;
         const int32_t box = int32_t((s.max_y - s.min_y) >> SUBPIXEL_BITS) + 2;
@@ -270,7 +354,7 @@ template <bool TABLE, bool STACKED = false>  // STACKED: fast-table-columns on a
         a.count = span.count;
         if constexpr (TABLE) {
             const uint32_t u = p.u(span.x, span.y), v = p.v(span.x, span.y);
-            a.source = STACKED ? block.at(u, v) : c.tex.aligned256 + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));  // (the tiled block's by shifts)
+            a.source = DOUBLED ? block.at(u, v) : c.tex.aligned256 + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));  // (the tiled block's by shifts)
         } else {
             a.u_16_16 = int32_t(p.u(span.x, span.y));
             a.v_16_16 = int32_t(p.v(span.x, span.y));
@@ -287,7 +371,7 @@ template <bool TABLE, bool STACKED = false>  // STACKED: fast-table-columns on a
 
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) { return draw_column_spans<false>(c, vertices, count); }
 SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count) {
-    return c.tex.stacked ? draw_column_spans<true, true>(c, vertices, count) : draw_column_spans<true>(c, vertices, count);
+    return c.tex.doubled ? draw_column_spans<true, true>(c, vertices, count) : draw_column_spans<true>(c, vertices, count);
 }
 
 namespace {
@@ -397,10 +481,39 @@ int fast_triangle_runs(FastTriangleArgs* a) {
 
 void fast_run_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
+    if (a.doubled) {
+        // the doubled copy's texel pointer (an offset here), stepped as the NASM loop steps it: the
+        // wholes of du and dv, and one more column or row on each fraction's carry
+        const uint32_t pitch = uint32_t(a.block_pitch), du_fraction = uint32_t(a.du_16_16) << 16, dv_fraction = uint32_t(a.dv_16_16) << 16;
+        const uint32_t step = uint32_t(a.dv_16_16 >> 16) * pitch + uint32_t(a.du_16_16 >> 16);
+        run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
+            const uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
+            uint32_t at = (sv >> 16) * pitch + (su >> 16), u_fraction = su << 16, v_fraction = sv << 16;
+            for (int32_t x = lo; x <= hi; ++x) {
+                row[x] = a.texture[at];
+                const uint32_t carry_v = v_fraction + dv_fraction < v_fraction, carry_u = u_fraction + du_fraction < u_fraction;
+                v_fraction += dv_fraction;
+                u_fraction += du_fraction;
+                at += step + carry_v * pitch + carry_u;
+            }
+        });
+        return;
+    }
     run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
         uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
         for (int32_t x = lo; x <= hi; ++x) {
             row[x] = texel256(a.texture, su, sv);
+            su += uint32_t(a.du_16_16);
+            sv += uint32_t(a.dv_16_16);
+        }
+    });
+}
+
+void fast_run_loop_wrapping(const FastRunArgs& a) {
+    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
+        uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
+        for (int32_t x = lo; x <= hi; ++x) {
+            row[x] = a.texture[((sv >> 16) & a.v_mask) * uint32_t(a.block_pitch) + ((su >> 16) & a.u_mask)];
             su += uint32_t(a.du_16_16);
             sv += uint32_t(a.dv_16_16);
         }
@@ -415,7 +528,7 @@ void fast_table_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
     run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
         // the table's first pixel's texel (the tiled block's by shifts)
-        const uint8_t* origin = a.stacked ? a.texture + ((v >> 16) & a.v_mask) * uint32_t(a.width) + ((u >> 16) & a.u_mask)
+        const uint8_t* origin = a.doubled ? a.texture + ((v >> 16) & a.v_mask) * uint32_t(a.block_pitch) + ((u >> 16) & a.u_mask)
                                           : a.texture + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));
         for (int32_t x = lo; x <= hi; ++x) row[x] = origin[a.table[x]];
     });
@@ -471,17 +584,15 @@ const void* check_block(const TableColumnCase& a) {
 
 namespace {
 
-// A table block over the check's texels: the tiled one, or a third of the time a stacked copy of
+// A table block over the check's texels: the tiled one, or a third of the time a doubled copy of
 // random power-of-two sides up to 1024, one above 256, within the buffer (2 W H at most its bytes).
 TableBlock random_table_block(Random& r, const CheckBuffers& buf) {
-    if (r.below(3) != 0) return TableBlock{check_aligned_texture(buf), 255, 255, 8};
+    if (r.below(3) != 0) return TableBlock{check_aligned_texture(buf), 255, 255, 256};
     int32_t w = 0, h = 0;
     do {
         w = 1 << r.range(0, 10), h = 1 << r.range(0, 10);
-    } while (!stacks(w, h) || size_t(stacked_bytes(w, h)) > CHECK_TEXEL_BYTES);
-    int32_t shift = 0;
-    while ((1 << shift) < w) ++shift;
-    return TableBlock{buf.texels, uint32_t(w - 1), uint32_t(h - 1), shift};
+    } while (!gets_doubled(w, h) || size_t(doubled_bytes(w, h)) > CHECK_TEXEL_BYTES);
+    return TableBlock{buf.texels, uint32_t(w - 1), uint32_t(h - 1), doubled_pitch(w)};
 }
 
 }  // namespace
@@ -586,18 +697,29 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         a.next_lines = r.below(2) ? 0 : run(c.next_lower, c.next_upper, most);
         if (a.next_lines == 0) c.next_lower = c.next_upper = EdgeBound::constant(0);
         a.inside = inside ? 1 : 0;
-        // fast-table's block: the tiled one, or a stacked copy (fast-affine reads the tiled one)
+        // the texture: the tiled block, or a doubled copy (its pitch; fast-table: its masks too)
         const TableBlock block = random_table_block(r, buf);
         a.texture = block.block;
-        a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.width = 1 << block.shift;
-        a.stacked = fast::is_stacked(block);
-        if (m.twin != fast_table_loop) a.texture = check_aligned_texture(buf);
+        a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.block_pitch = block.pitch;
+        a.doubled = fast::is_doubled(block);
         a.u_16_16 = r.next();
         a.v_16_16 = r.next();
         a.u_row_16_16 = r.next();
         a.v_row_16_16 = r.next();
         a.du_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
         a.dv_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        if (m.twin == fast_run_loop && a.doubled) {
+            // fast-affine's texel pointer from the buffer's start, every row's first texel within it:
+            // wholes of u from 2300 to 4000 and of v from 150 to 300 at pixel 0, u stepping by at most
+            // 4 texels a pixel or a row and v by a quarter, so over 330 columns and 240 rows u stays
+            // within 20..6280 and v within 7..443: below 443 * 2056 + 6280 < 1 MiB (any fraction)
+            a.u_16_16 = uint32_t(r.range(2300, 3999)) << 16 | (r.next() & 0xFFFF);
+            a.v_16_16 = uint32_t(r.range(150, 299)) << 16 | (r.next() & 0xFFFF);
+            a.u_row_16_16 = uint32_t(r.range(-0x40000, 0x40000)), a.du_16_16 = r.range(-0x40000, 0x40000);
+            a.v_row_16_16 = uint32_t(r.range(-0x4000, 0x4000)), a.dv_16_16 = r.range(-0x4000, 0x4000);
+        } else if (m.twin == fast_run_loop) {
+            a.texture = check_aligned_texture(buf);  // (the 8:16 core's tiled block)
+        }
         c.tally[0] = c.tally[1] = 0;
         a.lower = &c.lower;
         a.upper = &c.upper;
@@ -631,7 +753,7 @@ void fast_offsets() {
     ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
     ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16, v_16_16,
-               u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside, stacked, u_mask, v_mask, width)
+               u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside, doubled, u_mask, v_mask, block_pitch)
     ASM_FIELDS(BOUND, EdgeBound, first, last, q, dq, r, dr, d)
     ASM_SIZE(BOUND_SIZE, EdgeBound);
     ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)

@@ -36,15 +36,22 @@ struct FastRunArgs {
     // Nonzero: every row whose bounds are in order lies within clip_lo..clip_hi (the polygon's box
     // lies inside the clip), so the NASM loops need not clip (the twins clip all the same)
     int32_t inside;
-    // fast-table: its table block (TableBlock). `stacked` nonzero where it is the stacked copy: a
-    // row's first texel at texture + ((v whole & v_mask) * width) + (u whole & u_mask), the three
-    // read only then; else the tiled block's (v whole & 255) * 256 + (u whole & 255), which the NASM
-    // loop takes by bl and bh
-    int32_t stacked;
+    // The doubled copy (Texture::doubled: textures above 256 a side) where `doubled` is 1,
+    // block_pitch bytes a row. fast-table: a row's first texel at texture + (v whole & v_mask) *
+    // block_pitch + (u whole & u_mask), the four read only then. fast-affine: u and v are the
+    // polygon's less its window's corner (fast::doubled_window), so their wholes are the texel's
+    // column and row in the copy, and the loop steps a texel pointer from there without wrapping.
+    // Else the tiled block's (v whole & 255) * 256 + (u whole & 255), which the NASM loops take by
+    // bl and bh. (fast-affine's driver sets 2 where it runs fast_run_loop_wrapping instead.)
+    int32_t doubled;
     uint32_t u_mask, v_mask;
-    int32_t width;
+    int32_t block_pitch;
 };
 void fast_run_loop(const void* args);
+// fast-affine's rows on a polygon that spans more of a texture above 256 a side than a window of its
+// doubled copy: fast_run_loop's texels, read from the texture itself (texture, block_pitch its
+// width) at (v whole & v_mask, u whole & u_mask). C++ only: rare polygons, seen edge-on.
+void fast_run_loop_wrapping(const FastRunArgs& a);
 
 // A triangle in range (a frame's uncut face) drawn by a run loop, set up and its walk set up in one
 // call: setup_polygon's work (PLANES_AFFINE, Input::InRange) into `setup`, then triangle_runs on it
@@ -72,19 +79,19 @@ extern "C" int fast_triangle_runs_asm(FastTriangleArgs* a);
 #endif
 
 // fast-table: the offsets of pixel k of any span from its first pixel's texel in the texture's
-// table block (TableBlock: the tiled one, W = H = 256, or the stacked copy, W x H its sides), for a
-// polygon whose u and v step by du and dv (16.16) a pixel: table[k] = (floor(k dv) & (H - 1)) * W +
-// (floor(c + k du) & (W - 1)), the floors of 16.16 values in exact integer arithmetic, c =
-// TABLE_U_START, k = 0 .. length - 1 (fatmap's table idea: one table a polygon, not a step a pixel).
-// fast_table_loop walks fast_run_loop's rows and reads pixel x0 + k of a row whose u and v are u0,
-// v0 at pixel x0, the pixel the polygon's table starts at (at or left of every span's first pixel:
-// the table written from table + x0), from block + (v0 whole & (H - 1)) * W + (u0 whole & (W - 1))
-// + table[x0 + k]: no multiply a row on the tiled block. u's part may pass W - 1 into the next
-// texel row (the tiled block's guard rows after it continue the tiling, to block + 131070; the
-// stacked copy's second copy, below 2 W H), so the texel read is fast-affine's (floor(u0 + k du),
-// floor(v0 + k dv)) moved by e_u on u, |e_u| <= 1 (the start's fraction against c), and by e_v on
-// v, |e_v| <= 1 (the fraction dropped, 0 or -1, and the carry from u, 0 or +1), modulo the sides
-// (docs/accuracy.md, "The offset table").
+// table block (TableBlock: the tiled one, W = H = P = 256, or the doubled copy, W x H its sides, P
+// its pitch), for a polygon whose u and v step by du and dv (16.16) a pixel: table[k] = (floor(k dv)
+// & (H - 1)) * P + (floor(c + k du) & (W - 1)), the floors of 16.16 values in exact integer
+// arithmetic, c = TABLE_U_START, k = 0 .. length - 1 (fatmap's table idea: one table a polygon, not
+// a step a pixel). fast_table_loop walks fast_run_loop's rows and reads pixel x0 + k of a row whose
+// u and v are u0, v0 at pixel x0, the pixel the polygon's table starts at (at or left of every
+// span's first pixel: the table written from table + x0), from block + (v0 whole & (H - 1)) * P +
+// (u0 whole & (W - 1)) + table[x0 + k]: no multiply a row on the tiled block. On the tiled block u's
+// part may pass 255 into the next texel row (its guard rows after it continue the tiling, to block +
+// 131070); on the doubled copy the two parts stay below 2 W and 2 H, inside its rows. So the texel
+// read is fast-affine's (floor(u0 + k du), floor(v0 + k dv)) moved by e_u on u, |e_u| <= 1 (the
+// start's fraction against c), and by e_v on v, |e_v| <= 1 (the fraction dropped, 0 or -1, and on
+// the tiled block the carry from u, 0 or +1), modulo the sides (docs/accuracy.md, "The offset table").
 constexpr uint32_t TABLE_U_START = 0x8000;  // half a texel: e_u in {-1, 0, 1}
 constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row: 320 pixels)
 void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block);
@@ -123,5 +130,8 @@ SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count
 SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count);  // fast-table-columns
 ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count);            // fast-affine, fast-columns
 ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count);      // fast-table: a texel more
+// fast-affine on a texture's doubled copy: whether the polygon's u and v over the pixels of the clip
+// it covers fit a window of the copy, and that window's corner (16.16, to take from u and v)
+bool doubled_window(const PolygonSetup& s, const Texture& tex, const ClipRect& clip, uint32_t* u_base, uint32_t* v_base);
 
 }  // namespace raster::fast

@@ -53,17 +53,19 @@ const Mapper MAPPERS[] = {
     {"persp-adaptive-4", "ours", "runs as long as the bound keeps within four footprints", "as persp-adaptive-0.5, within 4 footprints",
      EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, adaptive_span<16>, TWIN_AND_ASM(step_loop), nullptr, check_step, adaptive_bound<16>},
     {"fast-affine", "ours", "fatmap2's 8:16 core, unrolled with a computed entry, walking runs of rows in NASM",
-     "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; repeating textures with "
-     "power-of-two sides up to 256 (tiled over 256 x 256)",
-     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
+     "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; textures with power-of-two "
+     "sides up to 1024, repeating or with the polygon's coordinates inside (up to 256 tiled over 256 x 256; above, from the doubled "
+     "copy where the polygon's coordinates span at most the sides and 7 texels more, else from the texture by masks)",
+     EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-table", "ours", "fast-affine's runs of rows, each span's texels at offsets from its first precomputed once a polygon (fatmap's table idea)",
      "exact coverage; u, v affine from the polygon's 16.16 planes, each texel within one texel on each axis of fast-affine's "
      "(the start's fraction and a carry): within two texels without perspective; textures with power-of-two sides up to "
-     "1024, repeating or with the polygon's coordinates inside (up to 256 tiled over 256 x 256, larger ones stacked)",
+     "1024, repeating or with the polygon's coordinates inside (up to 256 tiled over 256 x 256, larger ones doubled)",
      EXACT_COVERAGE_FLAT_TWO, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_table_loop), fast::draw_table_rows, check_fast_run,
      fast::table_bound},
     {"fast-columns", "ours", "the same core down Mode X columns, the map mask set once a column",
-     "as fast-affine, by columns into Mode X planes",
+     "as fast-affine, by columns into Mode X planes; textures with power-of-two sides up to 256, repeating or with the polygon's "
+     "coordinates inside",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256_OR_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_loop),
      fast::draw_columns, check_fast_column, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-table-columns", "ours", "fast-table's offsets down Mode X columns, the map mask set once a column",
@@ -84,13 +86,13 @@ const Mapper MAPPERS[] = {
     {"fast-constant-depth", "ours", "Doom's floors and walls on the fast core: exact at both ends of each row or column in x87, the 8:16 core between",
      "exact u, v at each span's first and last pixel centre, 16.16 steps between: exact up to rounding along lines of constant "
      "depth (floors and ceilings by rows, upright walls by columns), its bound says how far off elsewhere; exact coverage; textures "
-     "as fast-affine",
+     "as fast-subdiv-8",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_subdiv_span<FAST_SPAN_LONG>, TWIN_AND_ASM(fast_subdiv_loop), nullptr,
      check_fast_subdiv, fast_subdiv_bound<FAST_SPAN_LONG>, false, SPANS_ASKED},
     {"fast-adaptive-1", "ours", "fast-subdiv's loop, its segments span by span as long as the bound keeps within one footprint",
      "exact u, v every 2^s pixels and at the last, the fast 8:16 core between, s for each span the largest (to 512 pixels) whose "
      "chords the relative chords bound keeps within 1 footprint (long where 1/w barely changes along the span); exact coverage; "
-     "textures as fast-affine",
+     "textures as fast-subdiv-8",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, fast_adaptive_span<4>, TWIN_AND_ASM(fast_subdiv_loop), nullptr, check_fast_subdiv,
      fast_adaptive_bound<4>},
     {"fast-adaptive-2", "ours", "fast-subdiv's loop, its segments span by span as long as the bound keeps within two footprints",
@@ -99,7 +101,7 @@ const Mapper MAPPERS[] = {
      fast_adaptive_bound<8>},
     {"fast-oriented-1", "ours", "fast-adaptive-1 along the walker where 1/w changes least, polygon by polygon (walls by columns, floors by rows)",
      "as fast-adaptive-1 (within 1 footprint), each polygon by rows or by columns, whichever its 1/w gradient and its lines make "
-     "cheaper (on a Mode X target: columns); exact coverage; textures as fast-affine",
+     "cheaper (on a Mode X target: columns); exact coverage; textures as fast-subdiv-8",
      EXACT_COVERAGE_FLAT_ONE, NEED_TILED256, AXIS_BOTH, nullptr, TWIN_AND_ASM(fast_subdiv_loop), fast_oriented_draw<4>, check_fast_subdiv,
      fast_oriented_bound<4>, false, SPANS_NOT_ASKED, false, PLANES_PERSPECTIVE, fast_oriented_walker<4>},
     {"xsharp-dda", "classic", "Abrash, Black Book listing 57.1 (X-Sharp 21, C)",

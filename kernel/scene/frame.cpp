@@ -373,21 +373,21 @@ TriangleEnvelope object_envelope(const World& world, int32_t o, const Placement&
 }
 
 void build_texture_set(const World& world, TextureSet* out) {
-    size_t bordered = 0, stacked = 0;
+    size_t bordered = 0, doubled = 0;
     Texture prepared[MAX_WORLD_TEXTURES];
     for (int32_t i = 0; i < world.texture_count; ++i) {
         const WorldTexture& t = world.textures[i];
         prepared[i] = Texture{world.texels + t.offset, t.width, t.height, Wrap::Repeat};
-        prepare_texture(&prepared[i], out->bordered + bordered, out->aligned[i], out->stacked + stacked);
+        prepare_texture(&prepared[i], out->bordered + bordered, out->aligned[i], out->doubled ? out->doubled + doubled : nullptr);
         bordered += size_t(bordered_bytes(t.width, t.height));
-        if (prepared[i].stacked) stacked += size_t(stacked_bytes(t.width, t.height));
+        if (prepared[i].doubled) doubled += size_t(doubled_bytes(t.width, t.height));
     }
     for (int32_t o = 0; o < world.object_count; ++o) {
         const Texture& copies = prepared[world.objects[o].texture];
         out->objects[o] = world.texture_of(o);
         out->objects[o].bordered = copies.bordered;
         out->objects[o].aligned256 = copies.aligned256;
-        out->objects[o].stacked = copies.stacked;
+        out->objects[o].doubled = copies.doubled;
     }
 }
 

@@ -131,8 +131,20 @@ struct TextureSet {
     static constexpr size_t BORDERED_BYTES = size_t(MAX_TEXEL_POOL) + 2 * MAX_WORLD_TEXTURES * 2 * (MAX_TEXTURE_SIZE + 2);
     uint8_t bordered[BORDERED_BYTES];
     uint8_t aligned[MAX_WORLD_TEXTURES][ALIGNED256_BYTES];
-    uint8_t stacked[2 * size_t(MAX_TEXEL_POOL)];  // the stacked copies (at most twice the texels)
+    // The doubled copies' room (four times the texels and their pads, (2 W + 8)(2 H + 8) - 4 W H =
+    // 16 (W + H) + 64, at most 32832 bytes a texture), DOUBLED_BYTES at `doubled` where the caller
+    // gives it (HostTextureSet); null: none built (the kernel builds each where it places the
+    // textures, worlds.cpp, and keeps no second 16 MiB).
+    static constexpr size_t DOUBLED_BYTES = 4 * size_t(MAX_TEXEL_POOL) + MAX_WORLD_TEXTURES * size_t(doubled_bytes(MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE) - 4 * MAX_TEXTURE_SIZE * MAX_TEXTURE_SIZE);
+    uint8_t* doubled = nullptr;
 };
+#if __STDC_HOSTED__
+// The host's texture set, with the room for its doubled copies.
+struct HostTextureSet : TextureSet {
+    uint8_t pool[DOUBLED_BYTES];
+    HostTextureSet() { doubled = pool; }
+};
+#endif
 void build_texture_set(const World& world, TextureSet* out);
 
 // Draws the frame's polygons in order into `target`; with a probe, times the phases (probe.h);

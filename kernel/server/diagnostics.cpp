@@ -170,10 +170,10 @@ struct FuzzBank {
             textures[i] = raster::Texture{texels, size.width, size.height, wrap};
             uint8_t* bordered = guard::take(size_t(raster::bordered_bytes(size.width, size.height)), "fuzz texture (bordered copy)", names[i]);
             uint8_t* aligned = raster::wants_aligned256(textures[i]) ? guard::take(raster::ALIGNED256_BYTES, "fuzz texture (aligned copy)", names[i]) : nullptr;
-            uint8_t* stacked = raster::wants_stacked(textures[i])
-                                   ? guard::take(size_t(raster::stacked_bytes(size.width, size.height)), "fuzz texture (stacked copy)", names[i])
+            uint8_t* doubled = raster::wants_doubled(textures[i])
+                                   ? guard::take(size_t(raster::doubled_bytes(size.width, size.height)), "fuzz texture (doubled copy)", names[i])
                                    : nullptr;
-            raster::prepare_texture(&textures[i], bordered, aligned, stacked);
+            raster::prepare_texture(&textures[i], bordered, aligned, doubled);
         }
     }
 };

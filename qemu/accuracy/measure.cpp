@@ -68,7 +68,7 @@ LoadedWorld parse_world_text(const std::string& text, const std::string& name, c
     ParseError e;
     if (!parse_world(text.data(), text.size(), r, w.world.get(), &e))
         throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message);
-    w.textures = std::make_unique<TextureSet>();
+    w.textures = std::make_unique<HostTextureSet>();
     build_texture_set(*w.world, w.textures.get());
     return w;
 }
@@ -122,11 +122,11 @@ struct HostSurface {
 // A texture with the copies the mappers read (prepare_texture).
 struct HostTexture {
     Texture texture;
-    std::vector<uint8_t> bordered, aligned, stacked;
+    std::vector<uint8_t> bordered, aligned, doubled;
     explicit HostTexture(const Texture& t)
         : texture(t), bordered(size_t(bordered_bytes(t.width, t.height))), aligned(ALIGNED256_BYTES),
-          stacked(stacks(t.width, t.height) ? size_t(stacked_bytes(t.width, t.height)) : 0) {
-        prepare_texture(&texture, bordered.data(), aligned.data(), stacked.data());
+          doubled(gets_doubled(t.width, t.height) ? size_t(doubled_bytes(t.width, t.height)) : 0) {
+        prepare_texture(&texture, bordered.data(), aligned.data(), doubled.data());
     }
 };
 

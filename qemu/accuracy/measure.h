@@ -64,7 +64,7 @@ std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const raster::Mapp
 struct LoadedWorld {
     std::string name;
     std::unique_ptr<raster::World> world;
-    std::unique_ptr<raster::TextureSet> textures;
+    std::unique_ptr<raster::HostTextureSet> textures;
 };
 
 // Throws HarnessError "NAME:LINE: message" on a bad scene or a texture file it cannot read.

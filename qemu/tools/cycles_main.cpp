@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
     int frames = std::atoi(argv[3]);
     if (frames < 1 || frames > 1000) fail("FRAMES takes 1..1000");
     auto world = std::make_unique<World>();
-    auto textures = std::make_unique<TextureSet>();
+    auto textures = std::make_unique<HostTextureSet>();
     auto frame = std::make_unique<Frame>();
     auto scratch = std::make_unique<FrameScratch>();
     std::vector<uint8_t> surface(SCREEN_PIXELS);

@@ -38,20 +38,20 @@ constexpr double SLACK = 1e-6;    // the measure divides by the footprint as sto
 
 // A texture and its copies inside POISON, which no texel holds.
 struct PoisonedTexture {
-    std::vector<uint8_t> texels, bordered, aligned, stacked;
+    std::vector<uint8_t> texels, bordered, aligned, doubled;
     Texture tex;
     PoisonedTexture(int32_t w, int32_t h, Wrap wrap, const uint8_t* source = nullptr)
         : texels(2 * MARGIN + size_t(w) * size_t(h), POISON),
           bordered(2 * MARGIN + size_t(bordered_bytes(w, h)), POISON),
           aligned(ALIGNED256_BYTES, POISON),
-          stacked(2 * MARGIN + (stacks(w, h) ? size_t(stacked_bytes(w, h)) : 0), POISON) {
+          doubled(2 * MARGIN + (gets_doubled(w, h) ? size_t(doubled_bytes(w, h)) : 0), POISON) {
         uint8_t* t = texels.data() + MARGIN;
         if (source) std::memcpy(t, source, size_t(w) * size_t(h));
         else generate_texture(TextureKind::Xor, w, h, t);
         for (size_t i = 0; i < size_t(w) * size_t(h); ++i)
             if (t[i] == POISON) t[i] = POISON - 1;
         tex = Texture{t, w, h, wrap};
-        prepare_texture(&tex, bordered.data() + MARGIN, aligned.data(), stacked.data() + MARGIN);
+        prepare_texture(&tex, bordered.data() + MARGIN, aligned.data(), doubled.data() + MARGIN);
     }
 };
 

@@ -54,7 +54,7 @@ constexpr size_t GUARD_BYTES = 4096;
 // Frame `frame` of the world with the mapper, into a RAM surface between guard bytes.
 void draw(const World& world, int32_t frame, const Mapper& mapper) {
     static auto scratch = std::make_unique<FrameScratch>();
-    static auto textures = std::make_unique<TextureSet>();
+    static auto textures = std::make_unique<HostTextureSet>();
     static auto out = std::make_unique<Frame>();
     build_frame(world, frame, out.get(), scratch.get());
     build_texture_set(world, textures.get());

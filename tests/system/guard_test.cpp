@@ -54,17 +54,17 @@ TEST(Guard, AWritePastASurfaceHitsItsGuardPage) {
 // drawn and refused for the same reasons, with the same pixel count.
 TEST(Guard, TheKernelFuzzesEveryMapperAsTheHostDoes) {
     constexpr uint32_t POLYGONS = 64;
-    std::vector<std::vector<uint8_t>> texels, bordered, aligned, stacked;
+    std::vector<std::vector<uint8_t>> texels, bordered, aligned, doubled;
     raster::Texture bank[raster::FUZZ_TEXTURE_COUNT];
     for (int i = 0; i < raster::FUZZ_TEXTURE_COUNT; ++i) {
         const raster::FuzzTextureSize size = raster::fuzz_texture_size(i);
         texels.emplace_back(size_t(size.width) * size_t(size.height));
         bordered.emplace_back(size_t(raster::bordered_bytes(size.width, size.height)));
         aligned.emplace_back(raster::ALIGNED256_BYTES);
-        stacked.emplace_back(raster::stacks(size.width, size.height) ? size_t(raster::stacked_bytes(size.width, size.height)) : 0);
+        doubled.emplace_back(raster::gets_doubled(size.width, size.height) ? size_t(raster::doubled_bytes(size.width, size.height)) : 0);
         raster::generate_texture(raster::TextureKind::Xor, size.width, size.height, texels.back().data());
         bank[i] = raster::Texture{texels.back().data(), size.width, size.height, raster::fuzz_texture_wrap(i)};
-        raster::prepare_texture(&bank[i], bordered.back().data(), aligned.back().data(), stacked.back().data());
+        raster::prepare_texture(&bank[i], bordered.back().data(), aligned.back().data(), doubled.back().data());
     }
     std::vector<uint8_t> surface(raster::SCREEN_PIXELS);
     auto give_surface = [](void* ctx, bool) { return static_cast<std::vector<uint8_t>*>(ctx)->data(); };

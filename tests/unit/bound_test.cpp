@@ -161,12 +161,12 @@ TEST(Bounds, NoMapperExceedsItsBoundOnRandomPolygons) {
             size_t t = size_t(n) % std::size(sizes);
             if ((m.needs & NEED_ALIGNED256) && sizes[t] != 256) t = 4;
             if ((m.needs & (NEED_TILED256 | NEED_TILED256_OR_INSIDE)) && !tiles256(sizes[t], sizes[t])) t = n % 3 == 0 ? 0 : n % 3 == 1 ? 3 : 4;  // 1, 64, 256
-            if ((m.needs & NEED_POW2_OR_INSIDE) && !tiles256(sizes[t], sizes[t]) && !stacks(sizes[t], sizes[t])) t = n % 2 ? 5 : 3;  // 1024, 64
+            if ((m.needs & NEED_POW2_OR_INSIDE) && !tiles256(sizes[t], sizes[t]) && !gets_doubled(sizes[t], sizes[t])) t = n % 2 ? 5 : 3;  // 1024, 64
             Wrap wrap = (m.needs & (NEED_ALIGNED256 | NEED_TILED256)) || n % 3 ? Wrap::Repeat : Wrap::Clamp;
             std::vector<uint8_t> bordered(size_t(bordered_bytes(sizes[t], sizes[t]))), aligned(ALIGNED256_BYTES);
-            std::vector<uint8_t> stacked(stacks(sizes[t], sizes[t]) ? size_t(stacked_bytes(sizes[t], sizes[t])) : 0);
+            std::vector<uint8_t> doubled(gets_doubled(sizes[t], sizes[t]) ? size_t(doubled_bytes(sizes[t], sizes[t])) : 0);
             Texture tex{texels[t].data(), sizes[t], sizes[t], wrap};
-            prepare_texture(&tex, bordered.data(), aligned.data(), stacked.data());
+            prepare_texture(&tex, bordered.data(), aligned.data(), doubled.data());
             std::vector<Vertex> p = random_polygon(gen, n % 6);
             if (m.needs & NEED_INSIDE) place_inside(gen, p, sizes[t], sizes[t]);
             bounded += check_polygon(meter, m, axis, p, tex, &tight, std::string(m.name) + " polygon " + std::to_string(n));

@@ -7,6 +7,7 @@
 
 #include "kernel/core/policy.h"
 #include "kernel/mappers/classic.h"
+#include "kernel/mappers/fast.h"
 #include "tests/unit/raster_helpers.h"
 
 namespace {
@@ -420,27 +421,38 @@ TEST(FastTable, EachTexelWithinOneOnEachAxisOfFastAffines) {
     }
 }
 
+// A repeating texture of random texels (none 255, the tests' empty pixel) with a side above 256,
+// prepared with its doubled copy (tex) and without (alone).
+struct RandomBigTexture {
+    std::vector<uint8_t> texels, bordered, aligned, doubled;
+    Texture tex, alone;
+    RandomBigTexture(int32_t w, int32_t h, std::mt19937& rng)
+        : texels(size_t(w) * size_t(h)), bordered(size_t(bordered_bytes(w, h))), aligned(ALIGNED256_BYTES), doubled(size_t(doubled_bytes(w, h))) {
+        for (uint8_t& t : texels) t = uint8_t(rng() % 255);
+        tex = alone = Texture{texels.data(), w, h, Wrap::Repeat};
+        prepare_texture(&alone, bordered.data(), aligned.data());
+        prepare_texture(&tex, bordered.data(), aligned.data(), doubled.data());
+    }
+};
+
 // fast-table and fast-table-columns take textures with a side above 256 (powers of two up to
-// 1024) through their stacked copy: every pixel fast-affine's arithmetic would draw, its texel
+// 1024) through their doubled copy: every pixel fast-affine's arithmetic would draw, its texel
 // within one on each axis of fast-affine's (the 16.16 planes' floors at the pixel, modulo the sides:
 // one of the nine around it), on random triangles over many periods, a texture of random texels
-// (a wrong row, stride or mask reads some other texel), NASM loop and twin; and with the stacked
+// (a wrong row, stride or mask reads some other texel), NASM loop and twin; and with the doubled
 // copy left out (prepare_texture's null) they refuse such a texture.
-TEST(FastTable, TakesTexturesAbove256ByTheStackedCopy) {
+TEST(FastTable, TakesTexturesAbove256ByTheDoubledCopy) {
     const int32_t sides[][2] = {{512, 512}, {1024, 64}, {64, 1024}, {1024, 1024}, {512, 2}, {256, 512}};
     TriangleGen gen(20261127u);
     gen.uv_range = 3000;
     for (const auto& side : sides) {
         const int32_t w = side[0], h = side[1];
-        std::vector<uint8_t> texels(size_t(w) * size_t(h)), bordered(size_t(bordered_bytes(w, h))), aligned(ALIGNED256_BYTES),
-            stacked(size_t(stacked_bytes(w, h)));
-        for (uint8_t& t : texels) t = uint8_t(gen.rng() % 255);  // (255: the empty pixel)
-        Texture tex{texels.data(), w, h, Wrap::Repeat}, alone = tex;
-        prepare_texture(&alone, bordered.data(), aligned.data());
-        prepare_texture(&tex, bordered.data(), aligned.data(), stacked.data());
+        const RandomBigTexture big(w, h, gen.rng);
+        const std::vector<uint8_t>& texels = big.texels;
+        const Texture &tex = big.tex, &alone = big.alone;
         for (const char* name : {"fast-table", "fast-table-columns"}) {
             const Mapper& m = mapper(name);
-            EXPECT_FALSE(mapper_accepts(m, alone)) << name << ": no stacked copy";
+            EXPECT_FALSE(mapper_accepts(m, alone)) << name << ": no doubled copy";
             ASSERT_TRUE(mapper_accepts(m, tex)) << name << " " << w << "x" << h;
             const Axis axis = home_axis(m);
             for (Variant variant : {Variant::Twin, Variant::Asm}) {
@@ -471,6 +483,62 @@ TEST(FastTable, TakesTexturesAbove256ByTheStackedCopy) {
                 }
                 EXPECT_GT(pixels, 20000) << name << " " << w << "x" << h;
             }
+        }
+    }
+}
+
+// fast-affine takes textures with a side above 256 (powers of two up to 1024): on every polygon it
+// draws exactly the texel of its 16.16 planes' floors at each pixel, modulo the sides (a texture
+// of random texels: a wrong row, column, step or carry reads some other texel), NASM loop and twin,
+// through the doubled copy's window where the polygon's coordinates fit one (doubled_window), from
+// the texture by masks where they do not; a face that maps the texture once ([0, W] x [0, H], a
+// cube's, shifted by whole periods) always fits. Without the copy it refuses the texture.
+TEST(FastAffine, TakesTexturesAbove256ByTheDoubledCopy) {
+    const int32_t sides[][2] = {{512, 512}, {1024, 64}, {64, 1024}, {1024, 1024}, {512, 2}, {256, 512}};
+    const Mapper& m = mapper("fast-affine");
+    TriangleGen gen(20261128u);
+    for (const auto& side : sides) {
+        const int32_t w = side[0], h = side[1];
+        // spans up to 2.4 times the smaller side and 32: in a window up to the side and 16 more, never
+        // from twice the side and 16 more, between as the window falls
+        gen.uv_range = 1.2 * (w < h ? w : h) + 16;
+        const RandomBigTexture big(w, h, gen.rng);
+        const std::vector<uint8_t>& texels = big.texels;
+        const Texture &tex = big.tex, &alone = big.alone;
+        EXPECT_FALSE(mapper_accepts(m, alone)) << "no doubled copy";
+        ASSERT_TRUE(mapper_accepts(m, tex)) << w << "x" << h;
+        auto face = [&](double shift_u, double shift_v) {  // the texture once, shifted by whole periods
+            return std::vector<Vertex>{vertex(20.5, 12.25, 1, shift_u, shift_v), vertex(300.75, 20, 1, shift_u + w, shift_v),
+                                       vertex(290, 228.5, 1, shift_u + w, shift_v + h)};
+        };
+        for (Variant variant : {Variant::Twin, Variant::Asm}) {
+            int pixels = 0, windowed = 0, wrapped = 0;
+            for (int n = 0; n < 160; ++n) {
+                const std::vector<Vertex> t = n < 2 ? face(n * 3.0 * w, -n * 5.0 * h) : gen.triangle();
+                std::vector<uint8_t> a(SCREEN_PIXELS, 255);
+                Target target = ram_target(a.data(), false);
+                RenderStats stats;
+                PolygonSetup s;
+                if (setup_polygon(t.data(), 3, &s, PLANES_AFFINE) != SetupStatus::Ok) continue;
+                ASSERT_EQ(draw_polygon(t.data(), 3, tex, m, Axis::Rows, target, &stats, variant), SetupStatus::Ok);
+                uint32_t u_base, v_base;
+                const bool window = fast::doubled_window(s, tex, target.clip, &u_base, &v_base);
+                ASSERT_TRUE(window || n >= 2) << w << "x" << h << ": the face outside a window";
+                ++(window ? windowed : wrapped);
+                for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
+                    for (int32_t x = 0; x < SCREEN_WIDTH; ++x) {
+                        const uint8_t got = a[size_t(y) * SCREEN_WIDTH + size_t(x)];
+                        ASSERT_EQ(got != 255, covers(s, x, y)) << w << "x" << h << " triangle " << n << " at " << x << "," << y;
+                        if (got == 255) continue;
+                        ++pixels;
+                        const int32_t fu = int32_t(uint32_t(s.u_fx.value(x, y)) >> 16), fv = int32_t(uint32_t(s.v_fx.value(x, y)) >> 16);
+                        ASSERT_EQ(got, texels[size_t(fv & (h - 1)) * size_t(w) + size_t(fu & (w - 1))])
+                            << w << "x" << h << " triangle " << n << " at " << x << "," << y;
+                    }
+            }
+            EXPECT_GT(pixels, 20000) << w << "x" << h;
+            EXPECT_GT(windowed, 20) << w << "x" << h;
+            EXPECT_GT(wrapped, 5) << w << "x" << h;
         }
     }
 }

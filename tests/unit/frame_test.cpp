@@ -316,7 +316,7 @@ TEST(Frame, TexturesPerObjectShareTheirCopies) {
                        "object a\nmesh quad\ntexture big\nend\nobject b\nmesh quad\ntexture big\nwrap clamp\nend\n"
                        "object c\nmesh quad\ntexture small\nend\nobject d\nmesh quad\ntexture odd\nend\ncamera\nend\n";
     auto b = build(text);
-    auto set = std::make_unique<TextureSet>();
+    auto set = std::make_unique<HostTextureSet>();
     build_texture_set(*b->world, set.get());
     EXPECT_EQ(set->objects[0].texels, set->objects[1].texels);
     EXPECT_EQ(set->objects[0].bordered, set->objects[1].bordered);

@@ -60,10 +60,10 @@ TEST(Stability, NothingIsWrittenOutsideTheClipAndCoverageHolds) {
                 for (int32_t size : {1, 3, 64, 256, 1024}) {
                     // exactly the size: ASan sees any stray read, of the texels and of the copies
                     std::vector<uint8_t> texels(size_t(size) * size_t(size)), bordered(size_t(bordered_bytes(size, size)));
-                    std::vector<uint8_t> aligned(ALIGNED256_BYTES), stacked(stacks(size, size) ? size_t(stacked_bytes(size, size)) : 0);
+                    std::vector<uint8_t> aligned(ALIGNED256_BYTES), doubled(gets_doubled(size, size) ? size_t(doubled_bytes(size, size)) : 0);
                     generate_texture(TextureKind::Xor, size, size, texels.data());
                     Texture tex{texels.data(), size, size, wrap};
-                    prepare_texture(&tex, bordered.data(), aligned.data(), stacked.data());
+                    prepare_texture(&tex, bordered.data(), aligned.data(), doubled.data());
                     if (!mapper_accepts(mapper, tex)) continue;
                     harness::GuardedSurface surface(ram_planar(mapper, axis));
                     RenderStats stats;
@@ -256,14 +256,14 @@ using namespace rastertest;
 // keep its fill. The kernel's `fuzz` command runs the same polygons between guard pages.
 // Textures of every size class, each in arrays of exactly its size.
 struct FuzzTexture {
-    std::vector<uint8_t> texels, bordered, aligned, stacked;
+    std::vector<uint8_t> texels, bordered, aligned, doubled;
     Texture tex;
     FuzzTexture(int32_t width, int32_t height, Wrap wrap)
         : texels(size_t(width) * size_t(height)), bordered(size_t(bordered_bytes(width, height))), aligned(ALIGNED256_BYTES),
-          stacked(stacks(width, height) ? size_t(stacked_bytes(width, height)) : 0) {
+          doubled(gets_doubled(width, height) ? size_t(doubled_bytes(width, height)) : 0) {
         generate_texture(TextureKind::Xor, width, height, texels.data());
         tex = Texture{texels.data(), width, height, wrap};
-        prepare_texture(&tex, bordered.data(), aligned.data(), stacked.data());
+        prepare_texture(&tex, bordered.data(), aligned.data(), doubled.data());
     }
 };
 // The fuzzer's bank: texture i as fuzz_texture_size(i) and fuzz_texture_wrap(i) say.
