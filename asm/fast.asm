@@ -24,14 +24,14 @@ bits 32
 
 section .text
 
-; The column loops' entry: the frame, the block (eax), its pixel count (ecx) and destination (edi)
-; from the fields %1_count and %1_dst (.done: no pixels); then the computed entry into blocks of
-; eight pixels for them: the first block starts at pixel j = (-count) mod 8 (left in edx), so the
-; destination moves j rows back and [esp] takes entry j of the table %2; ecx: the blocks, the
-; first one partial.
-%macro COLUMN_ENTER 2
-    LOOP_ENTER 4
-    mov eax, LOOP_ARG(4)
+; The column loops' entry: the frame (%3 bytes, 4 unless given), the block (eax), its pixel count
+; (ecx) and destination (edi) from the fields %1_count and %1_dst (.done: no pixels); then the
+; computed entry into blocks of eight pixels for them: the first block starts at pixel j = (-count)
+; mod 8 (left in edx), so the destination moves j rows back and [esp] takes entry j of the table
+; %2; ecx: the blocks, the first one partial.
+%macro COLUMN_ENTER 2-3 4
+    LOOP_ENTER %3
+    mov eax, LOOP_ARG(%3)
     mov ecx, [eax + %1_count]
     test ecx, ecx
     jle .done
@@ -47,9 +47,16 @@ section .text
     shr ecx, 3
 %endmacro
 
-; fast_column_loop_asm: one column, pixels MODEX_ROW_BYTES apart; the map mask is the caller's.
+; fast_column_loop_asm: one column, pixels MODEX_ROW_BYTES apart; the map mask is the caller's. From
+; the tiled block (FCOL_block_pitch 0), or a doubled copy (fast_column_doubled). fast_column_tiled_asm
+; is the same on the tiled block without the test (fast-columns' driver calls it where it knows).
 global fast_column_loop_asm
+global fast_column_tiled_asm
 fast_column_loop_asm:
+    mov eax, [esp + 4]
+    cmp dword [eax + FCOL_block_pitch], 0
+    jne fast_column_doubled
+fast_column_tiled_asm:
     COLUMN_ENTER FCOL, column_entries
     mov ebx, [eax + FCOL_texture]
     mov bl, [eax + FCOL_u_16_16 + 2]
@@ -68,6 +75,66 @@ fast_column_loop_asm:
     BLOCKS MODEX_ROW_BYTES
 .done:
     LOOP_LEAVE 4
+
+; fast_column_loop_asm on a doubled copy (FCOL_block_pitch its pitch): the column's texels through a
+; pointer into it, stepped as fast_run_loop_asm's doubled rows step theirs (DPAIR), a pixel at a
+; time, eight a block.
+C_DVF     equ 4                         ; dv fraction (high half)
+C_DSTEP   equ 8                         ; the pointer's step a pixel, with a carry from v (a row more)
+C_DSTEP0  equ 12                        ; and without
+C_BLOCKS  equ 16                        ; the blocks left
+C_FRAME   equ 20
+%macro DCOL_PIXEL 1                     ; %1: the pixel's offset within the block
+    mov al, [esi]
+    add edx, [esp + C_DVF]
+    sbb ecx, ecx
+    add ebx, ebp
+    adc esi, [esp + C_DSTEP0 + ecx * 4]
+    mov [edi + %1], al
+%endmacro
+fast_column_doubled:
+    COLUMN_ENTER FCOL, column_doubled_entries, C_FRAME
+    mov [esp + C_BLOCKS], ecx
+    mov esi, [eax + FCOL_v_16_16]
+    shr esi, 16
+    imul esi, [eax + FCOL_block_pitch]  ; the row in the copy
+    mov ebx, [eax + FCOL_u_16_16]
+    shr ebx, 16
+    add esi, ebx                        ; and the column
+    add esi, [eax + FCOL_texture]       ; the first pixel's texel
+    mov ebx, [eax + FCOL_dv_16_16]
+    sar ebx, 16
+    imul ebx, [eax + FCOL_block_pitch]
+    mov edx, [eax + FCOL_du_16_16]
+    sar edx, 16
+    add ebx, edx                        ; dv's whole rows and du's whole columns
+    mov [esp + C_DSTEP0], ebx
+    add ebx, [eax + FCOL_block_pitch]
+    mov [esp + C_DSTEP], ebx
+    mov ebx, [eax + FCOL_dv_16_16]
+    shl ebx, 16
+    mov [esp + C_DVF], ebx
+    mov ebp, [eax + FCOL_du_16_16]
+    shl ebp, 16                         ; du fraction
+    mov edx, [eax + FCOL_v_16_16]
+    shl edx, 16                         ; v fraction
+    mov ebx, [eax + FCOL_u_16_16]
+    shl ebx, 16                         ; u fraction
+    jmp [esp]
+.block:
+.e0: DCOL_PIXEL 0
+.e1: DCOL_PIXEL MODEX_ROW_BYTES
+.e2: DCOL_PIXEL 2 * MODEX_ROW_BYTES
+.e3: DCOL_PIXEL 3 * MODEX_ROW_BYTES
+.e4: DCOL_PIXEL 4 * MODEX_ROW_BYTES
+.e5: DCOL_PIXEL 5 * MODEX_ROW_BYTES
+.e6: DCOL_PIXEL 6 * MODEX_ROW_BYTES
+.e7: DCOL_PIXEL 7 * MODEX_ROW_BYTES
+    add edi, 8 * MODEX_ROW_BYTES
+    dec dword [esp + C_BLOCKS]
+    jnz .block
+.done:
+    LOOP_LEAVE C_FRAME
 
 ; fast_table_column_loop_asm: one Mode X column through the polygon's offset table (twin:
 ; fast_table_column_loop): pixel n is [esi + table[n]], eight pixels a block, each stored alone.
@@ -455,7 +522,8 @@ fast_table_doubled_inside:
 
 section .rodata
 align 4
-    ENTRIES column_entries, fast_column_loop_asm, 8
+    ENTRIES column_entries, fast_column_tiled_asm, 8
+    ENTRIES column_doubled_entries, fast_column_doubled, 8
     ENTRIES run_entries, fast_run_loop_asm, 8
     ENTRIES run_inside_entries, fast_run_inside, 8
     ENTRIES run_doubled_entries, fast_run_doubled, 8

@@ -170,7 +170,7 @@ inline int walk_triangle(FastTriangleArgs* t) {
 // (The wrapping loop's call out of line, as cold: inline, it cost the mesh's triangles some 25
 // instructions each.)
 [[gnu::noinline, gnu::cold]] void run_wrapping(const DrawContext& c, const FastRunArgs& a) {
-    emit(c.stats->probe, c.stats, 0, 0, [&] { fast_run_loop_wrapping(a); });
+    emit(c.stats->probe, c.stats, 0, 0, [&] { fast_run_loop_wrapping(a, c.tex); });
 }
 template <bool DOUBLED>
 [[gnu::always_inline]] inline void run(const DrawContext& c, const FastRunArgs& a) {
@@ -228,7 +228,6 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-affine on a textur
             if (doubled_window(s, c.tex, c.target.clip, &u_base, &v_base)) {
                 a.texture = c.tex.doubled, a.block_pitch = doubled_pitch(c.tex.width), a.doubled = 1;
             } else {  // the texture itself, wrapped by masks (fast_run_loop_wrapping)
-                a.texture = c.tex.texels, a.block_pitch = c.tex.width, a.u_mask = uint32_t(c.tex.width - 1), a.v_mask = uint32_t(c.tex.height - 1);
                 a.doubled = 2;
             }
         }
@@ -319,15 +318,18 @@ struct ColumnArgsOf<true> {
 };
 
 // Columns: the walker's spans, one loop call each (the map mask set once a column): fast_column_loop
-// from each column's u and v, or (fast-table-columns) fast_table_column_loop from its first texel
-// through the polygon's offset table along y, built once for its tallest column.
-template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-table-columns on a doubled copy
+// from each column's u and v (on a doubled copy from its window's corner; where the polygon spans
+// more than a window, wrapping_pixels), or (fast-table-columns) fast_table_column_loop from its
+// first texel through the polygon's offset table along y, built once for its tallest column.
+template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
 [[gnu::always_inline]] inline SetupStatus draw_column_spans(const DrawContext& c, const Vertex* vertices, int count) {
     PolygonSetup own;
     SetupStatus status;
     const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
     if (c.tex.wrap == Wrap::Clamp && !reads_inside(s, c.tex, c.target.clip, TABLE ? 1 : 0)) return SetupStatus::Unsupported;
+    uint32_t u_base = 0, v_base = 0;  // fast-columns on a doubled copy: its window's corner
+    const bool wrapping = !TABLE && DOUBLED && !doubled_window(s, c.tex, c.target.clip, &u_base, &v_base);
     EdgeWalker walker(s, EdgeWalker::Along<Axis::Columns>{}, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
@@ -342,10 +344,17 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-table-columns on a
     if constexpr (TABLE) {
         a.table = table;
     } else {
-        a.texture = c.tex.aligned256;
+        a.texture = DOUBLED ? c.tex.doubled : c.tex.aligned256;
+        a.block_pitch = DOUBLED ? doubled_pitch(c.tex.width) : 0;
         a.du_16_16 = int32_t(p.udy);
         a.dv_16_16 = int32_t(p.vdy);
     }
+    // fast-columns on the tiled block: its NASM loop entered past the block's test (3 instructions a
+    // column: the mesh's columns of a pixel or two paid 1.2% of their draw for it)
+    LoopFn loop = c.loop;
+#if defined(MODEXLAB_ASM_LOOPS)
+    if (!TABLE && !DOUBLED && loop == fast_column_loop_asm) loop = fast_column_tiled_asm;
+#endif
     uint32_t spans = 0, pixels = 0;
     Span span;
     while (walker.next(&span)) {
@@ -356,10 +365,22 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-table-columns on a
             const uint32_t u = p.u(span.x, span.y), v = p.v(span.x, span.y);
             a.source = DOUBLED ? block.at(u, v) : c.tex.aligned256 + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));  // (the tiled block's by shifts)
         } else {
-            a.u_16_16 = int32_t(p.u(span.x, span.y));
-            a.v_16_16 = int32_t(p.v(span.x, span.y));
+            a.u_16_16 = int32_t(p.u(span.x, span.y) - u_base);
+            a.v_16_16 = int32_t(p.v(span.x, span.y) - v_base);
         }
-        emit(c, &a, 0, 0);  // counted once for the polygon
+        if constexpr (!TABLE && DOUBLED) {
+            if (wrapping) {
+                emit(c.stats->probe, c.stats, 0, 0, [&] {
+                    wrapping_pixels(c.tex, a.du_16_16, a.dv_16_16, uint32_t(a.u_16_16), uint32_t(a.v_16_16), a.dst, a.count, MODEX_ROW_BYTES);
+                });
+            } else {
+                emit(c, &a, 0, 0);
+            }
+        } else if constexpr (!TABLE) {
+            emit(c.stats->probe, c.stats, 0, 0, [&] { loop(&a); });  // (counted once for the polygon)
+        } else {
+            emit(c, &a, 0, 0);  // counted once for the polygon
+        }
         ++spans;
         pixels += uint32_t(span.count);
     }
@@ -369,7 +390,9 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-table-columns on a
 
 }  // namespace
 
-SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) { return draw_column_spans<false>(c, vertices, count); }
+SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) {
+    return c.tex.doubled ? draw_column_spans<false, true>(c, vertices, count) : draw_column_spans<false>(c, vertices, count);
+}
 SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count) {
     return c.tex.doubled ? draw_column_spans<true, true>(c, vertices, count) : draw_column_spans<true>(c, vertices, count);
 }
@@ -479,23 +502,32 @@ int fast_triangle_runs(FastTriangleArgs* a) {
     return 1;
 }
 
+namespace {
+
+// The NASM loops' texel pointer into a doubled copy (an offset here), stepped as they step it: the
+// wholes of du and dv, and one more column or row on each fraction's carry; its pixels `stride`
+// bytes apart from dst, from 16.16 u and v whose wholes are the column and row in the copy.
+void doubled_pixels(const uint8_t* texture, int32_t pitch, int32_t du, int32_t dv, uint32_t u, uint32_t v, uint8_t* dst, int32_t count, int32_t stride) {
+    const uint32_t p = uint32_t(pitch), du_fraction = uint32_t(du) << 16, dv_fraction = uint32_t(dv) << 16;
+    const uint32_t step = uint32_t(dv >> 16) * p + uint32_t(du >> 16);
+    uint32_t at = (v >> 16) * p + (u >> 16), u_fraction = u << 16, v_fraction = v << 16;
+    for (int32_t n = 0; n < count; ++n, dst += stride) {
+        *dst = texture[at];
+        const uint32_t carry_v = v_fraction + dv_fraction < v_fraction, carry_u = u_fraction + du_fraction < u_fraction;
+        v_fraction += dv_fraction;
+        u_fraction += du_fraction;
+        at += step + carry_v * p + carry_u;
+    }
+}
+
+}  // namespace
+
 void fast_run_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
     if (a.doubled) {
-        // the doubled copy's texel pointer (an offset here), stepped as the NASM loop steps it: the
-        // wholes of du and dv, and one more column or row on each fraction's carry
-        const uint32_t pitch = uint32_t(a.block_pitch), du_fraction = uint32_t(a.du_16_16) << 16, dv_fraction = uint32_t(a.dv_16_16) << 16;
-        const uint32_t step = uint32_t(a.dv_16_16 >> 16) * pitch + uint32_t(a.du_16_16 >> 16);
         run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
             const uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
-            uint32_t at = (sv >> 16) * pitch + (su >> 16), u_fraction = su << 16, v_fraction = sv << 16;
-            for (int32_t x = lo; x <= hi; ++x) {
-                row[x] = a.texture[at];
-                const uint32_t carry_v = v_fraction + dv_fraction < v_fraction, carry_u = u_fraction + du_fraction < u_fraction;
-                v_fraction += dv_fraction;
-                u_fraction += du_fraction;
-                at += step + carry_v * pitch + carry_u;
-            }
+            doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, su, sv, row + lo, hi - lo + 1, 1);
         });
         return;
     }
@@ -509,14 +541,19 @@ void fast_run_loop(const void* raw) {
     });
 }
 
-void fast_run_loop_wrapping(const FastRunArgs& a) {
+void wrapping_pixels(const Texture& tex, int32_t du, int32_t dv, uint32_t u, uint32_t v, uint8_t* dst, int32_t count, int32_t stride) {
+    const uint32_t u_mask = uint32_t(tex.width - 1), v_mask = uint32_t(tex.height - 1);
+    for (int32_t n = 0; n < count; ++n, dst += stride) {
+        *dst = tex.texels[((v >> 16) & v_mask) * uint32_t(tex.width) + ((u >> 16) & u_mask)];
+        u += uint32_t(du);
+        v += uint32_t(dv);
+    }
+}
+
+void fast_run_loop_wrapping(const FastRunArgs& a, const Texture& tex) {
     run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
-        uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
-        for (int32_t x = lo; x <= hi; ++x) {
-            row[x] = a.texture[((sv >> 16) & a.v_mask) * uint32_t(a.block_pitch) + ((su >> 16) & a.u_mask)];
-            su += uint32_t(a.du_16_16);
-            sv += uint32_t(a.dv_16_16);
-        }
+        const uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
+        wrapping_pixels(tex, a.du_16_16, a.dv_16_16, su, sv, row + lo, hi - lo + 1, 1);
     });
 }
 
@@ -541,6 +578,10 @@ void fast_table_column_loop(const void* raw) {
 
 void fast_column_loop(const void* raw) {
     const auto& a = *static_cast<const FastColumnArgs*>(raw);
+    if (a.block_pitch) {
+        doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, uint32_t(a.u_16_16), uint32_t(a.v_16_16), a.dst, a.count, MODEX_ROW_BYTES);
+        return;
+    }
     uint32_t u = uint32_t(a.u_16_16), v = uint32_t(a.v_16_16);
     uint8_t* dst = a.dst;
     for (int32_t n = 0; n < a.count; ++n) {
@@ -549,16 +590,6 @@ void fast_column_loop(const void* raw) {
         u += uint32_t(a.du_16_16);
         v += uint32_t(a.dv_16_16);
     }
-}
-
-// The loop's random cases (core/selftest.h).
-LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    return check_cases<FastColumnArgs>(m, other, seed, cases, buf, [&](Random& r, FastColumnArgs& a) {
-        a.count = random_count(r, 0, 9, 240);
-        a.texture = check_aligned_texture(buf);
-        random_uv(r, a);
-        return place_span(buf, a, MODEX_ROW_BYTES);
-    });
 }
 
 namespace {
@@ -586,16 +617,50 @@ namespace {
 
 // A table block over the check's texels: the tiled one, or a third of the time a doubled copy of
 // random power-of-two sides up to 1024, one above 256, within the buffer (2 W H at most its bytes).
+// Random sides of a texture with a doubled copy that fits the check's texels.
+void random_doubled_sides(Random& r, int32_t* w, int32_t* h) {
+    do {
+        *w = 1 << r.range(0, 10), *h = 1 << r.range(0, 10);
+    } while (!gets_doubled(*w, *h) || size_t(doubled_bytes(*w, *h)) > CHECK_TEXEL_BYTES);
+}
 TableBlock random_table_block(Random& r, const CheckBuffers& buf) {
     if (r.below(3) != 0) return TableBlock{check_aligned_texture(buf), 255, 255, 256};
-    int32_t w = 0, h = 0;
-    do {
-        w = 1 << r.range(0, 10), h = 1 << r.range(0, 10);
-    } while (!gets_doubled(w, h) || size_t(doubled_bytes(w, h)) > CHECK_TEXEL_BYTES);
+    int32_t w, h;
+    random_doubled_sides(r, &w, &h);
     return TableBlock{buf.texels, uint32_t(w - 1), uint32_t(h - 1), doubled_pitch(w)};
+}
+// fast-affine's and fast-columns' texel pointer from the buffer's start, every start within it: wholes
+// of u from 2300 to 4000 and of v from 150 to 300, u stepping by at most 4 texels a pixel or a row
+// and v by a quarter, so over 330 pixels and 240 rows u stays within 20..6280 and v within 7..443:
+// below 443 * 2064 + 6280 < 1 MiB (any fraction).
+template <typename Args>
+void random_doubled_uv(Random& r, Args& a) {
+    a.u_16_16 = decltype(a.u_16_16)(uint32_t(r.range(2300, 3999)) << 16 | (r.next() & 0xFFFF));
+    a.v_16_16 = decltype(a.v_16_16)(uint32_t(r.range(150, 299)) << 16 | (r.next() & 0xFFFF));
+    a.du_16_16 = r.range(-0x40000, 0x40000);
+    a.dv_16_16 = r.range(-0x4000, 0x4000);
 }
 
 }  // namespace
+
+// The loop's random cases (core/selftest.h): the tiled block, or a third of the time a doubled
+// copy's pitch with the walk inside the texels.
+LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<FastColumnArgs>(m, other, seed, cases, buf, [&](Random& r, FastColumnArgs& a) {
+        a.count = random_count(r, 0, 9, 240);
+        a.texture = check_aligned_texture(buf);
+        random_uv(r, a);
+        a.block_pitch = 0;
+        if (r.below(3) == 0) {
+            int32_t w, h;
+            random_doubled_sides(r, &w, &h);
+            a.texture = buf.texels;
+            a.block_pitch = doubled_pitch(w);
+            random_doubled_uv(r, a);
+        }
+        return place_span(buf, a, MODEX_ROW_BYTES);
+    });
+}
 
 // Columns of 0 to 240 pixels from a random texel of a table block, the table of random steps.
 LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
@@ -709,14 +774,9 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         a.du_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
         a.dv_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
         if (m.twin == fast_run_loop && a.doubled) {
-            // fast-affine's texel pointer from the buffer's start, every row's first texel within it:
-            // wholes of u from 2300 to 4000 and of v from 150 to 300 at pixel 0, u stepping by at most
-            // 4 texels a pixel or a row and v by a quarter, so over 330 columns and 240 rows u stays
-            // within 20..6280 and v within 7..443: below 443 * 2056 + 6280 < 1 MiB (any fraction)
-            a.u_16_16 = uint32_t(r.range(2300, 3999)) << 16 | (r.next() & 0xFFFF);
-            a.v_16_16 = uint32_t(r.range(150, 299)) << 16 | (r.next() & 0xFFFF);
-            a.u_row_16_16 = uint32_t(r.range(-0x40000, 0x40000)), a.du_16_16 = r.range(-0x40000, 0x40000);
-            a.v_row_16_16 = uint32_t(r.range(-0x4000, 0x4000)), a.dv_16_16 = r.range(-0x4000, 0x4000);
+            random_doubled_uv(r, a);  // (its u and v at pixel 0 of the first row)
+            a.u_row_16_16 = uint32_t(r.range(-0x40000, 0x40000));
+            a.v_row_16_16 = uint32_t(r.range(-0x4000, 0x4000));
         } else if (m.twin == fast_run_loop) {
             a.texture = check_aligned_texture(buf);  // (the 8:16 core's tiled block)
         }
@@ -750,7 +810,7 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts asm/fast.asm reads (core/asm_offsets.h).
 void fast_offsets() {
-    ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16)
+    ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16, block_pitch)
     ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16, v_16_16,
                u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside, doubled, u_mask, v_mask, block_pitch)

@@ -48,10 +48,12 @@ struct FastRunArgs {
     int32_t block_pitch;
 };
 void fast_run_loop(const void* args);
-// fast-affine's rows on a polygon that spans more of a texture above 256 a side than a window of its
-// doubled copy: fast_run_loop's texels, read from the texture itself (texture, block_pitch its
-// width) at (v whole & v_mask, u whole & u_mask). C++ only: rare polygons, seen edge-on.
-void fast_run_loop_wrapping(const FastRunArgs& a);
+// fast-affine's and fast-columns' pixels on a polygon that spans more of a texture above 256 a side
+// than a window of its doubled copy: the texels the 8:16 core would read, (u whole mod width, v
+// whole mod height), from the texture itself by masks, count pixels `stride` bytes apart (C++ only:
+// rare polygons); fast_run_loop_wrapping: fast_run_loop's rows so (its texture fields unread).
+void wrapping_pixels(const Texture& tex, int32_t du, int32_t dv, uint32_t u, uint32_t v, uint8_t* dst, int32_t count, int32_t stride);
+void fast_run_loop_wrapping(const FastRunArgs& a, const Texture& tex);
 
 // A triangle in range (a frame's uncut face) drawn by a run loop, set up and its walk set up in one
 // call: setup_polygon's work (PLANES_AFFINE, Input::InRange) into `setup`, then triangle_runs on it
@@ -97,10 +99,19 @@ constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row:
 void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block);
 void fast_table_loop(const void* args);
 
-// fast-columns: the same arithmetic down a Mode X column, 80 bytes between pixels; it takes
-// fatmap's block (the 8:16 loops' inputs, a 64 KiB-aligned texture).
+// fast-columns: the same arithmetic down a Mode X column, 80 bytes between pixels: fatmap's block
+// (the 8:16 loops' inputs) and the texture's block: the tiled one (block_pitch 0), or a doubled copy
+// (block_pitch its pitch; u and v from the polygon's window's corner, fast::doubled_window), read
+// through a texel pointer as fast_run_loop reads it.
 constexpr int32_t MODEX_ROW_BYTES = 80;
-using FastColumnArgs = FatmapArgs;
+struct FastColumnArgs {
+    uint8_t* dst;  // count pixels down the column
+    int32_t count;
+    const uint8_t* texture;
+    int32_t u_16_16, v_16_16;
+    int32_t du_16_16, dv_16_16;  // per pixel
+    int32_t block_pitch;
+};
 void fast_column_loop(const void* args);
 // fast-table-columns: a Mode X column through the polygon's offset table along y (as fast-table's
 // rows along x): pixel n, 80 bytes after pixel n - 1, is source[table[n]], source the column's first
@@ -119,6 +130,7 @@ extern "C" {
 void fast_run_loop_asm(const void* args);
 void fast_table_loop_asm(const void* args);
 void fast_column_loop_asm(const void* args);
+void fast_column_tiled_asm(const void* args);  // the same where block_pitch is 0, not testing it
 void fast_table_column_loop_asm(const void* args);
 }
 

@@ -64,9 +64,8 @@ const Mapper MAPPERS[] = {
      EXACT_COVERAGE_FLAT_TWO, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_table_loop), fast::draw_table_rows, check_fast_run,
      fast::table_bound},
     {"fast-columns", "ours", "the same core down Mode X columns, the map mask set once a column",
-     "as fast-affine, by columns into Mode X planes; textures with power-of-two sides up to 256, repeating or with the polygon's "
-     "coordinates inside",
-     EXACT_COVERAGE_FLAT_ONE, NEED_TILED256_OR_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_loop),
+     "as fast-affine, by columns into Mode X planes",
+     EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_loop),
      fast::draw_columns, check_fast_column, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-table-columns", "ours", "fast-table's offsets down Mode X columns, the map mask set once a column",
      "as fast-table, by columns into Mode X planes: within two texels without perspective",

@@ -302,8 +302,8 @@ std::string cube_scene(CubeTextures sizes) {
         : sizes == CubeTextures::Above256
             ? "modexlab-scene 2\n"
               "# The cube with its six textures above 256 a side (the same kinds, powers of two up to 1024),\n"
-              "# which fast-table and fast-affine read through their doubled copies: the mappers that take\n"
-              "# only the tiled 256 x 256 block refuse it.\n"
+              "# which our affine fast mappers read through their doubled copies: the mappers that take only\n"
+              "# the tiled 256 x 256 block refuse it.\n"
               "texture checks checker 1024 1024\ntexture grid grid 512 512\ntexture cells numbered 1024 256\n"
               "texture bits xor 256 1024\ntexture shades gradient 1024 64\ntexture big checker 512 512\n"
             : "modexlab-scene 2\n"
@@ -373,7 +373,7 @@ const std::vector<DemoScene>& demo_scenes() {
         {"mesh", "a closed torus of 4096 triangles, spans of 2 pixels on average: the setup-bound case", mesh},
         {"cube", "six faces, six textures of different kinds and sizes", cube},
         {"cube-256", "the cube with its six textures at 256 x 256: every mapper draws all of it", cube_256},
-        {"cube-1024", "the cube with its six textures above 256 a side, up to 1024: fast-table's and fast-affine's doubled copies", cube_1024},
+        {"cube-1024", "the cube with its six textures above 256 a side, up to 1024: our affine fast mappers' doubled copies", cube_1024},
         {"freedoom", "the corridor in Freedoom's textures and palette (image files, a scene palette)", freedoom},
         {"freedoom-256", "the Freedoom corridor, textures tiled to 256 x 256, faces cut at their periods: every mapper draws all of it", freedoom_256},
     };

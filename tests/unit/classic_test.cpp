@@ -487,17 +487,22 @@ TEST(FastTable, TakesTexturesAbove256ByTheDoubledCopy) {
     }
 }
 
-// fast-affine takes textures with a side above 256 (powers of two up to 1024): on every polygon it
-// draws exactly the texel of its 16.16 planes' floors at each pixel, modulo the sides (a texture
-// of random texels: a wrong row, column, step or carry reads some other texel), NASM loop and twin,
-// through the doubled copy's window where the polygon's coordinates fit one (doubled_window), from
-// the texture by masks where they do not; a face that maps the texture once ([0, W] x [0, H], a
-// cube's, shifted by whole periods) always fits. Without the copy it refuses the texture.
+// fast-affine and fast-columns take textures with a side above 256 (powers of two up to 1024): on
+// every polygon each draws exactly the texel of its 16.16 planes' floors at each pixel, modulo the
+// sides (a texture of random texels: a wrong row, column, step or carry reads some other texel),
+// NASM loop and twin, through the doubled copy's window where the polygon's coordinates fit one
+// (doubled_window), from the texture by masks where they do not; a face that maps the texture once
+// ([0, W] x [0, H], a cube's, shifted by whole periods) always fits. Without the copy each refuses
+// the texture.
 TEST(FastAffine, TakesTexturesAbove256ByTheDoubledCopy) {
     const int32_t sides[][2] = {{512, 512}, {1024, 64}, {64, 1024}, {1024, 1024}, {512, 2}, {256, 512}};
-    const Mapper& m = mapper("fast-affine");
     TriangleGen gen(20261128u);
-    for (const auto& side : sides) {
+    for (int k = 0; k < 2 * int(sizeof sides / sizeof sides[0]); ++k) {
+        const auto& side = sides[k / 2];
+        const char* name = k % 2 ? "fast-columns" : "fast-affine";
+        const Mapper& m = mapper(name);
+        const Axis axis = home_axis(m);
+        const bool is_planar = ram_planar(m, axis);
         const int32_t w = side[0], h = side[1];
         // spans up to 2.4 times the smaller side and 32: in a window up to the side and 16 more, never
         // from twice the side and 16 more, between as the window falls
@@ -505,8 +510,8 @@ TEST(FastAffine, TakesTexturesAbove256ByTheDoubledCopy) {
         const RandomBigTexture big(w, h, gen.rng);
         const std::vector<uint8_t>& texels = big.texels;
         const Texture &tex = big.tex, &alone = big.alone;
-        EXPECT_FALSE(mapper_accepts(m, alone)) << "no doubled copy";
-        ASSERT_TRUE(mapper_accepts(m, tex)) << w << "x" << h;
+        EXPECT_FALSE(mapper_accepts(m, alone)) << name << ": no doubled copy";
+        ASSERT_TRUE(mapper_accepts(m, tex)) << name << " " << name << " " << w << "x" << h;
         auto face = [&](double shift_u, double shift_v) {  // the texture once, shifted by whole periods
             return std::vector<Vertex>{vertex(20.5, 12.25, 1, shift_u, shift_v), vertex(300.75, 20, 1, shift_u + w, shift_v),
                                        vertex(290, 228.5, 1, shift_u + w, shift_v + h)};
@@ -515,30 +520,31 @@ TEST(FastAffine, TakesTexturesAbove256ByTheDoubledCopy) {
             int pixels = 0, windowed = 0, wrapped = 0;
             for (int n = 0; n < 160; ++n) {
                 const std::vector<Vertex> t = n < 2 ? face(n * 3.0 * w, -n * 5.0 * h) : gen.triangle();
-                std::vector<uint8_t> a(SCREEN_PIXELS, 255);
-                Target target = ram_target(a.data(), false);
+                std::vector<uint8_t> a(SCREEN_PIXELS, 255), planar(SCREEN_PIXELS);
+                Target target = ram_target(a.data(), is_planar);
                 RenderStats stats;
                 PolygonSetup s;
                 if (setup_polygon(t.data(), 3, &s, PLANES_AFFINE) != SetupStatus::Ok) continue;
-                ASSERT_EQ(draw_polygon(t.data(), 3, tex, m, Axis::Rows, target, &stats, variant), SetupStatus::Ok);
+                ASSERT_EQ(draw_polygon(t.data(), 3, tex, m, axis, target, &stats, variant), SetupStatus::Ok);
+                if (is_planar) linear_from_planar(a.data(), planar.data()), a.swap(planar);
                 uint32_t u_base, v_base;
                 const bool window = fast::doubled_window(s, tex, target.clip, &u_base, &v_base);
-                ASSERT_TRUE(window || n >= 2) << w << "x" << h << ": the face outside a window";
+                ASSERT_TRUE(window || n >= 2) << name << " " << w << "x" << h << ": the face outside a window";
                 ++(window ? windowed : wrapped);
                 for (int32_t y = 0; y < SCREEN_HEIGHT; ++y)
                     for (int32_t x = 0; x < SCREEN_WIDTH; ++x) {
                         const uint8_t got = a[size_t(y) * SCREEN_WIDTH + size_t(x)];
-                        ASSERT_EQ(got != 255, covers(s, x, y)) << w << "x" << h << " triangle " << n << " at " << x << "," << y;
+                        ASSERT_EQ(got != 255, covers(s, x, y)) << name << " " << w << "x" << h << " triangle " << n << " at " << x << "," << y;
                         if (got == 255) continue;
                         ++pixels;
                         const int32_t fu = int32_t(uint32_t(s.u_fx.value(x, y)) >> 16), fv = int32_t(uint32_t(s.v_fx.value(x, y)) >> 16);
                         ASSERT_EQ(got, texels[size_t(fv & (h - 1)) * size_t(w) + size_t(fu & (w - 1))])
-                            << w << "x" << h << " triangle " << n << " at " << x << "," << y;
+                            << name << " " << w << "x" << h << " triangle " << n << " at " << x << "," << y;
                     }
             }
-            EXPECT_GT(pixels, 20000) << w << "x" << h;
-            EXPECT_GT(windowed, 20) << w << "x" << h;
-            EXPECT_GT(wrapped, 5) << w << "x" << h;
+            EXPECT_GT(pixels, 20000) << name << " " << w << "x" << h;
+            EXPECT_GT(windowed, 20) << name << " " << w << "x" << h;
+            EXPECT_GT(wrapped, 5) << name << " " << w << "x" << h;
         }
     }
 }
