@@ -24,6 +24,47 @@ bits 32
 
 section .text
 
+; The doubled copy's texel pointer (fast-affine's rows, fast-columns' column): from the block %1
+; (its fields %2_du_16_16, %2_dv_16_16 and %2_block_pitch), ebp the du fraction and the frame's
+; slots %3 the dv fraction, %4 the pointer's step with a carry from v (a row more) and %4 + 4
+; without; %5 a scratch register (edx is lost too).
+%macro DOUBLED_STEPS 5
+    mov ebp, [%1 + %2_du_16_16]
+    shl ebp, 16                         ; du fraction
+    mov %5, [%1 + %2_dv_16_16]
+    shl %5, 16
+    mov [esp + %3], %5                  ; dv fraction
+    mov %5, [%1 + %2_dv_16_16]
+    sar %5, 16
+    imul %5, [%1 + %2_block_pitch]
+    mov edx, [%1 + %2_du_16_16]
+    sar edx, 16
+    add %5, edx                         ; dv's whole rows and du's whole columns
+    mov [esp + %4 + 4], %5
+    add %5, [%1 + %2_block_pitch]
+    mov [esp + %4], %5
+%endmacro
+; One pixel's step of that pointer: the fractions (edx v's, ebx u's) by their steps (the frame's
+; slot %1, ebp), v's carry picking the step with a row more (slot %2 - 4) or without (%2), u's
+; adding one (ecx: 0 or -1).
+%macro DOUBLED_STEP 2
+    add edx, [esp + %1]
+    sbb ecx, ecx
+    add ebx, ebp
+    adc esi, [esp + %2 + ecx * 4]
+%endmacro
+; esi: the texel of 16.16 v %1 and u %2 (their wholes the row and column in the copy), %3 the
+; copy's pitch and %4 its address (operands read before %5, a scratch register, is written).
+%macro DOUBLED_TEXEL 5
+    mov esi, %1
+    shr esi, 16
+    imul esi, %3                        ; the row in the copy
+    mov %5, %2
+    shr %5, 16
+    add esi, %5                         ; and the column
+    add esi, %4                         ; the first pixel's texel
+%endmacro
+
 ; The column loops' entry: the frame (%3 bytes, 4 unless given), the block (eax), its pixel count
 ; (ecx) and destination (edi) from the fields %1_count and %1_dst (.done: no pixels); then the
 ; computed entry into blocks of eight pixels for them: the first block starts at pixel j = (-count)
@@ -86,36 +127,14 @@ C_BLOCKS  equ 16                        ; the blocks left
 C_FRAME   equ 20
 %macro DCOL_PIXEL 1                     ; %1: the pixel's offset within the block
     mov al, [esi]
-    add edx, [esp + C_DVF]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, [esp + C_DSTEP0 + ecx * 4]
+    DOUBLED_STEP C_DVF, C_DSTEP0
     mov [edi + %1], al
 %endmacro
 fast_column_doubled:
     COLUMN_ENTER FCOL, column_doubled_entries, C_FRAME
     mov [esp + C_BLOCKS], ecx
-    mov esi, [eax + FCOL_v_16_16]
-    shr esi, 16
-    imul esi, [eax + FCOL_block_pitch]  ; the row in the copy
-    mov ebx, [eax + FCOL_u_16_16]
-    shr ebx, 16
-    add esi, ebx                        ; and the column
-    add esi, [eax + FCOL_texture]       ; the first pixel's texel
-    mov ebx, [eax + FCOL_dv_16_16]
-    sar ebx, 16
-    imul ebx, [eax + FCOL_block_pitch]
-    mov edx, [eax + FCOL_du_16_16]
-    sar edx, 16
-    add ebx, edx                        ; dv's whole rows and du's whole columns
-    mov [esp + C_DSTEP0], ebx
-    add ebx, [eax + FCOL_block_pitch]
-    mov [esp + C_DSTEP], ebx
-    mov ebx, [eax + FCOL_dv_16_16]
-    shl ebx, 16
-    mov [esp + C_DVF], ebx
-    mov ebp, [eax + FCOL_du_16_16]
-    shl ebp, 16                         ; du fraction
+    DOUBLED_TEXEL [eax + FCOL_v_16_16], [eax + FCOL_u_16_16], [eax + FCOL_block_pitch], [eax + FCOL_texture], ebx
+    DOUBLED_STEPS eax, FCOL, C_DVF, C_DSTEP, ebx
     mov edx, [eax + FCOL_v_16_16]
     shl edx, 16                         ; v fraction
     mov ebx, [eax + FCOL_u_16_16]
@@ -338,15 +357,9 @@ fast_run_inside:
 ;   [esp + L_DVF]: dv fraction   ecx: 0 or -1 (v's carry)   edi: destination   al, ah: texels
 %macro DPAIR 1                          ; %1: the pair's offset within the block
     mov al, [esi]
-    add edx, [esp + L_DVF]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, [esp + L_DSTEP0 + ecx * 4]
+    DOUBLED_STEP L_DVF, L_DSTEP0
     mov ah, [esi]
-    add edx, [esp + L_DVF]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, [esp + L_DSTEP0 + ecx * 4]
+    DOUBLED_STEP L_DVF, L_DSTEP0
     mov [edi + %1], ax
 %endmacro
 
@@ -356,13 +369,7 @@ fast_run_inside:
 .row:
     ROW_HEAD %1
     ROW_UV
-    mov esi, edx
-    shr esi, 16
-    imul esi, [ecx + RUN_block_pitch]   ; the row in the copy
-    mov ecx, ebx
-    shr ecx, 16
-    add esi, ecx                        ; and the column
-    add esi, [esp + L_TEXTURE]          ; the first pixel's texel
+    DOUBLED_TEXEL edx, ebx, [ecx + RUN_block_pitch], [esp + L_TEXTURE], ecx
     shl ebx, 16                         ; u fraction
     shl edx, 16                         ; v fraction
     mov ecx, edi
@@ -398,20 +405,7 @@ fast_run_inside:
 %endmacro
 
 fast_run_doubled:
-    mov ebp, [ecx + RUN_du_16_16]
-    shl ebp, 16                         ; du fraction
-    mov eax, [ecx + RUN_dv_16_16]
-    shl eax, 16
-    mov [esp + L_DVF], eax              ; dv fraction
-    mov eax, [ecx + RUN_dv_16_16]
-    sar eax, 16
-    imul eax, [ecx + RUN_block_pitch]
-    mov edx, [ecx + RUN_du_16_16]
-    sar edx, 16
-    add eax, edx                        ; dv's whole rows and du's whole columns
-    mov [esp + L_DSTEP0], eax
-    add eax, [ecx + RUN_block_pitch]
-    mov [esp + L_DSTEP], eax
+    DOUBLED_STEPS ecx, RUN, L_DVF, L_DSTEP, eax
     cmp dword [ecx + RUN_inside], 0
     jne fast_run_doubled_inside.row
     DOUBLED_ROWS 1, run_doubled_entries
