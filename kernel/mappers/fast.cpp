@@ -95,7 +95,7 @@ namespace {
 
 // build_offset_table's work: 16.16 values modulo 2^32, whose wholes modulo a power of two up to
 // 65536 are the floors' (2^32 is a multiple of 2^32 / 65536); the tiled block's by shifts alone, the
-// doubled copy's by masks and a shift. The tiled one inline, as it was (out of line, the mesh's
+// doubled copy's by masks and a multiply. The tiled one inline, as it was (out of line, the mesh's
 // tables of a few entries paid a call: 25 instructions a polygon); the doubled one out of line
 // (both inline in one function, the tiled loop spilled a register: 200 a polygon more on the
 // corridor's long tables).
@@ -166,9 +166,8 @@ inline int walk_triangle(FastTriangleArgs* t) {
 
 // A run's block drawn (the run loop counts what it draws): by the context's loop, or where
 // fast-affine's polygon spans more of a doubled copy than its window (FastRunArgs::doubled 2) by
-// fast_run_loop_wrapping (DOUBLED: only fast-affine's driver on a doubled copy asks).
-// (The wrapping loop's call out of line, as cold: inline, it cost the mesh's triangles some 25
-// instructions each.)
+// fast_run_loop_wrapping (DOUBLED: only fast-affine's driver on a doubled copy asks; that call out
+// of line, as cold).
 [[gnu::noinline, gnu::cold]] void run_wrapping(const DrawContext& c, const FastRunArgs& a) {
     emit(c.stats->probe, c.stats, 0, 0, [&] { fast_run_loop_wrapping(a, c.tex); });
 }

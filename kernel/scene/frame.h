@@ -131,8 +131,8 @@ struct TextureSet {
     static constexpr size_t BORDERED_BYTES = size_t(MAX_TEXEL_POOL) + 2 * MAX_WORLD_TEXTURES * 2 * (MAX_TEXTURE_SIZE + 2);
     uint8_t bordered[BORDERED_BYTES];
     uint8_t aligned[MAX_WORLD_TEXTURES][ALIGNED256_BYTES];
-    // The doubled copies' room (four times the texels and their pads, (2 W + 8)(2 H + 8) - 4 W H =
-    // 16 (W + H) + 64, at most 32832 bytes a texture), DOUBLED_BYTES at `doubled` where the caller
+    // The doubled copies' room (four times the texels and their borders, (2 W + 16)(2 H + 16) - 4 W H
+    // = 32 (W + H) + 256, at most 65792 bytes a texture), DOUBLED_BYTES at `doubled` where the caller
     // gives it (HostTextureSet); null: none built (the kernel builds each where it places the
     // textures, worlds.cpp, and keeps no second 16 MiB).
     static constexpr size_t DOUBLED_BYTES = 4 * size_t(MAX_TEXEL_POOL) + MAX_WORLD_TEXTURES * size_t(doubled_bytes(MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE) - 4 * MAX_TEXTURE_SIZE * MAX_TEXTURE_SIZE);
