@@ -49,11 +49,10 @@ constexpr int32_t ALIGNED256_GUARD_AFTER = 256;
 // 64 KiB boundary, its guard rows before it included)
 constexpr int32_t ALIGNED256_BYTES = 4 * 65536;
 static_assert(ALIGNED256_GUARD_BEFORE * 256 + 65535 + 65536 + ALIGNED256_GUARD_AFTER * 256 <= ALIGNED256_BYTES);
+// Whether n is a power of two up to `most`.
+constexpr bool pow2_up_to(int32_t n, int32_t most) { return n > 0 && n <= most && (n & (n - 1)) == 0; }
 // Whether a texture's sides are powers of two up to 256 (it tiles the 64 KiB block).
-inline bool tiles256(int32_t width, int32_t height) {
-    auto pow2 = [](int32_t n) { return n > 0 && n <= 256 && (n & (n - 1)) == 0; };
-    return pow2(width) && pow2(height);
-}
+inline bool tiles256(int32_t width, int32_t height) { return pow2_up_to(width, 256) && pow2_up_to(height, 256); }
 // The texel of the aligned block at 16.16 coordinates u, v (their wholes taken modulo 256): what
 // the 8:16 loops read through bh:bl.
 inline uint8_t texel256(const uint8_t* block, uint32_t u, uint32_t v) { return block[((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF)]; }
@@ -62,8 +61,7 @@ const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer);
 
 // Whether a texture's sides are powers of two up to MAX_TEXTURE_SIZE, one above 256 (the doubled copy).
 inline bool gets_doubled(int32_t width, int32_t height) {
-    auto pow2 = [](int32_t n) { return n > 0 && n <= MAX_TEXTURE_SIZE && (n & (n - 1)) == 0; };
-    return pow2(width) && pow2(height) && !tiles256(width, height);
+    return pow2_up_to(width, MAX_TEXTURE_SIZE) && pow2_up_to(height, MAX_TEXTURE_SIZE) && !tiles256(width, height);
 }
 // The doubled copy's columns and rows before its origin, and as many after twice the sides: a
 // polygon whose coordinates reach a little below a multiple of the side, or a period and a little
