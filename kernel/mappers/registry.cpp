@@ -55,7 +55,7 @@ const Mapper MAPPERS[] = {
     {"fast-affine", "ours", "fatmap2's 8:16 core, unrolled with a computed entry, walking runs of rows in NASM",
      "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; textures with power-of-two "
      "sides up to 1024, repeating or with the polygon's coordinates inside (up to 256 tiled over 256 x 256; above, from the doubled "
-     "copy where the polygon's coordinates span at most the sides and 7 texels more, else from the texture by masks)",
+     "copy where the polygon's coordinates span at most the sides and 15 texels more, else from the texture by masks)",
      EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-table", "ours", "fast-affine's runs of rows, each span's texels at offsets from its first precomputed once a polygon (fatmap's table idea)",
      "exact coverage; u, v affine from the polygon's 16.16 planes, each texel within one texel on each axis of fast-affine's "
