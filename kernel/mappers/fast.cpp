@@ -332,7 +332,7 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
     EdgeWalker walker(s, EdgeWalker::Along<Axis::Columns>{}, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
-    const TableBlock block = DOUBLED ? table_block(c.tex) : TableBlock{};
+    const TableBlock block = TABLE && DOUBLED ? table_block(c.tex) : TableBlock{};  // (fast-table-columns')
     if constexpr (TABLE) {
         const int32_t height = c.target.clip.y1 - c.target.clip.y0;
         const int32_t box = int32_t((s.max_y - s.min_y) >> SUBPIXEL_BITS) + 2;
@@ -367,18 +367,15 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
             a.u_16_16 = int32_t(p.u(span.x, span.y) - u_base);
             a.v_16_16 = int32_t(p.v(span.x, span.y) - v_base);
         }
-        if constexpr (!TABLE && DOUBLED) {
-            if (wrapping) {
-                emit(c.stats->probe, c.stats, 0, 0, [&] {
-                    wrapping_pixels(c.tex, a.du_16_16, a.dv_16_16, uint32_t(a.u_16_16), uint32_t(a.v_16_16), a.dst, a.count, MODEX_ROW_BYTES);
-                });
-            } else {
-                emit(c, &a, 0, 0);
-            }
-        } else if constexpr (!TABLE) {
-            emit(c.stats->probe, c.stats, 0, 0, [&] { loop(&a); });  // (counted once for the polygon)
+        // (counted once for the polygon)
+        if constexpr (TABLE) {
+            emit(c, &a, 0, 0);
+        } else if (wrapping) {
+            emit(c.stats->probe, c.stats, 0, 0, [&] {
+                wrapping_pixels(c.tex, a.du_16_16, a.dv_16_16, uint32_t(a.u_16_16), uint32_t(a.v_16_16), a.dst, a.count, MODEX_ROW_BYTES);
+            });
         } else {
-            emit(c, &a, 0, 0);  // counted once for the polygon
+            emit(c.stats->probe, c.stats, 0, 0, [&] { loop(&a); });
         }
         ++spans;
         pixels += uint32_t(span.count);
