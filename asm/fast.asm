@@ -44,27 +44,6 @@ section .text
     add %5, [%1 + %2_block_pitch]
     mov [esp + %4], %5
 %endmacro
-; One pixel's step of that pointer: the fractions (edx v's, ebx u's) by their steps (the frame's
-; slot %1, ebp), v's carry picking the step with a row more (slot %2 - 4) or without (%2), u's
-; adding one (ecx: 0 or -1).
-%macro DOUBLED_STEP 2
-    add edx, [esp + %1]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, [esp + %2 + ecx * 4]
-%endmacro
-; esi: the texel of 16.16 v %1 and u %2 (their wholes the row and column in the copy), %3 the
-; copy's pitch and %4 its address (operands read before %5, a scratch register, is written).
-%macro DOUBLED_TEXEL 5
-    mov esi, %1
-    shr esi, 16
-    imul esi, %3                        ; the row in the copy
-    mov %5, %2
-    shr %5, 16
-    add esi, %5                         ; and the column
-    add esi, %4                         ; the first pixel's texel
-%endmacro
-
 ; The column loops' entry: the frame (%3 bytes, 4 unless given), the block (eax), its pixel count
 ; (ecx) and destination (edi) from the fields %1_count and %1_dst (.done: no pixels); then the
 ; computed entry into blocks of eight pixels for them: the first block starts at pixel j = (-count)
@@ -353,16 +332,6 @@ fast_run_inside:
 ; steps its own (no wrap: u and v come less their window's corner, and the window fits the copy):
 ; v's carry picks a step with a row more or without, u's adds one by adc; pixels in pairs, al then
 ; ah, one word store a pair, eight pairs a block, an odd last pixel alone.
-;   esi: the texel   ebx 31..16: u fraction   edx 31..16: v fraction   ebp 31..16: du fraction
-;   [esp + L_DVF]: dv fraction   ecx: 0 or -1 (v's carry)   edi: destination   al, ah: texels
-%macro DPAIR 1                          ; %1: the pair's offset within the block
-    mov al, [esi]
-    DOUBLED_STEP L_DVF, L_DSTEP0
-    mov ah, [esi]
-    DOUBLED_STEP L_DVF, L_DSTEP0
-    mov [edi + %1], ax
-%endmacro
-
 ; the doubled copy's rows from .row, clipped (%1 = 1) or not (0), the pairs entered through the
 ; table %2; then the frame freed.
 %macro DOUBLED_ROWS 2
@@ -381,18 +350,7 @@ fast_run_inside:
     mov edi, eax                        ; (the movs leave ZF as shr set it)
     jz .odd_pixel
     jmp [esp + L_ENTRY]
-.block:
-.e0: DPAIR 0
-.e1: DPAIR 2
-.e2: DPAIR 4
-.e3: DPAIR 6
-.e4: DPAIR 8
-.e5: DPAIR 10
-.e6: DPAIR 12
-.e7: DPAIR 14
-    add edi, 16
-    dec dword [esp + L_BLOCKS]
-    jnz .block
+    DPAIR_BLOCKS
 .odd_pixel:                             ; edi: just past the pairs
     cmp dword [esp + L_ODD], 0
     je .next_row

@@ -5,7 +5,10 @@
 ; the pixels by the 8:16 core (asm/core816.inc), entered part-way as fast_run_loop_asm enters it:
 ; a row (stride 1) in pairs, one word store a pair; a column (any other stride) a pixel at a time,
 ; the destination moved by the stride from the frame after each store. A span of one or two pixels
-; (fast_subdiv_short) stores its exact points' texels, without the frame or the core.
+; (fast_subdiv_short) stores its exact points' texels, without the frame or the core. On a texture's
+; doubled copy (FSUB_pitch not 0: sides above 256) the same segments step a texel pointer into the
+; copy (the doubled core, asm/core816.inc), started afresh at each segment where its travel stays in
+; the copy, and read the copy by masks where it does not (fast_subdiv_doubled_asm).
 
 bits 32
 
@@ -38,7 +41,21 @@ L_D           equ 72                    ; the last segment's divisor
 L_SEG_X       equ 76                    ; qword: a full segment in subpixels, n * 256
 L_STRIDE      equ 84                    ; bytes from a pixel to the next
 L_SEG_BYTES   equ 88                    ; bytes from a full segment's first pixel to the next's
-L_FRAME       equ 92
+; on a doubled copy only (L_TEXTURE: its origin)
+L_PITCH       equ 92                    ; the copy's bytes a row
+L_UMASK       equ 96                    ; the sides less one
+L_VMASK       equ 100
+L_UNEG        equ 104                   ; the column a falling u starts a side further on: the width
+L_VNEG        equ 108                   ; and a falling v's row: the height
+L_UREACH      equ 112                   ; (the width + 6) in 16.16, then twice that: a segment's
+L_VREACH      equ 120                   ; u and v travel less than the first (the height's for v)
+L_DVF         equ 128                   ; the doubled core's: dv fraction
+L_DSTEP       equ 132                   ; its pointer's step with v's carry
+L_DSTEP0      equ 136                   ; and without
+L_BLOCKS      equ 140                   ; the blocks left (the masked pixels left)
+L_DU          equ 144                   ; the masked pixels' steps
+L_DV          equ 148
+L_FRAME       equ 152
 
 section .text
 
@@ -75,6 +92,25 @@ section .text
     mov %3, [ecx]
 %endmacro
 
+; The doubled copy's texel of the 16.16 point at %1 (u) and %2 (v) into %3, by masks: %4 the
+; v mask, %5 the pitch, %6 the u mask, %7 the origin (operands); ecx and ebx clobbered.
+%macro MASKED_TEXEL 7
+    mov ecx, %2
+    shr ecx, 16
+    and ecx, %4
+    imul ecx, %5                        ; the row
+    mov ebx, %1
+    shr ebx, 16
+    and ebx, %6
+    add ecx, ebx                        ; and the column
+    add ecx, %7
+    mov %3, [ecx]
+%endmacro
+; the same with the frame's slots
+%macro FRAME_TEXEL 3
+    MASKED_TEXEL [esp + %1], [esp + %2], %3, [esp + L_VMASK], [esp + L_PITCH], [esp + L_UMASK], [esp + L_TEXTURE]
+%endmacro
+
 ; the core's registers (asm/core816.inc) from the steps du (eax) and dv (edx) and the segment's
 ; start [esp + L_U0], [esp + L_V0]
 %macro CORE_LOAD 0
@@ -93,6 +129,91 @@ section .text
     mov dx, ax                          ; dl: du whole, dh: dv whole
     mov eax, [esp + L_U0]
     shl eax, 16                         ; u fraction
+%endmacro
+
+; The doubled core's registers (asm/core816.inc) from the steps du (eax) and dv (edx) and the
+; segment's start [esp + L_U0], [esp + L_V0]: the pointer at the start's wholes modulo the sides,
+; a side further on each axis along which it falls, so that a travel of less than the side and 7
+; texels either way stays in the copy (docs/accuracy.md, "The subdivided fast mappers on the doubled
+; copy"); ecx clobbered.
+%macro DCORE_LOAD 0
+    mov ebp, eax
+    shl ebp, 16                         ; du fraction
+    mov ebx, edx
+    shl ebx, 16
+    mov [esp + L_DVF], ebx              ; dv fraction
+    mov ecx, edx
+    sar ecx, 31
+    and ecx, [esp + L_VNEG]             ; a falling v: a side further on
+    mov esi, [esp + L_V0]
+    shr esi, 16
+    and esi, [esp + L_VMASK]
+    add esi, ecx
+    imul esi, [esp + L_PITCH]           ; the row
+    mov ecx, eax
+    sar ecx, 31
+    and ecx, [esp + L_UNEG]
+    add esi, ecx
+    mov ebx, [esp + L_U0]
+    shr ebx, 16
+    and ebx, [esp + L_UMASK]
+    add esi, ebx                        ; and the column
+    add esi, [esp + L_TEXTURE]
+    sar edx, 16
+    imul edx, [esp + L_PITCH]
+    sar eax, 16
+    add edx, eax                        ; dv's whole rows and du's whole columns
+    mov [esp + L_DSTEP0], edx
+    add edx, [esp + L_PITCH]
+    mov [esp + L_DSTEP], edx
+    mov ebx, [esp + L_U0]
+    shl ebx, 16                         ; u fraction
+    mov edx, [esp + L_V0]
+    shl edx, 16                         ; v fraction
+%endmacro
+
+; To %3 where the segment's travel along an axis could leave the copy: its ends' difference (the
+; slots %1 less %2) not within the reach at slot %4 (the 16.16 reach r and 2 r after it:
+; -r <= d < r); ebx clobbered.
+%macro REACH 4
+    mov ebx, [esp + %1]
+    sub ebx, [esp + %2]
+    add ebx, [esp + %4]
+    cmp ebx, [esp + %4 + 4]
+    jae %3
+%endmacro
+
+; The doubled core's pairs from the entry at [esp + L_ENTRY], then the odd last pixel where
+; [esp + L_ODD] says so; then on at %1.
+%macro DPAIRS_AND_ODD 1
+    jmp [esp + L_ENTRY]
+    DPAIR_BLOCKS
+.odd_pixel:                             ; edi: just past the pairs
+    cmp dword [esp + L_ODD], 0
+    je %1
+    mov al, [esi]
+    mov [edi], al
+%endmacro
+
+; The doubled core down a column: blocks of eight, [esp + L_BLOCKS] of them, entered at .e0 to .e7.
+%macro DSTRIDE_PIXEL 0
+    mov al, [esi]
+    DOUBLED_STEP L_DVF, L_DSTEP0
+    mov [edi], al
+    add edi, [esp + L_STRIDE]
+%endmacro
+%macro DSTRIDE_BLOCKS 0
+.block:
+.e0: DSTRIDE_PIXEL
+.e1: DSTRIDE_PIXEL
+.e2: DSTRIDE_PIXEL
+.e3: DSTRIDE_PIXEL
+.e4: DSTRIDE_PIXEL
+.e5: DSTRIDE_PIXEL
+.e6: DSTRIDE_PIXEL
+.e7: DSTRIDE_PIXEL
+    dec dword [esp + L_BLOCKS]
+    jnz .block
 %endmacro
 
 ; Columns: each pixel stored, then the destination moved on by the stride; blocks of eight
@@ -128,11 +249,13 @@ section .text
 %endmacro
 
 ; One span, rows (%1 = rows: stride 1, pairs) or columns (%1 = columns: the stride's); %2: the
-; entry table. Full segments keep x (the next exact point's, in subpixels) on the x87 stack, one
-; add of n * 256 a segment (exact: whole numbers below 2^53, as the twin's x0 + k * 256); their
-; entry into the blocks is the same every time, found once a span. The last segment (at most n
-; pixels, its exact point the span's last pixel) finds its own and divides.
-%macro SUBDIV_SPAN 2
+; entry table; %3: tiled (the 8:16 core) or doubled (the doubled core, each segment's travel
+; checked; where it could leave the copy the segment's pixels read it by masks, .masked). Full
+; segments keep x (the next exact point's, in subpixels) on the x87 stack, one add of n * 256 a
+; segment (exact: whole numbers below 2^53, as the twin's x0 + k * 256); their entry into the
+; blocks is the same every time, found once a span. The last segment (at most n pixels, its exact
+; point the span's last pixel) finds its own and divides.
+%macro SUBDIV_SPAN 3
     LOOP_ENTER L_FRAME
     mov edx, LOOP_ARG(L_FRAME)
     mov eax, [edx + FSUB_count]
@@ -143,6 +266,11 @@ section .text
     dec eax
     mov [esp + L_LAST], eax
     FRAME_COPY edx, FSUB_dst, L_DST, FSUB_texture, L_TEXTURE
+%ifidn %3, doubled
+    FRAME_COPY edx, FSUB_pitch, L_PITCH, FSUB_u_mask, L_UMASK, FSUB_v_mask, L_VMASK
+    REACHES L_UMASK, L_UNEG, L_UREACH
+    REACHES L_VMASK, L_VNEG, L_VREACH
+%endif
     mov ecx, [edx + FSUB_shift]
     mov [esp + L_SHIFT], ecx
     mov eax, [edx + FSUB_stride]
@@ -195,10 +323,20 @@ section .text
     mov edx, [esp + L_V1]
     sub edx, [esp + L_V0]
     sar edx, cl                         ; dv
+%ifidn %3, doubled
+    REACH L_U1, L_U0, .masked_full, L_UREACH
+    REACH L_V1, L_V0, .masked_full, L_VREACH
+    mov edi, [esp + L_DST]
+    add edi, [esp + L_FULL_BACK]
+    DCORE_LOAD
+    mov ecx, [esp + L_FULL_BLOCKS]
+    mov [esp + L_BLOCKS], ecx
+%else
     mov edi, [esp + L_DST]
     add edi, [esp + L_FULL_BACK]
     mov ecx, [esp + L_FULL_BLOCKS]
     CORE_LOAD
+%endif
     jmp [esp + L_FULL_ENTRY]
 .last_segment:                          ; the pixels left, to the exact point at the last
     fstp st0                            ; (the full segments' x)
@@ -225,18 +363,31 @@ section .text
     idiv dword [esp + L_D]
     mov edx, eax                        ; dv
     mov eax, ebx
+%ifidn %3, doubled
+    REACH L_U1, L_U0, .masked_last, L_UREACH
+    REACH L_V1, L_V0, .masked_last, L_VREACH
+%endif
     jmp .last_draw
 .one_pixel:                             ; the texel at the segment's first point, stored (the core's
                                         ; first pixel, without its set-up: a last segment of one or
                                         ; two pixels after full ones; shorter spans: fast_subdiv_short)
+%ifidn %3, doubled
+    FRAME_TEXEL L_U0, L_V0, al
+%else
     TEXEL_AT L_U0, L_V0, al, [esp + L_TEXTURE]
+%endif
     mov edi, [esp + L_DST]
     mov [edi], al
     jmp .done                           ; (the last segment)
 .two_pixels:                            ; the two exact points' texels: the core's second pixel is
                                         ; U0 + (U1 - U0) / 1, the second point itself
+%ifidn %3, doubled
+    FRAME_TEXEL L_U0, L_V0, al
+    FRAME_TEXEL L_U1, L_V1, ah
+%else
     TEXEL_AT L_U0, L_V0, al, [esp + L_TEXTURE]
     TEXEL_AT L_U1, L_V1, ah, [esp + L_TEXTURE]
+%endif
     mov edi, [esp + L_DST]
 %ifidn %1, rows
     mov [edi], ax
@@ -246,6 +397,29 @@ section .text
     mov [edi], ah
 %endif
     jmp .done
+%ifidn %3, doubled
+.masked_full:                           ; eax: du, edx: dv; a full segment's pixels
+    mov ecx, [esp + L_N]
+    jmp .masked
+.masked_last:                           ; and the last's
+    mov ecx, [esp + L_LEFT]
+.masked:                                ; ecx pixels from the segment's start by masks (the twin's)
+    mov [esp + L_BLOCKS], ecx
+    mov [esp + L_DU], eax
+    mov [esp + L_DV], edx
+    mov edi, [esp + L_DST]
+    mov esi, [esp + L_U0]
+    mov ebp, [esp + L_V0]
+.masked_pixel:
+    MASKED_TEXEL esi, ebp, al, [esp + L_VMASK], [esp + L_PITCH], [esp + L_UMASK], [esp + L_TEXTURE]
+    mov [edi], al
+    add edi, [esp + L_STRIDE]
+    add esi, [esp + L_DU]
+    add ebp, [esp + L_DV]
+    dec dword [esp + L_BLOCKS]
+    jnz .masked_pixel
+    jmp .next
+%endif
 .last_draw:                             ; eax: du, edx: dv
     mov ecx, [esp + L_LEFT]
     mov edi, [esp + L_DST]
@@ -255,15 +429,30 @@ section .text
     mov [esp + L_ODD], ebx
     shr ecx, 1                          ; pairs
     PAIR_ENTRY edi, ebx, %2             ; blocks, the first one partial
+%ifidn %3, doubled
+    mov [esp + L_BLOCKS], ecx
+    DCORE_LOAD
+    cmp dword [esp + L_BLOCKS], 0
+    je .odd_pixel                       ; no pair: one pixel
+    DPAIRS_AND_ODD .next
+%else
     CORE_LOAD                           ; (leaves ecx and edi)
     test ecx, ecx
     jz .odd_pixel                       ; no pair: one pixel
     PAIRS_AND_ODD .next
+%endif
 %else
     PIXEL_ENTRY ebx, %2                 ; blocks, the first one partial
+%ifidn %3, doubled
+    mov [esp + L_BLOCKS], ecx
+    DCORE_LOAD
+    jmp [esp + L_ENTRY]
+    DSTRIDE_BLOCKS
+%else
     CORE_LOAD
     jmp [esp + L_ENTRY]
     STRIDE_BLOCKS
+%endif
 %endif
 .next:
     mov eax, [esp + L_N]
@@ -284,26 +473,56 @@ section .text
     LOOP_LEAVE L_FRAME
 %endmacro
 
+; The doubled copy's side along an axis from its mask at frame slot %1: the side into slot %2, and
+; the reach of a segment's travel, (side + 6) in 16.16, and twice that into %3 and %3 + 4 (REACH).
+%macro REACHES 3
+    mov eax, [esp + %1]
+    inc eax
+    mov [esp + %2], eax
+    add eax, 6
+    shl eax, 16
+    mov [esp + %3], eax
+    add eax, eax
+    mov [esp + %3 + 4], eax
+%endmacro
+
 ; Rows go on here; any other stride to the column loop (the same frame and argument).
+; On a doubled copy (FSUB_pitch not 0) to fast_subdiv_doubled_asm.
 global fast_subdiv_loop_asm
 fast_subdiv_loop_asm:
     mov edx, [esp + 4]
+    cmp dword [edx + FSUB_pitch], 0
+    jne fast_subdiv_doubled_asm
     mov eax, [edx + FSUB_count]
     dec eax
     cmp eax, 1
     jbe fast_subdiv_short               ; one or two pixels
     cmp dword [edx + FSUB_stride], 1
     jne fast_subdiv_column_asm
-    SUBDIV_SPAN rows, pair_entries
+    SUBDIV_SPAN rows, pair_entries, tiled
 
 fast_subdiv_column_asm:
-    SUBDIV_SPAN columns, column_entries
+    SUBDIV_SPAN columns, column_entries, tiled
+
+; The same on a doubled copy: rows, columns (fast_subdiv_doubled_column) and short spans
+; (fast_subdiv_short's, by masks); edx: the block.
+fast_subdiv_doubled_asm:
+    mov eax, [edx + FSUB_count]
+    dec eax
+    cmp eax, 1
+    jbe fast_subdiv_short_doubled
+    cmp dword [edx + FSUB_stride], 1
+    jne fast_subdiv_doubled_column
+    SUBDIV_SPAN rows, doubled_pair_entries, doubled
+
+fast_subdiv_doubled_column:
+    SUBDIV_SPAN columns, doubled_column_entries, doubled
 
 ; A span of one or two pixels (most of a mesh's: triangles of a dozen pixels), rows or columns:
 ; its exact points' texels (the second pixel's step is the second point less the first, so the
 ; core would read the second point's texel), with no frame, no saved register and no core; edx:
 ; the block, eax: the pixels less one.
-fast_subdiv_short:
+%macro SHORT_SPAN 1                    ; %1: the texel read (a macro of u slot, v slot, register)
     sub esp, 32                         ; U0, V0, U1, V1 (qwords)
     fldz
     fadd qword [edx + FSUB_x]           ; x at pixel 0, as the twin's x0 + 0 * 256
@@ -311,7 +530,7 @@ fast_subdiv_short:
     test eax, eax
     jnz .two
     fstp st0
-    TEXEL_AT 0, 8, al
+    %1 0, 8, al
     mov ecx, [edx + FSUB_dst]
     mov [ecx], al
     add esp, 32
@@ -320,16 +539,33 @@ fast_subdiv_short:
     fadd qword [subpixel_one]           ; pixel 1: x0 + 256
     POINT_AT 16, 24, edx
     fstp st0
-    TEXEL_AT 0, 8, al
-    TEXEL_AT 16, 24, ah
+    %1 0, 8, al
+    %1 16, 24, ah
     mov ecx, [edx + FSUB_dst]
     mov [ecx], al
     add ecx, [edx + FSUB_stride]
     mov [ecx], ah
     add esp, 32
     ret
+%endmacro
+; the tiled block's texel (TEXEL_AT), and the doubled copy's by masks (ebx is the caller's here:
+; kept)
+%macro TILED_SHORT_TEXEL 3
+    TEXEL_AT %1, %2, %3
+%endmacro
+%macro DOUBLED_SHORT_TEXEL 3
+    push ebx
+    MASKED_TEXEL [esp + 4 + %1], [esp + 4 + %2], %3, [edx + FSUB_v_mask], [edx + FSUB_pitch], [edx + FSUB_u_mask], [edx + FSUB_texture]
+    pop ebx
+%endmacro
+fast_subdiv_short:
+    SHORT_SPAN TILED_SHORT_TEXEL
+fast_subdiv_short_doubled:
+    SHORT_SPAN DOUBLED_SHORT_TEXEL
 
 section .rodata
 align 4
     ENTRIES pair_entries, fast_subdiv_loop_asm, 8
     ENTRIES column_entries, fast_subdiv_column_asm, 8
+    ENTRIES doubled_pair_entries, fast_subdiv_doubled_asm, 8
+    ENTRIES doubled_column_entries, fast_subdiv_doubled_column, 8

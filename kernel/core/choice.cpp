@@ -66,13 +66,13 @@ struct Candidates {
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
-    constinit static Candidates cache[128];
-    const bool tiled = texture_tiled256(tex), whole256 = texture_aligned256(tex), any_wrap = texture_tiled256_any_wrap(tex);  // (mapper_accepts' needs)
-    // (tiled implies any_wrap; a doubled texture, neither, takes the pair's fourth value: 32 alone)
+    constinit static Candidates cache[256];
+    // (mapper_accepts' needs: the copies, and the wrap for NEED_POW2_REPEAT)
+    const bool whole256 = texture_aligned256(tex), any_wrap = texture_tiled256_any_wrap(tex), repeat = tex.wrap == Wrap::Repeat;
     const bool doubled = texture_pow2_any_wrap(tex) && !any_wrap;
     const bool exact_coverage = budget.exact_coverage, no_error = budget.max_error == 0;
     Candidates& c = cache[(tex.bordered ? 1 : 0) | (whole256 ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0) | (no_error ? 16 : 0) |
-                          (tiled || doubled ? 32 : 0) | (any_wrap ? 64 : 0)];
+                          (doubled ? 32 : 0) | (any_wrap ? 64 : 0) | (repeat ? 128 : 0)];
     if (c.built) return c;
     for (int a = 0; a < 2; ++a)
         for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {

@@ -35,7 +35,9 @@ enum Need : uint32_t {
     NEED_PLANAR_TARGET = 1 << 2,  // writes Mode X planes itself (rows on a planar target)
     NEED_VGA_FOR_ASM = 1 << 3,    // the NASM loop programs the VGA: it runs on VGA pages only
     NEED_ALIGNED256 = 1 << 4,     // 256 x 256, repeat, with the 64 KiB-aligned copy (Texture::aligned256)
-    NEED_TILED256 = 1 << 5,       // sides powers of two up to 256, repeat, with the tiled 64 KiB-aligned copy
+    // sides powers of two up to 1024, repeat, with the tiled 64 KiB-aligned copy (sides up to 256)
+    // or the doubled one (Texture::doubled: a side above 256)
+    NEED_POW2_REPEAT = 1 << 5,
     // sides powers of two up to 256 with the tiled copy, repeating, or clamped where the polygon's
     // texture coordinates lie inside the texture (the mapper refuses the others: texture_inside)
     NEED_TILED256_OR_INSIDE = 1 << 6,
@@ -53,7 +55,7 @@ extern const NeedName NEED_NAMES[];
 extern const int NEED_NAME_COUNT;
 // The needs a scene can fail to meet (its textures, its coordinates); the texture copies are always
 // prepared (policy.h) and the target is the caller's choice.
-constexpr uint32_t SCENE_NEEDS = NEED_INSIDE | NEED_ALIGNED256 | NEED_TILED256 | NEED_TILED256_OR_INSIDE | NEED_POW2_OR_INSIDE;
+constexpr uint32_t SCENE_NEEDS = NEED_INSIDE | NEED_ALIGNED256 | NEED_POW2_REPEAT | NEED_TILED256_OR_INSIDE | NEED_POW2_OR_INSIDE;
 // The words of the needs in `needs`, comma-separated.
 void describe_needs(lib::Fmt& out, uint32_t needs);
 
@@ -196,7 +198,7 @@ extern const int MAPPER_COUNT;
 const Mapper* find_mapper(lib::StrView name);
 inline const Mapper* find_mapper(const char* name) { return find_mapper(lib::StrView{name, lib::c_length(name)}); }
 
-// Whether the texture meets NEED_TILED256, and NEED_ALIGNED256 (its one tile 256 x 256).
+// Whether the texture is tiled over the 64 KiB block, and meets NEED_ALIGNED256 (its one tile 256 x 256).
 inline bool texture_tiled256(const Texture& t) { return tiles256(t.width, t.height) && t.wrap == Wrap::Repeat && t.aligned256; }
 inline bool texture_aligned256(const Texture& t) { return texture_tiled256(t) && t.width == 256 && t.height == 256; }
 // Whether the texture meets NEED_TILED256_OR_INSIDE (a clamped one: its polygons checked one by one).
@@ -207,7 +209,7 @@ inline bool texture_pow2_any_wrap(const Texture& t) { return texture_tiled256_an
 inline bool mapper_accepts(const Mapper& m, const Texture& t) {
     if ((m.needs & NEED_BORDERED) && !t.bordered) return false;
     if ((m.needs & NEED_ALIGNED256) && !texture_aligned256(t)) return false;
-    if ((m.needs & NEED_TILED256) && !texture_tiled256(t)) return false;
+    if ((m.needs & NEED_POW2_REPEAT) && !(t.wrap == Wrap::Repeat && texture_pow2_any_wrap(t))) return false;
     if ((m.needs & NEED_TILED256_OR_INSIDE) && !texture_tiled256_any_wrap(t)) return false;
     if ((m.needs & NEED_POW2_OR_INSIDE) && !texture_pow2_any_wrap(t)) return false;
     return true;

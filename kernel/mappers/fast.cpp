@@ -613,12 +613,6 @@ namespace {
 
 // A table block over the check's texels: the tiled one, or a third of the time a doubled copy of
 // random power-of-two sides up to 1024, one above 256, within the buffer (2 W H at most its bytes).
-// Random sides of a texture with a doubled copy that fits the check's texels.
-void random_doubled_sides(Random& r, int32_t* w, int32_t* h) {
-    do {
-        *w = 1 << r.range(0, 10), *h = 1 << r.range(0, 10);
-    } while (!gets_doubled(*w, *h) || size_t(doubled_bytes(*w, *h)) > CHECK_TEXEL_BYTES);
-}
 TableBlock random_table_block(Random& r, const CheckBuffers& buf) {
     if (r.below(3) != 0) return TableBlock{check_aligned_texture(buf), 255, 255, 256};
     int32_t w, h;

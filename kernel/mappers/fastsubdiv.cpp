@@ -21,6 +21,12 @@ void exact_16_16(const FastSubdivArgs& a, int32_t k, uint32_t* u, uint32_t* v) {
 
 constexpr int log2(int n) { return n > 1 ? 1 + log2(n / 2) : 0; }
 
+// The texel at 16.16 u and v: the tiled block's, or the doubled copy's by masks.
+inline uint8_t texel_at(const FastSubdivArgs& a, uint32_t u, uint32_t v) {
+    if (!a.pitch) return texel256(a.texture, u, v);
+    return a.texture[((v >> 16) & a.v_mask) * uint32_t(a.pitch) + ((u >> 16) & a.u_mask)];
+}
+
 }  // namespace
 
 void fast_subdiv_loop(const void* raw) {
@@ -41,7 +47,7 @@ void fast_subdiv_loop(const void* raw) {
         else if (d > 0) du = int32_t(u1 - u0) / d, dv = int32_t(v1 - v0) / d;
         uint32_t u = u0, v = v0;
         for (int32_t i = 0; i < len; ++i) {
-            *dst = texel256(a.texture, u, v);
+            *dst = texel_at(a, u, v);
             dst += a.stride;
             u += uint32_t(du);
             v += uint32_t(dv);
@@ -63,7 +69,12 @@ namespace {
     a.dst = dst;
     a.stride = stride;
     a.count = s.count;
-    a.texture = tex.aligned256;
+    if (tex.aligned256) [[likely]] {
+        a.texture = tex.aligned256, a.pitch = 0;
+    } else {  // (a texture the mappers take has the one or the other)
+        a.texture = doubled_origin(tex.doubled, tex.width), a.pitch = doubled_pitch(tex.width);
+        a.u_mask = uint32_t(tex.width - 1), a.v_mask = uint32_t(tex.height - 1);
+    }
     // (the walker tested once, the planes unrolled)
     auto along = [&](double across, double at, double Plane::*line, double Plane::*step) {
         a.x = at;
@@ -261,11 +272,20 @@ ErrorBound fast_oriented_bound(const BoundContext& c, const Vertex* vertices, in
 
 // The loop's random cases (core/selftest.h): planes from real triangles and extremes (random_planes),
 // rows and columns (strides either way) anywhere on and off the screen, segments of 2 to 512 pixels
-// (512: one a span).
+// (512: one a span); a third of them on a doubled copy that fills the check's texels (its sides
+// drawn again now and then: fill_check_doubled), where the NASM loop's pointer reads what the twin's
+// masks read only if it stays in the copy.
 LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    int32_t w = 0, h = 0;
+    const uint8_t* origin = nullptr;
     return check_cases<FastSubdivArgs>(m, other, seed, cases, buf, [&](Random& r, FastSubdivArgs& a) {
         a.count = random_count(r, 0, 3, 320);
         a.texture = check_aligned_texture(buf);
+        a.pitch = 0, a.u_mask = a.v_mask = 0;
+        if (r.below(3) == 0) {
+            if (!origin || r.below(256) == 0) random_doubled_sides(r, &w, &h), origin = fill_check_doubled(buf, w, h, r.next());
+            a.texture = origin, a.pitch = doubled_pitch(w), a.u_mask = uint32_t(w - 1), a.v_mask = uint32_t(h - 1);
+        }
         a.shift = r.below(4) ? r.range(3, 5) : r.range(1, 9);
         a.stride = random_stride(r);
         CheckWindow window = place_span(buf, a, a.stride);
@@ -282,7 +302,7 @@ LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32
 #if defined(MODEXLAB_OFFSETS)
 // The block layout asm/fastsubdiv.asm reads (core/asm_offsets.h).
 void fastsubdiv_offsets() {
-    ASM_FIELDS(FSUB, FastSubdivArgs, dst, stride, count, texture, shift, x, c, g)
+    ASM_FIELDS(FSUB, FastSubdivArgs, dst, stride, count, texture, shift, pitch, u_mask, v_mask, x, c, g)
     ASM_CONSTANT(SUBPIXEL_ONE, SUBPIXEL_ONE);
 }
 #endif

@@ -160,9 +160,10 @@ TEST(Bounds, NoMapperExceedsItsBoundOnRandomPolygons) {
         for (int n = 0; n < per_mapper; ++n) {
             size_t t = size_t(n) % std::size(sizes);
             if ((m.needs & NEED_ALIGNED256) && sizes[t] != 256) t = 4;
-            if ((m.needs & (NEED_TILED256 | NEED_TILED256_OR_INSIDE)) && !tiles256(sizes[t], sizes[t])) t = n % 3 == 0 ? 0 : n % 3 == 1 ? 3 : 4;  // 1, 64, 256
-            if ((m.needs & NEED_POW2_OR_INSIDE) && !tiles256(sizes[t], sizes[t]) && !gets_doubled(sizes[t], sizes[t])) t = n % 2 ? 5 : 3;  // 1024, 64
-            Wrap wrap = (m.needs & (NEED_ALIGNED256 | NEED_TILED256)) || n % 3 ? Wrap::Repeat : Wrap::Clamp;
+            if ((m.needs & NEED_TILED256_OR_INSIDE) && !tiles256(sizes[t], sizes[t])) t = n % 3 == 0 ? 0 : n % 3 == 1 ? 3 : 4;  // 1, 64, 256
+            if ((m.needs & (NEED_POW2_OR_INSIDE | NEED_POW2_REPEAT)) && !tiles256(sizes[t], sizes[t]) && !gets_doubled(sizes[t], sizes[t]))
+                t = n % 2 ? 5 : 3;  // 1024, 64
+            Wrap wrap = (m.needs & (NEED_ALIGNED256 | NEED_POW2_REPEAT)) || n % 3 ? Wrap::Repeat : Wrap::Clamp;
             std::vector<uint8_t> bordered(size_t(bordered_bytes(sizes[t], sizes[t]))), aligned(ALIGNED256_BYTES);
             std::vector<uint8_t> doubled(gets_doubled(sizes[t], sizes[t]) ? size_t(doubled_bytes(sizes[t], sizes[t])) : 0);
             Texture tex{texels[t].data(), sizes[t], sizes[t], wrap};

@@ -549,6 +549,62 @@ TEST(FastAffine, TakesTexturesAbove256ByTheDoubledCopy) {
     }
 }
 
+// The subdivided fast mappers take repeating textures with a side above 256 (powers of two up to
+// 1024) through their doubled copy: on a texture that repeats a tile of at most 256 a side, each
+// draws, rows and columns, NASM loop and twin, exactly what it draws with the tile itself on the
+// tiled block (the same 16.16 points and steps: texel (u mod W, v mod H) of the big texture is the
+// tile's (u mod w, v mod h)), on random triangles in perspective over many periods, so that some
+// segments travel further than the copy holds (read by masks) and most do not (the texel pointer);
+// a wrong origin, pitch, start or step reads another texel of the random tile. Without the copy
+// each refuses the texture, and a clamped one. (The texels beyond the tile's period: the loop's
+// random cases, on copies of hashed texels, and the bound tests, which measure these mappers on
+// 1024 x 1024 textures that hold their own coordinates.)
+TEST(FastSubdiv, TakesTexturesAbove256ByTheDoubledCopy) {
+    const int32_t shapes[][4] = {{512, 512, 256, 256}, {1024, 64, 256, 64}, {64, 1024, 64, 128}, {1024, 1024, 32, 256}};
+    const char* names[] = {"fast-subdiv-8", "fast-subdiv-16", "fast-subdiv-32", "fast-constant-depth", "fast-adaptive-1", "fast-adaptive-2", "fast-oriented-1"};
+    TriangleGen gen(20261129u);
+    gen.uv_range = 3000;
+    gen.depth_ratio = 30;
+    for (const auto& shape : shapes) {
+        const int32_t w = shape[0], h = shape[1], tw = shape[2], th = shape[3];
+        std::vector<uint8_t> tile(size_t(tw) * size_t(th)), big(size_t(w) * size_t(h));
+        for (uint8_t& t : tile) t = uint8_t(gen.rng() % 255);
+        for (int32_t v = 0; v < h; ++v)
+            for (int32_t u = 0; u < w; ++u) big[size_t(v) * size_t(w) + size_t(u)] = tile[size_t(v % th) * size_t(tw) + size_t(u % tw)];
+        std::vector<uint8_t> bordered(size_t(bordered_bytes(w, h))), aligned(ALIGNED256_BYTES), doubled(size_t(doubled_bytes(w, h)));
+        std::vector<uint8_t> tile_bordered(size_t(bordered_bytes(tw, th))), tile_aligned(ALIGNED256_BYTES);
+        Texture tex{big.data(), w, h, Wrap::Repeat}, alone = tex, clamped{big.data(), w, h, Wrap::Clamp}, small{tile.data(), tw, th, Wrap::Repeat};
+        prepare_texture(&tex, bordered.data(), aligned.data(), doubled.data());
+        prepare_texture(&alone, bordered.data(), aligned.data());
+        prepare_texture(&clamped, bordered.data(), aligned.data(), doubled.data());
+        prepare_texture(&small, tile_bordered.data(), tile_aligned.data());
+        for (const char* name : names) {
+            const Mapper& m = mapper(name);
+            EXPECT_FALSE(mapper_accepts(m, alone)) << name << ": no doubled copy";
+            EXPECT_FALSE(mapper_accepts(m, clamped)) << name << ": clamped";
+            ASSERT_TRUE(mapper_accepts(m, tex)) << name << " " << w << "x" << h;
+            int pixels = 0;
+            for (int n = 0; n < 24; ++n) {
+                const std::vector<Vertex> t = gen.triangle();
+                for (Axis axis : {Axis::Rows, Axis::Columns})
+                    for (Variant variant : {Variant::Twin, Variant::Asm}) {
+                        std::vector<uint8_t> a(SCREEN_PIXELS, 255), b(SCREEN_PIXELS, 255);
+                        Target ta = ram_target(a.data(), ram_planar(m, axis)), tb = ram_target(b.data(), ram_planar(m, axis));
+                        RenderStats sa, sb;
+                        const SetupStatus status = draw_polygon(t.data(), 3, tex, m, axis, ta, &sa, variant);
+                        ASSERT_EQ(status, draw_polygon(t.data(), 3, small, m, axis, tb, &sb, variant));
+                        ASSERT_EQ(sa.pixels, sb.pixels);
+                        for (size_t i = 0; i < a.size(); ++i)
+                            ASSERT_EQ(a[i], b[i]) << name << " " << w << "x" << h << " triangle " << n << " pixel " << i << (variant == Variant::Asm ? " NASM" : " twin")
+                                                  << (axis == Axis::Rows ? " rows" : " columns");
+                        pixels += int(sa.pixels);
+                    }
+            }
+            EXPECT_GT(pixels, 20000) << name << " " << w << "x" << h;
+        }
+    }
+}
+
 // The four affine fast mappers take a clamped texture (power-of-two sides up to 256) polygon by
 // polygon: where the polygon's coordinates lie inside it, with their rounding (and fast-table's
 // texel more), each draws exactly what it draws with the same texture repeating; where they reach
