@@ -6,7 +6,7 @@
 ; a row (stride 1) in pairs, one word store a pair; a column (any other stride) a pixel at a time,
 ; the destination moved by the stride from the frame after each store. A span of one or two pixels
 ; (fast_subdiv_short) stores its exact points' texels, without the frame or the core. On a texture's
-; doubled copy (FSUB_pitch not 0: sides above 256) the same segments step a texel pointer into the
+; doubled copy (FSUB_texture null: sides above 256) the same segments step a texel pointer into the
 ; copy (the doubled core, asm/core816.inc), started afresh at each segment where its travel stays in
 ; the copy, and read the copy by masks where it does not (fast_subdiv_doubled_asm).
 
@@ -267,7 +267,7 @@ section .text
     mov [esp + L_LAST], eax
     FRAME_COPY edx, FSUB_dst, L_DST, FSUB_texture, L_TEXTURE
 %ifidn %3, doubled
-    FRAME_COPY edx, FSUB_pitch, L_PITCH, FSUB_u_mask, L_UMASK, FSUB_v_mask, L_VMASK
+    DOUBLED_BLOCK edx, esp + L_TEXTURE, esp + L_PITCH, esp + L_UMASK, esp + L_VMASK
     REACHES L_UMASK, L_UNEG, L_UREACH
     REACHES L_VMASK, L_VNEG, L_VREACH
 %endif
@@ -473,6 +473,24 @@ section .text
     LOOP_LEAVE L_FRAME
 %endmacro
 
+; The doubled copy of the block %1's source: its origin, pitch and sides less one into [%2] to [%5]
+; (eax and ecx clobbered).
+%macro DOUBLED_BLOCK 5
+    mov ecx, [%1 + FSUB_source]
+    mov eax, [ecx + FTEX_width]
+    dec eax
+    mov [%4], eax                       ; u mask
+    lea eax, [eax * 2 + 2 + 2 * DOUBLED_LEAD]
+    mov [%3], eax                       ; pitch: 2 W + 2 lead
+    imul eax, DOUBLED_LEAD
+    add eax, [ecx + FTEX_doubled]
+    add eax, DOUBLED_LEAD
+    mov [%2], eax                       ; origin: lead rows and lead columns in
+    mov eax, [ecx + FTEX_height]
+    dec eax
+    mov [%5], eax                       ; v mask
+%endmacro
+
 ; The doubled copy's side along an axis from its mask at frame slot %1: the side into slot %2, and
 ; the reach of a segment's travel, (side + 6) in 16.16, and twice that into %3 and %3 + 4 (REACH).
 %macro REACHES 3
@@ -487,12 +505,12 @@ section .text
 %endmacro
 
 ; Rows go on here; any other stride to the column loop (the same frame and argument).
-; On a doubled copy (FSUB_pitch not 0) to fast_subdiv_doubled_asm.
+; On a doubled copy (FSUB_texture null) to fast_subdiv_doubled_asm.
 global fast_subdiv_loop_asm
 fast_subdiv_loop_asm:
     mov edx, [esp + 4]
-    cmp dword [edx + FSUB_pitch], 0
-    jne fast_subdiv_doubled_asm
+    cmp dword [edx + FSUB_texture], 0
+    je fast_subdiv_doubled_asm
     mov eax, [edx + FSUB_count]
     dec eax
     cmp eax, 1
@@ -520,20 +538,23 @@ fast_subdiv_doubled_column:
 
 ; A span of one or two pixels (most of a mesh's: triangles of a dozen pixels), rows or columns:
 ; its exact points' texels (the second pixel's step is the second point less the first, so the
-; core would read the second point's texel), with no frame, no saved register and no core; edx:
-; the block, eax: the pixels less one.
-%macro SHORT_SPAN 1                    ; %1: the texel read (a macro of u slot, v slot, register)
-    sub esp, 32                         ; U0, V0, U1, V1 (qwords)
+; core would read the second point's texel), with no saved register and no core, a frame of its
+; points (and on a doubled copy its block's origin, pitch and masks, read by masks); edx: the block.
+%macro SHORT_SPAN 1-2 32               ; %1: the texel read (a macro of u slot, v slot, register); %2: the frame
+    sub esp, %2                         ; U0, V0, U1, V1 (qwords), and the doubled copy's block
+%if %2 > 32
+    DOUBLED_BLOCK edx, esp + S_ORIGIN, esp + S_PITCH, esp + S_UMASK, esp + S_VMASK
+%endif
     fldz
     fadd qword [edx + FSUB_x]           ; x at pixel 0, as the twin's x0 + 0 * 256
     POINT_AT 0, 8, edx
-    test eax, eax
-    jnz .two
+    cmp dword [edx + FSUB_count], 1
+    jne .two                            ; (two pixels)
     fstp st0
     %1 0, 8, al
     mov ecx, [edx + FSUB_dst]
     mov [ecx], al
-    add esp, 32
+    add esp, %2
     ret
 .two:
     fadd qword [subpixel_one]           ; pixel 1: x0 + 256
@@ -545,7 +566,7 @@ fast_subdiv_doubled_column:
     mov [ecx], al
     add ecx, [edx + FSUB_stride]
     mov [ecx], ah
-    add esp, 32
+    add esp, %2
     ret
 %endmacro
 ; the tiled block's texel (TEXEL_AT), and the doubled copy's by masks (ebx is the caller's here:
@@ -553,15 +574,19 @@ fast_subdiv_doubled_column:
 %macro TILED_SHORT_TEXEL 3
     TEXEL_AT %1, %2, %3
 %endmacro
+S_ORIGIN      equ 32                    ; the short doubled span's frame: the doubled copy's block
+S_PITCH       equ 36
+S_UMASK       equ 40
+S_VMASK       equ 44
 %macro DOUBLED_SHORT_TEXEL 3
     push ebx
-    MASKED_TEXEL [esp + 4 + %1], [esp + 4 + %2], %3, [edx + FSUB_v_mask], [edx + FSUB_pitch], [edx + FSUB_u_mask], [edx + FSUB_texture]
+    MASKED_TEXEL [esp + 4 + %1], [esp + 4 + %2], %3, [esp + 4 + S_VMASK], [esp + 4 + S_PITCH], [esp + 4 + S_UMASK], [esp + 4 + S_ORIGIN]
     pop ebx
 %endmacro
 fast_subdiv_short:
     SHORT_SPAN TILED_SHORT_TEXEL
 fast_subdiv_short_doubled:
-    SHORT_SPAN DOUBLED_SHORT_TEXEL
+    SHORT_SPAN DOUBLED_SHORT_TEXEL, 48
 
 section .rodata
 align 4

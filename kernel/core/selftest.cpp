@@ -23,14 +23,13 @@ void random_doubled_sides(Random& r, int32_t* w, int32_t* h) {
     } while (!gets_doubled(*w, *h) || size_t(doubled_bytes(*w, *h)) > CHECK_TEXEL_BYTES);
 }
 
-const uint8_t* fill_check_doubled(const CheckBuffers& buf, int32_t w, int32_t h, uint32_t salt) {
+void fill_check_doubled(const CheckBuffers& buf, int32_t w, int32_t h, uint32_t salt) {
     const int32_t pitch = doubled_pitch(w), rows = 2 * h + 2 * DOUBLED_LEAD;
     for (int32_t r = 0; r < rows; ++r)
         for (int32_t c = 0; c < pitch; ++c) {
             const uint32_t u = uint32_t(c - DOUBLED_LEAD) & uint32_t(w - 1), v = uint32_t(r - DOUBLED_LEAD) & uint32_t(h - 1);
             buf.texels[size_t(r) * size_t(pitch) + size_t(c)] = uint8_t((u * 0x9E3779B1u ^ v * 0x85EBCA77u ^ salt) >> 24);
         }
-    return doubled_origin(buf.texels, w);
 }
 
 uint8_t* check_span(const CheckBuffers& buf, int32_t count, int32_t stride, CheckWindow* w) {

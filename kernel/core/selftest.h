@@ -108,10 +108,10 @@ CheckWindow place_span(const CheckBuffers& buf, Args& a, int32_t stride) {
 int32_t random_texture_size(Random& r);
 // Random sides of a texture with a doubled copy (gets_doubled) that fits the check's texels.
 void random_doubled_sides(Random& r, int32_t* w, int32_t* h);
-// Makes the check's texels a doubled copy (make_doubled's layout) of a w x h texture whose texel
-// (u, v) is a hash of u, v and salt, and returns its origin: a loop reading the copy anywhere
-// reads the texel a read by masks from the origin reads.
-const uint8_t* fill_check_doubled(const CheckBuffers& buf, int32_t w, int32_t h, uint32_t salt);
+// Makes the check's texels a doubled copy (make_doubled's layout, from buf.texels) of a w x h
+// texture whose texel (u, v) is a hash of u, v and salt: a loop reading the copy anywhere reads the
+// texel a read by masks from its origin reads.
+void fill_check_doubled(const CheckBuffers& buf, int32_t w, int32_t h, uint32_t salt);
 // A span of count pixels `stride` bytes apart (count >= 0, stride either way, not 0) between the
 // guards in buffer a: its first pixel and its window.
 uint8_t* check_span(const CheckBuffers& buf, int32_t count, int32_t stride, CheckWindow* w);

@@ -21,11 +21,6 @@ void exact_16_16(const FastSubdivArgs& a, int32_t k, uint32_t* u, uint32_t* v) {
 
 constexpr int log2(int n) { return n > 1 ? 1 + log2(n / 2) : 0; }
 
-// The texel at 16.16 u and v: the tiled block's, or the doubled copy's by masks.
-inline uint8_t texel_at(const FastSubdivArgs& a, uint32_t u, uint32_t v) {
-    if (!a.pitch) return texel256(a.texture, u, v);
-    return a.texture[((v >> 16) & a.v_mask) * uint32_t(a.pitch) + ((u >> 16) & a.u_mask)];
-}
 
 }  // namespace
 
@@ -36,6 +31,8 @@ void fast_subdiv_loop(const void* raw) {
     uint32_t u0, v0;
     exact_16_16(a, 0, &u0, &v0);
     uint8_t* dst = a.dst;
+    // the texture's block: the tiled one, or its doubled copy's from the origin by masks
+    const TableBlock block = a.texture ? TableBlock{a.texture, 255, 255, 256} : table_block(*a.source);
     for (int32_t k = 0; k < a.count;) {
         const int32_t len = a.count - k > n ? n : a.count - k;
         const int32_t end = k + len < a.count ? k + len : a.count - 1;  // the next exact point
@@ -47,7 +44,7 @@ void fast_subdiv_loop(const void* raw) {
         else if (d > 0) du = int32_t(u1 - u0) / d, dv = int32_t(v1 - v0) / d;
         uint32_t u = u0, v = v0;
         for (int32_t i = 0; i < len; ++i) {
-            *dst = texel_at(a, u, v);
+            *dst = *block.at(u, v);
             dst += a.stride;
             u += uint32_t(du);
             v += uint32_t(dv);
@@ -69,12 +66,8 @@ namespace {
     a.dst = dst;
     a.stride = stride;
     a.count = s.count;
-    if (tex.aligned256) [[likely]] {
-        a.texture = tex.aligned256, a.pitch = 0;
-    } else {  // (a texture the mappers take has the one or the other)
-        a.texture = doubled_origin(tex.doubled, tex.width), a.pitch = doubled_pitch(tex.width);
-        a.u_mask = uint32_t(tex.width - 1), a.v_mask = uint32_t(tex.height - 1);
-    }
+    a.texture = tex.aligned256;  // (null: a texture the mappers take has a doubled copy then)
+    a.source = &tex;
     // (the walker tested once, the planes unrolled)
     auto along = [&](double across, double at, double Plane::*line, double Plane::*step) {
         a.x = at;
@@ -276,15 +269,18 @@ ErrorBound fast_oriented_bound(const BoundContext& c, const Vertex* vertices, in
 // drawn again now and then: fill_check_doubled), where the NASM loop's pointer reads what the twin's
 // masks read only if it stays in the copy.
 LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    int32_t w = 0, h = 0;
-    const uint8_t* origin = nullptr;
+    Texture big;  // (its doubled copy: the check's texels, once filled)
     return check_cases<FastSubdivArgs>(m, other, seed, cases, buf, [&](Random& r, FastSubdivArgs& a) {
         a.count = random_count(r, 0, 3, 320);
         a.texture = check_aligned_texture(buf);
-        a.pitch = 0, a.u_mask = a.v_mask = 0;
+        a.source = nullptr;
         if (r.below(3) == 0) {
-            if (!origin || r.below(256) == 0) random_doubled_sides(r, &w, &h), origin = fill_check_doubled(buf, w, h, r.next());
-            a.texture = origin, a.pitch = doubled_pitch(w), a.u_mask = uint32_t(w - 1), a.v_mask = uint32_t(h - 1);
+            if (!big.doubled || r.below(256) == 0) {
+                random_doubled_sides(r, &big.width, &big.height);
+                fill_check_doubled(buf, big.width, big.height, r.next());
+                big.doubled = buf.texels;
+            }
+            a.texture = nullptr, a.source = &big;
         }
         a.shift = r.below(4) ? r.range(3, 5) : r.range(1, 9);
         a.stride = random_stride(r);
@@ -302,8 +298,10 @@ LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32
 #if defined(MODEXLAB_OFFSETS)
 // The block layout asm/fastsubdiv.asm reads (core/asm_offsets.h).
 void fastsubdiv_offsets() {
-    ASM_FIELDS(FSUB, FastSubdivArgs, dst, stride, count, texture, shift, pitch, u_mask, v_mask, x, c, g)
+    ASM_FIELDS(FSUB, FastSubdivArgs, dst, stride, count, texture, source, shift, x, c, g)
+    ASM_FIELDS(FTEX, Texture, width, height, doubled)
     ASM_CONSTANT(SUBPIXEL_ONE, SUBPIXEL_ONE);
+    ASM_CONSTANT(DOUBLED_LEAD, DOUBLED_LEAD);
 }
 #endif
 

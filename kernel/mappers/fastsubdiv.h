@@ -17,18 +17,17 @@ namespace raster {
 // tiled block repeats every 256). Between two points the 8:16 core steps by their 32-bit difference
 // over the pixels between them: by a shift over N, by a division over fewer (the last segment).
 // Each pixel reads texel (u whole mod W, v whole mod H): from the tiled block at (v whole & 255,
-// u whole & 255), or from a doubled copy (textures above 256 a side) at its origin plus (v whole &
-// v_mask) * pitch + (u whole & u_mask); the NASM loop steps a pointer into the copy instead where
-// a segment's travel stays in it (docs/accuracy.md, "The subdivided fast mappers on the doubled
-// copy"), the same texels.
+// u whole & 255), or, for a texture with a side above 256, from its doubled copy at the origin plus
+// (v whole mod H) * pitch + (u whole mod W); the NASM loop steps a pointer into the copy instead
+// where a segment's travel stays in it (docs/accuracy.md, "The subdivided fast mappers on the
+// doubled copy"), the same texels.
 struct FastSubdivArgs {
     uint8_t* dst;            // pixel 0
     int32_t stride;          // bytes from a pixel to the next: 1 (a row, drawn in pairs), or a column's
     int32_t count;           // pixels, 0 or more
-    const uint8_t* texture;  // tiled over 256 x 256, aligned to 64 KiB (Texture::aligned256); or a doubled copy's origin
+    const uint8_t* texture;  // tiled over 256 x 256, aligned to 64 KiB (Texture::aligned256); null: source's doubled copy
+    const Texture* source;   // the texture (its doubled copy read where `texture` is null)
     int32_t shift;           // segments of 1 << shift pixels, shift 1 to 9
-    int32_t pitch;           // 0: the tiled block; else the doubled copy's bytes a row (doubled_pitch)
-    uint32_t u_mask, v_mask; // the doubled copy's sides less one (read where pitch is not 0)
     double x;                // pixel 0's centre along the span (x, or y: a column), from the reference vertex, subpixels
     double c[3], g[3];       // q, pu, pv on the span's line: a0 + gy y and gx (a row), a0 + gx x and gy (a column)
 };
