@@ -6,7 +6,7 @@ namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
     {"affine", 1029.6f, 348.75f, 40.332f}, // 11 scenes
-    {"exact", 1011.0f, 316.15f, 80.305f}, // 11 scenes
+    {"exact", 1011.0f, 316.15f, 80.306f}, // 11 scenes
     {"persp-subdiv-4", 1011.0f, 321.53f, 91.378f}, // 11 scenes
     {"persp-subdiv-8", 1011.0f, 376.26f, 59.517f}, // 11 scenes
     {"persp-subdiv-16", 1011.0f, 415.28f, 43.456f}, // 11 scenes
@@ -14,27 +14,27 @@ const MapperCost MAPPER_COSTS[] = {
     {"constant-depth", 1011.0f, 452.10f, 29.800f}, // 11 scenes
     {"persp-adaptive-0.5", 1011.0f, 908.51f, 290.044f}, // 11 scenes
     {"persp-adaptive-1", 1011.0f, 999.57f, 51.766f}, // 11 scenes
-    {"persp-adaptive-2", 1011.0f, 1016.72f, 44.502f}, // 11 scenes
+    {"persp-adaptive-2", 1011.0f, 1016.72f, 44.503f}, // 11 scenes
     {"persp-adaptive-4", 1011.0f, 1029.51f, 40.036f}, // 11 scenes
-    {"fast-affine", 1052.6f, 109.18f, 5.136f}, // 11 scenes
-    {"fast-table", 1250.9f, 96.66f, 2.060f}, // 11 scenes
+    {"fast-affine", 1052.6f, 109.17f, 5.137f}, // 11 scenes
+    {"fast-table", 1250.9f, 96.66f, 2.061f}, // 11 scenes
     {"fast-columns", 1126.9f, 247.30f, 5.676f}, // 11 scenes
-    {"fast-table-columns", 1339.2f, 246.58f, 2.823f}, // 11 scenes
-    {"fast-subdiv-8", 1008.8f, 297.31f, 13.575f}, // 10 scenes
-    {"fast-subdiv-16", 1008.8f, 307.08f, 9.651f}, // 10 scenes
-    {"fast-subdiv-32", 1008.8f, 311.93f, 7.751f}, // 10 scenes
-    {"fast-constant-depth", 1008.8f, 316.28f, 6.192f}, // 10 scenes
-    {"fast-adaptive-1", 1008.8f, 339.59f, 9.333f}, // 10 scenes
-    {"fast-adaptive-2", 1008.8f, 343.18f, 7.908f}, // 10 scenes
-    {"fast-oriented-1", 1166.0f, 357.49f, 7.432f}, // 10 scenes
+    {"fast-table-columns", 1339.2f, 246.58f, 2.824f}, // 11 scenes
+    {"fast-subdiv-8", 1011.0f, 298.99f, 14.042f}, // 11 scenes
+    {"fast-subdiv-16", 1011.0f, 309.28f, 9.935f}, // 11 scenes
+    {"fast-subdiv-32", 1011.0f, 314.38f, 7.948f}, // 11 scenes
+    {"fast-constant-depth", 1011.0f, 318.95f, 6.308f}, // 11 scenes
+    {"fast-adaptive-1", 1011.0f, 341.84f, 9.599f}, // 11 scenes
+    {"fast-adaptive-2", 1011.0f, 345.59f, 8.118f}, // 11 scenes
+    {"fast-oriented-1", 1168.2f, 359.34f, 7.777f}, // 11 scenes
     {"xsharp-dda", 1516.3f, 376.65f, 37.424f}, // 10 scenes
     {"xsharp-row-out", 1516.3f, 511.91f, 18.936f}, // 10 scenes
     {"xsharp-column", 1520.0f, 484.56f, 12.608f}, // 10 scenes
     {"hecker-steptable", 5329.3f, 0.00f, 613.875f}, // 10 scenes
-    {"fatmap-256", 1727.7f, 162.45f, 13.642f}, // 8 scenes
-    {"fatmap-256-16", 1727.7f, 167.45f, 12.642f}, // 8 scenes
+    {"fatmap-256", 1727.7f, 162.44f, 13.642f}, // 8 scenes
+    {"fatmap-256-16", 1727.7f, 167.44f, 12.642f}, // 8 scenes
     {"fatmap-lut", 2344.5f, 165.93f, 10.047f}, // 7 scenes
-    {"quake-subdiv16", 1501.9f, 302.03f, 13.882f}, // 10 scenes
+    {"quake-subdiv16", 1501.9f, 302.03f, 13.883f}, // 10 scenes
     {"quake-subdiv8", 1501.9f, 286.69f, 20.235f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
