@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <random>
 #include <string>
 
 #include "kernel/core/bound.h"
@@ -184,6 +185,35 @@ TEST(Envelope, HoldsOnEveryUncutTriangleOfTheDemoScenes) {
             EXPECT_GT(guarded, 1000) << "the mesh's triangles are proven by their envelope";
         }
     }
+}
+
+// The guards in whole numbers (envelope_guards) take exactly the triangles of the derivation's
+// conditions, W + H <= the reach, 4 W H <= 65536 D and the 16.16 steps within 32766 texels, taken
+// here in long double: boxes at and around each limit, areas at and around 4 W H / 65536, steps
+// at and around +-32766 texels, and sides near 2^31 (no wrap).
+TEST(Envelope, GuardsAreTheDerivationsConditions) {
+    std::mt19937 rng(20261129u);
+    auto any = [&](int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng); };
+    constexpr int64_t REACH = int64_t(ENVELOPE_REACH) * SUBPIXEL_ONE, STEP = int64_t(32766) << 16;
+    int taken = 0, refused = 0;
+    for (int n = 0; n < 200000; ++n) {
+        PolygonSetup s{};
+        s.edge_count = 3;
+        const int64_t w = n % 50 == 0 ? any(0, int64_t(1) << 31) : any(0, REACH), h = n % 3 == 0 ? REACH - w + any(-2, 2) : any(0, REACH - w + 2);
+        s.min_x = any(-100000, 100000), s.max_x = s.min_x + w;
+        s.min_y = any(-100000, 100000), s.max_y = s.min_y + std::max<int64_t>(h, 0);
+        const int64_t edge = (4 * w * std::max<int64_t>(h, 0)) / 65536;
+        s.area2 = std::max<int64_t>(1, n % 2 ? edge + any(-2, 2) : any(1, std::max<int64_t>(2, 2 * edge)));
+        int32_t* steps[4] = {&s.u_fx.dx, &s.u_fx.dy, &s.v_fx.dx, &s.v_fx.dy};
+        for (int32_t* t : steps) *t = int32_t(n % 5 == 0 ? (any(0, 1) ? 1 : -1) * (STEP + any(-2, 2)) : any(-STEP, STEP));
+        const long double lw = (long double)(s.max_x - s.min_x), lh = (long double)(s.max_y - s.min_y);
+        bool want = lw + lh <= (long double)REACH && 4 * lw * lh <= 65536.0L * (long double)s.area2;
+        for (int32_t* t : steps) want = want && *t >= -STEP && *t <= STEP;
+        ASSERT_EQ(envelope_guards(s), want) << "W " << w << " H " << h << " D " << s.area2 << " case " << n;
+        ++(want ? taken : refused);
+    }
+    EXPECT_GT(taken, 20000);
+    EXPECT_GT(refused, 20000);
 }
 
 // A mesh the parser did not measure (built some other way) has no envelope: nothing is proven.
