@@ -387,17 +387,12 @@ double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double round
 
 bool envelope_guards(const PolygonSetup& s) {
     if (s.edge_count != 3) return false;
-    // (the box within setup's range: its sides in 32 bits, not negative)
-    const uint32_t w = uint32_t(s.max_x - s.min_x), h = uint32_t(s.max_y - s.min_y);
+    // (the box within setup's range: its sides in 32 bits)
+    const double w = double(int32_t(s.max_x - s.min_x)), h = double(int32_t(s.max_y - s.min_y));
     // the 16.16 steps within +-32766 texels (they saturate at +-2^31): the steps within 32767
     constexpr uint32_t STEP = 32766u << 16;
     auto fits = [](int32_t raw) { return uint32_t(raw) + STEP <= 2 * STEP; };
-    // In whole numbers (all of them exact in the doubles the bound takes them as): W + H within the
-    // reach first, so W H < 2^38, and 4 W H <= 65536 D, that is W H <= 16384 D, that is
-    // ceil(W H / 16384) <= D (D whole); one 32 x 32 -> 64 bit multiply, no conversion.
-    static_assert(ENVELOPE_CONDITION == 65536.0 && ENVELOPE_REACH * SUBPIXEL_ONE < (1 << 30));
-    constexpr uint32_t REACH = ENVELOPE_REACH * SUBPIXEL_ONE;
-    return w <= REACH && h <= REACH - w && (uint64_t(w) * h + 16383) >> 14 <= uint64_t(s.area2) && fits(s.u_fx.dx) &&
+    return w + h <= double(ENVELOPE_REACH * SUBPIXEL_ONE) && 4 * w * h <= ENVELOPE_CONDITION * double(s.area2) && fits(s.u_fx.dx) &&
            fits(s.u_fx.dy) && fits(s.v_fx.dx) && fits(s.v_fx.dy);
 }
 

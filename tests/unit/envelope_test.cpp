@@ -187,10 +187,10 @@ TEST(Envelope, HoldsOnEveryUncutTriangleOfTheDemoScenes) {
     }
 }
 
-// The guards in whole numbers (envelope_guards) take exactly the triangles of the derivation's
-// conditions, W + H <= the reach, 4 W H <= 65536 D and the 16.16 steps within 32766 texels, taken
-// here in long double: boxes at and around each limit, areas at and around 4 W H / 65536, steps
-// at and around +-32766 texels, and sides near 2^31 (no wrap).
+// The guards (envelope_guards) take exactly the triangles of the derivation's conditions, W + H <=
+// the reach, 4 W H <= 65536 D and the 16.16 steps within 32766 texels, taken here in long double:
+// boxes at and around each limit and up to setup's range (2^22 subpixels a coordinate), areas at
+// and around 4 W H / 65536, steps at and around +-32766 texels.
 TEST(Envelope, GuardsAreTheDerivationsConditions) {
     std::mt19937 rng(20261129u);
     auto any = [&](int64_t lo, int64_t hi) { return std::uniform_int_distribution<int64_t>(lo, hi)(rng); };
@@ -199,10 +199,10 @@ TEST(Envelope, GuardsAreTheDerivationsConditions) {
     for (int n = 0; n < 200000; ++n) {
         PolygonSetup s{};
         s.edge_count = 3;
-        const int64_t w = n % 50 == 0 ? any(0, int64_t(1) << 31) : any(0, REACH), h = n % 3 == 0 ? REACH - w + any(-2, 2) : any(0, REACH - w + 2);
+        const int64_t w = n % 50 == 0 ? any(0, int64_t(1) << 23) : any(0, REACH), left = std::max<int64_t>(REACH - w, 0), h = n % 3 == 0 ? std::max<int64_t>(left + any(-2, 2), 0) : any(0, left + 2);
         s.min_x = any(-100000, 100000), s.max_x = s.min_x + w;
-        s.min_y = any(-100000, 100000), s.max_y = s.min_y + std::max<int64_t>(h, 0);
-        const int64_t edge = (4 * w * std::max<int64_t>(h, 0)) / 65536;
+        s.min_y = any(-100000, 100000), s.max_y = s.min_y + h;
+        const int64_t edge = (4 * w * h) / 65536;
         s.area2 = std::max<int64_t>(1, n % 2 ? edge + any(-2, 2) : any(1, std::max<int64_t>(2, 2 * edge)));
         int32_t* steps[4] = {&s.u_fx.dx, &s.u_fx.dy, &s.v_fx.dx, &s.v_fx.dy};
         for (int32_t* t : steps) *t = int32_t(n % 5 == 0 ? (any(0, 1) ? 1 : -1) * (STEP + any(-2, 2)) : any(-STEP, STEP));
