@@ -68,15 +68,13 @@ section .text
 %endmacro
 
 ; fast_column_loop_asm: one column, pixels MODEX_ROW_BYTES apart; the map mask is the caller's. From
-; the tiled block (FCOL_block_pitch 0), or a doubled copy (fast_column_doubled). fast_column_tiled_asm
-; is the same on the tiled block without the test (fast-columns' driver calls it where it knows).
+; the tiled block (FCOL_block_pitch 0), or a doubled copy (fast_column_doubled). (fast-columns'
+; driver draws the tiled block's columns by runs: fast_column_run_asm.)
 global fast_column_loop_asm
-global fast_column_tiled_asm
 fast_column_loop_asm:
     mov eax, [esp + 4]
     cmp dword [eax + FCOL_block_pitch], 0
     jne fast_column_doubled
-fast_column_tiled_asm:
     COLUMN_ENTER FCOL, column_entries
     mov ebx, [eax + FCOL_texture]
     mov bl, [eax + FCOL_u_16_16 + 2]
@@ -201,44 +199,71 @@ L_FRAME   equ 64
     mov [%1 + BOUND_r], ebx
 %endmacro
 
-; The run loops' entry: the frame, the block's row state copied into it (.done: no lines).
-%macro RUN_ENTER 0
-    LOOP_ENTER L_FRAME
-    mov ecx, LOOP_ARG(L_FRAME)
-    mov eax, [ecx + RUN_lines]
+; The 8:16 core's steps from the block (ecx; %1 its prefix) for a whole call: the wholes of du and
+; dv into the frame's word at L_STEPS, their fractions into esi and ebp.
+%macro CORE_STEPS 1
+    mov al, [ecx + %1_du_16_16 + 2]
+    mov ah, [ecx + %1_dv_16_16 + 2]
+    mov [esp + L_STEPS], ax
+    mov esi, [ecx + %1_du_16_16]
+    shl esi, 16                         ; du fraction
+    mov ebp, [ecx + %1_dv_16_16]
+    shl ebp, 16                         ; dv fraction
+%endmacro
+; The 8:16 core's start from u (ebx) and v (edx), 16.16 at the first pixel: eax and edx their
+; fractions in the high halves, ebx the texture with v's and u's wholes in bh and bl, dx the steps'
+; wholes (L_STEPS). ZF is left as it was (mov and ror do not write it).
+%macro CORE_START 0
+    mov eax, ebx
+    ror eax, 16                         ; u: fraction in the high half, whole in al
+    ror edx, 16                         ; v: the same, whole in dl
+    mov ebx, [esp + L_TEXTURE]
+    mov bl, al
+    mov bh, dl
+    mov dx, [esp + L_STEPS]
+%endmacro
+
+; The run loops' entry (rows by default; %1 the block's prefix, %2 the frame's bytes, %3 the field
+; of the first line and %4 its slot): the frame, the block's line state copied into it (.done: no
+; lines).
+%macro RUN_ENTER 0-4 RUN, L_FRAME, RUN_row, L_ROW
+    LOOP_ENTER %2
+    mov ecx, LOOP_ARG(%2)
+    mov eax, [ecx + %1_lines]
     test eax, eax
     jle .done
     mov [esp + L_ARGS], ecx
     mov [esp + L_LINES], eax
-    FRAME_COPY ecx, RUN_lower, L_LOWER, RUN_upper, L_UPPER, RUN_next_lines, L_NEXT, RUN_row, L_ROW, RUN_u_16_16, L_U, RUN_v_16_16, L_V
+    FRAME_COPY ecx, %1_lower, L_LOWER, %1_upper, L_UPPER, %1_next_lines, L_NEXT, %3, %4, %1_u_16_16, L_U, %1_v_16_16, L_V
 %endmacro
 
-; A row's start (ecx: the block, as RUN_ENTER and ROW_TAIL leave it): both bounds stepped, the span
-; clipped (%1 = 1; 0: a run the block says lies inside the clip, RUN_inside) (.next_row where it is
-; empty) and tallied; out: eax the first pixel's x, edi the span's pixels.
-%macro ROW_HEAD 1
+; A row's start (ecx: the block, as RUN_ENTER and ROW_TAIL leave it; %2 its prefix, rows' by
+; default; a column's the same): both bounds stepped, the span clipped (%1 = 1; 0: a run the block
+; says lies inside the clip, RUN_inside) (.next_row where it is empty) and tallied; out: eax the
+; first pixel's x, edi the span's pixels.
+%macro ROW_HEAD 1-2 RUN
     mov edx, [esp + L_LOWER]
     mov eax, [edx + BOUND_q]            ; the first pixel, before the clip
     STEP_BOUND edx
 %if %1
-    cmp eax, [ecx + RUN_clip_lo]
+    cmp eax, [ecx + %2_clip_lo]
     jge %%lo_inside
-    mov eax, [ecx + RUN_clip_lo]
+    mov eax, [ecx + %2_clip_lo]
 %%lo_inside:
 %endif
     mov edx, [esp + L_UPPER]
     mov edi, [edx + BOUND_q]            ; the last pixel
     STEP_BOUND edx
 %if %1
-    cmp edi, [ecx + RUN_clip_hi]
+    cmp edi, [ecx + %2_clip_hi]
     jle %%hi_inside
-    mov edi, [ecx + RUN_clip_hi]
+    mov edi, [ecx + %2_clip_hi]
 %%hi_inside:
 %endif
     sub edi, eax
     jl .next_row                        ; nothing on this row
     inc edi                             ; the span's pixels
-    mov edx, [ecx + RUN_tally]
+    mov edx, [ecx + %2_tally]
     inc dword [edx]
     add [edx + 4], edi
 %endmacro
@@ -254,8 +279,7 @@ L_FRAME   equ 64
     add eax, [esp + L_ROW]              ; its address
 %endmacro
 
-; The next row: u, v and the row's address advance; .row while lines are left, then the next run's
-; rows once where the block has one; ecx the block.
+; The next row: u, v and the row's address advance; then RUN_NEXT.
 %macro ROW_TAIL 0
     mov ecx, [esp + L_ARGS]
     mov eax, [ecx + RUN_u_row_16_16]
@@ -264,6 +288,11 @@ L_FRAME   equ 64
     add [esp + L_V], eax
     mov eax, [ecx + RUN_pitch]
     add [esp + L_ROW], eax
+    RUN_NEXT
+%endmacro
+; .row while lines are left, then the next run's lines once where the block (ecx; %1 its prefix,
+; rows' by default) has one.
+%macro RUN_NEXT 0-1 RUN
     dec dword [esp + L_LINES]
     jnz .row
     mov eax, [esp + L_NEXT]
@@ -271,9 +300,9 @@ L_FRAME   equ 64
     jle .done
     mov [esp + L_LINES], eax
     mov dword [esp + L_NEXT], 0
-    mov eax, [ecx + RUN_next_lower]
+    mov eax, [ecx + %1_next_lower]
     mov [esp + L_LOWER], eax
-    mov eax, [ecx + RUN_next_upper]
+    mov eax, [ecx + %1_next_upper]
     mov [esp + L_UPPER], eax
     jmp .row
 %endmacro
@@ -290,13 +319,7 @@ L_FRAME   equ 64
     shr ecx, 1                          ; pairs
     PAIR_ENTRY eax, edi, %2             ; blocks, the first one partial; 0 (ZF): no pair, one pixel
     mov edi, eax
-    mov eax, ebx                        ; (mov and ror leave ZF as shr set it)
-    ror eax, 16                         ; u: fraction in the high half, whole in al
-    ror edx, 16                         ; v: the same, whole in dl
-    mov ebx, [esp + L_TEXTURE]
-    mov bl, al
-    mov bh, dl
-    mov dx, [esp + L_STEPS]
+    CORE_START                          ; (leaves ZF as shr set it)
     jz .odd_pixel
     PAIRS_AND_ODD .next_row
 .next_row:
@@ -312,13 +335,7 @@ fast_run_loop_asm:
     mov [esp + L_TEXTURE], eax
     cmp dword [ecx + RUN_doubled], 0
     jne fast_run_doubled
-    mov al, [ecx + RUN_du_16_16 + 2]
-    mov ah, [ecx + RUN_dv_16_16 + 2]
-    mov [esp + L_STEPS], ax
-    mov esi, [ecx + RUN_du_16_16]
-    shl esi, 16                         ; du fraction
-    mov ebp, [ecx + RUN_dv_16_16]
-    shl ebp, 16                         ; dv fraction
+    CORE_STEPS RUN
     cmp dword [ecx + RUN_inside], 0
     jne fast_run_inside.row
     RUN_ROWS 1, run_entries
@@ -369,6 +386,79 @@ fast_run_doubled:
     DOUBLED_ROWS 1, run_doubled_entries
 fast_run_doubled_inside:
     DOUBLED_ROWS 0, run_doubled_inside_entries
+
+; fast_column_run_asm: a run of fast-columns' columns on the tiled block (twin: fast_column_run):
+; walked as fast_run_loop_asm walks its rows (RUN_ENTER, ROW_HEAD, RUN_NEXT; the rows' frame, and
+; the column's own state after it), each column's span drawn by the 8:16 column core (BLOCKS, eight
+; pixels a block, entered part-way) into the Mode X planar target, its plane selected first through
+; the target's select_plane where it has one (the VGA's map mask: a cdecl call, which keeps ebx,
+; esi, edi and ebp). esi and ebp hold the fraction steps for the whole call.
+K_X       equ L_FRAME                   ; the column
+K_DU      equ L_FRAME + 4               ; u's and v's steps down a column
+K_DV      equ L_FRAME + 8
+K_BASE    equ L_FRAME + 12              ; the target's
+K_PLANE   equ L_FRAME + 16              ; bytes from a plane to the next (0: the VGA's map mask picks it)
+K_FRAME   equ L_FRAME + 20
+global fast_column_run_asm
+fast_column_run_asm:
+    RUN_ENTER CRUN, K_FRAME, CRUN_x, K_X
+    FRAME_COPY ecx, CRUN_du_16_16, K_DU, CRUN_dv_16_16, K_DV, CRUN_texture, L_TEXTURE
+    mov edx, [ecx + CRUN_target]
+    FRAME_COPY edx, TGT_base, K_BASE, TGT_plane_bytes, K_PLANE
+    CORE_STEPS CRUN
+.row:                                   ; a column; ecx: the block
+    ROW_HEAD 1, CRUN
+    mov ebx, [ecx + CRUN_target]
+    cmp dword [ebx + TGT_select_plane], 0
+    je .selected
+    push eax                            ; (the first pixel; edi is kept by the call)
+    mov edx, [esp + 4 + K_X]
+    and edx, 3
+    push edx                            ; the plane
+    push dword [ebx + TGT_ctx]
+    call [ebx + TGT_select_plane]
+    add esp, 8
+    pop eax
+.selected:                              ; eax: the first pixel's row, edi: the pixels
+    mov ecx, edi
+    mov edx, [esp + K_X]
+    mov ebx, edx
+    and edx, 3
+    imul edx, [esp + K_PLANE]
+    sar ebx, 2
+    add edx, ebx
+    add edx, [esp + K_BASE]             ; the column's row 0
+    lea ebx, [eax + eax * 4]
+    shl ebx, 4                          ; the first pixel's row * 80
+    lea edi, [edx + ebx]                ; its address
+    mov edx, ecx                        ; the blocks: the first starts at pixel j = (-pixels) mod 8
+    neg edx
+    and edx, 7
+    imul ebx, edx, MODEX_ROW_BYTES
+    sub edi, ebx                        ; (j rows back)
+    mov edx, [column_run_entries + edx * 4]
+    mov [esp + L_ENTRY], edx
+    add ecx, 7
+    shr ecx, 3
+    mov ebx, eax
+    imul ebx, [esp + K_DU]
+    add ebx, [esp + L_U]                ; u at the first pixel
+    imul eax, [esp + K_DV]
+    add eax, [esp + L_V]
+    mov edx, eax                        ; v at the first pixel
+    CORE_START
+    jmp [esp + L_ENTRY]
+    BLOCKS MODEX_ROW_BYTES
+.next_row:                              ; the next column
+    mov ecx, [esp + L_ARGS]
+    mov eax, [ecx + CRUN_u_column_16_16]
+    add [esp + L_U], eax
+    mov eax, [ecx + CRUN_v_column_16_16]
+    add [esp + L_V], eax
+    inc dword [esp + K_X]
+    RUN_NEXT CRUN
+.done:
+    LOOP_LEAVE K_FRAME
 
 ; fast_table_loop_asm: fast-table's run of rows (twin: fast_table_loop): the rows walked as
 ; fast_run_loop_asm walks them, each row's pixel x read through the polygon's offset table, table[x],
@@ -474,8 +564,9 @@ fast_table_doubled_inside:
 
 section .rodata
 align 4
-    ENTRIES column_entries, fast_column_tiled_asm, 8
+    ENTRIES column_entries, fast_column_loop_asm, 8
     ENTRIES column_doubled_entries, fast_column_doubled, 8
+    ENTRIES column_run_entries, fast_column_run_asm, 8
     ENTRIES run_entries, fast_run_loop_asm, 8
     ENTRIES run_inside_entries, fast_run_inside, 8
     ENTRIES run_doubled_entries, fast_run_doubled, 8

@@ -171,6 +171,32 @@ inline int walk_triangle(FastTriangleArgs* t) {
 [[gnu::noinline, gnu::cold]] void run_wrapping(const DrawContext& c, const FastRunArgs& a) {
     emit(c.stats->probe, c.stats, 0, 0, [&] { fast_run_loop_wrapping(a, c.tex); });
 }
+// The next call's lines for a run loop (FastRunArgs' rows, FastColumnRunArgs' columns): the walker's
+// next run and the one right after it where one follows at once (a triangle's two), or a line with
+// a vertex on its centre (two live bounds on a side) as a run of one between the constant bounds
+// lone[0] and lone[1]; its first line into *line; false when the walk is done.
+template <Axis AXIS, typename Args>
+[[gnu::always_inline]] inline bool next_runs(EdgeWalker& walker, Args& a, int32_t* line, EdgeBound lone[2]) {
+    a.lines = walker.run(line, &a.lower, &a.upper);
+    a.next_lines = 0;
+    if (a.lines > 0) {
+        walker.skip(a.lines);
+        int32_t next_line;  // (line + a.lines: runs are contiguous)
+        a.next_lines = walker.run(&next_line, &a.next_lower, &a.next_upper);
+        walker.skip(a.next_lines);
+        return true;
+    }
+    Span span;
+    if (!walker.next(&span)) return false;
+    const int32_t across = AXIS == Axis::Rows ? span.x : span.y;
+    lone[0] = EdgeBound::constant(across);
+    lone[1] = EdgeBound::constant(across + span.count - 1);
+    a.lower = &lone[0], a.upper = &lone[1];
+    a.lines = 1;
+    *line = AXIS == Axis::Rows ? span.y : span.x;
+    return true;
+}
+
 template <bool DOUBLED>
 [[gnu::always_inline]] inline void run(const DrawContext& c, const FastRunArgs& a) {
     if (DOUBLED && a.doubled == 2) run_wrapping(c, a);
@@ -257,26 +283,9 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-affine on a textur
         a.du_16_16 = int32_t(p.udx);
         a.dv_16_16 = int32_t(p.vdx);
         a.inside = inside_columns(s, c.target.clip);
-        for (;;) {
-            int32_t line, next_line;  // (next_line: line + a.lines, runs being contiguous; run() writes it)
-            EdgeBound lone_lower, lone_upper;
-            a.lines = walker.run(&line, &a.lower, &a.upper);
-            a.next_lines = 0;
-            if (a.lines > 0) {
-                walker.skip(a.lines);
-                // the run after it, where one follows at once, in the same call (a triangle's two)
-                a.next_lines = walker.run(&next_line, &a.next_lower, &a.next_upper);
-                walker.skip(a.next_lines);
-            } else {
-                Span span;
-                if (!walker.next(&span)) break;
-                lone_lower = EdgeBound::constant(span.x);
-                lone_upper = EdgeBound::constant(span.x + span.count - 1);
-                a.lower = &lone_lower;
-                a.upper = &lone_upper;
-                a.lines = 1;
-                line = span.y;
-            }
+        int32_t line;
+        EdgeBound lone[2];
+        while (next_runs<Axis::Rows>(walker, a, &line, lone)) {
             a.row = c.target.base + line * c.target.pitch;
             a.u_16_16 = p.u(table_x, line) - u_base;  // (fast-affine: at pixel 0)
             a.v_16_16 = p.v(table_x, line) - v_base;
@@ -348,12 +357,32 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
         a.du_16_16 = int32_t(p.udy);
         a.dv_16_16 = int32_t(p.vdy);
     }
-    // fast-columns on the tiled block: its NASM loop entered past the block's test (3 instructions a
-    // column: the mesh's columns of a pixel or two paid 1.2% of their draw for it)
-    LoopFn loop = c.loop;
+    if constexpr (!TABLE && !DOUBLED) {
+        // fast-columns on the tiled block: by runs of columns, each run walked and drawn by one call
+        // (fast_column_run, its NASM loop where the context's loop is NASM), two runs a call where
+        // the second follows at once; a column with a vertex on its centre (two live bounds on a
+        // side) as a run of one between constant bounds
+        LoopFn run_loop = fast_column_run;
 #if defined(MODEXLAB_ASM_LOOPS)
-    if (!TABLE && !DOUBLED && loop == fast_column_loop_asm) loop = fast_column_tiled_asm;
+        if (c.loop == fast_column_loop_asm) run_loop = fast_column_run_asm;
 #endif
+        FastColumnRunArgs r;
+        uint32_t drawn[2] = {0, 0};  // columns, pixels
+        r.target = &c.target;
+        r.clip_lo = walker.minor_lo(), r.clip_hi = walker.minor_hi();
+        r.texture = c.tex.aligned256;
+        r.u_column_16_16 = p.udx, r.v_column_16_16 = p.vdx;
+        r.du_16_16 = int32_t(p.udy), r.dv_16_16 = int32_t(p.vdy);
+        r.tally = drawn;
+        EdgeBound lone[2];
+        while (next_runs<Axis::Columns>(walker, r, &r.x, lone)) {
+            r.u_16_16 = p.u(r.x, 0), r.v_16_16 = p.v(r.x, 0);
+            emit(c.stats->probe, c.stats, 0, 0, [&] { run_loop(&r); });
+        }
+        tally(c.stats, drawn[0], drawn[1]);
+        return SetupStatus::Ok;
+    }
+    LoopFn loop = c.loop;
     uint32_t spans = 0, pixels = 0;
     Span span;
     while (walker.next(&span)) {
@@ -442,6 +471,23 @@ namespace raster {
 
 namespace {
 
+// The lines of a run, and of the next one where there is one, as the NASM run loops walk them
+// (rows: FastRunArgs; columns: FastColumnRunArgs): each line's two bounds stepped in place and its
+// span clipped and tallied; line(lo, hi) for every line in order, lo > hi where it is empty.
+template <typename Args, typename Line>
+void walk_lines(const Args& a, Line&& line) {
+    if (a.lines <= 0) return;
+    EdgeBound *lower = a.lower, *upper = a.upper;
+    for (int32_t lines = a.lines, part = 0; part < 2; ++part, lines = a.next_lines, lower = a.next_lower, upper = a.next_upper)
+        for (int32_t n = 0; n < lines; ++n) {
+            const int32_t lo = lower->q > a.clip_lo ? lower->q : a.clip_lo, hi = upper->q < a.clip_hi ? upper->q : a.clip_hi;
+            lower->step();
+            upper->step();
+            if (lo <= hi) a.tally[0] += 1, a.tally[1] += uint32_t(hi - lo + 1);
+            line(lo, hi);
+        }
+}
+
 // The rows of a run, and of the next one where there is one, as both run loops walk them:
 // span(row, lo, hi, u, v) draws pixels lo..hi of a non-empty row, u and v (16.16) the row's as
 // FastRunArgs gives them.
@@ -449,24 +495,12 @@ template <typename Span>
 void run_rows(const FastRunArgs& a, Span&& span) {
     uint8_t* row = a.row;
     uint32_t u = a.u_16_16, v = a.v_16_16;
-    if (a.lines <= 0) return;
-    EdgeBound *lower = a.lower, *upper = a.upper;
-    for (int32_t lines = a.lines, part = 0; part < 2; ++part, lines = a.next_lines, lower = a.next_lower, upper = a.next_upper) {
-        for (int32_t n = 0; n < lines; ++n) {
-            int32_t lo = lower->q > a.clip_lo ? lower->q : a.clip_lo;
-            int32_t hi = upper->q < a.clip_hi ? upper->q : a.clip_hi;
-            lower->step();
-            upper->step();
-            if (lo <= hi) {
-                span(row, lo, hi, u, v);
-                a.tally[0] += 1;
-                a.tally[1] += uint32_t(hi - lo + 1);
-            }
-            row += a.pitch;
-            u += a.u_row_16_16;
-            v += a.v_row_16_16;
-        }
-    }
+    walk_lines(a, [&](int32_t lo, int32_t hi) {
+        if (lo <= hi) span(row, lo, hi, u, v);
+        row += a.pitch;
+        u += a.u_row_16_16;
+        v += a.v_row_16_16;
+    });
 }
 
 }  // namespace
@@ -570,6 +604,28 @@ void fast_table_loop(const void* raw) {
 void fast_table_column_loop(const void* raw) {
     const auto& a = *static_cast<const FastTableColumnArgs*>(raw);
     for (int32_t n = 0; n < a.count; ++n) a.dst[n * MODEX_ROW_BYTES] = a.source[a.table[n]];
+}
+
+void fast_column_run(const void* raw) {
+    const auto& a = *static_cast<const FastColumnRunArgs*>(raw);
+    const Target& t = *a.target;
+    int32_t x = a.x;
+    uint32_t u = a.u_16_16, v = a.v_16_16;
+    walk_lines(a, [&](int32_t lo, int32_t hi) {
+        if (lo <= hi) {
+            if (t.select_plane) t.select_plane(t.ctx, x & 3);
+            uint8_t* dst = t.base + (x & 3) * t.plane_bytes + lo * MODEX_ROW_BYTES + (x >> 2);
+            uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
+            for (int32_t y = lo; y <= hi; ++y, dst += MODEX_ROW_BYTES) {
+                *dst = texel256(a.texture, su, sv);
+                su += uint32_t(a.du_16_16);
+                sv += uint32_t(a.dv_16_16);
+            }
+        }
+        ++x;
+        u += a.u_column_16_16;
+        v += a.v_column_16_16;
+    });
 }
 
 void fast_column_loop(const void* raw) {
@@ -810,7 +866,9 @@ void fast_offsets() {
     ASM_SIZE(EDGE_SIZE, Edge);
     ASM_FIELDS(TRI, TriangleRowsArgs, edges, first, last, origin_x, origin_y, lower, upper)
     ASM_FIELDS(FTRI, FastTriangleArgs, in, setup, run, target, lower, upper)
-    ASM_FIELDS(TGT, Target, base, pitch, clip)
+    ASM_FIELDS(TGT, Target, base, pitch, clip, plane_bytes, select_plane, ctx)
+    ASM_FIELDS(CRUN, FastColumnRunArgs, target, x, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16,
+               v_16_16, u_column_16_16, v_column_16_16, du_16_16, dv_16_16, tally)
     ASM_FIELDS(CLIP, ClipRect, x0, y0, x1, y1)
     ASM_FIELDS(VERT, Vertex, x, y, u, v)
     ASM_SIZE(VERT_SIZE, Vertex);

@@ -113,6 +113,29 @@ struct FastColumnArgs {
     int32_t block_pitch;
 };
 void fast_column_loop(const void* args);
+// fast-columns' run of columns on the tiled block (fast_column_run_asm, twin fast_column_run): the
+// columns between two vertices of a polygon, x, x + 1, ..., each with its two edge bounds stepped in
+// place and its span clipped, as fast_run_loop walks rows, then next_lines columns more between the
+// next bounds; each column's pixels through the 8:16 column core into the Mode X planar target,
+// pixel (x, y) at base + (x & 3) * plane_bytes + y * 80 + x / 4, its plane selected first where the
+// target selects planes (the VGA's map mask: select_plane).
+struct FastColumnRunArgs {
+    const Target* target;             // planar: base, plane_bytes, select_plane and ctx
+    int32_t x;                        // the first column
+    int32_t lines;                    // its columns, >= 1
+    int32_t clip_lo, clip_hi;         // the clip's rows, inclusive
+    EdgeBound* lower;                 // stepped in place, once a column
+    EdgeBound* upper;
+    int32_t next_lines;               // then as many columns more (0 or less: none) between these
+    EdgeBound* next_lower;
+    EdgeBound* next_upper;
+    const uint8_t* texture;           // tiled over 256 x 256, aligned to 64 KiB
+    uint32_t u_16_16, v_16_16;        // at the first column's pixel 0 (row 0)
+    uint32_t u_column_16_16, v_column_16_16;  // their change from column to column
+    int32_t du_16_16, dv_16_16;       // per pixel down a column
+    uint32_t* tally;                  // tally[0] += the columns drawn, tally[1] += their pixels
+};
+void fast_column_run(const void* args);
 // fast-table-columns: a Mode X column through the polygon's offset table along y (as fast-table's
 // rows along x): pixel n, 80 bytes after pixel n - 1, is source[table[n]], source the column's first
 // texel in the table block; fatmap-lut's block (the same reading, its stride a row of a plane).
@@ -130,7 +153,7 @@ extern "C" {
 void fast_run_loop_asm(const void* args);
 void fast_table_loop_asm(const void* args);
 void fast_column_loop_asm(const void* args);
-void fast_column_tiled_asm(const void* args);  // the same where block_pitch is 0, not testing it
+void fast_column_run_asm(const void* args);
 void fast_table_column_loop_asm(const void* args);
 }
 
