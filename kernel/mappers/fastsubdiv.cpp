@@ -21,7 +21,6 @@ void exact_16_16(const FastSubdivArgs& a, int32_t k, uint32_t* u, uint32_t* v) {
 
 constexpr int log2(int n) { return n > 1 ? 1 + log2(n / 2) : 0; }
 
-
 }  // namespace
 
 void fast_subdiv_loop(const void* raw) {
