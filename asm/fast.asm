@@ -10,8 +10,10 @@
 ;                                        table (twin: fast_table_loop): two loads a pixel, one word
 ;                                        store a pair, sixteen pairs a block; from the tiled block or
 ;                                        a doubled copy (textures above 256 a side);
-;   fast_column_loop_asm (fast-columns): one Mode X column (twin: fast_column_loop): eight pixels a
-;                                        block, each stored alone (they lie 80 bytes apart);
+;   fast_column_run_asm (fast-columns):  a run of Mode X columns, the edge walking included (twin:
+;                                        fast_column_run): eight pixels a block, each stored alone
+;                                        (they lie 80 bytes apart); on a doubled copy the texel
+;                                        pointer a pixel at a time;
 ;   fast_table_column_loop_asm (fast-table-columns): one column through the offset table (twin:
 ;                                        fast_table_column_loop): a load, a load and a store a pixel.
 ;   The core, its registers and its blocks: asm/core816.inc; [esp]: the entry point.
@@ -44,93 +46,54 @@ section .text
     add %5, [%1 + %2_block_pitch]
     mov [esp + %4], %5
 %endmacro
-; The column loops' entry: the frame (%3 bytes, 4 unless given), the block (eax), its pixel count
-; (ecx) and destination (edi) from the fields %1_count and %1_dst (.done: no pixels); then the
-; computed entry into blocks of eight pixels for them: the first block starts at pixel j = (-count)
-; mod 8 (left in edx), so the destination moves j rows back and [esp] takes entry j of the table
-; %2; ecx: the blocks, the first one partial.
-%macro COLUMN_ENTER 2-3 4
-    LOOP_ENTER %3
-    mov eax, LOOP_ARG(%3)
-    mov ecx, [eax + %1_count]
-    test ecx, ecx
-    jle .done
-    mov edi, [eax + %1_dst]
+; The computed entry into blocks of eight column pixels for ecx pixels from edi: the first block
+; starts at pixel j = (-pixels) mod 8 (left in edx), so the destination moves j rows back and
+; [esp + %2] takes entry j of the table %1; ecx: the blocks, the first one partial (ebx clobbered).
+%macro COLUMN_BLOCKS_ENTRY 2
     mov edx, ecx
     neg edx
     and edx, 7
     imul ebx, edx, MODEX_ROW_BYTES
     sub edi, ebx
-    mov ebx, [%2 + edx * 4]
-    mov [esp], ebx
+    mov ebx, [%1 + edx * 4]
+    mov [esp + %2], ebx
     add ecx, 7
     shr ecx, 3
 %endmacro
+; The column loop's entry: a frame of the entry alone, the block (eax), its pixel count (ecx) and
+; destination (edi) from the fields %1_count and %1_dst (.done: no pixels); then the computed entry
+; through the table %2 into [esp].
+%macro COLUMN_ENTER 2
+    LOOP_ENTER 4
+    mov eax, LOOP_ARG(4)
+    mov ecx, [eax + %1_count]
+    test ecx, ecx
+    jle .done
+    mov edi, [eax + %1_dst]
+    COLUMN_BLOCKS_ENTRY %2, 0
+%endmacro
 
-; fast_column_loop_asm: one column, pixels MODEX_ROW_BYTES apart; the map mask is the caller's. From
-; the tiled block (FCOL_block_pitch 0), or a doubled copy (fast_column_doubled). (fast-columns'
-; driver draws the tiled block's columns by runs: fast_column_run_asm.)
-global fast_column_loop_asm
-fast_column_loop_asm:
-    mov eax, [esp + 4]
-    cmp dword [eax + FCOL_block_pitch], 0
-    jne fast_column_doubled
-    COLUMN_ENTER FCOL, column_entries
-    mov ebx, [eax + FCOL_texture]
-    mov bl, [eax + FCOL_u_16_16 + 2]
-    mov bh, [eax + FCOL_v_16_16 + 2]
-    mov edx, [eax + FCOL_v_16_16]
-    shl edx, 16
-    mov dl, [eax + FCOL_du_16_16 + 2]
-    mov dh, [eax + FCOL_dv_16_16 + 2]
-    mov esi, [eax + FCOL_du_16_16]
-    shl esi, 16
-    mov ebp, [eax + FCOL_dv_16_16]
-    shl ebp, 16
-    mov eax, [eax + FCOL_u_16_16]
-    shl eax, 16
-    jmp [esp]
-    BLOCKS MODEX_ROW_BYTES
-.done:
-    LOOP_LEAVE 4
-
-; fast_column_loop_asm on a doubled copy (FCOL_block_pitch its pitch): the column's texels through a
-; pointer into it, stepped as fast_run_loop_asm's doubled rows step theirs (DPAIR), a pixel at a
-; time, eight a block.
-C_DVF     equ 4                         ; dv fraction (high half)
-C_DSTEP   equ 8                         ; the pointer's step a pixel, with a carry from v (a row more)
-C_DSTEP0  equ 12                        ; and without
-C_BLOCKS  equ 16                        ; the blocks left
-C_FRAME   equ 20
-%macro DCOL_PIXEL 1                     ; %1: the pixel's offset within the block
+; A column's pixels on a doubled copy: blocks of eight, the frame's slot %3 of them, entered at .e0
+; to .e7 (%1 and %2: the slots DOUBLED_STEP reads).
+%macro DCOL_PIXEL 3                     ; %1: the pixel's offset within the block
     mov al, [esi]
-    DOUBLED_STEP C_DVF, C_DSTEP0
+    DOUBLED_STEP %2, %3
     mov [edi + %1], al
 %endmacro
-fast_column_doubled:
-    COLUMN_ENTER FCOL, column_doubled_entries, C_FRAME
-    mov [esp + C_BLOCKS], ecx
-    DOUBLED_TEXEL [eax + FCOL_v_16_16], [eax + FCOL_u_16_16], [eax + FCOL_block_pitch], [eax + FCOL_texture], ebx
-    DOUBLED_STEPS eax, FCOL, C_DVF, C_DSTEP, ebx
-    mov edx, [eax + FCOL_v_16_16]
-    shl edx, 16                         ; v fraction
-    mov ebx, [eax + FCOL_u_16_16]
-    shl ebx, 16                         ; u fraction
-    jmp [esp]
+%macro DCOL_BLOCKS 3
 .block:
-.e0: DCOL_PIXEL 0
-.e1: DCOL_PIXEL MODEX_ROW_BYTES
-.e2: DCOL_PIXEL 2 * MODEX_ROW_BYTES
-.e3: DCOL_PIXEL 3 * MODEX_ROW_BYTES
-.e4: DCOL_PIXEL 4 * MODEX_ROW_BYTES
-.e5: DCOL_PIXEL 5 * MODEX_ROW_BYTES
-.e6: DCOL_PIXEL 6 * MODEX_ROW_BYTES
-.e7: DCOL_PIXEL 7 * MODEX_ROW_BYTES
+.e0: DCOL_PIXEL 0, %1, %2
+.e1: DCOL_PIXEL MODEX_ROW_BYTES, %1, %2
+.e2: DCOL_PIXEL 2 * MODEX_ROW_BYTES, %1, %2
+.e3: DCOL_PIXEL 3 * MODEX_ROW_BYTES, %1, %2
+.e4: DCOL_PIXEL 4 * MODEX_ROW_BYTES, %1, %2
+.e5: DCOL_PIXEL 5 * MODEX_ROW_BYTES, %1, %2
+.e6: DCOL_PIXEL 6 * MODEX_ROW_BYTES, %1, %2
+.e7: DCOL_PIXEL 7 * MODEX_ROW_BYTES, %1, %2
     add edi, 8 * MODEX_ROW_BYTES
-    dec dword [esp + C_BLOCKS]
+    dec dword [esp + %3]
     jnz .block
-.done:
-    LOOP_LEAVE C_FRAME
+%endmacro
 
 ; fast_table_column_loop_asm: one Mode X column through the polygon's offset table (twin:
 ; fast_table_column_loop): pixel n is [esi + table[n]], eight pixels a block, each stored alone.
@@ -398,14 +361,11 @@ K_DU      equ L_FRAME + 4               ; u's and v's steps down a column
 K_DV      equ L_FRAME + 8
 K_BASE    equ L_FRAME + 12              ; the target's
 K_PLANE   equ L_FRAME + 16              ; bytes from a plane to the next (0: the VGA's map mask picks it)
-K_FRAME   equ L_FRAME + 20
-global fast_column_run_asm
-fast_column_run_asm:
-    RUN_ENTER CRUN, K_FRAME, CRUN_x, K_X
-    FRAME_COPY ecx, CRUN_du_16_16, K_DU, CRUN_dv_16_16, K_DV, CRUN_texture, L_TEXTURE
-    mov edx, [ecx + CRUN_target]
-    FRAME_COPY edx, TGT_base, K_BASE, TGT_plane_bytes, K_PLANE
-    CORE_STEPS CRUN
+K_PITCH   equ L_FRAME + 20              ; the doubled copy's bytes a row (0: the tiled block)
+K_FRAME   equ L_FRAME + 24
+; The columns from .row: %1 tiled (the 8:16 column core) or doubled (the copy's texel pointer), the
+; first block entered through the table %2; then the frame freed.
+%macro COLUMN_RUN 2
 .row:                                   ; a column; ecx: the block
     ROW_HEAD 1, CRUN
     mov ebx, [ecx + CRUN_target]
@@ -431,24 +391,25 @@ fast_column_run_asm:
     lea ebx, [eax + eax * 4]
     shl ebx, 4                          ; the first pixel's row * 80
     lea edi, [edx + ebx]                ; its address
-    mov edx, ecx                        ; the blocks: the first starts at pixel j = (-pixels) mod 8
-    neg edx
-    and edx, 7
-    imul ebx, edx, MODEX_ROW_BYTES
-    sub edi, ebx                        ; (j rows back)
-    mov edx, [column_run_entries + edx * 4]
-    mov [esp + L_ENTRY], edx
-    add ecx, 7
-    shr ecx, 3
+    COLUMN_BLOCKS_ENTRY %2, L_ENTRY
     mov ebx, eax
     imul ebx, [esp + K_DU]
     add ebx, [esp + L_U]                ; u at the first pixel
     imul eax, [esp + K_DV]
     add eax, [esp + L_V]
     mov edx, eax                        ; v at the first pixel
+%ifidn %1, tiled
     CORE_START
     jmp [esp + L_ENTRY]
     BLOCKS MODEX_ROW_BYTES
+%else
+    mov [esp + L_BLOCKS], ecx
+    DOUBLED_TEXEL edx, ebx, [esp + K_PITCH], [esp + L_TEXTURE], ecx
+    shl ebx, 16                         ; u fraction
+    shl edx, 16                         ; v fraction
+    jmp [esp + L_ENTRY]
+    DCOL_BLOCKS L_DVF, L_DSTEP0, L_BLOCKS
+%endif
 .next_row:                              ; the next column
     mov ecx, [esp + L_ARGS]
     mov eax, [ecx + CRUN_u_column_16_16]
@@ -459,6 +420,22 @@ fast_column_run_asm:
     RUN_NEXT CRUN
 .done:
     LOOP_LEAVE K_FRAME
+%endmacro
+
+global fast_column_run_asm
+fast_column_run_asm:
+    RUN_ENTER CRUN, K_FRAME, CRUN_x, K_X
+    FRAME_COPY ecx, CRUN_du_16_16, K_DU, CRUN_dv_16_16, K_DV, CRUN_texture, L_TEXTURE, CRUN_block_pitch, K_PITCH
+    mov edx, [ecx + CRUN_target]
+    FRAME_COPY edx, TGT_base, K_BASE, TGT_plane_bytes, K_PLANE
+    cmp dword [ecx + CRUN_block_pitch], 0
+    jne fast_column_run_doubled
+    CORE_STEPS CRUN
+    COLUMN_RUN tiled, column_run_entries
+; on a doubled copy (CRUN_block_pitch its pitch): ebp the du fraction, the frame the pointer's steps
+fast_column_run_doubled:
+    DOUBLED_STEPS ecx, CRUN, L_DVF, L_DSTEP, eax
+    COLUMN_RUN doubled, column_run_doubled_entries
 
 ; fast_table_loop_asm: fast-table's run of rows (twin: fast_table_loop): the rows walked as
 ; fast_run_loop_asm walks them, each row's pixel x read through the polygon's offset table, table[x],
@@ -564,9 +541,8 @@ fast_table_doubled_inside:
 
 section .rodata
 align 4
-    ENTRIES column_entries, fast_column_loop_asm, 8
-    ENTRIES column_doubled_entries, fast_column_doubled, 8
     ENTRIES column_run_entries, fast_column_run_asm, 8
+    ENTRIES column_run_doubled_entries, fast_column_run_doubled, 8
     ENTRIES run_entries, fast_run_loop_asm, 8
     ENTRIES run_inside_entries, fast_run_inside, 8
     ENTRIES run_doubled_entries, fast_run_doubled, 8

@@ -316,19 +316,11 @@ SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int co
 
 namespace {
 
-template <bool TABLE>
-struct ColumnArgsOf {
-    using type = FastColumnArgs;
-};
-template <>
-struct ColumnArgsOf<true> {
-    using type = FastTableColumnArgs;
-};
-
-// Columns: the walker's spans, one loop call each (the map mask set once a column): fast_column_loop
-// from each column's u and v (on a doubled copy from its window's corner; where the polygon spans
-// more than a window, wrapping_pixels), or (fast-table-columns) fast_table_column_loop from its
-// first texel through the polygon's offset table along y, built once for its tallest column.
+// Columns: fast-columns by runs of columns (fast_column_run: on a doubled copy from its window's
+// corner; where the polygon spans more than a window, a column at a time by wrapping_pixels), or
+// fast-table-columns a column a call (the map mask set once a column), fast_table_column_loop
+// from its first texel through the polygon's offset table along y, built once for its tallest
+// column.
 template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
 [[gnu::always_inline]] inline SetupStatus draw_column_spans(const DrawContext& c, const Vertex* vertices, int count) {
     PolygonSetup own;
@@ -348,63 +340,49 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
         offset_table(int32_t(p.udy), int32_t(p.vdy), box < height ? box : height, table, c.tex);
     }
     setup_done(c);
-    typename ColumnArgsOf<TABLE>::type a;
-    if constexpr (TABLE) {
-        a.table = table;
-    } else {
-        a.texture = DOUBLED ? c.tex.doubled : c.tex.aligned256;
-        a.block_pitch = DOUBLED ? doubled_pitch(c.tex.width) : 0;
-        a.du_16_16 = int32_t(p.udy);
-        a.dv_16_16 = int32_t(p.vdy);
-    }
-    if constexpr (!TABLE && !DOUBLED) {
-        // fast-columns on the tiled block: by runs of columns, each run walked and drawn by one call
-        // (fast_column_run, its NASM loop where the context's loop is NASM), two runs a call where
-        // the second follows at once; a column with a vertex on its centre (two live bounds on a
-        // side) as a run of one between constant bounds
-        LoopFn run_loop = fast_column_run;
-#if defined(MODEXLAB_ASM_LOOPS)
-        if (c.loop == fast_column_loop_asm) run_loop = fast_column_run_asm;
-#endif
-        FastColumnRunArgs r;
-        uint32_t drawn[2] = {0, 0};  // columns, pixels
-        r.target = &c.target;
-        r.clip_lo = walker.minor_lo(), r.clip_hi = walker.minor_hi();
-        r.texture = c.tex.aligned256;
-        r.u_column_16_16 = p.udx, r.v_column_16_16 = p.vdx;
-        r.du_16_16 = int32_t(p.udy), r.dv_16_16 = int32_t(p.vdy);
-        r.tally = drawn;
-        EdgeBound lone[2];
-        while (next_runs<Axis::Columns>(walker, r, &r.x, lone)) {
-            r.u_16_16 = p.u(r.x, 0), r.v_16_16 = p.v(r.x, 0);
-            emit(c.stats->probe, c.stats, 0, 0, [&] { run_loop(&r); });
+    if constexpr (!TABLE) {
+        if (!wrapping) {
+            // fast-columns: by runs of columns, each run walked and drawn by one call of the loop
+            // (fast_column_run), two runs a call where the second follows at once; a column with a
+            // vertex on its centre (two live bounds on a side) as a run of one between constant
+            // bounds
+            FastColumnRunArgs r;
+            uint32_t drawn[2] = {0, 0};  // columns, pixels
+            r.target = &c.target;
+            r.clip_lo = walker.minor_lo(), r.clip_hi = walker.minor_hi();
+            r.texture = DOUBLED ? c.tex.doubled : c.tex.aligned256;
+            r.block_pitch = DOUBLED ? doubled_pitch(c.tex.width) : 0;
+            r.u_column_16_16 = p.udx, r.v_column_16_16 = p.vdx;
+            r.du_16_16 = int32_t(p.udy), r.dv_16_16 = int32_t(p.vdy);
+            r.tally = drawn;
+            EdgeBound lone[2];
+            while (next_runs<Axis::Columns>(walker, r, &r.x, lone)) {
+                r.u_16_16 = p.u(r.x, 0) - u_base, r.v_16_16 = p.v(r.x, 0) - v_base;
+                emit(c, &r, 0, 0);
+            }
+            tally(c.stats, drawn[0], drawn[1]);
+            return SetupStatus::Ok;
         }
-        tally(c.stats, drawn[0], drawn[1]);
-        return SetupStatus::Ok;
     }
-    LoopFn loop = c.loop;
+    // fast-table-columns, and fast-columns' polygons that span more of a doubled copy than its
+    // window: a column a call
+    FastTableColumnArgs a;
+    a.table = table;
     uint32_t spans = 0, pixels = 0;
     Span span;
     while (walker.next(&span)) {
         int32_t stride;
-        a.dst = span_start(c.target, Axis::Columns, span, &stride);
-        a.count = span.count;
-        if constexpr (TABLE) {
-            const uint32_t u = p.u(span.x, span.y), v = p.v(span.x, span.y);
-            a.source = DOUBLED ? block.at(u, v) : c.tex.aligned256 + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));  // (the tiled block's by shifts)
-        } else {
-            a.u_16_16 = int32_t(p.u(span.x, span.y) - u_base);
-            a.v_16_16 = int32_t(p.v(span.x, span.y) - v_base);
-        }
+        uint8_t* dst = span_start(c.target, Axis::Columns, span, &stride);
+        const uint32_t u = p.u(span.x, span.y), v = p.v(span.x, span.y);
         // (counted once for the polygon)
         if constexpr (TABLE) {
+            a.dst = dst;
+            a.count = span.count;
+            a.source = DOUBLED ? block.at(u, v) : c.tex.aligned256 + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));  // (the tiled block's by shifts)
             emit(c, &a, 0, 0);
-        } else if (wrapping) {
-            emit(c.stats->probe, c.stats, 0, 0, [&] {
-                wrapping_pixels(c.tex, a.du_16_16, a.dv_16_16, uint32_t(a.u_16_16), uint32_t(a.v_16_16), a.dst, a.count, MODEX_ROW_BYTES);
-            });
         } else {
-            emit(c.stats->probe, c.stats, 0, 0, [&] { loop(&a); });
+            emit(c.stats->probe, c.stats, 0, 0,
+                 [&] { wrapping_pixels(c.tex, int32_t(p.udy), int32_t(p.vdy), u, v, dst, span.count, MODEX_ROW_BYTES); });
         }
         ++spans;
         pixels += uint32_t(span.count);
@@ -616,32 +594,20 @@ void fast_column_run(const void* raw) {
             if (t.select_plane) t.select_plane(t.ctx, x & 3);
             uint8_t* dst = t.base + (x & 3) * t.plane_bytes + lo * MODEX_ROW_BYTES + (x >> 2);
             uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
-            for (int32_t y = lo; y <= hi; ++y, dst += MODEX_ROW_BYTES) {
-                *dst = texel256(a.texture, su, sv);
-                su += uint32_t(a.du_16_16);
-                sv += uint32_t(a.dv_16_16);
+            if (a.block_pitch) {
+                doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, su, sv, dst, hi - lo + 1, MODEX_ROW_BYTES);
+            } else {
+                for (int32_t y = lo; y <= hi; ++y, dst += MODEX_ROW_BYTES) {
+                    *dst = texel256(a.texture, su, sv);
+                    su += uint32_t(a.du_16_16);
+                    sv += uint32_t(a.dv_16_16);
+                }
             }
         }
         ++x;
         u += a.u_column_16_16;
         v += a.v_column_16_16;
     });
-}
-
-void fast_column_loop(const void* raw) {
-    const auto& a = *static_cast<const FastColumnArgs*>(raw);
-    if (a.block_pitch) {
-        doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, uint32_t(a.u_16_16), uint32_t(a.v_16_16), a.dst, a.count, MODEX_ROW_BYTES);
-        return;
-    }
-    uint32_t u = uint32_t(a.u_16_16), v = uint32_t(a.v_16_16);
-    uint8_t* dst = a.dst;
-    for (int32_t n = 0; n < a.count; ++n) {
-        *dst = texel256(a.texture, u, v);
-        dst += MODEX_ROW_BYTES;
-        u += uint32_t(a.du_16_16);
-        v += uint32_t(a.dv_16_16);
-    }
 }
 
 namespace {
@@ -689,25 +655,6 @@ void random_doubled_uv(Random& r, Args& a) {
 
 }  // namespace
 
-// The loop's random cases (core/selftest.h): the tiled block, or a third of the time a doubled
-// copy's pitch with the walk inside the texels.
-LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
-    return check_cases<FastColumnArgs>(m, other, seed, cases, buf, [&](Random& r, FastColumnArgs& a) {
-        a.count = random_count(r, 0, 9, 240);
-        a.texture = check_aligned_texture(buf);
-        random_uv(r, a);
-        a.block_pitch = 0;
-        if (r.below(3) == 0) {
-            int32_t w, h;
-            random_doubled_sides(r, &w, &h);
-            a.texture = buf.texels;
-            a.block_pitch = doubled_pitch(w);
-            random_doubled_uv(r, a);
-        }
-        return place_span(buf, a, MODEX_ROW_BYTES);
-    });
-}
-
 // Columns of 0 to 240 pixels from a random texel of a table block, the table of random steps.
 LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
     return check_cases<TableColumnCase>(m, other, seed, cases, buf, [&](Random& r, TableColumnCase& c) {
@@ -726,12 +673,28 @@ LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, 
 
 namespace {
 
-// fast_run_loop's block (and fast_table_loop's) with the bounds and the tally it updates, which
-// must come out the same, and the offset table fast_table_loop reads.
-struct RunCase {
-    FastRunArgs args;
+// What a run loop updates, which must come out the same: its bounds and its tally.
+struct RunState {
     EdgeBound lower, upper, next_lower, next_upper;
     uint32_t tally[2];
+    // A run loop's block (FastRunArgs, FastColumnRunArgs) pointed at them, the tally cleared.
+    template <typename Args>
+    void attach(Args& a) {
+        a.lower = &lower, a.upper = &upper, a.next_lower = &next_lower, a.next_upper = &next_upper;
+        a.tally = tally;
+        tally[0] = tally[1] = 0;
+    }
+    bool same(const RunState& o) const {
+        auto same = [](const EdgeBound& x, const EdgeBound& y) { return x.q == y.q && x.r == y.r; };
+        return same(lower, o.lower) && same(upper, o.upper) && same(next_lower, o.next_lower) && same(next_upper, o.next_upper) &&
+               tally[0] == o.tally[0] && tally[1] == o.tally[1];
+    }
+};
+
+// fast_run_loop's block (and fast_table_loop's) with what it updates and the offset table
+// fast_table_loop reads.
+struct RunCase : RunState {
+    FastRunArgs args;
     int32_t table[TABLE_LIMIT];
 };
 
@@ -740,19 +703,13 @@ struct RunCase {
 template <>
 void move_to_b(RunCase& b, const RunCase& a, const CheckBuffers& buf) {
     b.args.row = buf.b + (a.args.row - buf.a);
-    b.args.lower = &b.lower;
-    b.args.upper = &b.upper;
-    b.args.next_lower = &b.next_lower;
-    b.args.next_upper = &b.next_upper;
-    b.args.tally = b.tally;
+    b.attach(b.args);
     b.args.table = b.table;
 }
 
 template <>
 bool same_results(const RunCase& a, const RunCase& b) {
-    auto same = [](const EdgeBound& x, const EdgeBound& y) { return x.q == y.q && x.r == y.r; };
-    return same(a.lower, b.lower) && same(a.upper, b.upper) && same(a.next_lower, b.next_lower) && same(a.next_upper, b.next_upper) &&
-           a.tally[0] == b.tally[0] && a.tally[1] == b.tally[1];
+    return a.same(b);
 }
 
 template <>
@@ -826,12 +783,7 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         } else if (m.twin == fast_run_loop) {
             a.texture = check_aligned_texture(buf);  // (the 8:16 core's tiled block)
         }
-        c.tally[0] = c.tally[1] = 0;
-        a.lower = &c.lower;
-        a.upper = &c.upper;
-        a.next_lower = &c.next_lower;
-        a.next_upper = &c.next_upper;
-        a.tally = c.tally;
+        c.attach(a);
         // (fast-table: the offsets from a pixel at or left of clip_lo to the pitch's end)
         const int32_t table_x = r.range(0, a.clip_lo);
         build_offset_table(a.du_16_16, a.dv_16_16, a.pitch - table_x, c.table + table_x, block);
@@ -853,10 +805,88 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
 }
 
 
+namespace {
+
+// fast_column_run's block with its target and what it updates.
+struct ColumnRunCase : RunState {
+    FastColumnRunArgs args;
+    Target target;
+};
+
+}  // namespace
+
+template <>
+void move_to_b(ColumnRunCase& b, const ColumnRunCase& a, const CheckBuffers& buf) {
+    b.target.base = buf.b + (a.target.base - buf.a);
+    b.args.target = &b.target;
+    b.attach(b.args);
+}
+
+template <>
+bool same_results(const ColumnRunCase& a, const ColumnRunCase& b) {
+    return a.same(b);
+}
+
+template <>
+const void* check_block(const ColumnRunCase& a) {
+    return &a.args;
+}
+
+// Runs of columns into a planar target in the check's buffer (four planes of PLANE_BYTES between
+// the guards; no plane selection: tests/asm/column_run_test.cpp calls a logged select_plane): one
+// or two runs from a random column, bounds through and out of a random clip (and constant, as the
+// driver's lone columns), steps of several texels; the tiled block, or a third of the time a
+// doubled copy's pitch with u and v such that the walk stays in the texels (random_doubled_uv, the
+// steps from column to column within a texel and a quarter).
+LoopCheck check_fast_column_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buf) {
+    return check_cases<ColumnRunCase>(m, other, seed, cases, buf, [&](Random& r, ColumnRunCase& c) {
+        FastColumnRunArgs& a = c.args;
+        c.target = planar_target(buf.a + CHECK_GUARD_BYTES);
+        a.clip_lo = r.range(0, SCREEN_HEIGHT - 1);
+        a.clip_hi = r.below(8) == 0 ? a.clip_lo - 1 : r.range(a.clip_lo, SCREEN_HEIGHT - 1);  // sometimes nothing
+        a.x = r.range(0, SCREEN_WIDTH - 1);
+        const int32_t room = SCREEN_WIDTH - a.x;
+        auto bound = [&] { return r.below(10) == 0 ? EdgeBound::constant(r.range(-20, SCREEN_HEIGHT + 20)) : random_bound(r, SCREEN_HEIGHT); };
+        c.lower = bound(), c.upper = bound();
+        if (r.below(2)) c.upper.q = c.lower.q + r.range(0, SCREEN_HEIGHT), c.upper.dq = c.lower.dq + r.range(-2, 2);  // a real-looking span
+        c.next_lower = bound(), c.next_upper = bound();
+        a.lines = r.below(8) == 0 ? r.range(0, 2) : r.range(1, room);
+        a.next_lines = r.below(2) ? 0 : r.range(-1, room - (a.lines > 0 ? a.lines : 0));
+        a.texture = check_aligned_texture(buf);
+        a.block_pitch = 0;
+        a.u_16_16 = r.next(), a.v_16_16 = r.next();
+        a.u_column_16_16 = r.below(4) ? uint32_t(r.range(-0x40000, 0x40000)) : r.next();
+        a.v_column_16_16 = r.below(4) ? uint32_t(r.range(-0x40000, 0x40000)) : r.next();
+        a.du_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        a.dv_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
+        if (r.below(3) == 0) {
+            int32_t w, h;
+            random_doubled_sides(r, &w, &h);
+            a.texture = buf.texels;
+            a.block_pitch = doubled_pitch(w);
+            random_doubled_uv(r, a);
+            a.u_column_16_16 = uint32_t(r.range(-0x10000, 0x10000));
+            a.v_column_16_16 = uint32_t(r.range(-0x4000, 0x4000));
+        }
+        a.target = &c.target;
+        c.attach(a);
+        uint32_t pixels = 0;  // what the columns will draw
+        auto count = [&](EdgeBound lo, EdgeBound hi, int32_t columns) {
+            for (int32_t n = 0; n < columns; ++n) {
+                const int32_t y0 = lo.q > a.clip_lo ? lo.q : a.clip_lo, y1 = hi.q < a.clip_hi ? hi.q : a.clip_hi;
+                if (y0 <= y1) pixels += uint32_t(y1 - y0 + 1);
+                lo.step();
+                hi.step();
+            }
+        };
+        if (a.lines > 0) count(c.lower, c.upper, a.lines), count(c.next_lower, c.next_upper, a.next_lines);
+        return CheckWindow{0, CHECK_GUARD_BYTES + 4 * size_t(PLANE_BYTES) + CHECK_GUARD_BYTES, pixels};
+    });
+}
+
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts asm/fast.asm reads (core/asm_offsets.h).
 void fast_offsets() {
-    ASM_FIELDS(FCOL, FastColumnArgs, dst, count, texture, u_16_16, v_16_16, du_16_16, dv_16_16, block_pitch)
     ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16, v_16_16,
                u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside, doubled, u_mask, v_mask, block_pitch)
@@ -867,7 +897,7 @@ void fast_offsets() {
     ASM_FIELDS(TRI, TriangleRowsArgs, edges, first, last, origin_x, origin_y, lower, upper)
     ASM_FIELDS(FTRI, FastTriangleArgs, in, setup, run, target, lower, upper)
     ASM_FIELDS(TGT, Target, base, pitch, clip, plane_bytes, select_plane, ctx)
-    ASM_FIELDS(CRUN, FastColumnRunArgs, target, x, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16,
+    ASM_FIELDS(CRUN, FastColumnRunArgs, target, x, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, block_pitch, u_16_16,
                v_16_16, u_column_16_16, v_column_16_16, du_16_16, dv_16_16, tally)
     ASM_FIELDS(CLIP, ClipRect, x0, y0, x1, y1)
     ASM_FIELDS(VERT, Vertex, x, y, u, v)

@@ -99,26 +99,16 @@ constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row:
 void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block);
 void fast_table_loop(const void* args);
 
-// fast-columns: the same arithmetic down a Mode X column, 80 bytes between pixels: fatmap's block
-// (the 8:16 loops' inputs) and the texture's block: the tiled one (block_pitch 0), or a doubled copy
-// (block_pitch its pitch; u and v from the polygon's window's corner, fast::doubled_window), read
-// through a texel pointer as fast_run_loop reads it.
+// fast-columns: the same arithmetic down Mode X columns, 80 bytes between pixels.
 constexpr int32_t MODEX_ROW_BYTES = 80;
-struct FastColumnArgs {
-    uint8_t* dst;  // count pixels down the column
-    int32_t count;
-    const uint8_t* texture;
-    int32_t u_16_16, v_16_16;
-    int32_t du_16_16, dv_16_16;  // per pixel
-    int32_t block_pitch;
-};
-void fast_column_loop(const void* args);
-// fast-columns' run of columns on the tiled block (fast_column_run_asm, twin fast_column_run): the
-// columns between two vertices of a polygon, x, x + 1, ..., each with its two edge bounds stepped in
-// place and its span clipped, as fast_run_loop walks rows, then next_lines columns more between the
-// next bounds; each column's pixels through the 8:16 column core into the Mode X planar target,
-// pixel (x, y) at base + (x & 3) * plane_bytes + y * 80 + x / 4, its plane selected first where the
-// target selects planes (the VGA's map mask: select_plane).
+// fast-columns' run of columns (fast_column_run_asm, twin fast_column_run): the columns between two
+// vertices of a polygon, x, x + 1, ..., each with its two edge bounds stepped in place and its span
+// clipped, as fast_run_loop walks rows, then next_lines columns more between the next bounds; each
+// column's pixels through the 8:16 column core (the tiled block) or the doubled copy's texel pointer
+// (block_pitch not 0: u and v from the polygon's window's corner, fast::doubled_window, read by a
+// texel pointer as fast_run_loop reads them)
+// into the Mode X planar target, pixel (x, y) at base + (x & 3) * plane_bytes + y * 80 + x / 4, its
+// plane selected first where the target selects planes (the VGA's map mask: select_plane).
 struct FastColumnRunArgs {
     const Target* target;             // planar: base, plane_bytes, select_plane and ctx
     int32_t x;                        // the first column
@@ -129,7 +119,8 @@ struct FastColumnRunArgs {
     int32_t next_lines;               // then as many columns more (0 or less: none) between these
     EdgeBound* next_lower;
     EdgeBound* next_upper;
-    const uint8_t* texture;           // tiled over 256 x 256, aligned to 64 KiB
+    const uint8_t* texture;           // tiled over 256 x 256, aligned to 64 KiB; or a doubled copy
+    int32_t block_pitch;              // 0: the tiled block; else the doubled copy's bytes a row
     uint32_t u_16_16, v_16_16;        // at the first column's pixel 0 (row 0)
     uint32_t u_column_16_16, v_column_16_16;  // their change from column to column
     int32_t du_16_16, dv_16_16;       // per pixel down a column
@@ -144,7 +135,8 @@ void fast_table_column_loop(const void* args);
 
 // fast_run_loop's and fast_table_loop's random cases (a run and the offset table of its steps)
 LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-LoopCheck check_fast_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+// fast_column_run's random cases (runs of columns into a planar target, the tiled block or a doubled copy)
+LoopCheck check_fast_column_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
 }  // namespace raster
@@ -152,7 +144,6 @@ LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, 
 extern "C" {
 void fast_run_loop_asm(const void* args);
 void fast_table_loop_asm(const void* args);
-void fast_column_loop_asm(const void* args);
 void fast_column_run_asm(const void* args);
 void fast_table_column_loop_asm(const void* args);
 }
