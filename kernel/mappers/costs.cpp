@@ -18,7 +18,7 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-4", 1011.0f, 1029.51f, 40.036f}, // 11 scenes
     {"fast-affine", 1052.9f, 109.17f, 5.136f}, // 11 scenes
     {"fast-table", 1249.1f, 96.66f, 2.061f}, // 11 scenes
-    {"fast-columns", 1126.9f, 176.61f, 5.221f}, // 11 scenes
+    {"fast-columns", 1125.6f, 177.62f, 4.966f}, // 11 scenes
     {"fast-table-columns", 1339.2f, 246.58f, 2.824f}, // 11 scenes
     {"fast-subdiv-8", 1011.0f, 298.99f, 14.042f}, // 11 scenes
     {"fast-subdiv-16", 1011.0f, 309.28f, 9.935f}, // 11 scenes
