@@ -528,41 +528,44 @@ void doubled_pixels(const uint8_t* texture, int32_t pitch, int32_t du, int32_t d
     }
 }
 
+// The 8:16 core's pixels on the tiled block, (u whole & 255, v whole & 255), as doubled_pixels'.
+void tiled_pixels(const uint8_t* block, int32_t du, int32_t dv, uint32_t u, uint32_t v, uint8_t* dst, int32_t count, int32_t stride) {
+    for (int32_t n = 0; n < count; ++n, dst += stride) {
+        *dst = texel256(block, u, v);
+        u += uint32_t(du);
+        v += uint32_t(dv);
+    }
+}
+
+// run_rows' spans as runs of pixels: draw(dst, count, u, v), u and v at the span's first pixel.
+template <typename Pixels>
+void run_row_pixels(const FastRunArgs& a, Pixels&& draw) {
+    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
+        draw(row + lo, hi - lo + 1, u + uint32_t(lo) * uint32_t(a.du_16_16), v + uint32_t(lo) * uint32_t(a.dv_16_16));
+    });
+}
+
 }  // namespace
 
 void fast_run_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
-    if (a.doubled) {
-        run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
-            const uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
-            doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, su, sv, row + lo, hi - lo + 1, 1);
-        });
-        return;
-    }
-    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
-        uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
-        for (int32_t x = lo; x <= hi; ++x) {
-            row[x] = texel256(a.texture, su, sv);
-            su += uint32_t(a.du_16_16);
-            sv += uint32_t(a.dv_16_16);
-        }
+    run_row_pixels(a, [&](uint8_t* dst, int32_t count, uint32_t u, uint32_t v) {
+        if (a.doubled) doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, u, v, dst, count, 1);
+        else tiled_pixels(a.texture, a.du_16_16, a.dv_16_16, u, v, dst, count, 1);
     });
 }
 
 void wrapping_pixels(const Texture& tex, int32_t du, int32_t dv, uint32_t u, uint32_t v, uint8_t* dst, int32_t count, int32_t stride) {
-    const uint32_t u_mask = uint32_t(tex.width - 1), v_mask = uint32_t(tex.height - 1);
+    const TableBlock texture{tex.texels, uint32_t(tex.width - 1), uint32_t(tex.height - 1), tex.width};  // (the texture itself, by masks)
     for (int32_t n = 0; n < count; ++n, dst += stride) {
-        *dst = tex.texels[((v >> 16) & v_mask) * uint32_t(tex.width) + ((u >> 16) & u_mask)];
+        *dst = *texture.at(u, v);
         u += uint32_t(du);
         v += uint32_t(dv);
     }
 }
 
 void fast_run_loop_wrapping(const FastRunArgs& a, const Texture& tex) {
-    run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
-        const uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
-        wrapping_pixels(tex, a.du_16_16, a.dv_16_16, su, sv, row + lo, hi - lo + 1, 1);
-    });
+    run_row_pixels(a, [&](uint8_t* dst, int32_t count, uint32_t u, uint32_t v) { wrapping_pixels(tex, a.du_16_16, a.dv_16_16, u, v, dst, count, 1); });
 }
 
 void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
@@ -593,16 +596,9 @@ void fast_column_run(const void* raw) {
         if (lo <= hi) {
             if (t.select_plane) t.select_plane(t.ctx, x & 3);
             uint8_t* dst = t.base + (x & 3) * t.plane_bytes + lo * MODEX_ROW_BYTES + (x >> 2);
-            uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
-            if (a.block_pitch) {
-                doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, su, sv, dst, hi - lo + 1, MODEX_ROW_BYTES);
-            } else {
-                for (int32_t y = lo; y <= hi; ++y, dst += MODEX_ROW_BYTES) {
-                    *dst = texel256(a.texture, su, sv);
-                    su += uint32_t(a.du_16_16);
-                    sv += uint32_t(a.dv_16_16);
-                }
-            }
+            const uint32_t su = u + uint32_t(lo) * uint32_t(a.du_16_16), sv = v + uint32_t(lo) * uint32_t(a.dv_16_16);  // at the first pixel
+            if (a.block_pitch) doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, su, sv, dst, hi - lo + 1, MODEX_ROW_BYTES);
+            else tiled_pixels(a.texture, a.du_16_16, a.dv_16_16, su, sv, dst, hi - lo + 1, MODEX_ROW_BYTES);
         }
         ++x;
         u += a.u_column_16_16;
@@ -683,6 +679,17 @@ struct RunState {
         a.lower = &lower, a.upper = &upper, a.next_lower = &next_lower, a.next_upper = &next_upper;
         a.tally = tally;
         tally[0] = tally[1] = 0;
+    }
+    // The lines a run loop given `a` walks and the pixels it draws, from copies of the bounds (as
+    // walk_lines walks them: the twins' walk).
+    template <typename Args>
+    uint32_t drawn(Args a, int32_t* lines) const {
+        RunState copy = *this;
+        copy.attach(a);
+        int32_t walked = 0;
+        walk_lines(a, [&](int32_t, int32_t) { ++walked; });
+        *lines = walked;
+        return copy.tally[1];
     }
     bool same(const RunState& o) const {
         auto same = [](const EdgeBound& x, const EdgeBound& y) { return x.q == y.q && x.r == y.r; };
@@ -789,17 +796,8 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         build_offset_table(a.du_16_16, a.dv_16_16, a.pitch - table_x, c.table + table_x, block);
         a.table = c.table;
         a.row = buf.a + CHECK_GUARD_BYTES;
-        uint32_t pixels = 0;  // what the rows will draw
-        int32_t lines = 0;
-        auto count = [&](EdgeBound lo, EdgeBound hi, int32_t rows) {
-            for (int32_t n = 0; n < rows; ++n, ++lines) {
-                int32_t x0 = lo.q > a.clip_lo ? lo.q : a.clip_lo, x1 = hi.q < a.clip_hi ? hi.q : a.clip_hi;
-                if (x0 <= x1) pixels += uint32_t(x1 - x0 + 1);
-                lo.step();
-                hi.step();
-            }
-        };
-        if (a.lines > 0) count(c.lower, c.upper, a.lines), count(c.next_lower, c.next_upper, a.next_lines);
+        int32_t lines;
+        const uint32_t pixels = c.drawn(a, &lines);  // what the rows will draw
         return CheckWindow{0, CHECK_GUARD_BYTES + size_t(lines) * size_t(a.pitch) + CHECK_GUARD_BYTES, pixels};
     });
 }
@@ -870,16 +868,8 @@ LoopCheck check_fast_column_run(const Mapper& m, LoopFn other, uint32_t seed, ui
         }
         a.target = &c.target;
         c.attach(a);
-        uint32_t pixels = 0;  // what the columns will draw
-        auto count = [&](EdgeBound lo, EdgeBound hi, int32_t columns) {
-            for (int32_t n = 0; n < columns; ++n) {
-                const int32_t y0 = lo.q > a.clip_lo ? lo.q : a.clip_lo, y1 = hi.q < a.clip_hi ? hi.q : a.clip_hi;
-                if (y0 <= y1) pixels += uint32_t(y1 - y0 + 1);
-                lo.step();
-                hi.step();
-            }
-        };
-        if (a.lines > 0) count(c.lower, c.upper, a.lines), count(c.next_lower, c.next_upper, a.next_lines);
+        int32_t lines;
+        const uint32_t pixels = c.drawn(a, &lines);  // what the columns will draw
         return CheckWindow{0, CHECK_GUARD_BYTES + 4 * size_t(PLANE_BYTES) + CHECK_GUARD_BYTES, pixels};
     });
 }
