@@ -8,8 +8,7 @@
 ;                                        the fractions' carries, as Quake's d_draw16.s steps its own;
 ;   fast_table_loop_asm (fast-table):    the same rows, each span read through the polygon's offset
 ;                                        table (twin: fast_table_loop): two loads a pixel, one word
-;                                        store a pair, sixteen pairs a block; from the tiled block or
-;                                        a doubled copy (textures above 256 a side);
+;                                        store a pair, sixteen pairs a block; from the doubled copy;
 ;   fast_column_run_asm (fast-columns):  a run of Mode X columns, the edge walking included (twin:
 ;                                        fast_column_run): eight pixels a block, each stored alone
 ;                                        (they lie 80 bytes apart); on a doubled copy the texel
@@ -454,11 +453,10 @@ fast_column_run_doubled:
 %endmacro
 
 ; fast_table_loop_asm's rows from .row, clipped (%1 = 1) or not (0), the pairs entered through the
-; table %2, from the tiled block (%3 = 0) or a doubled copy (1); then the frame freed.
-%macro TABLE_ROWS 3
+; table %2, from the doubled copy; then the frame freed.
+%macro TABLE_ROWS 2
 .row:
     ROW_HEAD %1
-%if %3
     ; (a dword from a value's whole, its high half: the masks, below 65536, keep the whole's bits)
     mov esi, [esp + L_V + 2]
     and esi, [ecx + RUN_v_mask]
@@ -467,12 +465,6 @@ fast_column_run_doubled:
     and ebx, [ecx + RUN_u_mask]
     add esi, ebx
     add esi, [ecx + RUN_texture]        ; the texel of the table's first pixel
-%else
-    mov ebx, [ecx + RUN_texture]        ; (64 KiB-aligned: its low half 0)
-    mov bl, [esp + L_U + 2]             ; u whole & 255
-    mov bh, [esp + L_V + 2]             ; v whole & 255
-    mov esi, ebx                        ; the texel of the table's first pixel
-%endif
     mov ebp, [ecx + RUN_table]
     lea ebp, [ebp + eax * 4]            ; the span's first pixel's offset
     add eax, [esp + L_ROW]              ; its address
@@ -524,20 +516,11 @@ fast_column_run_doubled:
 global fast_table_loop_asm
 fast_table_loop_asm:
     RUN_ENTER
-    cmp dword [ecx + RUN_doubled], 0
-    jne fast_table_doubled
     cmp dword [ecx + RUN_inside], 0
     jne fast_table_inside.row
-    TABLE_ROWS 1, table_entries, 0
+    TABLE_ROWS 1, table_entries
 fast_table_inside:
-    TABLE_ROWS 0, table_inside_entries, 0
-; the same from a doubled copy (RUN_doubled), clipped or not (labels of their own)
-fast_table_doubled:
-    cmp dword [ecx + RUN_inside], 0
-    jne fast_table_doubled_inside.row
-    TABLE_ROWS 1, table_doubled_entries, 1
-fast_table_doubled_inside:
-    TABLE_ROWS 0, table_doubled_inside_entries, 1
+    TABLE_ROWS 0, table_inside_entries
 
 section .rodata
 align 4
@@ -550,8 +533,6 @@ align 4
     ENTRIES table_column_entries, fast_table_column_loop_asm, 8
     ENTRIES table_entries, fast_table_loop_asm, 16
     ENTRIES table_inside_entries, fast_table_inside, 16
-    ENTRIES table_doubled_entries, fast_table_doubled, 16
-    ENTRIES table_doubled_inside_entries, fast_table_doubled_inside, 16
 
 section .text
 

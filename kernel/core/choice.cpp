@@ -69,7 +69,7 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
     constinit static Candidates cache[256];
     // (mapper_accepts' needs: the copies, and the wrap for NEED_POW2_REPEAT)
     const bool whole256 = texture_aligned256(tex), any_wrap = texture_tiled256_any_wrap(tex), repeat = tex.wrap == Wrap::Repeat;
-    const bool doubled = texture_pow2_any_wrap(tex) && !any_wrap;
+    const bool doubled = tex.doubled != nullptr;
     const bool exact_coverage = budget.exact_coverage, no_error = budget.max_error == 0;
     Candidates& c = cache[(tex.bordered ? 1 : 0) | (whole256 ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0) | (no_error ? 16 : 0) |
                           (doubled ? 32 : 0) | (any_wrap ? 64 : 0) | (repeat ? 128 : 0)];

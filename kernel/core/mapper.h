@@ -42,8 +42,9 @@ enum Need : uint32_t {
     // texture coordinates lie inside the texture (the mapper refuses the others: texture_inside)
     NEED_TILED256_OR_INSIDE = 1 << 6,
     // the same with sides powers of two up to 1024, those above 256 read from the doubled copy
-    // (Texture::doubled: fast-table's offsets)
+    // (Texture::doubled)
     NEED_POW2_OR_INSIDE = 1 << 7,
+    NEED_DOUBLED = 1 << 8,  // the texture's doubled copy (Texture::doubled: fast-table's offsets)
 };
 // Each need's name (the `mappers` reply) and its words (error messages), in one table.
 struct NeedName {
@@ -143,7 +144,6 @@ struct Guarantee {
 };
 constexpr Guarantee EQUALS_REFERENCE{true, 0, 0};
 constexpr Guarantee EXACT_COVERAGE_FLAT_ONE{true, -1, 1};  // exact coverage; within a texel without perspective
-constexpr Guarantee EXACT_COVERAGE_FLAT_TWO{true, -1, 2};  // exact coverage; within two texels without perspective
 constexpr Guarantee EXACT_COVERAGE{true, -1, -1};
 constexpr Guarantee NO_GUARANTEE{false, -1, -1};           // the classics: what they are
 
@@ -204,10 +204,11 @@ inline bool texture_aligned256(const Texture& t) { return texture_tiled256(t) &&
 // Whether the texture meets NEED_TILED256_OR_INSIDE (a clamped one: its polygons checked one by one).
 inline bool texture_tiled256_any_wrap(const Texture& t) { return tiles256(t.width, t.height) && t.aligned256; }
 // Whether the texture meets NEED_POW2_OR_INSIDE (its table block built).
-inline bool texture_pow2_any_wrap(const Texture& t) { return texture_tiled256_any_wrap(t) || (gets_doubled(t.width, t.height) && t.doubled); }
+inline bool texture_pow2_any_wrap(const Texture& t) { return texture_tiled256_any_wrap(t) || (beyond_tile(t.width, t.height) && t.doubled); }
 
 inline bool mapper_accepts(const Mapper& m, const Texture& t) {
     if ((m.needs & NEED_BORDERED) && !t.bordered) return false;
+    if ((m.needs & NEED_DOUBLED) && !t.doubled) return false;
     if ((m.needs & NEED_ALIGNED256) && !texture_aligned256(t)) return false;
     if ((m.needs & NEED_POW2_REPEAT) && !(t.wrap == Wrap::Repeat && texture_pow2_any_wrap(t))) return false;
     if ((m.needs & NEED_TILED256_OR_INSIDE) && !texture_tiled256_any_wrap(t)) return false;

@@ -48,10 +48,11 @@ Target ram_target(uint8_t* pixels, bool planar);
 // The copies of a texture the mappers read besides its texels: the bordered copy (every texture:
 // the classics, which cannot wrap, read it), for textures with power-of-two sides up to 256 the
 // tiled copy aligned to 64 KiB (fatmap's loops, 256 x 256 only, and ours), and for those with
-// power-of-two sides up to 1024, one above 256, the doubled copy (fast-table's and fast-affine's).
-// prepare_texture builds them into the buffers given (bordered_bytes(width, height),
-// ALIGNED256_BYTES and doubled_bytes(width, height); `doubled` null: none built, those two refuse
-// such a texture) and points the texture at them.
+// power-of-two sides up to 1024 the doubled copy (fast-table's; and fast-affine's and the other
+// fast loops' where a side is above 256). prepare_texture builds them into the buffers given
+// (bordered_bytes(width, height), ALIGNED256_BYTES and doubled_bytes(width, height); `doubled`
+// null: none built, fast-table refuses the texture, and our other fast loops one above 256) and
+// points the texture at them.
 inline bool wants_aligned256(const Texture& t) { return tiles256(t.width, t.height); }
 inline bool wants_doubled(const Texture& t) { return gets_doubled(t.width, t.height); }
 void prepare_texture(Texture* t, uint8_t* bordered, uint8_t* aligned, uint8_t* doubled = nullptr);

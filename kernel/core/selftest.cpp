@@ -17,10 +17,10 @@ int32_t random_texture_size(Random& r) {
     }
 }
 
-void random_doubled_sides(Random& r, int32_t* w, int32_t* h) {
+void random_doubled_sides(Random& r, int32_t* w, int32_t* h, bool above256) {
     do {
         *w = 1 << r.range(0, 10), *h = 1 << r.range(0, 10);
-    } while (!gets_doubled(*w, *h) || size_t(doubled_bytes(*w, *h)) > CHECK_TEXEL_BYTES);
+    } while ((above256 && !beyond_tile(*w, *h)) || size_t(doubled_bytes(*w, *h)) > CHECK_TEXEL_BYTES);
 }
 
 void fill_check_doubled(const CheckBuffers& buf, int32_t w, int32_t h, uint32_t salt) {

@@ -106,8 +106,9 @@ CheckWindow place_span(const CheckBuffers& buf, Args& a, int32_t stride) {
 
 // A texture size the loops accept: 1..1024, often a power of two, sometimes an extreme.
 int32_t random_texture_size(Random& r);
-// Random sides of a texture with a doubled copy (gets_doubled) that fits the check's texels.
-void random_doubled_sides(Random& r, int32_t* w, int32_t* h);
+// Random power-of-two sides up to 1024 of a texture whose doubled copy fits the check's texels;
+// above256: one side above 256 (beyond_tile).
+void random_doubled_sides(Random& r, int32_t* w, int32_t* h, bool above256 = true);
 // Makes the check's texels a doubled copy (make_doubled's layout, from buf.texels) of a w x h
 // texture whose texel (u, v) is a hash of u, v and salt: a loop reading the copy anywhere reads the
 // texel a read by masks from its origin reads.

@@ -27,27 +27,25 @@ struct Texture {
     // texture at block[(v & 255) * 256 + (u & 255)], since each side divides 256. With
     // ALIGNED256_GUARD_BEFORE rows before it and ALIGNED256_GUARD_AFTER after it that continue the
     // tiling: fatmap's table loop drifts up to a texel per 256 pixels of the triangle's longest
-    // scanline, past the block's ends; fast-table reads a span's texels at the first one's offset
-    // in the block plus offsets below 65536, up to block + 131070. Null when not built.
+    // scanline, past the block's ends. Null when not built.
     const uint8_t* aligned256 = nullptr;
-    // For textures whose sides are powers of two up to 1024 with one above 256 (they do not tile the
-    // 64 KiB block): the repeating texture over (2 width + 2 DOUBLED_LEAD) x (2 height + 2
-    // DOUBLED_LEAD) texels, doubled_pitch(width) bytes a row, at row r and column c texel ((c -
-    // DOUBLED_LEAD) mod width, (r - DOUBLED_LEAD) mod height): twice the texture each way from its
-    // origin, the texel (0, 0) at row and column DOUBLED_LEAD, and a few texels before and after
-    // (make_doubled). Two
-    // readers: fast-table's offsets from the origin (TableBlock), whose sums of two wholes taken
-    // modulo the sides stay below 2 width and 2 height; fast-affine's texel pointer, which walks a
-    // polygon whose coordinates span at most the sides and a few texels without wrapping
-    // (fast::doubled_window). Null when not built.
+    // For textures whose sides are powers of two up to 1024: the repeating texture over (2 width + 2
+    // DOUBLED_LEAD) x (2 height + 2 DOUBLED_LEAD) texels, doubled_pitch(width) bytes a row, at row r
+    // and column c texel ((c - DOUBLED_LEAD) mod width, (r - DOUBLED_LEAD) mod height): twice the
+    // texture each way from its origin, the texel (0, 0) at row and column DOUBLED_LEAD, and a few
+    // texels before and after (make_doubled). Two readers: fast-table's offsets from the origin
+    // (TableBlock, every size), whose sums of two wholes taken modulo the sides stay below 2 width
+    // and 2 height; and, for textures with a side above 256 (beyond_tile), fast-affine's and the
+    // other fast loops' texel pointer, which walks a polygon whose coordinates span at most the
+    // sides and a few texels without wrapping (fast::doubled_window). Null when not built.
     const uint8_t* doubled = nullptr;
 };
 
 constexpr int32_t ALIGNED256_GUARD_BEFORE = 96;
-constexpr int32_t ALIGNED256_GUARD_AFTER = 256;
+constexpr int32_t ALIGNED256_GUARD_AFTER = 96;
 // a buffer that holds the aligned block with its guard rows (at most 65535 bytes before the block's
 // 64 KiB boundary, its guard rows before it included)
-constexpr int32_t ALIGNED256_BYTES = 4 * 65536;
+constexpr int32_t ALIGNED256_BYTES = 3 * 65536;
 static_assert(ALIGNED256_GUARD_BEFORE * 256 + 65535 + 65536 + ALIGNED256_GUARD_AFTER * 256 <= ALIGNED256_BYTES);
 // Whether n is a power of two up to `most`.
 constexpr bool pow2_up_to(int32_t n, int32_t most) { return n > 0 && n <= most && (n & (n - 1)) == 0; }
@@ -59,10 +57,11 @@ inline uint8_t texel256(const uint8_t* block, uint32_t u, uint32_t v) { return b
 // Builds the aligned copy inside `buffer` (ALIGNED256_BYTES, any alignment) and returns the block.
 const uint8_t* make_aligned256(const Texture& t, uint8_t* buffer);
 
-// Whether a texture's sides are powers of two up to MAX_TEXTURE_SIZE, one above 256 (the doubled copy).
-inline bool gets_doubled(int32_t width, int32_t height) {
-    return pow2_up_to(width, MAX_TEXTURE_SIZE) && pow2_up_to(height, MAX_TEXTURE_SIZE) && !tiles256(width, height);
-}
+// Whether a texture gets the doubled copy: its sides powers of two up to MAX_TEXTURE_SIZE.
+inline bool gets_doubled(int32_t width, int32_t height) { return pow2_up_to(width, MAX_TEXTURE_SIZE) && pow2_up_to(height, MAX_TEXTURE_SIZE); }
+// Whether the doubled copy is the only block our fast loops read it from: one side above 256 (it
+// does not tile the 64 KiB block).
+inline bool beyond_tile(int32_t width, int32_t height) { return gets_doubled(width, height) && !tiles256(width, height); }
 // The doubled copy's columns and rows before its origin, and as many after twice the sides: a
 // polygon whose coordinates reach a little below a multiple of the side, or a period and a little
 // above one, still fits a window of it (fast::doubled_window: a face that maps the texture once,
@@ -75,10 +74,11 @@ inline const uint8_t* doubled_origin(const uint8_t* doubled, int32_t width) { re
 // Builds the doubled copy into `out` (doubled_bytes(width, height)) and returns it.
 const uint8_t* make_doubled(const Texture& t, uint8_t* out);
 
-// Where fast-table reads a repeating texture with power-of-two sides (the tiled block, or the
-// doubled copy): texel (u mod width, v mod height) at block + (v mod height) * pitch + (u mod width),
-// u_mask = width - 1, v_mask = height - 1; for the tiled block width, height and pitch are 256 (its
-// tiles repeat the texture).
+// Where fast-table reads a repeating texture with power-of-two sides: texel (u mod width, v mod
+// height) at block + (v mod height) * pitch + (u mod width), u_mask = width - 1, v_mask = height - 1;
+// the doubled copy (a table offset added to a start, each modulo the sides, stays inside it; the
+// tiled block, 256 a row, would carry u's wrap into the next row), or for the fast subdivided
+// loops' twin the tiled block (width, height and pitch 256: its tiles repeat the texture).
 struct TableBlock {
     const uint8_t* block;
     uint32_t u_mask, v_mask;
@@ -86,10 +86,8 @@ struct TableBlock {
     // The block's address for 16.16 coordinates u and v (their wholes taken modulo the sides).
     const uint8_t* at(uint32_t u, uint32_t v) const { return block + ((v >> 16) & v_mask) * uint32_t(pitch) + ((u >> 16) & u_mask); }
 };
-// The texture's table block: the tiled one where it is built, else the doubled one (block null:
-// neither).
+// The texture's doubled copy as a table block (block null: not built).
 inline TableBlock table_block(const Texture& t) {
-    if (t.aligned256) return TableBlock{t.aligned256, 255, 255, 256};
     if (!t.doubled) return TableBlock{nullptr, 0, 0, 0};
     return TableBlock{doubled_origin(t.doubled, t.width), uint32_t(t.width - 1), uint32_t(t.height - 1), doubled_pitch(t.width)};
 }

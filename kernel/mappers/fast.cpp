@@ -93,40 +93,6 @@ bool doubled_window(const PolygonSetup& s, const Texture& tex, const ClipRect& c
 
 namespace {
 
-// build_offset_table's work: 16.16 values modulo 2^32, whose wholes modulo a power of two up to
-// 65536 are the floors' (2^32 is a multiple of 2^32 / 65536); the tiled block's by shifts alone, the
-// doubled copy's by masks and a multiply. The tiled one inline, as it was (out of line, the mesh's
-// tables of a few entries paid a call: 25 instructions a polygon); the doubled one out of line
-// (both inline in one function, the tiled loop spilled a register: 200 a polygon more on the
-// corridor's long tables).
-inline void offset_table256(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table) {
-    uint32_t u = TABLE_U_START, v = 0;
-    for (int32_t k = 0; k < length; ++k) {
-        table[k] = int32_t(((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));
-        u += uint32_t(du_16_16);
-        v += uint32_t(dv_16_16);
-    }
-}
-[[gnu::noinline]] void offset_table_doubled(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
-    uint32_t u = TABLE_U_START, v = 0;
-    for (int32_t k = 0; k < length; ++k) {
-        table[k] = int32_t(((v >> 16) & block.v_mask) * uint32_t(block.pitch) + ((u >> 16) & block.u_mask));
-        u += uint32_t(du_16_16);
-        v += uint32_t(dv_16_16);
-    }
-}
-// Whether a table block is a doubled copy (any other than the tiled block's 256 x 256).
-inline bool is_doubled(const TableBlock& block) { return block.pitch != 256; }
-inline void offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
-    if (is_doubled(block)) offset_table_doubled(du_16_16, dv_16_16, length, table, block);
-    else offset_table256(du_16_16, dv_16_16, length, table);
-}
-// A driver's: the tiled block's without looking further where the texture has no doubled copy.
-inline void offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const Texture& tex) {
-    if (tex.doubled) offset_table_doubled(du_16_16, dv_16_16, length, table, table_block(tex));
-    else offset_table256(du_16_16, dv_16_16, length, table);
-}
-
 // The run loop's `inside`: whether the box lies within the clip's columns (a pixel whose centre lies
 // in the box [min_x, max_x] lies in [x0, x1) where the box does; the box, within setup's range, and
 // the clip's sides in subpixels within 32 bits).
@@ -238,14 +204,11 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-affine on a textur
         table_x = box_lo > c.target.clip.x0 ? box_lo : c.target.clip.x0;
         const int32_t last = box_hi < c.target.clip.x1 - 1 ? box_hi : c.target.clip.x1 - 1;
         if (last >= TABLE_LIMIT) return SetupStatus::Unsupported;  // (a target wider than any screen: never here)
-        if (last >= table_x) offset_table(s.u_fx.dx, s.v_fx.dx, last - table_x + 1, table + table_x, c.tex);
+        const TableBlock block = table_block(c.tex);
+        if (last >= table_x) build_offset_table(s.u_fx.dx, s.v_fx.dx, last - table_x + 1, table + table_x, block);
         a.table = table;
-        a.texture = c.tex.aligned256;
-        a.doubled = c.tex.doubled != nullptr;  // (a texture has the one or the other)
-        if (a.doubled) {
-            const TableBlock block = table_block(c.tex);
-            a.texture = block.block, a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.block_pitch = block.pitch;
-        }
+        a.texture = block.block, a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.block_pitch = block.pitch;
+        a.doubled = 1;
     } else {
         a.texture = c.tex.aligned256;
         a.doubled = 0;
@@ -309,7 +272,7 @@ namespace {
 }  // namespace
 
 SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
-    if (c.tex.doubled) [[unlikely]] return draw_rows_doubled(c, vertices, count);  // (a texture has the one or the other)
+    if (!c.tex.aligned256) [[unlikely]] return draw_rows_doubled(c, vertices, count);  // (a side above 256: the doubled copy)
     return draw_runs<false>(c, vertices, count);
 }
 SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int count) { return draw_runs<true>(c, vertices, count); }
@@ -319,9 +282,9 @@ namespace {
 // Columns: fast-columns by runs of columns (fast_column_run: on a doubled copy from its window's
 // corner; where the polygon spans more than a window, a column at a time by wrapping_pixels), or
 // fast-table-columns a column a call (the map mask set once a column), fast_table_column_loop
-// from its first texel through the polygon's offset table along y, built once for its tallest
-// column.
-template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
+// from its first texel in the doubled copy through the polygon's offset table along y, built once
+// for its tallest column.
+template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-columns on a doubled copy (fast-table-columns: always)
 [[gnu::always_inline]] inline SetupStatus draw_column_spans(const DrawContext& c, const Vertex* vertices, int count) {
     PolygonSetup own;
     SetupStatus status;
@@ -333,11 +296,11 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
     EdgeWalker walker(s, EdgeWalker::Along<Axis::Columns>{}, c.target.clip);
     const Planes p(s);
     int32_t table[TABLE ? TABLE_LIMIT : 1];
-    const TableBlock block = TABLE && DOUBLED ? table_block(c.tex) : TableBlock{};  // (fast-table-columns')
+    const TableBlock block = TABLE ? table_block(c.tex) : TableBlock{};  // (fast-table-columns')
     if constexpr (TABLE) {
         const int32_t height = c.target.clip.y1 - c.target.clip.y0;
         const int32_t box = int32_t((s.max_y - s.min_y) >> SUBPIXEL_BITS) + 2;
-        offset_table(int32_t(p.udy), int32_t(p.vdy), box < height ? box : height, table, c.tex);
+        build_offset_table(int32_t(p.udy), int32_t(p.vdy), box < height ? box : height, table, block);
     }
     setup_done(c);
     if constexpr (!TABLE) {
@@ -378,7 +341,7 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
         if constexpr (TABLE) {
             a.dst = dst;
             a.count = span.count;
-            a.source = DOUBLED ? block.at(u, v) : c.tex.aligned256 + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));  // (the tiled block's by shifts)
+            a.source = block.at(u, v);
             emit(c, &a, 0, 0);
         } else {
             emit(c.stats->probe, c.stats, 0, 0,
@@ -394,11 +357,9 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: on a doubled copy
 }  // namespace
 
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) {
-    return c.tex.doubled ? draw_column_spans<false, true>(c, vertices, count) : draw_column_spans<false>(c, vertices, count);
+    return !c.tex.aligned256 ? draw_column_spans<false, true>(c, vertices, count) : draw_column_spans<false>(c, vertices, count);
 }
-SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count) {
-    return c.tex.doubled ? draw_column_spans<true, true>(c, vertices, count) : draw_column_spans<true>(c, vertices, count);
-}
+SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count) { return draw_column_spans<true>(c, vertices, count); }
 
 namespace {
 
@@ -406,15 +367,17 @@ namespace {
 // the affine planes rounded at the anchor pixel and in each gradient (half a unit each), so at pixel
 // (x, y) they are within (1 + |x - x0| + |y - y0|) / 2^17 of the affine planes; those lines'
 // deviation from the exact mapping as for affine. 256 wraps harmlessly in 16.16, but a gradient
-// of 32768 texels a pixel or more saturates: no bound then. fast-table reads a texel at most one
-// more away on each axis (TABLE_U_START): a coordinate `extra` = 1 texel further.
-template <int EXTRA>
+// of 32768 texels a pixel or more saturates: no bound then. fast-table reads each span's lines moved
+// by at most half a texel (TABLE_START, its start's fraction): a coordinate EXTRA = ½ further, and
+// its clamped polygons a texel inside the texture.
+template <bool TABLE>
 ErrorBound planes_bound(const BoundContext& c, const Vertex* vertices, int count) {
+    constexpr double EXTRA = TABLE ? 0.5 : 0.0;
     if (!mapper_accepts(c.mapper, c.tex)) return ErrorBound{false, true, 0};
     if (c.tex.wrap == Wrap::Clamp) {  // what the drivers refuse (reads_inside), it does not draw
         PolygonSetup own;
         const PolygonSetup* s = c.prepared && c.prepared->status == SetupStatus::Ok ? &c.prepared->setup : &own;
-        if ((s != &own || setup_polygon(vertices, count, &own, PLANES_AFFINE) == SetupStatus::Ok) && !reads_inside(*s, c.tex, c.clip, EXTRA))
+        if ((s != &own || setup_polygon(vertices, count, &own, PLANES_AFFINE) == SetupStatus::Ok) && !reads_inside(*s, c.tex, c.clip, TABLE ? 1 : 0))
             return ErrorBound{false, true, 0};
     }
     auto whole = [&](PolygonSpread& p, const PolygonSetup& s) {
@@ -440,8 +403,8 @@ ErrorBound planes_bound(const BoundContext& c, const Vertex* vertices, int count
 
 }  // namespace
 
-ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) { return planes_bound<0>(c, vertices, count); }
-ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count) { return planes_bound<1>(c, vertices, count); }
+ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) { return planes_bound<false>(c, vertices, count); }
+ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count) { return planes_bound<true>(c, vertices, count); }
 
 }  // namespace raster::fast
 
@@ -568,16 +531,22 @@ void fast_run_loop_wrapping(const FastRunArgs& a, const Texture& tex) {
     run_row_pixels(a, [&](uint8_t* dst, int32_t count, uint32_t u, uint32_t v) { wrapping_pixels(tex, a.du_16_16, a.dv_16_16, u, v, dst, count, 1); });
 }
 
+// 16.16 values modulo 2^32, whose wholes modulo a power of two up to 65536 are the floors' (2^32 is
+// a multiple of 2^32 / 65536)
 void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
-    fast::offset_table(du_16_16, dv_16_16, length, table, block);
+    uint32_t u = TABLE_START, v = TABLE_START;
+    for (int32_t k = 0; k < length; ++k) {
+        table[k] = int32_t(((v >> 16) & block.v_mask) * uint32_t(block.pitch) + ((u >> 16) & block.u_mask));
+        u += uint32_t(du_16_16);
+        v += uint32_t(dv_16_16);
+    }
 }
 
 void fast_table_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
     run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
-        // the table's first pixel's texel (the tiled block's by shifts)
-        const uint8_t* origin = a.doubled ? a.texture + ((v >> 16) & a.v_mask) * uint32_t(a.block_pitch) + ((u >> 16) & a.u_mask)
-                                          : a.texture + (((v >> 8) & 0xFF00) | ((u >> 16) & 0xFF));
+        const TableBlock block{a.texture, a.u_mask, a.v_mask, a.block_pitch};
+        const uint8_t* origin = block.at(u, v);  // the table's first pixel's texel
         for (int32_t x = lo; x <= hi; ++x) row[x] = origin[a.table[x]];
     });
 }
@@ -629,12 +598,11 @@ const void* check_block(const TableColumnCase& a) {
 
 namespace {
 
-// A table block over the check's texels: the tiled one, or a third of the time a doubled copy of
-// random power-of-two sides up to 1024, one above 256, within the buffer (2 W H at most its bytes).
-TableBlock random_table_block(Random& r, const CheckBuffers& buf) {
-    if (r.below(3) != 0) return TableBlock{check_aligned_texture(buf), 255, 255, 256};
+// A doubled copy over the check's texels as a table block, of random power-of-two sides up to 1024
+// (above256: one above 256, as fast-affine reads it) whose copy fits the buffer.
+TableBlock random_doubled_block(Random& r, const CheckBuffers& buf, bool above256) {
     int32_t w, h;
-    random_doubled_sides(r, &w, &h);
+    random_doubled_sides(r, &w, &h, above256);
     return TableBlock{buf.texels, uint32_t(w - 1), uint32_t(h - 1), doubled_pitch(w)};
 }
 // fast-affine's and fast-columns' texel pointer from the buffer's start, every start within it: wholes
@@ -656,7 +624,7 @@ LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, 
     return check_cases<TableColumnCase>(m, other, seed, cases, buf, [&](Random& r, TableColumnCase& c) {
         FastTableColumnArgs& a = c.args;
         a.count = random_count(r, 0, 9, 240);
-        const TableBlock block = random_table_block(r, buf);
+        const TableBlock block = random_doubled_block(r, buf, false);
         const uint32_t u = r.next(), v = r.next();
         a.source = block.at(u, v);
         const int32_t du = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
@@ -772,11 +740,13 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         a.next_lines = r.below(2) ? 0 : run(c.next_lower, c.next_upper, most);
         if (a.next_lines == 0) c.next_lower = c.next_upper = EdgeBound::constant(0);
         a.inside = inside ? 1 : 0;
-        // the texture: the tiled block, or a doubled copy (its pitch; fast-table: its masks too)
-        const TableBlock block = random_table_block(r, buf);
+        // the texture: fast-table's doubled copy (its pitch and masks), fast-affine's tiled block or a
+        // third of the time a doubled copy
+        const bool table = m.twin == fast_table_loop;
+        a.doubled = table || r.below(3) == 0;
+        const TableBlock block = a.doubled ? random_doubled_block(r, buf, !table) : TableBlock{check_aligned_texture(buf), 255, 255, 256};
         a.texture = block.block;
         a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.block_pitch = block.pitch;
-        a.doubled = fast::is_doubled(block);
         a.u_16_16 = r.next();
         a.v_16_16 = r.next();
         a.u_row_16_16 = r.next();
@@ -787,8 +757,6 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
             random_doubled_uv(r, a);  // (its u and v at pixel 0 of the first row)
             a.u_row_16_16 = uint32_t(r.range(-0x40000, 0x40000));
             a.v_row_16_16 = uint32_t(r.range(-0x4000, 0x4000));
-        } else if (m.twin == fast_run_loop) {
-            a.texture = check_aligned_texture(buf);  // (the 8:16 core's tiled block)
         }
         c.attach(a);
         // (fast-table: the offsets from a pixel at or left of clip_lo to the pitch's end)

@@ -36,9 +36,9 @@ struct FastRunArgs {
     // Nonzero: every row whose bounds are in order lies within clip_lo..clip_hi (the polygon's box
     // lies inside the clip), so the NASM loops need not clip (the twins clip all the same)
     int32_t inside;
-    // The doubled copy (Texture::doubled: textures above 256 a side) where `doubled` is 1,
-    // block_pitch bytes a row. fast-table: a row's first texel at texture + (v whole & v_mask) *
-    // block_pitch + (u whole & u_mask), the four read only then. fast-affine: u and v are the
+    // The doubled copy (Texture::doubled) where `doubled` is 1, block_pitch bytes a row. fast-table
+    // (always 1): a row's first texel at texture + (v whole & v_mask) * block_pitch + (u whole &
+    // u_mask), the four read only then. fast-affine (textures above 256 a side): u and v are the
     // polygon's less its window's corner (fast::doubled_window), so their wholes are the texel's
     // column and row in the copy, and the loop steps a texel pointer from there without wrapping.
     // Else the tiled block's (v whole & 255) * 256 + (u whole & 255), which the NASM loops take by
@@ -81,20 +81,18 @@ extern "C" int fast_triangle_runs_asm(FastTriangleArgs* a);
 #endif
 
 // fast-table: the offsets of pixel k of any span from its first pixel's texel in the texture's
-// table block (TableBlock: the tiled one, W = H = P = 256, or the doubled copy, W x H its sides, P
-// its pitch), for a polygon whose u and v step by du and dv (16.16) a pixel: table[k] = (floor(k dv)
-// & (H - 1)) * P + (floor(c + k du) & (W - 1)), the floors of 16.16 values in exact integer
-// arithmetic, c = TABLE_U_START, k = 0 .. length - 1 (fatmap's table idea: one table a polygon, not
-// a step a pixel). fast_table_loop walks fast_run_loop's rows and reads pixel x0 + k of a row whose
-// u and v are u0, v0 at pixel x0, the pixel the polygon's table starts at (at or left of every
-// span's first pixel: the table written from table + x0), from block + (v0 whole & (H - 1)) * P +
-// (u0 whole & (W - 1)) + table[x0 + k]: no multiply a row on the tiled block. On the tiled block u's
-// part may pass 255 into the next texel row (its guard rows after it continue the tiling, to block +
-// 131070); on the doubled copy the two parts stay below 2 W and 2 H, inside its rows. So the texel
-// read is fast-affine's (floor(u0 + k du), floor(v0 + k dv)) moved by e_u on u, |e_u| <= 1 (the
-// start's fraction against c), and by e_v on v, |e_v| <= 1 (the fraction dropped, 0 or -1, and on
-// the tiled block the carry from u, 0 or +1), modulo the sides (docs/accuracy.md, "The offset table").
-constexpr uint32_t TABLE_U_START = 0x8000;  // half a texel: e_u in {-1, 0, 1}
+// doubled copy (TableBlock: W x H its sides, P its pitch), for a polygon whose u and v step by du and
+// dv (16.16) a pixel: table[k] = (floor(½ + k dv) & (H - 1)) * P + (floor(½ + k du) & (W - 1)), the
+// floors of 16.16 values in exact integer arithmetic (TABLE_START), k = 0 .. length - 1 (fatmap's
+// table idea: one table a polygon, not a step a pixel). fast_table_loop walks fast_run_loop's rows
+// and reads pixel x0 + k of a row whose u and v are u0, v0 at pixel x0, the pixel the polygon's
+// table starts at (at or left of every span's first pixel: the table written from table + x0), from
+// block + (v0 whole & (H - 1)) * P + (u0 whole & (W - 1)) + table[x0 + k]; the two parts stay below
+// 2 W and 2 H, inside the copy's rows. So the texel read is (floor(u0 + k du + ½ - f_u), floor(v0 +
+// k dv + ½ - f_v)) modulo the sides, f_u and f_v the fractions of u0 and v0: fast-affine's lines
+// moved by at most half a texel on each axis (docs/accuracy.md, "The offset table"). (On the tiled
+// block, 256 a row, u's part would pass 255 into the next texel row: a row off.)
+constexpr uint32_t TABLE_START = 0x8000;  // half a texel
 constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row: 320 pixels)
 void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block);
 void fast_table_loop(const void* args);
@@ -155,7 +153,7 @@ SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int co
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count);     // fast-columns
 SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count);  // fast-table-columns
 ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count);            // fast-affine, fast-columns
-ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count);      // fast-table: a texel more
+ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count);      // fast-table: half a texel more
 // fast-affine on a texture's doubled copy: whether the polygon's u and v over the pixels of the clip
 // it covers fit a window of the copy, and that window's corner (16.16, to take from u and v)
 bool doubled_window(const PolygonSetup& s, const Texture& tex, const ClipRect& clip, uint32_t* u_base, uint32_t* v_base);

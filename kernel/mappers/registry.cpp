@@ -58,19 +58,19 @@ const Mapper MAPPERS[] = {
      "copy where the polygon's coordinates span at most the sides and 15 texels more, else from the texture by masks)",
      EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-table", "ours", "fast-affine's runs of rows, each span's texels at offsets from its first precomputed once a polygon (fatmap's table idea)",
-     "exact coverage; u, v affine from the polygon's 16.16 planes, each texel within one texel on each axis of fast-affine's "
-     "(the start's fraction and a carry): within two texels without perspective; textures with power-of-two sides up to "
-     "1024, repeating or with the polygon's coordinates inside (up to 256 tiled over 256 x 256, larger ones doubled)",
-     EXACT_COVERAGE_FLAT_TWO, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_table_loop), fast::draw_table_rows, check_fast_run,
-     fast::table_bound},
+     "exact coverage; u, v affine from the polygon's 16.16 planes, each texel read at most half a texel on each axis from "
+     "fast-affine's line (each span's start rounded to its nearest texel by the table): within one texel without perspective; "
+     "textures with power-of-two sides up to 1024, repeating or with the polygon's coordinates inside, from their doubled copy",
+     EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE | NEED_DOUBLED, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_table_loop), fast::draw_table_rows,
+     check_fast_run, fast::table_bound},
     {"fast-columns", "ours", "the same core down Mode X columns, the map mask set once a column",
      "as fast-affine, by columns into Mode X planes",
      EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_run),
      fast::draw_columns, check_fast_column_run, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-table-columns", "ours", "fast-table's offsets down Mode X columns, the map mask set once a column",
-     "as fast-table, by columns into Mode X planes: within two texels without perspective",
-     EXACT_COVERAGE_FLAT_TWO, NEED_POW2_OR_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_table_column_loop),
-     fast::draw_table_columns, check_fast_table_column, fast::table_bound},
+     "as fast-table, by columns into Mode X planes: within one texel without perspective",
+     EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE | NEED_DOUBLED | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr,
+     TWIN_AND_ASM(fast_table_column_loop), fast::draw_table_columns, check_fast_table_column, fast::table_bound},
     {"fast-subdiv-8", "ours", "exact every 8 pixels in x87, the fast 8:16 core between, one NASM loop a span",
      "perspective-correct at every 8th pixel and the last; 16.16 steps from the ends' difference; exact coverage; repeating "
      "textures with power-of-two sides up to 1024 (tiled over 256 x 256, or a doubled copy above 256); rows in pairs, columns "
@@ -150,6 +150,7 @@ const Mapper* find_mapper(lib::StrView name) {
 
 const NeedName NEED_NAMES[] = {
     {NEED_BORDERED, "bordered", "the texture's bordered copy"},
+    {NEED_DOUBLED, "doubled", "the texture's doubled copy"},
     {NEED_INSIDE, "inside-texture", "texture coordinates inside the texture"},
     {NEED_PLANAR_TARGET, "planar-target", "a Mode X target (surface planar or vga)"},
     {NEED_VGA_FOR_ASM, "vga-for-asm", "a VGA page for its NASM loop"},

@@ -167,10 +167,10 @@ TEST(FastAdaptive, SegmentsDifferFromSpanToSpanUnderPerspective) {
 TEST(FastOriented, DrawsFastAdaptiveAlongTheWalkerItPicks) {
     const Mapper& oriented = *find_mapper("fast-oriented-1");
     const Mapper& adaptive = *find_mapper("fast-adaptive-1");
-    std::vector<uint8_t> texels(64 * 32), bordered(size_t(bordered_bytes(64, 32))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(64 * 32);
     generate_texture(TextureKind::Xor, 64, 32, texels.data());
     Texture tex{texels.data(), 64, 32, Wrap::Repeat};
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     TriangleGen gen(2611u);
     std::vector<uint8_t> a(SCREEN_PIXELS * 4), b(SCREEN_PIXELS * 4);
     int drawn = 0, picked[2] = {0, 0};

@@ -184,10 +184,10 @@ TEST(Bounds, NoMapperExceedsItsBoundOnRandomPolygons) {
 // which overflows past 32768 texels (u near -32000 in a 999-texel texture: 0x80000000, every texel
 // 199 off), while its bound said one texel.
 TEST(Bounds, QuakeTakesWholePeriodShiftsBeyondSixteenBits) {
-    std::vector<uint8_t> texels(999 * 64), bordered(size_t(bordered_bytes(999, 64))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(999 * 64);
     generate_texture(TextureKind::Xor, 999, 64, texels.data());
     Texture tex{texels.data(), 999, 64, Wrap::Repeat};
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     const std::vector<Vertex> p = {vertex_raw(20 * 256, 20 * 256, 1, -32000, 0), vertex_raw(300 * 256, 20 * 256, 1, -31970, 0),
                                    vertex_raw(20 * 256, 200 * 256, 1, -32000, 60)};
     for (const char* name : {"quake-subdiv16", "quake-subdiv8"}) {
@@ -207,10 +207,10 @@ TEST(Bounds, QuakeTakesWholePeriodShiftsBeyondSixteenBits) {
 // where Q is least, the footprint least where Q is largest): the coarse chord bound came out below
 // a texel where constant-depth erred by 128 footprints. Now no bound where Q is not positive.
 TEST(Bounds, NoBoundWhereQIsNotPositive) {
-    std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(256 * 256);
     generate_texture(TextureKind::Xor, 256, 256, texels.data());
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     const std::vector<Vertex> p = {{snap(206.9570), snap(-81.6484), 0.000233777472, -417.951969, -179.658735},
                                    {snap(299.7500), snap(27.8164), 0.000183679473, -264.901175, -289.130108},
                                    {snap(190.2852), snap(120.6094), 2358196.74, -155.429802, -136.079315},
@@ -271,10 +271,10 @@ TEST(Bounds, FastAdaptiveCertificateImpliesItsBound) {
     const int polygons = std::max(1800 / SANITIZED_SHARE, polygons_per_mapper());
     for (int n = 0; n < polygons; ++n) {
         const int32_t size = sizes[n % 3];
-        std::vector<uint8_t> texels(size_t(size) * size_t(size)), bordered(size_t(bordered_bytes(size, size))), aligned(ALIGNED256_BYTES);
+        std::vector<uint8_t> texels(size_t(size) * size_t(size));
         generate_texture(TextureKind::Xor, size, size, texels.data());
         Texture tex{texels.data(), size, size, Wrap::Repeat};
-        prepare_texture(&tex, bordered.data(), aligned.data());
+        TextureCopies copies(&tex);
         const std::vector<Vertex> p = random_polygon(gen, n % 6);
         const int count = int(p.size());
         PolygonSetup s;

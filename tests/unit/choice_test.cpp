@@ -82,10 +82,10 @@ TEST(Auto, PreparesThePolygonAsTheWalkerDrawsIt) {
 // price); auto takes the least, and a looser budget never costs more.
 TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     TriangleGen gen(1123u);
-    std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(256 * 256);
     generate_texture(TextureKind::Xor, 256, 256, texels.data());
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     const Mapper& oriented = *find_mapper("fast-oriented-1");
     const Mapper& adaptive = *find_mapper("fast-adaptive-1");
     int chose[MAPPER_LIMIT][2] = {}, by_spans = 0, choices = 0, unsearched = 0, undercut = 0;
@@ -176,9 +176,9 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
 // every budget, on either kind of target.
 TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
     TriangleGen gen(1124u);
-    std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(256 * 256);
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     int unchosen = 0, chosen = 0, walkers[2] = {}, by_footprint = 0, missed = 0;
     for (Surface surface : {Surface::Linear, Surface::Planar}) {
         Target target = surface_kind(surface);
@@ -296,9 +296,9 @@ TEST(Auto, CornerFootprintIsTheSetupsAtThatCorner) {
 // is drawn with exact unchosen, however large (no other bound can come within the budget there:
 // the choice itself takes exact); minified enough, or reaching outside the clip, it is chosen for.
 TEST(Auto, DrawsExactUnchosenWhereTheFootprintIsTooSmallForTheBudget) {
-    std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(256 * 256);
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     Target target = surface_kind(Surface::Linear);
     target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
     const Budget half{true, 0.5, true};

@@ -22,10 +22,9 @@ const Mapper& mapper(const char* name) {
 
 // How often the mapper drew each pixel, one polygon at a time (planes for the planar mappers).
 std::vector<int> draw_counts(const Mapper& m, const std::vector<std::vector<Vertex>>& polygons, int32_t tex_size) {
-    std::vector<uint8_t> ones(size_t(tex_size) * size_t(tex_size), 1), bordered(size_t(bordered_bytes(tex_size, tex_size)));
-    std::vector<uint8_t> aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> ones(size_t(tex_size) * size_t(tex_size), 1);
     Texture tex{ones.data(), tex_size, tex_size, Wrap::Repeat};
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     std::vector<int> counts(SCREEN_PIXELS, 0);
     for (const auto& p : polygons) {
         std::vector<uint8_t> surface(SCREEN_PIXELS, 0), linear(SCREEN_PIXELS);
@@ -343,11 +342,8 @@ TEST(FastAffine, TakesEveryPowerOfTwoTextureAsItsTiling) {
         std::vector<uint8_t> texels(size_t(w) * size_t(h)), tiling(65536);
         for (size_t i = 0; i < texels.size(); ++i) texels[i] = uint8_t(gen.rng() % 250 + 1);
         for (int32_t i = 0; i < 65536; ++i) tiling[size_t(i)] = texels[size_t(((i >> 8) % h) * w + (i & 255) % w)];
-        std::vector<uint8_t> bordered(size_t(bordered_bytes(w, h))), aligned(ALIGNED256_BYTES), bordered256(size_t(bordered_bytes(256, 256))),
-            aligned256(ALIGNED256_BYTES);
         Texture tex{texels.data(), w, h, Wrap::Repeat}, whole{tiling.data(), 256, 256, Wrap::Repeat};
-        prepare_texture(&tex, bordered.data(), aligned.data());
-        prepare_texture(&whole, bordered256.data(), aligned256.data());
+        TextureCopies copies(&tex), whole_copies(&whole);
         for (const char* name : {"fast-affine", "fast-columns", "fast-table", "fast-table-columns"}) {
             const Mapper& m = mapper(name);
             ASSERT_TRUE(mapper_accepts(m, tex)) << name << " " << w << "x" << h;
@@ -378,16 +374,18 @@ TEST(FastAffine, TakesEveryPowerOfTwoTextureAsItsTiling) {
     EXPECT_EQ(fast.gaps + fast.overdraw + fast.overlaps, 0u);
 }
 
-// fast-table draws the pixels fast-affine draws, each texel within one on each axis of fast-affine's
-// (docs/accuracy.md, "The offset table"), and both ways somewhere; fast-table-columns likewise
-// against fast-columns (a planar target): on random triangles with texel coordinates over many
-// periods, steps to several texels a pixel, a 16 x 8 texture whose texels name themselves
-// (v * 16 + u), NASM loop and twin.
-TEST(FastTable, EachTexelWithinOneOnEachAxisOfFastAffines) {
-    std::vector<uint8_t> texels(16 * 8), bordered(size_t(bordered_bytes(16, 8))), aligned(ALIGNED256_BYTES);
+// fast-table draws the pixels fast-affine draws, each texel within one on each axis of fast-affine's,
+// and both ways somewhere; and each texel's centre within one texel of fast-affine's 16.16 line at
+// the pixel (the line moved by at most half a texel, then floored: docs/accuracy.md, "The offset
+// table"; a table without the half on v, or on the tiled block whose u carries into the next row,
+// reads a texel whose centre is 1.5 away). fast-table-columns likewise against fast-columns (a
+// planar target): on random triangles with texel coordinates over many periods, steps to several
+// texels a pixel, a 16 x 8 texture whose texels name themselves (v * 16 + u), NASM loop and twin.
+TEST(FastTable, EachTexelWithinHalfATexelOfFastAffinesLine) {
+    std::vector<uint8_t> texels(16 * 8);
     for (int32_t i = 0; i < 16 * 8; ++i) texels[size_t(i)] = uint8_t(i);
     Texture tex{texels.data(), 16, 8, Wrap::Repeat};
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     for (const auto& pair : {std::pair{"fast-table", "fast-affine"}, std::pair{"fast-table-columns", "fast-columns"}}) {
         const Mapper &table = mapper(pair.first), &affine = mapper(pair.second);
         const Axis axis = home_axis(table);
@@ -395,8 +393,20 @@ TEST(FastTable, EachTexelWithinOneOnEachAxisOfFastAffines) {
         gen.uv_range = 3000;
         int pixels = 0, moved[2][3] = {};  // [axis][e + 1]
         constexpr uint8_t EMPTY = 255;
+        double farthest = 0;  // the largest distance from a texel's centre to the line, either axis
         for (int n = 0; n < 400; ++n) {
             const std::vector<Vertex> t = gen.triangle();
+            PolygonSetup s;
+            const bool set = setup_polygon(t.data(), 3, &s, PLANES_AFFINE) == SetupStatus::Ok;  // (else nothing drawn)
+            // the line at pixel (x, y) in texels, modulo 2^16 (16.16 wrapping as the mappers' does)
+            auto line = [](const FixedPlane& f, int32_t x, int32_t y) {
+                return double(uint32_t(f.value(0, 0)) + uint32_t(x) * uint32_t(f.dx) + uint32_t(y) * uint32_t(f.dy)) / 65536.0;
+            };
+            // from a texel's centre to the line, the shorter way round a period
+            auto apart = [](int texel, double at, int period) {
+                const double d = std::fmod(texel + 0.5 - at, double(period));
+                return std::fabs(d > period / 2.0 ? d - period : d < -period / 2.0 ? d + period : d);
+            };
             for (Variant variant : {Variant::Twin, Variant::Asm}) {
                 std::vector<uint8_t> a(SCREEN_PIXELS, EMPTY), b(SCREEN_PIXELS, EMPTY);
                 Target ta = ram_target(a.data(), ram_planar(table, axis)), tb = ram_target(b.data(), ram_planar(affine, axis));
@@ -412,10 +422,20 @@ TEST(FastTable, EachTexelWithinOneOnEachAxisOfFastAffines) {
                     ASSERT_TRUE(du >= -1 && du <= 1 && dv >= -1 && dv <= 1)
                         << pair.first << " triangle " << n << " pixel " << i << ": " << int(a[i]) << " against " << int(b[i]);
                     ++moved[0][du + 1], ++moved[1][dv + 1];
+                    ASSERT_TRUE(set) << "triangle " << n;
+                    const bool planar = ram_planar(table, axis);
+                    const int32_t at = int32_t(i) % PLANE_BYTES;
+                    const int32_t x = planar ? (at % PLANE_ROW_BYTES) * 4 + int32_t(i) / PLANE_BYTES : int32_t(i) % SCREEN_WIDTH;
+                    const int32_t y = planar ? at / PLANE_ROW_BYTES : int32_t(i) / SCREEN_WIDTH;
+                    const double off_u = apart(a[i] & 15, line(s.u_fx, x, y), 16), off_v = apart(a[i] >> 4, line(s.v_fx, x, y), 8);
+                    ASSERT_LE(off_u, 1.0) << pair.first << " triangle " << n << " pixel (" << x << ", " << y << ")";
+                    ASSERT_LE(off_v, 1.0) << pair.first << " triangle " << n << " pixel (" << x << ", " << y << ")";
+                    farthest = std::max({farthest, off_u, off_v});
                 }
             }
         }
         EXPECT_GT(pixels, 100000) << pair.first;
+        EXPECT_GT(farthest, 0.99) << pair.first << ": the half texel's room used";
         for (int t = 0; t < 2; ++t)
             for (int e = 0; e < 3; ++e) EXPECT_GT(moved[t][e], 0) << pair.first << ": " << (t ? "v" : "u") << " never moved by " << e - 1;
     }
@@ -572,12 +592,11 @@ TEST(FastSubdiv, TakesTexturesAbove256ByTheDoubledCopy) {
         for (int32_t v = 0; v < h; ++v)
             for (int32_t u = 0; u < w; ++u) big[size_t(v) * size_t(w) + size_t(u)] = tile[size_t(v % th) * size_t(tw) + size_t(u % tw)];
         std::vector<uint8_t> bordered(size_t(bordered_bytes(w, h))), aligned(ALIGNED256_BYTES), doubled(size_t(doubled_bytes(w, h)));
-        std::vector<uint8_t> tile_bordered(size_t(bordered_bytes(tw, th))), tile_aligned(ALIGNED256_BYTES);
         Texture tex{big.data(), w, h, Wrap::Repeat}, alone = tex, clamped{big.data(), w, h, Wrap::Clamp}, small{tile.data(), tw, th, Wrap::Repeat};
         prepare_texture(&tex, bordered.data(), aligned.data(), doubled.data());
         prepare_texture(&alone, bordered.data(), aligned.data());
         prepare_texture(&clamped, bordered.data(), aligned.data(), doubled.data());
-        prepare_texture(&small, tile_bordered.data(), tile_aligned.data());
+        TextureCopies small_copies(&small);
         for (const char* name : names) {
             const Mapper& m = mapper(name);
             EXPECT_FALSE(mapper_accepts(m, alone)) << name << ": no doubled copy";
@@ -610,10 +629,10 @@ TEST(FastSubdiv, TakesTexturesAbove256ByTheDoubledCopy) {
 // texel more), each draws exactly what it draws with the same texture repeating; where they reach
 // an edge it refuses the polygon, and its bound says it does not draw it.
 TEST(FastAffine, TakesAClampedTextureWhereThePolygonLiesInsideIt) {
-    std::vector<uint8_t> texels(64 * 32), bordered(size_t(bordered_bytes(64, 32))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(64 * 32);
     for (size_t i = 0; i < texels.size(); ++i) texels[i] = uint8_t(i * 7 + 1);
     Texture clamped{texels.data(), 64, 32, Wrap::Clamp};
-    prepare_texture(&clamped, bordered.data(), aligned.data());
+    TextureCopies copies(&clamped);
     Texture repeating = clamped;
     repeating.wrap = Wrap::Repeat;
     auto quad = [](double u0, double v0, double u1, double v1) {

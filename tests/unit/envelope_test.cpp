@@ -61,12 +61,12 @@ TriangleEnvelope fitted(const Vertex* t) {
 }
 
 const Texture& aligned_texture() {
-    static std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    static std::vector<uint8_t> texels(256 * 256);
     static Texture tex{texels.data(), 256, 256, Wrap::Repeat};
     static bool made = false;
     if (!made) {
         generate_texture(TextureKind::Xor, 256, 256, texels.data());
-        prepare_texture(&tex, bordered.data(), aligned.data());
+        static TextureCopies copies(&tex);
         made = true;
     }
     return tex;
@@ -255,9 +255,9 @@ TEST(Envelope, AutoDrawsAnEnvelopedObjectAsTheProvenMapperDoes) {
 // and where one costs less a line, only up to as many lines as take half of what its setup costs
 // more; a larger or taller triangle goes to the choice, a smaller one is drawn by the envelope.
 TEST(Envelope, TakesTrianglesOnlyUpToTheSizeWhereNoOtherCandidateUndercutsIt) {
-    std::vector<uint8_t> texels(64 * 64, 3), bordered(size_t(bordered_bytes(64, 64))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(64 * 64, 3);
     Texture tex{texels.data(), 64, 64, Wrap::Repeat};
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     Target target = surface_kind(Surface::Linear);
     target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
     const Budget budget{true, 2, true};

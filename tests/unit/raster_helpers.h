@@ -25,6 +25,18 @@ constexpr int SANITIZED_SHARE = 4;
 constexpr int SANITIZED_SHARE = 1;
 #endif
 
+// A texture's copies as prepare_texture builds them (bordered; tiled and 64 KiB-aligned for
+// power-of-two sides up to 256; doubled for power-of-two sides up to 1024), owned here, the texture
+// pointed at them.
+struct TextureCopies {
+    std::vector<uint8_t> bordered, aligned, doubled;
+    explicit TextureCopies(Texture* t)
+        : bordered(size_t(bordered_bytes(t->width, t->height))), aligned(ALIGNED256_BYTES),
+          doubled(gets_doubled(t->width, t->height) ? size_t(doubled_bytes(t->width, t->height)) : 0) {
+        prepare_texture(t, bordered.data(), aligned.data(), doubled.empty() ? nullptr : doubled.data());
+    }
+};
+
 inline Vertex vertex_raw(int32_t x_raw, int32_t y_raw, double w = 1, double u = 0, double v = 0) {
     return Vertex{Fixed24_8::from_raw(x_raw), Fixed24_8::from_raw(y_raw), w, u, v};
 }

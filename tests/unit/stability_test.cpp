@@ -85,10 +85,10 @@ TEST(Stability, NothingIsWrittenOutsideTheClipAndCoverageHolds) {
 // outside the inner loop), once per pixel for row loops on Mode X (X-Sharp's OUT per pixel);
 // generic row walkers refuse planar targets (auto, asked for rows, draws by columns there).
 TEST(Stability, PlaneSelectionOnPlanarTargets) {
-    std::vector<uint8_t> texels(256 * 256), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(256 * 256);
     generate_texture(TextureKind::Grid, 256, 256, texels.data());
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};  // 256 x 256: every mapper takes it
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     for (int m = 0; m < MAPPER_COUNT; ++m) {
         const Mapper& mapper = MAPPERS[m];
         std::vector<uint8_t> planes(4 * size_t(PLANE_BYTES) + 2 * 64, GUARD);
@@ -125,9 +125,9 @@ TEST(Stability, PlaneSelectionOnPlanarTargets) {
 // vertex lies on the centre drawn apart: a third of the triangles here have their vertices on the
 // half-pixel grid).
 TEST(Stability, OurMappersDrawExactlyTheCoveredPixels) {
-    std::vector<uint8_t> texels(256 * 256, 7), bordered(size_t(bordered_bytes(256, 256))), aligned(ALIGNED256_BYTES);
+    std::vector<uint8_t> texels(256 * 256, 7);
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};  // every texel 7: drawn pixels show
-    prepare_texture(&tex, bordered.data(), aligned.data());
+    TextureCopies copies(&tex);
     for (int m = 0; m < MAPPER_COUNT; ++m) {
         const Mapper& mapper = MAPPERS[m];
         if (std::string(mapper.family) != "ours") continue;
