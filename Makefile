@@ -363,11 +363,12 @@ test-gallery: deps
 	@tests/run $(BROWSER_TESTS)
 
 # `make bounds`: every mapper's error bound against its measured error on 100000 random polygons
-# (make test runs 600 of them) and on every demo scene (docs/accuracy.md, "Error bounds").
+# (make test runs 600 of them) and on every demo scene (docs/accuracy.md, "Error bounds");
+# MAPPERS=a,b: those mappers only.
 BOUND_POLYGONS ?= 100000
 bounds: deps
 	@$(MAKE) -s -j$(NPROC) $(TESTS) $(FREEDOOM_TEXTURES)
-	MODEXLAB_BOUND_POLYGONS=$(BOUND_POLYGONS) $(TESTS) --gtest_filter='Bounds.*:Envelope.*'
+	MODEXLAB_BOUND_POLYGONS=$(BOUND_POLYGONS) MODEXLAB_BOUND_MAPPERS=$(MAPPERS) $(TESTS) --gtest_filter='Bounds.*:Envelope.*'
 
 # `make fuzz-protocol`: random and mutated commands and uploads to a booted kernel, a marker
 # answered after each (make test sends 300; docs/protocol.md).
