@@ -1,5 +1,6 @@
 // Scene loading and the pictures the metrics compare.
 #include "qemu/accuracy/measure.h"
+#include "kernel/core/bound.h"
 
 #include "kernel/core/policy.h"
 
@@ -298,6 +299,19 @@ AccuracyMetrics PolygonMeter::measure(const Vertex* v, int n, const Texture& tex
     finish_metrics(m);
     if (drawn_out) *drawn_out = drawn;
     return m;
+}
+
+FrameBound world_frame_bound(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis) {
+    FrameBound f;
+    const Vertex* v = frame.vertices;
+    for (int32_t i = 0; i < frame.polygon_count; v += frame.polygon_size[i], ++i) {
+        const BoundContext c{mapper, w.textures->objects[frame.polygon_object[i]], axis, ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT}};
+        const ErrorBound b = mapper.bound(c, v, frame.polygon_size[i]);
+        if (!b.draws) continue;  // (refused: the row says so by its rejected polygons; or degenerate)
+        f.footprint = b.footprint > f.footprint ? b.footprint : f.footprint;
+        f.exact_coverage = f.exact_coverage && b.exact_coverage;
+    }
+    return f;
 }
 
 AccuracyMetrics measure_world_frame(const LoadedWorld& w, const Frame& frame, const Mapper& mapper, Axis axis, FrameMap* map) {

@@ -130,6 +130,16 @@ struct FrameMap {
 raster::AccuracyMetrics measure_world_frame(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper,
                                             raster::Axis axis, FrameMap* map = nullptr);
 
+// What a single mapper proves on a frame before drawing it: the largest of its error bounds
+// (footprints, the tightest it gives) over the polygons it draws, NO_BOUND where one has none, and
+// whether every one of them promises exact coverage (docs/accuracy.md, "Error bounds"); the
+// screen's clip.
+struct FrameBound {
+    double footprint = 0;
+    bool exact_coverage = true;
+};
+FrameBound world_frame_bound(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper, raster::Axis axis);
+
 // Reads a whole file; throws HarnessError when it cannot.
 std::string read_whole_file(const std::string& path);
 

@@ -120,6 +120,11 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
         auto frame = world_frame(s.host, n);
         if (budget) frame->budget = *budget;
         raster::accumulate(row.accuracy, measure_world_frame(s.host, *frame, m, axis));
+        if (!m.chooses) {
+            const FrameBound proof = world_frame_bound(s.host, *frame, m, axis);
+            row.max_bound = i == 0 || proof.footprint > row.max_bound ? proof.footprint : row.max_bound;
+            row.bound_exact = (i == 0 || row.bound_exact) && proof.exact_coverage;
+        }
         if (i == frames - 1) {
             if (last["frame"].get<int32_t>() != n) throw HarnessError("the kernel benched frame " + last["frame"].dump() + ", expected " + std::to_string(n));
             IndexImage want = render_world_frame(s.host, *frame, m, axis);

@@ -45,6 +45,11 @@ struct TradeRow {
     std::string budget;
     double budget_error = -1;   // the budget's footprint error (below 0: any), and whether it asks
     bool budget_exact = false;  // for exact coverage
+    // A single mapper's proof on the same frames (world_frame_bound): the largest of its bounds over
+    // the polygons it draws (NO_BOUND: one has none), and whether each promised exact coverage;
+    // below 0: not computed (auto's rows: every polygon proven within the budget by its choice)
+    double max_bound = -1;
+    bool bound_exact = false;
 
     bool draws_everything() const { return rejected == 0 && pixels > 0; }
     double per_pixel(uint64_t t) const { return pixels ? double(t) / double(pixels) : 0.0; }

@@ -146,6 +146,34 @@ TEST(Trade, EveryMapperOnTheSameWorkListsOnlyScenesNoMapperRefuses) {
         << section;
 }
 
+// auto's table: beside the fastest single mapper whose measured error meets the budget, the fastest
+// whose own bounds prove it (its largest bound within it, exact coverage promised where asked, every
+// polygon drawn); a mapper measured within but not proven, or proven only with its coverage its
+// own, is not the second.
+TEST(Trade, AutoIsSetAgainstTheFastestMeasuredAndTheFastestProven) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "fast-affine", 2000, 1), row("a", "fast-table", 1000, 1),
+                                  row("a", "xsharp-dda", 1500, 1), row("a", "auto", 2500, 0)};
+    for (TradeRow& r : rows) r.accuracy.max_footprint_error = 0.5, r.budget_error = 1, r.budget_exact = true, r.budget = "1";
+    rows[0].max_bound = 0, rows[0].bound_exact = true;
+    rows[1].max_bound = 1, rows[1].bound_exact = true;         // proven within 1
+    rows[2].max_bound = 2, rows[2].bound_exact = true;         // measured within, its bound above the budget
+    rows[3].max_bound = 0.5, rows[3].bound_exact = false;      // within, but no exact coverage promised
+    rows[4].max_bound = -1;
+    std::string dir = testing::TempDir() + "/trade_auto";
+    write_markdown(dir + "/trade.md", rows, ReportInfo{});
+    std::ifstream md(dir + "/trade.md");
+    std::stringstream text;
+    text << md.rdbuf();
+    const std::string t = text.str();
+    EXPECT_NE(t.find("| a | auto | 1 | 25.0 | 0.500 | yes | fast-table | 10.0 | 0.40× | fast-affine | 20.0 | 0.80× |"), std::string::npos) << t;
+    rows[1].max_bound = raster::NO_BOUND;  // one polygon without a bound: not proven; then only exact is
+    write_markdown(dir + "/trade.md", rows, ReportInfo{});
+    std::ifstream again(dir + "/trade.md");
+    std::stringstream text2;
+    text2 << again.rdbuf();
+    EXPECT_NE(text2.str().find("| fast-table | 10.0 | 0.40× | exact | 90.0 | 3.60× |"), std::string::npos) << text2.str();
+}
+
 LoadedWorld demo(const char* name) { return load_world_file(std::string("scenes/") + name + ".scene"); }
 
 
