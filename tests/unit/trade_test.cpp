@@ -38,6 +38,15 @@ TradeRow row(const std::string& scene, const std::string& mapper, uint64_t draw,
     return r;
 }
 
+// trade.md of these rows, written into `path` and read back.
+std::string markdown_of(const std::string& path, const std::vector<TradeRow>& rows, const ReportInfo& info = ReportInfo{}) {
+    write_markdown(path, rows, info);
+    std::ifstream md(path);
+    std::stringstream text;
+    text << md.rdbuf();
+    return text.str();
+}
+
 TEST(Trade, ParetoIsPerSceneAndLeavesOutMappersThatRefusePolygons) {
     std::vector<TradeRow> rows = {row("a", "slow-exact", 9000, 0), row("a", "fast-rough", 1000, 5), row("a", "middle", 5000, 6),
                                   row("a", "fastest-partial", 500, 0, 3), row("b", "slow-exact", 9000, 0), row("b", "fast-rough", 1000, 0)};
@@ -78,19 +87,15 @@ TEST(Trade, TheCsvHasAUnitForEveryColumnAndAFieldForEveryColumn) {
     ReportInfo info;
     info.how = "by hand";
     info.command = "make bench";
-    write_markdown(dir + "/trade.md", rows, info);
-    std::ifstream md(dir + "/trade.md");
-    std::stringstream text;
-    text << md.rdbuf();
+    const std::string md_text = markdown_of(dir + "/trade.md", rows, info);
     // sorted by speed: affine (30 per pixel) before exact (90)
-    size_t affine = text.str().find("\n| affine |"), exact = text.str().find("\n| exact |");
+    size_t affine = md_text.find("\n| affine |"), exact = md_text.find("\n| exact |");
     ASSERT_NE(affine, std::string::npos);
     ASSERT_NE(exact, std::string::npos);
     EXPECT_LT(affine, exact);
 
     // the classics' published figures: every row of the table has its eight cells, the counted
     // listing beside ours (a row of quake-subdiv16 says both)
-    const std::string& md_text = text.str();
     size_t table = md_text.find("| loop | published cycles/px | machine | listing instr/px | ours | ours counted | ours measured instr/px | scene |");
     ASSERT_NE(table, std::string::npos);
     std::istringstream lines_after(md_text.substr(table));
@@ -111,14 +116,10 @@ TEST(Trade, TheOuterLoopsArePerPolygonDrawn) {
     for (TradeRow& r : rows) r.frames = 2, r.polygons = 10, r.geometry = 1000, r.setup = 2000, r.walk = 500, r.inner = 70;
     rows[1].rejected = 1;  // fast-affine refused one: no row
     std::string dir = testing::TempDir() + "/trade_outer";
-    write_markdown(dir + "/trade.md", rows, ReportInfo{});
-    std::ifstream md(dir + "/trade.md");
-    std::stringstream text;
-    text << md.rdbuf();
-    EXPECT_NE(text.str().find("| a | exact | 5 | " + fixed(double(rows[0].pixels) / 10, 1) + " | 100 | 200 | 50 | 7 | 350 |"), std::string::npos)
-        << text.str();
-    EXPECT_EQ(text.str().find("| a | fast-affine |"), std::string::npos);
-    EXPECT_EQ(text.str().find("| a | affine | 5 |"), std::string::npos);
+    const std::string t = markdown_of(dir + "/trade.md", rows);
+    EXPECT_NE(t.find("| a | exact | 5 | " + fixed(double(rows[0].pixels) / 10, 1) + " | 100 | 200 | 50 | 7 | 350 |"), std::string::npos) << t;
+    EXPECT_EQ(t.find("| a | fast-affine |"), std::string::npos);
+    EXPECT_EQ(t.find("| a | affine | 5 |"), std::string::npos);
 }
 
 // "Every mapper on the same work": only scenes no single mapper refuses a polygon of (auto does not
@@ -130,11 +131,7 @@ TEST(Trade, EveryMapperOnTheSameWorkListsOnlyScenesNoMapperRefuses) {
     rows[4].rejected = 1;  // fast-affine refused one polygon of "split"
     rows[2].rejected = 1;  // auto's refusals do not count (it is not a single mapper)
     std::string dir = testing::TempDir() + "/trade_whole";
-    write_markdown(dir + "/trade.md", rows, ReportInfo{});
-    std::ifstream md(dir + "/trade.md");
-    std::stringstream text;
-    text << md.rdbuf();
-    const std::string t = text.str();
+    const std::string t = markdown_of(dir + "/trade.md", rows);
     const size_t at = t.find("## Every mapper on the same work");
     ASSERT_NE(at, std::string::npos) << t;
     const std::string section = t.substr(at, t.find("\n## ", at + 1) - at);
@@ -160,18 +157,11 @@ TEST(Trade, AutoIsSetAgainstTheFastestMeasuredAndTheFastestProven) {
     rows[3].max_bound = 0.5, rows[3].bound_exact = false;      // within, but no exact coverage promised
     rows[4].max_bound = -1;
     std::string dir = testing::TempDir() + "/trade_auto";
-    write_markdown(dir + "/trade.md", rows, ReportInfo{});
-    std::ifstream md(dir + "/trade.md");
-    std::stringstream text;
-    text << md.rdbuf();
-    const std::string t = text.str();
+    const std::string t = markdown_of(dir + "/trade.md", rows);
     EXPECT_NE(t.find("| a | auto | 1 | 25.0 | 0.500 | yes | fast-table | 10.0 | 0.40× | fast-affine | 20.0 | 0.80× |"), std::string::npos) << t;
     rows[1].max_bound = raster::NO_BOUND;  // one polygon without a bound: not proven; then only exact is
-    write_markdown(dir + "/trade.md", rows, ReportInfo{});
-    std::ifstream again(dir + "/trade.md");
-    std::stringstream text2;
-    text2 << again.rdbuf();
-    EXPECT_NE(text2.str().find("| fast-table | 10.0 | 0.40× | exact | 90.0 | 3.60× |"), std::string::npos) << text2.str();
+    const std::string t2 = markdown_of(dir + "/trade.md", rows);
+    EXPECT_NE(t2.find("| fast-table | 10.0 | 0.40× | exact | 90.0 | 3.60× |"), std::string::npos) << t2;
 }
 
 LoadedWorld demo(const char* name) { return load_world_file(std::string("scenes/") + name + ".scene"); }
