@@ -239,6 +239,21 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         choice.mapper = &m, choice.axis = list.axis[k], choice.bound = b, choice.by_spans = !whole_only;
         return true;
     };
+    // Whether fast-adaptive-1 (the list's candidate a) along the walker is within one footprint on
+    // the polygon: inside the clip by its certificate from the setup alone; reaching outside it
+    // (the certificate takes the vertices for the corners of the part drawn) by its own bound of
+    // the whole polygon at once, from the spread of the part inside the clip (which the search
+    // then shares)
+    auto oriented_certain = [&](int a, Axis walker) {
+        const PolygonSetup& s = prepared->setup;
+        const ClipRect& clip = target.clip;
+        if (s.min_x >= int64_t(clip.x0) * SUBPIXEL_ONE && s.max_x <= int64_t(clip.x1) * SUBPIXEL_ONE && s.min_y >= int64_t(clip.y0) * SUBPIXEL_ONE &&
+            s.max_y <= int64_t(clip.y1) * SUBPIXEL_ONE)
+            return fast_adaptive_certain<4>(s, clip, tex, walker);
+        const Mapper& m = MAPPERS[list.row[a]];
+        const ErrorBound b = m.bound(BoundContext{m, tex, walker, clip, 1.0, prepared, true}, vertices, count);
+        return b.draws && b.footprint <= 1;
+    };
     // The oriented candidate (a budget from one footprint to below two, where fast-oriented-1 is
     // within it): fast-adaptive-1 along the walker fast-oriented-1 picks, where its certificate
     // proves it within 1 from the setup alone, priced by fast-oriented-1's row with no proof. Where it
@@ -250,7 +265,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     int32_t oriented_price = NOT_LIVE;
     if (budget.max_error >= 1 && budget.max_error < 2 && list.oriented_row >= 0) {
         oriented_walker = target.planar ? Axis::Columns : oriented_axis(prepared->setup, target.clip, fast_adaptive_room(1));
-        if (list.adaptive[int(oriented_walker)] >= 0 && fast_adaptive_certain<4>(prepared->setup, target.clip, tex, oriented_walker)) {
+        if (list.adaptive[int(oriented_walker)] >= 0 && oriented_certain(list.adaptive[int(oriented_walker)], oriented_walker)) {
             oriented = &MAPPERS[list.oriented_row];
             const double estimate = estimate_cost(MAPPER_COSTS[list.oriented_row], size[int(oriented_walker)]);
             if (estimate <= least_cost(0) + ORIENTED_GATE) return Choice{oriented, oriented_walker, ErrorBound{true, true, 1}, false};

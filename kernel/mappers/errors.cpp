@@ -101,7 +101,7 @@ const MeasuredError MEASURED_ERRORS[] = {
     {"corridor", "fatmap-lut", -1.000f},
     {"corridor", "quake-subdiv16", -1.000f},
     {"corridor", "quake-subdiv8", -1.000f},
-    {"corridor", "auto", 0.810f},
+    {"corridor", "auto", 0.898f},
     {"corridor-cut", "affine", 114.496f},
     {"corridor-cut", "exact", 0.000f},
     {"corridor-cut", "persp-subdiv-4", 0.911f},

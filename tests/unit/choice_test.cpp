@@ -88,7 +88,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     TextureCopies copies(&tex);
     const Mapper& oriented = *find_mapper("fast-oriented-1");
     const Mapper& adaptive = *find_mapper("fast-adaptive-1");
-    int chose[MAPPER_LIMIT][2] = {}, by_spans = 0, choices = 0, unsearched = 0, undercut = 0;
+    int chose[MAPPER_LIMIT][2] = {}, by_spans = 0, choices = 0, unsearched = 0, outside = 0, undercut = 0;
     for (int n = 0; n < 400; ++n) {
         gen.depth_ratio = n % 4 == 0 ? 1.0001 : n % 4 == 1 ? 3 : 50;
         std::vector<Vertex> p = gen.triangle();
@@ -121,16 +121,23 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                     return 1e300;
                 };
                 // the oriented candidate (ORIENTED_GATE): at a budget of 1, fast-adaptive-1 along
-                // fast-oriented-1's walker where its certificate holds, priced by fast-oriented-1's
-                // row; drawn by fast-oriented-1 where no candidate undercuts it by more than the gate
-                // with its proof, else only a cheaper proven one is chosen
+                // fast-oriented-1's walker where its certificate holds (a polygon inside the clip) or
+                // its bound of the whole polygon is within 1 (one reaching outside it), priced by
+                // fast-oriented-1's row; drawn by fast-oriented-1 where no candidate undercuts it by
+                // more than the gate with its proof, else only a cheaper proven one is chosen
                 const bool one = b.max_error >= 1 && b.max_error < 2;
                 const Axis walker = surface == Surface::Planar ? Axis::Columns : fast_oriented_walker<4>(setup, target.clip);
-                const bool certified = one && fast_adaptive_certain<4>(setup, target.clip, tex, walker);
+                const ClipRect& clip = target.clip;
+                const bool inside = setup.min_x >= int64_t(clip.x0) * SUBPIXEL_ONE && setup.max_x <= int64_t(clip.x1) * SUBPIXEL_ONE &&
+                                    setup.min_y >= int64_t(clip.y0) * SUBPIXEL_ONE && setup.max_y <= int64_t(clip.y1) * SUBPIXEL_ONE;
+                const ErrorBound adaptive_whole =
+                    one && !inside ? adaptive.bound(BoundContext{adaptive, tex, walker, clip, 1.0, nullptr, true}, p.data(), 3) : ErrorBound{};
+                const bool certified = one && (inside ? fast_adaptive_certain<4>(setup, clip, tex, walker)
+                                                      : adaptive_whole.draws && adaptive_whole.footprint <= 1);
                 const double estimate = certified ? estimate_cost(MAPPER_COSTS[&oriented - MAPPERS], sizes[int(walker)]) : 1e300;
                 double chosen, slack = 0;
                 if (c.mapper == &oriented) {
-                    ++unsearched;
+                    ++unsearched, outside += !inside;
                     EXPECT_TRUE(certified);
                     EXPECT_EQ(c.axis, walker);
                     EXPECT_EQ(c.bound.footprint, 1.0);
@@ -167,6 +174,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     EXPECT_GT(by_spans, 0) << "and proofs span by span";
     EXPECT_LT(by_spans, choices) << "and of the whole polygon";
     EXPECT_GT(unsearched, 0) << "the oriented candidate taken unsearched";
+    EXPECT_GT(outside, 0) << "the oriented candidate taken on polygons reaching outside the clip";
     EXPECT_GT(undercut, 0) << "and undercut by a cheaper proven one";
 }
 
