@@ -59,7 +59,7 @@ const Mapper MAPPERS[] = {
      EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
     {"fast-table", "ours", "fast-affine's runs of rows, each span's texels at offsets from its first precomputed once a polygon (fatmap's table idea)",
      "exact coverage; u, v affine from the polygon's 16.16 planes, each texel read at most half a texel on each axis from "
-     "fast-affine's line (each span's start rounded to its nearest texel by the table): within one texel without perspective; "
+     "fast-affine's line (the table reads each span as if it started at its first texel's centre): within one texel without perspective; "
      "textures with power-of-two sides up to 1024, repeating or with the polygon's coordinates inside, from their doubled copy",
      EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE | NEED_DOUBLED, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_table_loop), fast::draw_table_rows,
      check_fast_run, fast::table_bound},
