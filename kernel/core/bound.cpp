@@ -227,7 +227,7 @@ void spread_corners(const PolygonSetup& s, const ClipRect& clip, PolygonSpread* 
         for (int i = 0; i < s.edge_count; ++i) o->corner_x[i] = double(s.edges[i].px - s.ref_x), o->corner_y[i] = double(s.edges[i].py - s.ref_y);
     };
     vertices();
-    if (s.min_x >= lo[0] && s.max_x <= hi[0] && s.min_y >= lo[1] && s.max_y <= hi[1]) return;
+    if (box_in_clip(s, clip)) return;
     const double ref[2] = {double(s.ref_x), double(s.ref_y)};
     for (int axis = 0; axis < 2 && o->corners > 0; ++axis)
         for (int end = 0; end < 2 && o->corners > 0; ++end) {

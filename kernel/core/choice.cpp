@@ -245,13 +245,9 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     // the whole polygon at once, from the spread of the part inside the clip (which the search
     // then shares)
     auto oriented_certain = [&](int a, Axis walker) {
-        const PolygonSetup& s = prepared->setup;
-        const ClipRect& clip = target.clip;
-        if (s.min_x >= int64_t(clip.x0) * SUBPIXEL_ONE && s.max_x <= int64_t(clip.x1) * SUBPIXEL_ONE && s.min_y >= int64_t(clip.y0) * SUBPIXEL_ONE &&
-            s.max_y <= int64_t(clip.y1) * SUBPIXEL_ONE)
-            return fast_adaptive_certain<4>(s, clip, tex, walker);
+        if (box_in_clip(prepared->setup, target.clip)) return fast_adaptive_certain<4>(prepared->setup, target.clip, tex, walker);
         const Mapper& m = MAPPERS[list.row[a]];
-        const ErrorBound b = m.bound(BoundContext{m, tex, walker, clip, 1.0, prepared, true}, vertices, count);
+        const ErrorBound b = m.bound(BoundContext{m, tex, walker, target.clip, 1.0, prepared, true}, vertices, count);
         return b.draws && b.footprint <= 1;
     };
     // The oriented candidate (a budget from one footprint to below two, where fast-oriented-1 is

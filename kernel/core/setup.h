@@ -90,6 +90,11 @@ struct PolygonSetup {
     Plane u, v;                             // u and v themselves: affine
     FixedPlane u_fx, v_fx;                  // u and v in 16.16 per pixel (the fast affine mappers)
 };
+// Whether the polygon's box (its vertices' extremes) lies inside the clip: nothing of it is cut.
+inline bool box_in_clip(const PolygonSetup& s, const ClipRect& clip) {
+    return s.min_x >= int64_t(clip.x0) * SUBPIXEL_ONE && s.max_x <= int64_t(clip.x1) * SUBPIXEL_ONE && s.min_y >= int64_t(clip.y0) * SUBPIXEL_ONE &&
+           s.max_y <= int64_t(clip.y1) * SUBPIXEL_ONE;
+}
 
 // Snaps a pixel coordinate to the subpixel grid: round to nearest, ties up.
 inline Fixed24_8 snap(double pixels) { return Fixed24_8::from_double(pixels); }

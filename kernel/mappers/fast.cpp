@@ -208,7 +208,6 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-affine on a textur
         if (last >= table_x) build_offset_table(s.u_fx.dx, s.v_fx.dx, last - table_x + 1, table + table_x, block);
         a.table = table;
         a.texture = block.block, a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.block_pitch = block.pitch;
-        a.doubled = 1;
     } else {
         a.texture = c.tex.aligned256;
         a.doubled = 0;
@@ -544,8 +543,8 @@ void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int3
 
 void fast_table_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
+    const TableBlock block{a.texture, a.u_mask, a.v_mask, a.block_pitch};
     run_rows(a, [&](uint8_t* row, int32_t lo, int32_t hi, uint32_t u, uint32_t v) {
-        const TableBlock block{a.texture, a.u_mask, a.v_mask, a.block_pitch};
         const uint8_t* origin = block.at(u, v);  // the table's first pixel's texel
         for (int32_t x = lo; x <= hi; ++x) row[x] = origin[a.table[x]];
     });

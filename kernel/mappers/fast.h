@@ -36,9 +36,9 @@ struct FastRunArgs {
     // Nonzero: every row whose bounds are in order lies within clip_lo..clip_hi (the polygon's box
     // lies inside the clip), so the NASM loops need not clip (the twins clip all the same)
     int32_t inside;
-    // The doubled copy (Texture::doubled) where `doubled` is 1, block_pitch bytes a row. fast-table
-    // (always 1): a row's first texel at texture + (v whole & v_mask) * block_pitch + (u whole &
-    // u_mask), the four read only then. fast-affine (textures above 256 a side): u and v are the
+    // fast-table: the doubled copy (Texture::doubled), a row's first texel at texture + (v whole &
+    // v_mask) * block_pitch + (u whole & u_mask); `doubled` unread. fast-affine: the doubled copy
+    // where `doubled` is 1 (textures above 256 a side), block_pitch bytes a row: u and v are the
     // polygon's less its window's corner (fast::doubled_window), so their wholes are the texel's
     // column and row in the copy, and the loop steps a texel pointer from there without wrapping.
     // Else the tiled block's (v whole & 255) * 256 + (u whole & 255), which the NASM loops take by

@@ -168,9 +168,7 @@ bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Te
     // (the mapper takes the texture: its sides divide 65536)
     if (tex.wrap != Wrap::Repeat) return false;
     // inside the clip: the spread's corners are the vertices (spread_corners)
-    if (s.min_x < int64_t(clip.x0) * SUBPIXEL_ONE || s.max_x > int64_t(clip.x1) * SUBPIXEL_ONE || s.min_y < int64_t(clip.y0) * SUBPIXEL_ONE ||
-        s.max_y > int64_t(clip.y1) * SUBPIXEL_ONE)
-        return false;
+    if (!box_in_clip(s, clip)) return false;
     constexpr double EPS = 2.220446049250313e-16, MARGIN = 1 + 1e-9;
     // Q at the corners as the spread takes it, and the corners' largest |x| and |y|
     double q_lo = 0, far_x = 0, far_y = 0;

@@ -128,8 +128,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 const bool one = b.max_error >= 1 && b.max_error < 2;
                 const Axis walker = surface == Surface::Planar ? Axis::Columns : fast_oriented_walker<4>(setup, target.clip);
                 const ClipRect& clip = target.clip;
-                const bool inside = setup.min_x >= int64_t(clip.x0) * SUBPIXEL_ONE && setup.max_x <= int64_t(clip.x1) * SUBPIXEL_ONE &&
-                                    setup.min_y >= int64_t(clip.y0) * SUBPIXEL_ONE && setup.max_y <= int64_t(clip.y1) * SUBPIXEL_ONE;
+                const bool inside = box_in_clip(setup, clip);
                 const ErrorBound adaptive_whole =
                     one && !inside ? adaptive.bound(BoundContext{adaptive, tex, walker, clip, 1.0, nullptr, true}, p.data(), 3) : ErrorBound{};
                 const bool certified = one && (inside ? fast_adaptive_certain<4>(setup, clip, tex, walker)
