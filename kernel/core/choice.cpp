@@ -21,12 +21,22 @@ double box_inside(int64_t lo, int64_t hi, int32_t first, int32_t end) {
 
 }  // namespace
 
+double affine_deviation(const PolygonSetup& s, const ClipRect& clip) {
+    if (!box_in_clip(s, clip) || s.area2 < 2 * AFFINE_DEVIATION_PIXELS * SUBPIXEL_ONE * SUBPIXEL_ONE) return 0;
+    // at the corners' mean (relative to the reference vertex)
+    double x = 0, y = 0;
+    for (int i = 0; i < s.edge_count; ++i) x += double(s.edges[i].px - s.ref_x), y += double(s.edges[i].py - s.ref_y);
+    x /= s.edge_count, y /= s.edge_count;
+    const double q = s.q.at(x, y);
+    if (!(q > 0)) return 0;
+    const double du = magnitude(s.u.at(x, y) - s.pu.at(x, y) / q), dv = magnitude(s.v.at(x, y) - s.pv.at(x, y) / q);
+    return larger(du, dv) / larger(1.0, texel_footprint(s, x, y));
+}
+
 void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size[2]) {
     const double one = double(SUBPIXEL_ONE);
     const double w = box_inside(s.min_x, s.max_x, clip.x0, clip.x1), h = box_inside(s.min_y, s.max_y, clip.y0, clip.y1);
-    double area2 = 0;  // twice the signed area, subpixels squared (the shoelace)
-    for (int i = 0; i < s.edge_count; ++i) area2 += double(s.edges[i].px) * double(s.edges[i].dy) - double(s.edges[i].py) * double(s.edges[i].dx);
-    const double area = magnitude(area2) / (2 * one * one), pixels = area < w * h ? area : w * h;
+    const double area = double(s.area2) / (2 * one * one), pixels = area < w * h ? area : w * h;
     size[int(Axis::Rows)] = PolygonSize{h, pixels};
     size[int(Axis::Columns)] = PolygonSize{w, pixels};
 }
@@ -61,8 +71,8 @@ struct Candidates {
     AutoPlan plan{};  // plan_auto's but the envelope's part
     // fast-adaptive-1 along each walker, and fast-oriented-1 (which draws it along the walker it
     // picks, with its own driver): the oriented candidate (choose_mapper); -1: none here
-    int adaptive[2] = {-1, -1};  // [Axis]
-    int oriented_row = -1;       // fast-oriented-1's registry row
+    int adaptive[2][2] = {{-1, -1}, {-1, -1}};  // [fast-adaptive-1, -2][Axis]
+    int oriented_row = -1;                      // fast-oriented-1's registry row
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
@@ -89,7 +99,8 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
             c.row[k] = int16_t(i), c.axis[k] = Axis(a), c.cost[k] = cost, c.walks[k] = bound_walks(m), c.spans[k] = proven_by_spans(m);
         }
     for (int k = 0; k < c.count; ++k)
-        if (MAPPERS[c.row[k]].span == fast_adaptive_span<4>) c.adaptive[int(c.axis[k])] = k;
+        for (int two = 0; two < 2; ++two)
+            if (MAPPERS[c.row[k]].span == (two ? fast_adaptive_span<8> : fast_adaptive_span<4>)) c.adaptive[two][int(c.axis[k])] = k;
     for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i)
         if (MAPPERS[i].draw == fast_oriented_draw<4> && mapper_accepts(MAPPERS[i], tex) && MAPPER_COSTS[i].polygon >= 0) c.oriented_row = i;
     for (int k = c.count - 1; k >= 0; --k) {
@@ -239,32 +250,39 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         choice.mapper = &m, choice.axis = list.axis[k], choice.bound = b, choice.by_spans = !whole_only;
         return true;
     };
-    // Whether fast-adaptive-1 (the list's candidate a) along the walker is within one footprint on
-    // the polygon: inside the clip by its certificate from the setup alone; reaching outside it
-    // (the certificate takes the vertices for the corners of the part drawn) by its own bound of
-    // the whole polygon at once, from the spread of the part inside the clip (which the search
-    // then shares)
-    auto oriented_certain = [&](int a, Axis walker) {
-        if (box_in_clip(prepared->setup, target.clip)) return fast_adaptive_certain<4>(prepared->setup, target.clip, tex, walker);
-        const Mapper& m = MAPPERS[list.row[a]];
-        const ErrorBound b = m.bound(BoundContext{m, tex, walker, target.clip, 1.0, prepared, true}, vertices, count);
-        return b.draws && b.footprint <= 1;
-    };
-    // The oriented candidate (a budget from one footprint to below two, where fast-oriented-1 is
-    // within it): fast-adaptive-1 along the walker fast-oriented-1 picks, where its certificate
-    // proves it within 1 from the setup alone, priced by fast-oriented-1's row with no proof. Where it
-    // costs no more than the least any candidate could cost with its proof plus ORIENTED_GATE, it is
-    // the choice, drawn by fast-oriented-1 itself (its driver picks the same walker); else the price
+    // The oriented candidate, from a budget of one footprint to below four: fast-adaptive-B (B = 1
+    // below two, else 2) along the walker fast-oriented-B would pick, where it is proven within B:
+    // inside the clip by its certificate from the setup alone; reaching outside it (the certificate
+    // takes the vertices for the corners of the part drawn) by its own bound of the whole polygon
+    // at once, from the spread of the part inside the clip (which the search then shares). Priced
+    // with no proof, by fast-oriented-1's row (B = 1: drawn by fast-oriented-1 itself, whose driver
+    // picks the same walker) or fast-adaptive-2's. Where it costs no more than the least any
+    // candidate could cost with its proof plus ORIENTED_GATE, or where no candidate that steps the
+    // polygon affinely can be within the budget (affine_deviation), it is the choice; else the price
     // the search must undercut.
     const Mapper* oriented = nullptr;
     Axis oriented_walker = Axis::Rows;
     int32_t oriented_price = NOT_LIVE;
-    if (budget.max_error >= 1 && budget.max_error < 2 && list.oriented_row >= 0) {
-        oriented_walker = target.planar ? Axis::Columns : oriented_axis(prepared->setup, target.clip, fast_adaptive_room(1));
-        if (list.adaptive[int(oriented_walker)] >= 0 && oriented_certain(list.adaptive[int(oriented_walker)], oriented_walker)) {
-            oriented = &MAPPERS[list.oriented_row];
-            const double estimate = estimate_cost(MAPPER_COSTS[list.oriented_row], size[int(oriented_walker)]);
-            if (estimate <= least_cost(0) + ORIENTED_GATE) return Choice{oriented, oriented_walker, ErrorBound{true, true, 1}, false};
+    ErrorBound oriented_bound{true, true, 1};
+    if (budget.max_error >= 1 && budget.max_error < 4 && list.oriented_row >= 0) {
+        const int two = budget.max_error >= 2;
+        const double within = two ? 2 : 1;
+        oriented_walker = target.planar ? Axis::Columns : oriented_axis(prepared->setup, target.clip, fast_adaptive_room(within));
+        const int a = list.adaptive[two][int(oriented_walker)];
+        const Mapper& m = MAPPERS[a >= 0 ? list.row[a] : 0];
+        const bool inside = box_in_clip(prepared->setup, target.clip);
+        auto proven = [&] {
+            if (inside) return two ? fast_adaptive_certain<8>(prepared->setup, target.clip, tex, oriented_walker)
+                                   : fast_adaptive_certain<4>(prepared->setup, target.clip, tex, oriented_walker);
+            const ErrorBound b = m.bound(BoundContext{m, tex, oriented_walker, target.clip, within, prepared, true}, vertices, count);
+            return b.draws && b.footprint <= within;
+        };
+        if (a >= 0 && proven()) {
+            oriented = two ? &m : &MAPPERS[list.oriented_row];
+            oriented_bound.footprint = within;
+            const double estimate = estimate_cost(MAPPER_COSTS[oriented - MAPPERS], size[int(oriented_walker)]);
+            if (estimate <= least_cost(0) + ORIENTED_GATE || affine_deviation(prepared->setup, target.clip) > budget.max_error)
+                return Choice{oriented, oriented_walker, oriented_bound, false};
             oriented_price = price_of(estimate);
         }
     }
@@ -289,7 +307,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     }
     for (int k; n > 0 && (k = cheapest(ceiling)) >= 0;)
         if (ask(k, false)) break;
-    return choice.mapper || !oriented ? choice : Choice{oriented, oriented_walker, ErrorBound{true, true, 1}, false};
+    return choice.mapper || !oriented ? choice : Choice{oriented, oriented_walker, oriented_bound, false};
 }
 
 double corner_footprint(const Vertex* v) {
@@ -311,6 +329,18 @@ AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& targe
     // below a budget of 1, every bound but the certain one's is at least 1 / max(1, F) (a rounding
     // of some texel, over the footprint F where it is least): within it only where F >= 1 / budget
     plan.exact_below = budget.max_error > 0 && budget.max_error < 1 ? 1 / budget.max_error : 0;
+    // (the estimates' difference less CHOICE_COST is at least (polygon - CHOICE_COST) + (span at
+    // most lines, where the certain one's is the less) + pixel P: above 0 where P > P0 below, the
+    // pixels one more for the roundings)
+    plan.choosing_pays_above2 = INT64_MAX;
+    const CostRow &mine = plan.certain_row, &least = plan.others;
+    if (plan.certain && !plan.sole && plan.exact_below == 0 && mine.pixel > least.pixel) {
+        const double most_lines = double(larger(target.clip.x1 - target.clip.x0, target.clip.y1 - target.clip.y0));
+        const double span = mine.span < least.span ? (mine.span - least.span) * most_lines : 0;
+        const double p0 = (CHOICE_COST - (mine.polygon - least.polygon) - span) / (mine.pixel - least.pixel) + 1;
+        const double one = double(SUBPIXEL_ONE), above2 = 2 * (p0 > 0 ? p0 : 0) * one * one;
+        if (above2 < 1e18) plan.choosing_pays_above2 = int64_t(above2);
+    }
     if (list.enveloped_count == 1 && list.envelope_cheapest && budget_allows(budget, ErrorBound{true, true, envelope_footprint})) {
         plan.enveloped = &MAPPERS[list.row[list.enveloped_first]];
         plan.enveloped_axis = list.axis[list.enveloped_first];
@@ -325,22 +355,23 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     if (!plan.certain) return nullptr;
     *axis = plan.certain_axes[0];
     if (plan.sole && plan.certain_walkers == 1) return plan.certain;
-    // the box the setup would find, inside the clip
+    // the box the setup would find, and its sides inside the clip (subpixels)
     int32_t x_lo = vertices[0].x.raw, x_hi = x_lo, y_lo = vertices[0].y.raw, y_hi = y_lo;
     for (int i = 1; i < count; ++i) {
         const int32_t x = vertices[i].x.raw, y = vertices[i].y.raw;
         x_lo = x < x_lo ? x : x_lo, x_hi = x > x_hi ? x : x_hi, y_lo = y < y_lo ? y : y_lo, y_hi = y > y_hi ? y : y_hi;
     }
-    double lines[2];
-    lines[int(Axis::Rows)] = box_inside(y_lo, y_hi, clip.y0, clip.y1);
-    lines[int(Axis::Columns)] = box_inside(x_lo, x_hi, clip.x0, clip.x1);
-    // its walker: the estimates on its walkers differ only in their lines
-    const double span = plan.certain_row.span;
-    if (plan.certain_walkers == 2 && span * lines[int(plan.certain_axes[1])] < span * lines[int(*axis)]) *axis = plan.certain_axes[1];
-    if (plan.sole) return plan.certain;
+    // (in 32 bits: the clip's edges in subpixels are within 2^17)
+    const int32_t one_px = SUBPIXEL_ONE;
+    auto inside = [](int32_t lo, int32_t hi, int32_t first, int32_t end) {
+        lo = lo < first ? first : lo, hi = hi > end ? end : hi;
+        return hi > lo ? hi - lo : 0;
+    };
+    const int32_t width = inside(x_lo, x_hi, clip.x0 * one_px, clip.x1 * one_px), height = inside(y_lo, y_hi, clip.y0 * one_px, clip.y1 * one_px);
     // twice the area the setup would find (the shoelace over the corners: repeated ones add nothing)
     double area2 = 0;
-    if (count == 3) {
+    if (plan.sole) {
+    } else if (count == 3) {
         const Vertex &a = vertices[0], &b = vertices[1], &c = vertices[2];
         area2 = double(b.x.raw - a.x.raw) * double(c.y.raw - a.y.raw) - double(c.x.raw - a.x.raw) * double(b.y.raw - a.y.raw);
     } else {
@@ -349,8 +380,17 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
             area2 += double(a.x.raw) * double(b.y.raw) - double(b.x.raw) * double(a.y.raw);
         }
     }
-    const double one = double(SUBPIXEL_ONE), area = magnitude(area2) / (2 * one * one);
-    const double box = lines[0] * lines[1], pixels = area < box ? area : box;
+    area2 = magnitude(area2);
+    if (area2 > double(plan.choosing_pays_above2) && 2 * int64_t(width) * height > plan.choosing_pays_above2) return nullptr;
+    const double one = double(SUBPIXEL_ONE);
+    double lines[2];
+    lines[int(Axis::Rows)] = double(height) / one;
+    lines[int(Axis::Columns)] = double(width) / one;
+    // its walker: the estimates on its walkers differ only in their lines
+    const double span = plan.certain_row.span;
+    if (plan.certain_walkers == 2 && span * lines[int(plan.certain_axes[1])] < span * lines[int(*axis)]) *axis = plan.certain_axes[1];
+    if (plan.sole) return plan.certain;
+    const double area = area2 / (2 * one * one), box = lines[0] * lines[1], pixels = area < box ? area : box;
     const double best = plan.certain_row.polygon + span * lines[int(*axis)] + plan.certain_row.pixel * pixels;
     const bool rows_fewer = lines[0] < lines[1];
     const double others_lines = lines[(plan.others.span < 0) == rows_fewer ? 1 : 0];  // (a fitted cost below 0: where they are most)
@@ -358,9 +398,8 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     if (best <= least + CHOICE_COST) return plan.certain;
     // (only where the polygon lies inside the clip: its first corner is then among the pixels
     // drawn, not off the screen where a wall comes nearest)
-    const int64_t one_px = SUBPIXEL_ONE;
-    const bool inside = x_lo >= clip.x0 * one_px && x_hi <= clip.x1 * one_px && y_lo >= clip.y0 * one_px && y_hi <= clip.y1 * one_px;
-    return inside && plan.exact_below > 0 && corner_footprint(vertices) < plan.exact_below ? plan.certain : nullptr;
+    const bool in_clip = x_lo >= clip.x0 * one_px && x_hi <= clip.x1 * one_px && y_lo >= clip.y0 * one_px && y_hi <= clip.y1 * one_px;
+    return in_clip && plan.exact_below > 0 && corner_footprint(vertices) < plan.exact_below ? plan.certain : nullptr;
 }
 
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count) {

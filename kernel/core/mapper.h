@@ -101,7 +101,9 @@ struct DrawContext {
     Target& target;
     RenderStats* stats;  // the driver adds spans and pixels through emit() and tally()
     LoopFn loop;
-    const PolygonSetup* setup = nullptr;  // the polygon set up already (auto: every plane), or nullptr
+    // the polygon set up already (auto: every plane), or nullptr; given, `axis` is the walker auto
+    // picked (a driver that picks its own, fast-oriented's, takes it: auto picks it the same way)
+    const PolygonSetup* setup = nullptr;
     Input input = Input::Any;             // for the driver's own setup_polygon
 };
 using DrawFn = SetupStatus (*)(const DrawContext& c, const Vertex* vertices, int count);

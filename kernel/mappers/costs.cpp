@@ -5,31 +5,31 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1029.6f, 348.75f, 40.332f}, // 11 scenes
-    {"exact", 1011.0f, 316.15f, 80.306f}, // 11 scenes
-    {"persp-subdiv-4", 1011.0f, 321.52f, 91.379f}, // 11 scenes
-    {"persp-subdiv-8", 1011.0f, 376.26f, 59.518f}, // 11 scenes
-    {"persp-subdiv-16", 1011.0f, 415.27f, 43.457f}, // 11 scenes
-    {"persp-subdiv-32", 1011.0f, 435.71f, 35.604f}, // 11 scenes
-    {"constant-depth", 1011.0f, 452.10f, 29.800f}, // 11 scenes
-    {"persp-adaptive-0.5", 1011.0f, 908.51f, 290.044f}, // 11 scenes
-    {"persp-adaptive-1", 1011.0f, 999.57f, 51.767f}, // 11 scenes
-    {"persp-adaptive-2", 1011.0f, 1016.72f, 44.503f}, // 11 scenes
-    {"persp-adaptive-4", 1011.0f, 1029.51f, 40.037f}, // 11 scenes
+    {"affine", 1029.6f, 348.52f, 40.337f}, // 11 scenes
+    {"exact", 1011.0f, 315.92f, 80.311f}, // 11 scenes
+    {"persp-subdiv-4", 1011.0f, 321.29f, 91.383f}, // 11 scenes
+    {"persp-subdiv-8", 1011.0f, 376.03f, 59.522f}, // 11 scenes
+    {"persp-subdiv-16", 1011.0f, 415.04f, 43.461f}, // 11 scenes
+    {"persp-subdiv-32", 1011.0f, 435.48f, 35.608f}, // 11 scenes
+    {"constant-depth", 1011.0f, 451.86f, 29.805f}, // 11 scenes
+    {"persp-adaptive-0.5", 1011.0f, 908.28f, 290.049f}, // 11 scenes
+    {"persp-adaptive-1", 1011.0f, 999.34f, 51.771f}, // 11 scenes
+    {"persp-adaptive-2", 1011.0f, 1016.49f, 44.507f}, // 11 scenes
+    {"persp-adaptive-4", 1011.0f, 1029.28f, 40.041f}, // 11 scenes
     {"fast-affine", 1052.9f, 109.17f, 5.137f}, // 11 scenes
-    {"fast-table", 1309.6f, 99.21f, 2.068f}, // 11 scenes
+    {"fast-table", 1307.7f, 99.20f, 2.068f}, // 11 scenes
     {"fast-columns", 1124.4f, 177.62f, 4.967f}, // 11 scenes
     {"fast-table-columns", 1379.6f, 248.37f, 2.826f}, // 11 scenes
-    {"fast-subdiv-8", 1011.0f, 298.99f, 14.043f}, // 11 scenes
-    {"fast-subdiv-16", 1011.0f, 309.28f, 9.935f}, // 11 scenes
-    {"fast-subdiv-32", 1011.0f, 314.38f, 7.948f}, // 11 scenes
-    {"fast-constant-depth", 1011.0f, 318.95f, 6.308f}, // 11 scenes
-    {"fast-adaptive-1", 1011.0f, 341.84f, 9.600f}, // 11 scenes
-    {"fast-adaptive-2", 1011.0f, 345.59f, 8.118f}, // 11 scenes
-    {"fast-oriented-1", 1168.2f, 359.34f, 7.778f}, // 11 scenes
-    {"xsharp-dda", 1516.3f, 376.65f, 37.425f}, // 10 scenes
+    {"fast-subdiv-8", 1011.0f, 298.76f, 14.047f}, // 11 scenes
+    {"fast-subdiv-16", 1011.0f, 309.05f, 9.940f}, // 11 scenes
+    {"fast-subdiv-32", 1011.0f, 314.15f, 7.953f}, // 11 scenes
+    {"fast-constant-depth", 1011.0f, 318.72f, 6.313f}, // 11 scenes
+    {"fast-adaptive-1", 1011.0f, 341.61f, 9.604f}, // 11 scenes
+    {"fast-adaptive-2", 1011.0f, 345.36f, 8.123f}, // 11 scenes
+    {"fast-oriented-1", 1172.2f, 359.34f, 7.778f}, // 11 scenes
+    {"xsharp-dda", 1516.3f, 376.64f, 37.424f}, // 10 scenes
     {"xsharp-row-out", 1516.3f, 511.91f, 18.936f}, // 10 scenes
-    {"xsharp-column", 1520.0f, 484.56f, 12.609f}, // 10 scenes
+    {"xsharp-column", 1520.0f, 484.55f, 12.608f}, // 10 scenes
     {"hecker-steptable", 5329.3f, 0.00f, 613.875f}, // 10 scenes
     {"fatmap-256", 1727.7f, 162.44f, 13.643f}, // 8 scenes
     {"fatmap-256-16", 1727.7f, 167.44f, 12.643f}, // 8 scenes

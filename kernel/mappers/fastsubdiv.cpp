@@ -236,7 +236,8 @@ SetupStatus fast_oriented_draw(const DrawContext& c, const Vertex* vertices, int
         if (status != SetupStatus::Ok) return status;
         s = &own;
     }
-    const Axis axis = c.axis == Axis::Rows ? fast_oriented_walker<QUARTERS>(*s, c.target.clip) : Axis::Columns;
+    // (auto hands over its setup with the walker it picked as this does: choose_mapper's oriented candidate)
+    const Axis axis = c.setup || c.axis == Axis::Columns ? c.axis : fast_oriented_walker<QUARTERS>(*s, c.target.clip);
     EdgeWalker walker(*s, axis, c.target.clip);
     setup_done(c);
     const SpanContext context{*s, c.tex, axis, c.loop};

@@ -87,8 +87,9 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};
     TextureCopies copies(&tex);
     const Mapper& oriented = *find_mapper("fast-oriented-1");
-    const Mapper& adaptive = *find_mapper("fast-adaptive-1");
-    int chose[MAPPER_LIMIT][2] = {}, by_spans = 0, choices = 0, unsearched = 0, outside = 0, undercut = 0;
+    const Mapper& adaptive1 = *find_mapper("fast-adaptive-1");
+    const Mapper& adaptive2 = *find_mapper("fast-adaptive-2");
+    int chose[MAPPER_LIMIT][2] = {}, by_spans = 0, choices = 0, unsearched = 0, outside = 0, undercut = 0, ruled_out = 0;
     for (int n = 0; n < 400; ++n) {
         gen.depth_ratio = n % 4 == 0 ? 1.0001 : n % 4 == 1 ? 3 : 50;
         std::vector<Vertex> p = gen.triangle();
@@ -120,33 +121,41 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                         return cost + (bound_walks(m) ? 0 : BOUND_SPAN_COST * sizes[int(axis)].spans);
                     return 1e300;
                 };
-                // the oriented candidate (ORIENTED_GATE): at a budget of 1, fast-adaptive-1 along
-                // fast-oriented-1's walker where its certificate holds (a polygon inside the clip) or
-                // its bound of the whole polygon is within 1 (one reaching outside it), priced by
-                // fast-oriented-1's row; drawn by fast-oriented-1 where no candidate undercuts it by
-                // more than the gate with its proof, else only a cheaper proven one is chosen
-                const bool one = b.max_error >= 1 && b.max_error < 2;
-                const Axis walker = surface == Surface::Planar ? Axis::Columns : fast_oriented_walker<4>(setup, target.clip);
+                // the oriented candidate (ORIENTED_GATE): from a budget of 1 to below 4, fast-adaptive-B
+                // (B = 1 below 2, else 2) along the walker fast-oriented-B would pick, where its
+                // certificate holds (a polygon inside the clip) or its bound of the whole polygon is
+                // within B (one reaching outside it), priced by fast-oriented-1's row (B = 1) or
+                // fast-adaptive-2's; drawn so where no candidate undercuts it by more than the gate
+                // with its proof, or where the affine deviation is above the budget (then only a
+                // mapper that does not step the polygon affinely may undercut it, by any amount),
+                // else only a cheaper proven one is chosen
+                const bool one = b.max_error >= 1 && b.max_error < 2, two = b.max_error >= 2 && b.max_error < 4;
+                const double within = two ? 2 : 1;
+                const Mapper& adaptive = two ? adaptive2 : adaptive1;
+                const Mapper& drawn_by = two ? adaptive2 : oriented;
+                const Axis walker =
+                    surface == Surface::Planar ? Axis::Columns : oriented_axis(setup, target.clip, fast_adaptive_room(within));
                 const ClipRect& clip = target.clip;
                 const bool inside = box_in_clip(setup, clip);
-                const ErrorBound adaptive_whole =
-                    one && !inside ? adaptive.bound(BoundContext{adaptive, tex, walker, clip, 1.0, nullptr, true}, p.data(), 3) : ErrorBound{};
-                const bool certified = one && (inside ? fast_adaptive_certain<4>(setup, clip, tex, walker)
-                                                      : adaptive_whole.draws && adaptive_whole.footprint <= 1);
-                const double estimate = certified ? estimate_cost(MAPPER_COSTS[&oriented - MAPPERS], sizes[int(walker)]) : 1e300;
+                const ErrorBound adaptive_whole = (one || two) && !inside
+                                                      ? adaptive.bound(BoundContext{adaptive, tex, walker, clip, within, nullptr, true}, p.data(), 3)
+                                                      : ErrorBound{};
+                const bool certain_inside = two ? fast_adaptive_certain<8>(setup, clip, tex, walker) : fast_adaptive_certain<4>(setup, clip, tex, walker);
+                const bool certified = (one || two) && (inside ? certain_inside : adaptive_whole.draws && adaptive_whole.footprint <= within);
+                const double estimate = certified ? estimate_cost(MAPPER_COSTS[&drawn_by - MAPPERS], sizes[int(walker)]) : 1e300;
+                const bool affine_ruled_out = affine_deviation(setup, clip) > b.max_error;
                 double chosen, slack = 0;
-                if (c.mapper == &oriented) {
-                    ++unsearched, outside += !inside;
-                    EXPECT_TRUE(certified);
-                    EXPECT_EQ(c.axis, walker);
-                    EXPECT_EQ(c.bound.footprint, 1.0);
-                    chosen = estimate, slack = ORIENTED_GATE;
+                if (certified && c.mapper == &drawn_by && c.axis == walker && c.bound.footprint == within) {
+                    ++unsearched, outside += !inside, ruled_out += affine_ruled_out;
+                    chosen = estimate, slack = affine_ruled_out ? 1e300 : ORIENTED_GATE;
                 } else {
+                    EXPECT_NE(c.mapper, &oriented) << "fast-oriented-1 where its candidate is not proven";
                     chosen = total(*c.mapper, c.axis);
                     EXPECT_LT(chosen, 1e300) << c.mapper->name << " has no bound within the budget";
                     EXPECT_LE(chosen, estimate + 1) << c.mapper->name << " is dearer than the oriented candidate";
                     undercut += certified;
                 }
+                const bool affine_stepping_only = slack == 1e300;
                 for (int i = 0; i < MAPPER_COUNT; ++i) {
                     const Mapper& m = MAPPERS[i];
                     for (Axis axis : {Axis::Rows, Axis::Columns}) {
@@ -154,14 +163,19 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                         // (the search prices in whole instructions, each estimate rounded to the
                         // nearest: two within one of each other may tie, and the tie goes to the
                         // one priced first)
-                        EXPECT_GE(total(m, axis), chosen - 1 - slack)
+                        // (where the affine deviation ruled the search out: the affine-stepping ones)
+                        const bool stepping = m.enveloped || m.span_planes == PLANES_AFFINE || std::string(m.name).rfind("fast-table", 0) == 0;
+                        if (affine_stepping_only && !stepping) continue;
+                        EXPECT_GE(total(m, axis), affine_stepping_only ? chosen : chosen - 1 - slack)
                             << m.name << " is cheaper than " << c.mapper->name << " within the budget " << b.max_error;
                     }
                 }
-                EXPECT_LE(chosen, last_total + 1 + slack) << "a looser budget chose a dearer mapper";
-                // (after the oriented candidate, what a looser budget may cost at most: fast-adaptive-1
-                // along that walker with its proof, within the budget where within 1)
-                last_total = c.mapper == &oriented ? total(adaptive, walker) : chosen;
+                if (!affine_stepping_only) {
+                    EXPECT_LE(chosen, last_total + 1 + slack) << "a looser budget chose a dearer mapper";
+                }
+                // (after the oriented candidate, what a looser budget may cost at most: fast-adaptive-B
+                // along that walker with its proof, within the budget where within B)
+                last_total = slack > 0 ? total(adaptive, walker) : chosen;
             }
         }
         if (HasFailure()) return;
@@ -175,6 +189,61 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     EXPECT_GT(unsearched, 0) << "the oriented candidate taken unsearched";
     EXPECT_GT(outside, 0) << "the oriented candidate taken on polygons reaching outside the clip";
     EXPECT_GT(undercut, 0) << "and undercut by a cheaper proven one";
+    EXPECT_GT(ruled_out, 0) << "and taken where the affine deviation rules the search out";
+}
+
+// A planar quad in perspective: a square of side 2 (texels 0..side) about a random point in front of
+// the eye, tilted at random, projected (focal length 160 pixels, the screen's centre).
+std::vector<Vertex> planar_quad(TriangleGen& gen, double depth, double side) {
+    const double cz = gen.uniform(1, depth), cx = gen.uniform(-1, 1) * cz, cy = gen.uniform(-0.75, 0.75) * cz;
+    double a[3] = {gen.uniform(-1, 1), gen.uniform(-1, 1), gen.uniform(-1, 1)}, b[3] = {gen.uniform(-1, 1), gen.uniform(-1, 1), gen.uniform(-1, 1)};
+    const double scale = gen.uniform(0.05, 1) * cz * 0.5;
+    std::vector<Vertex> quad;
+    for (int k = 0; k < 4; ++k) {
+        const double sa = k == 0 || k == 3 ? -1 : 1, sb = k < 2 ? -1 : 1;
+        const double x = cx + scale * (sa * a[0] + sb * b[0]), y = cy + scale * (sa * a[1] + sb * b[1]), z = cz + scale * (sa * a[2] + sb * b[2]);
+        if (!(z > 0.05)) return {};
+        quad.push_back(vertex_raw(int32_t((160 + 160 * x / z) * 256), int32_t((120 + 160 * y / z) * 256), z, (sa + 1) / 2 * side, (sb + 1) / 2 * side));
+    }
+    return quad;
+}
+
+// affine_deviation is a floor of every bound of a mapper that steps the polygon affinely (the
+// affine planes, or fast-table's offsets from them): where it is above the budget, none of them is
+// within it, which the oriented candidate's gate relies on to skip the search. Their tightest
+// bounds on random triangles and planar quads, perspective from none to steep, both walkers.
+TEST(Auto, NoAffineSteppingMapperIsBoundedBelowTheAffineDeviation) {
+    TriangleGen gen(1126u);
+    std::vector<uint8_t> texels(256 * 256);
+    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
+    TextureCopies copies(&tex);
+    const ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    int asked = 0, above_one = 0, inside = 0;
+    double worst = 1e300;
+    for (int n = 0; n < 24000; ++n) {
+        gen.depth_ratio = n % 4 == 0 ? 1.0001 : n % 4 == 1 ? 1.2 : n % 4 == 2 ? 3 : 50;
+        const std::vector<Vertex> p = n % 2 ? gen.triangle() : planar_quad(gen, n % 4 < 2 ? 4 : 40, n % 8 < 4 ? 16 : 512);
+        PolygonSetup setup;
+        if (p.empty() || setup_polygon(p.data(), int(p.size()), &setup) != SetupStatus::Ok) continue;
+        const double d = affine_deviation(setup, clip);
+        inside += d > 0;
+        above_one += d > 1;
+        for (const char* name : {"affine", "fast-affine", "fast-columns", "fast-table", "fast-table-columns"}) {
+            const Mapper& m = *find_mapper(name);
+            for (Axis axis : {Axis::Rows, Axis::Columns}) {
+                if (!mapper_walks(m, axis)) continue;
+                const ErrorBound b = m.bound(BoundContext{m, tex, axis, clip}, p.data(), int(p.size()));
+                if (!b.draws) continue;
+                ++asked;
+                if (d > 0 && b.footprint < d) std::printf("LOW %s %d %zu %.4f %.4f %.4f\n", name, n, p.size(), d, b.footprint, b.footprint / d);
+                if (d > 0) worst = std::min(worst, b.footprint / d);
+            }
+        }
+        if (HasFailure()) return;
+    }
+    EXPECT_GT(inside, 500) << "polygons whose deviation is known";
+    EXPECT_GT(above_one, 250) << "polygons where the gate would skip the search at a budget of 1";
+    std::printf("  %d bounds asked; the deviation above 1 on %d polygons; the least bound over it %.3f\n", asked, above_one, worst);
 }
 
 // Where choosing cannot pay (unchosen_mapper), auto draws exact unchosen: only where, by the cost
@@ -186,7 +255,7 @@ TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
     std::vector<uint8_t> texels(256 * 256);
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};
     TextureCopies copies(&tex);
-    int unchosen = 0, chosen = 0, walkers[2] = {}, by_footprint = 0, missed = 0;
+    int unchosen = 0, chosen = 0, walkers[2] = {}, by_footprint = 0, missed = 0, at_once = 0;
     for (Surface surface : {Surface::Linear, Surface::Planar}) {
         Target target = surface_kind(surface);
         target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
@@ -201,6 +270,18 @@ TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
                 Choice c = choose_mapper(b, p.data(), 3, tex, target, &prepared);
                 Axis axis;
                 const Mapper* m = unchosen_mapper(plan, p.data(), 3, target.clip, &axis);
+                if (!m && c.mapper && b.max_error >= 1) {
+                    // and where it gives none (from a budget of 1, also at once: choosing_pays_above2),
+                    // exact on either of its walkers costs more than CHOICE_COST above the least the
+                    // others could cost on the walker where they cost least
+                    PolygonSize size[2];
+                    polygon_sizes(prepared.setup, target.clip, size);
+                    double best = 1e300, least = 1e300;
+                    for (int w = 0; w < plan.certain_walkers; ++w) best = std::min(best, estimate_cost(plan.certain_row, size[int(plan.certain_axes[w])]));
+                    for (const PolygonSize& on : size) least = std::min(least, estimate_cost(plan.others, on));
+                    EXPECT_GT(best, least + CHOICE_COST) << "polygon " << n << ": exact unchosen would have cost less";
+                    at_once += magnitude(double(prepared.setup.area2)) > double(plan.choosing_pays_above2);
+                }
                 if (!m || !c.mapper) {
                     chosen += !m;
                     continue;
@@ -231,8 +312,9 @@ TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
         }
     }
     std::printf("  unchosen %d (by rows %d, by columns %d; %d by the footprint below 1 / budget, of which choosing would have found a "
-                "cheaper mapper on %d), chosen %d\n",
-                unchosen, walkers[0], walkers[1], by_footprint, missed, chosen);
+                "cheaper mapper on %d), chosen %d (%d at once, by their size)\n",
+                unchosen, walkers[0], walkers[1], by_footprint, missed, chosen, at_once);
+    EXPECT_GT(at_once, 0) << "polygons given to the choice at once";
     EXPECT_LE(missed * 20, by_footprint) << "the corner's footprint misjudges one polygon in 20 or more";
     EXPECT_GT(walkers[0], 0);
     EXPECT_GT(walkers[1], 0);
