@@ -1174,6 +1174,79 @@ fast_triangle_runs_asm:
     mov esi, [ebp + FTRI_setup]
     jmp fast_triangle_asm.runs
 
+; fast_triangle_enveloped_asm(FastTriangleArgs* a): fast_triangle_asm for auto's envelope (twin:
+; fast_triangle_enveloped): after the setup, within_envelope (kernel/core/bound.h) with the limits
+; at `envelope`, in integers: the box's sides (the low halves: in range they are below 2^23
+; subpixels) within the extents and their sum within the reach, D (twice the area) within the
+; limits' area2, W H <= 16384 D where D is below 2^22 (4 W H <= 65536 D; above, at once: W H is
+; below 2^36), and the four 16.16 steps within 32766 texels. Returns 3 (the setup written) where one
+; fails, else as fast_triangle_asm.
+global fast_triangle_enveloped_asm
+fast_triangle_enveloped_asm:
+    LOOP_ENTER F_FRAME
+    mov ebx, LOOP_ARG(F_FRAME)
+    mov esi, [ebx + FTRI_in]
+    mov ebp, [ebx + FTRI_setup]
+    SETUP_TRIANGLE
+    mov edi, LOOP_ARG(F_FRAME)
+    mov edi, [edi + FTRI_envelope]
+    mov eax, [ebp + PS_max_x]
+    sub eax, [ebp + PS_min_x]           ; W
+    cmp eax, [edi + ENV_extent_x]
+    jg .unproven
+    mov ecx, [ebp + PS_max_y]
+    sub ecx, [ebp + PS_min_y]           ; H
+    cmp ecx, [edi + ENV_extent_y]
+    jg .unproven
+    lea edx, [eax + ecx]
+    cmp edx, ENVELOPE_REACH_SUBPIXELS
+    ja .unproven
+    mov ebx, [ebp + PS_area2]           ; D, low
+    mov esi, [ebp + PS_area2 + 4]       ; and high
+    cmp esi, [edi + ENV_area2 + 4]
+    jg .unproven
+    jl .area
+    cmp ebx, [edi + ENV_area2]
+    ja .unproven
+.area:
+    test esi, esi
+    jnz .steps
+    cmp ebx, 1 << 22
+    jae .steps
+    mul ecx                             ; edx:eax = W H
+    mov esi, ebx
+    shr esi, 18
+    shl ebx, 14                         ; esi:ebx = 16384 D
+    cmp edx, esi
+    ja .unproven
+    jb .steps
+    cmp eax, ebx
+    ja .unproven
+.steps:
+%assign ENV_STEP 32766 << 16
+%macro STEP_WITHIN 1
+    mov eax, [ebp + %1]
+    add eax, ENV_STEP
+    cmp eax, 2 * ENV_STEP
+    ja .unproven
+%endmacro
+    STEP_WITHIN PS_u_fx + FIX_dx
+    STEP_WITHIN PS_u_fx + FIX_dy
+    STEP_WITHIN PS_v_fx + FIX_dx
+    STEP_WITHIN PS_v_fx + FIX_dy
+    mov esi, ebp                        ; the setup
+    mov ebp, LOOP_ARG(F_FRAME)
+    jmp fast_triangle_asm.runs
+.unproven:
+    mov eax, 3
+    jmp .done
+.refuse_pop:
+    fstp st0
+.refuse:
+    xor eax, eax
+.done:
+    LOOP_LEAVE F_FRAME
+
 section .rodata
 align 8
 c_2_24:         dq 16777216.0

@@ -385,17 +385,6 @@ double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double round
     return footprint_error(d[0], d[1], p.footprint);
 }
 
-bool envelope_guards(const PolygonSetup& s) {
-    if (s.edge_count != 3) return false;
-    // (the box within setup's range: its sides in 32 bits)
-    const double w = double(int32_t(s.max_x - s.min_x)), h = double(int32_t(s.max_y - s.min_y));
-    // the 16.16 steps within +-32766 texels (they saturate at +-2^31): the steps within 32767
-    constexpr uint32_t STEP = 32766u << 16;
-    auto fits = [](int32_t raw) { return uint32_t(raw) + STEP <= 2 * STEP; };
-    return w + h <= double(ENVELOPE_REACH * SUBPIXEL_ONE) && 4 * w * h <= ENVELOPE_CONDITION * double(s.area2) && fits(s.u_fx.dx) &&
-           fits(s.u_fx.dy) && fits(s.v_fx.dx) && fits(s.v_fx.dy);
-}
-
 EnvelopeBound envelope_bound(const TriangleEnvelope& e) {
     EnvelopeBound b;
     b.envelope = e;

@@ -95,6 +95,7 @@ struct RenderStats {
 };
 
 // A mapper with its own setup and edge walking (the classics, our fast loops) draws whole polygons.
+struct EnvelopeLimits;  // (bound.h)
 struct DrawContext {
     const Texture& tex;
     Axis axis;
@@ -105,6 +106,10 @@ struct DrawContext {
     // picked (a driver that picks its own, fast-oriented's, takes it: auto picks it the same way)
     const PolygonSetup* setup = nullptr;
     Input input = Input::Any;             // for the driver's own setup_polygon
+    // auto's envelope (draw_enveloped, render.h), for a mapper's Mapper::enveloped driver: right
+    // after its setup it checks within_envelope (bound.h) and returns Unproven, nothing drawn,
+    // where the triangle fails it
+    const EnvelopeLimits* envelope = nullptr;
 };
 using DrawFn = SetupStatus (*)(const DrawContext& c, const Vertex* vertices, int count);
 
@@ -183,8 +188,10 @@ struct Mapper {
     bool chooses = false;     // auto: draws each polygon with a mapper it chooses (core/choice.h)
     SpanProof span_proof = SPANS_NOT_ASKED;  // whether auto asks its bound span by span (core/choice.h)
     // Its bound is the 16.16 planes' (spread_planes_bound, planes_fit_16_16): an object's envelope
-    // proves it on the object's uncut triangles (plan_auto, core/choice.h).
-    bool enveloped = false;
+    // proves it on the object's uncut triangles (plan_auto, core/choice.h), which auto draws with
+    // this driver (draw's, given DrawContext::envelope: draw_enveloped, render.h); nullptr: no
+    // envelope proves it. (A driver of its own, so that the mapper's own path checks nothing.)
+    DrawFn enveloped = nullptr;
     // The planes its span routine reads, all draw_with sets up for it (the perspective ones, but
     // for affine's: the affine planes and their 16.16 form cost some 400 instructions a polygon).
     SetupPlanes span_planes = PLANES_PERSPECTIVE;

@@ -78,8 +78,7 @@ SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& te
 Drawer Drawer::of(const Mapper& mapper, const Texture& tex, Axis axis, Target& target, RenderStats* stats, Variant variant, bool checked) {
     Drawer d;
     d.mapper = &mapper, d.tex = &tex, d.target = &target, d.stats = stats, d.axis = axis;
-    d.area2 = INT64_MAX;
-    d.extent_x = d.extent_y = INT32_MAX;
+    d.limits = EnvelopeLimits{INT64_MAX, INT32_MAX, INT32_MAX};
     d.loop = mapper_loop(mapper, variant, target);
     d.row = int32_t(&mapper - MAPPERS);
     d.usable = checked || (mapper_walks(mapper, axis) && mapper_accepts(mapper, tex) && mapper_targets(mapper, target, axis));
@@ -100,21 +99,10 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
     return choose_and_draw(vertices, count, tex, axis, target, stats, variant, budget, &prepared, input);
 }
 
-SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
-    RenderStats* stats = enveloped.stats;
-    probe_lap(stats->probe, Phase::Walk);
-    {
-        PolygonSetup setup;
-        // (an uncut triangle: in range, as build_frame makes it)
-        if (setup_polygon(vertices, 3, &setup, PLANES_AFFINE, Input::InRange) == SetupStatus::Ok && envelope_guards(setup) &&
-            setup.area2 <= enveloped.area2 && int32_t(setup.max_y - setup.min_y) <= enveloped.extent_y &&
-            int32_t(setup.max_x - setup.min_x) <= enveloped.extent_x) {
-            ++stats->enveloped;
-            return draw_with(enveloped, vertices, 3, &setup, nullptr, Input::InRange);
-        }
-    }
+SetupStatus draw_unproven(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
     PreparedPolygon prepared;
-    return choose_and_draw(vertices, 3, *enveloped.tex, enveloped.axis, *enveloped.target, stats, variant, budget, &prepared, Input::InRange);
+    return choose_and_draw(vertices, 3, *enveloped.tex, enveloped.axis, *enveloped.target, enveloped.stats, variant, budget, &prepared,
+                           Input::InRange);
 }
 
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,

@@ -3,6 +3,7 @@
 
 #include <stdint.h>
 
+#include "kernel/core/bound.h"
 #include "kernel/core/choice.h"
 #include "kernel/core/mapper.h"
 #include "kernel/scene/scene.h"
@@ -32,10 +33,10 @@ struct Drawer {
     int32_t row;   // the mapper's registry row (RenderStats::mapper_polygons)
     Axis axis;
     bool usable;   // it walks the axis, takes the texture and draws into the target
-    int64_t area2;   // auto's envelope (draw_enveloped): the largest doubled area it draws a triangle of (else INT64_MAX)
-    // and the largest extents of its box (subpixels; else INT32_MAX): across its lines, the other
-    // unlimited (an uncut triangle's box, within ENVELOPE_REACH pixels, fits in 32 bits)
-    int32_t extent_x, extent_y;
+    // auto's envelope (draw_enveloped): the largest doubled area it draws a triangle of and the
+    // largest extents of its box, across its lines (the other unlimited: an uncut triangle's box,
+    // within ENVELOPE_REACH pixels, fits in 32 bits); else INT64_MAX and INT32_MAX
+    EnvelopeLimits limits;
     // `checked`: known usable (plan_auto checked it)
     static Drawer of(const Mapper& mapper, const Texture& tex, Axis axis, Target& target, RenderStats* stats, Variant variant,
                      bool checked = false);
@@ -68,12 +69,27 @@ inline SetupStatus Drawer::draw_own(const Vertex* vertices, int count, Input inp
 }
 
 // auto on an uncut triangle of an object whose envelope proves the mapper of `enveloped` (plan_auto,
-// choice.h; the drawer made once an object, checked): the mapper's own setup (affine planes), the
-// envelope's guards on it (envelope_guards), its doubled area within the drawer's area2 and its
-// extent across its lines within its extent (AutoPlan::enveloped_area2, enveloped_extent), and the
-// mapper drawing from it; where one fails, auto's choice as in
-// draw_polygon, with the drawer's texture, axis and target.
-SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget);
+// choice.h; the drawer made once an object, checked): the mapper's Mapper::enveloped driver sets
+// it up and checks it (DrawContext::envelope: the envelope's guards, its doubled area and its extent
+// across its lines within the drawer's limits; fast-affine's rows in the same NASM call as its
+// setup and walk, fast_triangle_enveloped_asm) and draws it; where it is not within them, nothing
+// drawn, auto's choice as in draw_polygon, with the drawer's texture, axis and target
+// (draw_unproven). Inline: once a triangle of the mesh, in the frame's loop.
+SetupStatus draw_unproven(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget);
+inline SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
+    RenderStats* stats = enveloped.stats;
+    Probe* probe = stats->probe;
+    probe_lap(probe, Phase::Walk);  // what came before the polygon: the caller's loop
+    const uint32_t pixels_before = stats->pixels;
+    // (an uncut triangle: in range, as build_frame makes it)
+    const SetupStatus status = enveloped.mapper->enveloped(
+        DrawContext{*enveloped.tex, enveloped.axis, *enveloped.target, stats, enveloped.loop, nullptr, Input::InRange, &enveloped.limits}, vertices, 3);
+    probe_lap(probe, Phase::Walk);
+    if (status == SetupStatus::Unproven) return draw_unproven(enveloped, vertices, variant, budget);
+    stats->enveloped += status == SetupStatus::Ok;
+    count_polygon(stats, enveloped.row, status, pixels_before);
+    return status;
+}
 
 // The polygon being drawn, for a fault's report (the kernel's page-fault handler names them): the
 // mapper asked for and the polygon's index in the scene, frame or run; mapper null between drawings.

@@ -58,6 +58,7 @@ const char* setup_status_name(SetupStatus s) {
     case SetupStatus::OutOfRange: return "out of range";
     case SetupStatus::OutsideTexture: return "outside the texture";
     case SetupStatus::Unsupported: return "unsupported by the mapper";
+    case SetupStatus::Unproven: return "not within the envelope";
     }
     return "?";
 }

@@ -74,6 +74,7 @@ enum class SetupStatus : uint8_t {
     OutOfRange,       // a coordinate, w, u or v beyond the limits above, or not finite
     OutsideTexture,   // a mapper that cannot wrap got texture coordinates beyond the texture
     Unsupported,      // the mapper cannot take this texture, target or walker
+    Unproven,         // auto's envelope (DrawContext::envelope): the triangle is not one it draws; nothing drawn
 };
 
 const char* setup_status_name(SetupStatus s);

@@ -16,26 +16,26 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-1", 1011.0f, 999.34f, 51.771f}, // 11 scenes
     {"persp-adaptive-2", 1011.0f, 1016.49f, 44.507f}, // 11 scenes
     {"persp-adaptive-4", 1011.0f, 1029.28f, 40.041f}, // 11 scenes
-    {"fast-affine", 1052.9f, 109.17f, 5.137f}, // 11 scenes
-    {"fast-table", 1307.7f, 99.20f, 2.068f}, // 11 scenes
-    {"fast-columns", 1124.4f, 177.62f, 4.967f}, // 11 scenes
-    {"fast-table-columns", 1379.6f, 248.37f, 2.826f}, // 11 scenes
+    {"fast-affine", 1054.9f, 109.17f, 5.137f}, // 11 scenes
+    {"fast-table", 1309.7f, 99.20f, 2.068f}, // 11 scenes
+    {"fast-columns", 1126.4f, 177.62f, 4.967f}, // 11 scenes
+    {"fast-table-columns", 1381.6f, 248.37f, 2.826f}, // 11 scenes
     {"fast-subdiv-8", 1011.0f, 298.76f, 14.047f}, // 11 scenes
     {"fast-subdiv-16", 1011.0f, 309.05f, 9.940f}, // 11 scenes
     {"fast-subdiv-32", 1011.0f, 314.15f, 7.953f}, // 11 scenes
     {"fast-constant-depth", 1011.0f, 318.72f, 6.313f}, // 11 scenes
     {"fast-adaptive-1", 1011.0f, 341.61f, 9.604f}, // 11 scenes
     {"fast-adaptive-2", 1011.0f, 345.36f, 8.123f}, // 11 scenes
-    {"fast-oriented-1", 1172.2f, 359.34f, 7.778f}, // 11 scenes
-    {"xsharp-dda", 1516.3f, 376.64f, 37.424f}, // 10 scenes
-    {"xsharp-row-out", 1516.3f, 511.91f, 18.936f}, // 10 scenes
-    {"xsharp-column", 1520.0f, 484.55f, 12.608f}, // 10 scenes
-    {"hecker-steptable", 5329.3f, 0.00f, 613.875f}, // 10 scenes
-    {"fatmap-256", 1727.7f, 162.44f, 13.643f}, // 8 scenes
-    {"fatmap-256-16", 1727.7f, 167.44f, 12.643f}, // 8 scenes
-    {"fatmap-lut", 2344.5f, 165.93f, 10.048f}, // 7 scenes
-    {"quake-subdiv16", 1501.9f, 302.03f, 13.883f}, // 10 scenes
-    {"quake-subdiv8", 1501.9f, 286.69f, 20.236f}, // 10 scenes
+    {"fast-oriented-1", 1174.2f, 359.34f, 7.778f}, // 11 scenes
+    {"xsharp-dda", 1518.3f, 376.65f, 37.425f}, // 10 scenes
+    {"xsharp-row-out", 1518.3f, 511.92f, 18.937f}, // 10 scenes
+    {"xsharp-column", 1522.0f, 484.56f, 12.609f}, // 10 scenes
+    {"hecker-steptable", 5331.3f, 0.00f, 613.876f}, // 10 scenes
+    {"fatmap-256", 1729.5f, 162.45f, 13.643f}, // 8 scenes
+    {"fatmap-256-16", 1729.5f, 167.45f, 12.643f}, // 8 scenes
+    {"fatmap-lut", 2346.3f, 165.94f, 10.048f}, // 7 scenes
+    {"quake-subdiv16", 1503.9f, 302.03f, 13.884f}, // 10 scenes
+    {"quake-subdiv8", 1503.9f, 286.69f, 20.236f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

@@ -129,6 +129,13 @@ inline int walk_triangle(FastTriangleArgs* t) {
     return fast_triangle_runs(t);
 #endif
 }
+inline int set_up_enveloped(FastTriangleArgs* t) {
+#if defined(MODEXLAB_ASM_LOOPS)
+    return fast_triangle_enveloped_asm(t);
+#else
+    return fast_triangle_enveloped(t);
+#endif
+}
 
 // A run's block drawn (the run loop counts what it draws): by the context's loop, or where
 // fast-affine's polygon spans more of a doubled copy than its window (FastRunArgs::doubled 2) by
@@ -177,18 +184,26 @@ template <bool DOUBLED>
 // walker, where a row with a vertex on its centre (two live bounds on a side) is walked by next()
 // and drawn as a run of one row between constant bounds. With an offset table (fast-table), the
 // table for the polygon's longest span is built once, after the walk's set-up (what the setup
-// phase counts).
-template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-affine on a texture's doubled copy
+// phase counts). Given auto's envelope (DrawContext::envelope), a frame's uncut triangle is set up
+// by set_up_enveloped, which checks it, and any other after its setup here.
+// DOUBLED: fast-affine on a texture's doubled copy; ENVELOPED: its driver for auto's envelope
+template <bool TABLE, bool DOUBLED = false, bool ENVELOPED = false>
 [[gnu::always_inline]] inline SetupStatus draw_runs(const DrawContext& c, const Vertex* vertices, int count) {
     FastRunArgs a;
     PolygonSetup own;
     FastTriangleArgs t;  // (the chains' room, and its outputs written by the call)
     t.in = vertices, t.setup = &own, t.run = &a, t.target = &c.target;
     int taken = 0;  // set_up_triangle's or walk_triangle's answer, 0: neither has taken it
-    if (count == 3 && !c.setup && c.input == Input::InRange) taken = set_up_triangle(&t);
+    if constexpr (ENVELOPED) {
+        t.envelope = c.envelope;
+        if (count == 3 && !c.setup && c.input == Input::InRange && (taken = set_up_enveloped(&t)) == 3) return SetupStatus::Unproven;
+    } else if (count == 3 && !c.setup && c.input == Input::InRange) {
+        taken = set_up_triangle(&t);
+    }
     SetupStatus status = SetupStatus::Ok;
     const PolygonSetup& s = taken ? own : *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
+    if (ENVELOPED && !taken && !within_envelope(s, *c.envelope)) return SetupStatus::Unproven;
     if (!taken && s.edge_count == 3) {  // a triangle set up already (auto's), or by setup_polygon
         t.setup = const_cast<PolygonSetup*>(&s);  // (read only)
         taken = walk_triangle(&t);
@@ -264,15 +279,20 @@ namespace {
 
 // fast-affine on a texture's doubled copy, its own instantiation (out of line: the tiled block's
 // triangles pay one compare for it)
+template <bool ENVELOPED>
 [[gnu::noinline]] SetupStatus draw_rows_doubled(const DrawContext& c, const Vertex* vertices, int count) {
-    return draw_runs<false, true>(c, vertices, count);
+    return draw_runs<false, true, ENVELOPED>(c, vertices, count);
 }
 
 }  // namespace
 
 SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count) {
-    if (!c.tex.aligned256) [[unlikely]] return draw_rows_doubled(c, vertices, count);  // (a side above 256: the doubled copy)
+    if (!c.tex.aligned256) [[unlikely]] return draw_rows_doubled<false>(c, vertices, count);  // (a side above 256: the doubled copy)
     return draw_runs<false>(c, vertices, count);
+}
+SetupStatus draw_rows_enveloped(const DrawContext& c, const Vertex* vertices, int count) {
+    if (!c.tex.aligned256) [[unlikely]] return draw_rows_doubled<true>(c, vertices, count);
+    return draw_runs<false, false, true>(c, vertices, count);
 }
 SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int count) { return draw_runs<true>(c, vertices, count); }
 
@@ -283,12 +303,14 @@ namespace {
 // fast-table-columns a column a call (the map mask set once a column), fast_table_column_loop
 // from its first texel in the doubled copy through the polygon's offset table along y, built once
 // for its tallest column.
-template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-columns on a doubled copy (fast-table-columns: always)
+// DOUBLED: fast-columns on a doubled copy (fast-table-columns: always); ENVELOPED: its driver for auto's envelope
+template <bool TABLE, bool DOUBLED = false, bool ENVELOPED = false>
 [[gnu::always_inline]] inline SetupStatus draw_column_spans(const DrawContext& c, const Vertex* vertices, int count) {
     PolygonSetup own;
     SetupStatus status;
     const PolygonSetup& s = *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
+    if (ENVELOPED && !within_envelope(s, *c.envelope)) return SetupStatus::Unproven;
     if (c.tex.wrap == Wrap::Clamp && !reads_inside(s, c.tex, c.target.clip, TABLE ? 1 : 0)) return SetupStatus::Unsupported;
     uint32_t u_base = 0, v_base = 0;  // fast-columns on a doubled copy: its window's corner
     const bool wrapping = !TABLE && DOUBLED && !doubled_window(s, c.tex, c.target.clip, &u_base, &v_base);
@@ -357,6 +379,9 @@ template <bool TABLE, bool DOUBLED = false>  // DOUBLED: fast-columns on a doubl
 
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count) {
     return !c.tex.aligned256 ? draw_column_spans<false, true>(c, vertices, count) : draw_column_spans<false>(c, vertices, count);
+}
+SetupStatus draw_columns_enveloped(const DrawContext& c, const Vertex* vertices, int count) {
+    return !c.tex.aligned256 ? draw_column_spans<false, true, true>(c, vertices, count) : draw_column_spans<false, false, true>(c, vertices, count);
 }
 SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count) { return draw_column_spans<true>(c, vertices, count); }
 
@@ -447,6 +472,12 @@ void run_rows(const FastRunArgs& a, Span&& span) {
 
 int fast_triangle(FastTriangleArgs* a) {
     if (setup_polygon_cpp(a->in, 3, a->setup, PLANES_AFFINE, Input::InRange) != SetupStatus::Ok) return 0;
+    return fast_triangle_runs(a);
+}
+
+int fast_triangle_enveloped(FastTriangleArgs* a) {
+    if (setup_polygon_cpp(a->in, 3, a->setup, PLANES_AFFINE, Input::InRange) != SetupStatus::Ok) return 0;
+    if (!within_envelope(*a->setup, *a->envelope)) return 3;
     return fast_triangle_runs(a);
 }
 
@@ -852,7 +883,9 @@ void fast_offsets() {
     ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)
     ASM_SIZE(EDGE_SIZE, Edge);
     ASM_FIELDS(TRI, TriangleRowsArgs, edges, first, last, origin_x, origin_y, lower, upper)
-    ASM_FIELDS(FTRI, FastTriangleArgs, in, setup, run, target, lower, upper)
+    ASM_FIELDS(FTRI, FastTriangleArgs, in, setup, run, target, envelope, lower, upper)
+    ASM_FIELDS(ENV, EnvelopeLimits, area2, extent_x, extent_y)
+    ASM_CONSTANT(ENVELOPE_REACH_SUBPIXELS, ENVELOPE_REACH * SUBPIXEL_ONE);
     ASM_FIELDS(TGT, Target, base, pitch, clip, plane_bytes, select_plane, ctx)
     ASM_FIELDS(CRUN, FastColumnRunArgs, target, x, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, block_pitch, u_16_16,
                v_16_16, u_column_16_16, v_column_16_16, du_16_16, dv_16_16, tally)

@@ -66,18 +66,25 @@ void fast_run_loop_wrapping(const FastRunArgs& a, const Texture& tex);
 // fast_triangle_runs is the same from the rows on, for a triangle set up already (`setup` read, its
 // 16.16 planes among what it holds: auto's, or setup_polygon's on a polygon of three corners after
 // any check): 1, or 2 for the walker. Twin and NASM as above (fast_triangle_runs_asm).
+// fast_triangle_enveloped is fast_triangle for auto's envelope (draw_enveloped): after the setup,
+// within_envelope on it with `envelope`'s limits, and 3 (the setup written, nothing else) where
+// the triangle fails it; else as fast_triangle. Twin and NASM as above
+// (fast_triangle_enveloped_asm: the guards in integers, 25 instructions or so).
 struct FastTriangleArgs {
     const Vertex* in;
     PolygonSetup* setup;  // (fast_triangle_runs: read, never written)
     FastRunArgs* run;
     const Target* target;  // linear
+    const EnvelopeLimits* envelope;  // (fast_triangle_enveloped's only)
     EdgeBound lower[3], upper[3];  // the chains
 };
 int fast_triangle(FastTriangleArgs* a);
 int fast_triangle_runs(FastTriangleArgs* a);
+int fast_triangle_enveloped(FastTriangleArgs* a);
 #if defined(MODEXLAB_ASM_LOOPS)
 extern "C" int fast_triangle_asm(FastTriangleArgs* a);
 extern "C" int fast_triangle_runs_asm(FastTriangleArgs* a);
+extern "C" int fast_triangle_enveloped_asm(FastTriangleArgs* a);
 #endif
 
 // fast-table: the offsets of pixel k of any span from its first pixel's texel in the texture's
@@ -151,6 +158,9 @@ namespace raster::fast {
 SetupStatus draw_rows(const DrawContext& c, const Vertex* vertices, int count);        // fast-affine
 SetupStatus draw_table_rows(const DrawContext& c, const Vertex* vertices, int count);  // fast-table
 SetupStatus draw_columns(const DrawContext& c, const Vertex* vertices, int count);     // fast-columns
+// fast-affine's and fast-columns' drivers for auto's envelope (Mapper::enveloped: DrawContext::envelope)
+SetupStatus draw_rows_enveloped(const DrawContext& c, const Vertex* vertices, int count);
+SetupStatus draw_columns_enveloped(const DrawContext& c, const Vertex* vertices, int count);
 SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int count);  // fast-table-columns
 ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count);            // fast-affine, fast-columns
 ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count);      // fast-table: half a texel more

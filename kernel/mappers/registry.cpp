@@ -25,7 +25,7 @@ const Mapper MAPPERS[] = {
     {"affine", "ours", "textbook affine interpolation",
      "exact coverage; u, v affine in screen space (16.16 steps): error grows with depth variation",
      EXACT_COVERAGE_FLAT_ONE, NEED_NOTHING, AXIS_BOTH, affine_span, nullptr, nullptr, nullptr, nullptr, affine_bound, false, SPANS_NOT_ASKED,
-     false, PLANES_AFFINE},
+     nullptr, PLANES_AFFINE},
     {"exact", "ours", "the reference's definition, per pixel",
      "equal to the reference: per-pixel perspective divide in double precision",
      EQUALS_REFERENCE, NEED_NOTHING, AXIS_BOTH, exact_span, TWIN_AND_ASM(exact_loop), nullptr, check_exact, exact_bound},
@@ -56,7 +56,8 @@ const Mapper MAPPERS[] = {
      "exact coverage; u, v affine from the polygon's 16.16 planes at each span's first pixel centre; textures with power-of-two "
      "sides up to 1024, repeating or with the polygon's coordinates inside (up to 256 tiled over 256 x 256; above, from the doubled "
      "copy where the polygon's coordinates span at most the sides and 15 texels more, else from the texture by masks)",
-     EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED, true},
+     EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE, AXIS_ROWS, nullptr, TWIN_AND_ASM(fast_run_loop), fast::draw_rows, check_fast_run, fast::bound, false, SPANS_NOT_ASKED,
+     fast::draw_rows_enveloped},
     {"fast-table", "ours", "fast-affine's runs of rows, each span's texels at offsets from its first precomputed once a polygon (fatmap's table idea)",
      "exact coverage; u, v affine from the polygon's 16.16 planes, each texel read at most half a texel on each axis from "
      "fast-affine's line (the table reads each span as if it started at its first texel's centre): within one texel without perspective; "
@@ -66,7 +67,7 @@ const Mapper MAPPERS[] = {
     {"fast-columns", "ours", "the same core down Mode X columns, the map mask set once a column",
      "as fast-affine, by columns into Mode X planes",
      EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr, TWIN_AND_ASM(fast_column_run),
-     fast::draw_columns, check_fast_column_run, fast::bound, false, SPANS_NOT_ASKED, true},
+     fast::draw_columns, check_fast_column_run, fast::bound, false, SPANS_NOT_ASKED, fast::draw_columns_enveloped},
     {"fast-table-columns", "ours", "fast-table's offsets down Mode X columns, the map mask set once a column",
      "as fast-table, by columns into Mode X planes: within one texel without perspective",
      EXACT_COVERAGE_FLAT_ONE, NEED_POW2_OR_INSIDE | NEED_DOUBLED | NEED_PLANAR_TARGET, AXIS_COLUMNS, nullptr,
@@ -103,7 +104,7 @@ const Mapper MAPPERS[] = {
      "as fast-adaptive-1 (within 1 footprint), each polygon by rows or by columns, whichever its 1/w gradient and its lines make "
      "cheaper (on a Mode X target: columns); exact coverage; textures as fast-subdiv-8",
      EXACT_COVERAGE_FLAT_ONE, NEED_POW2_REPEAT, AXIS_BOTH, nullptr, TWIN_AND_ASM(fast_subdiv_loop), fast_oriented_draw<4>, check_fast_subdiv,
-     fast_oriented_bound<4>, false, SPANS_NOT_ASKED, false, PLANES_PERSPECTIVE, fast_oriented_walker<4>},
+     fast_oriented_bound<4>, false, SPANS_NOT_ASKED, nullptr, PLANES_PERSPECTIVE, fast_oriented_walker<4>},
     {"xsharp-dda", "classic", "Abrash, Black Book listing 57.1 (X-Sharp 21, C)",
      "affine; whole-pixel vertices, X-Sharp's fill convention; half-step prestep, rounds to the nearest texel; cannot wrap",
      NO_GUARANTEE, NEED_BORDERED | NEED_INSIDE, AXIS_ROWS, nullptr, nullptr, nullptr, xsharp::draw_dda, nullptr, xsharp::bound_rows},

@@ -409,8 +409,8 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
         plans[o] = plan_auto(frame.budget, textures.objects[o], target, frame.envelope[o].footprint);
         if (plans[o].enveloped) {  // (plan_auto checked what Drawer::of would)
             drawers[o] = Drawer::of(*plans[o].enveloped, textures.objects[o], plans[o].enveloped_axis, target, &stats, variant, true);
-            drawers[o].area2 = plans[o].enveloped_area2;
-            (plans[o].enveloped_axis == Axis::Rows ? drawers[o].extent_y : drawers[o].extent_x) = plans[o].enveloped_extent;
+            drawers[o].limits.area2 = plans[o].enveloped_area2;
+            (plans[o].enveloped_axis == Axis::Rows ? drawers[o].limits.extent_y : drawers[o].limits.extent_x) = plans[o].enveloped_extent;
         }
         if (plans[o].certain)
             for (int a = 0; a < 2; ++a) certain[o][a] = Drawer::of(*plans[o].certain, textures.objects[o], Axis(a), target, &stats, variant);

@@ -284,8 +284,8 @@ TEST(Envelope, TakesTrianglesOnlyUpToTheSizeWhereNoOtherCandidateUndercutsIt) {
         const std::vector<Vertex> tri{vertex(20, 20, 1, 0, 0), vertex(20 + s, 20, 1, 40, 0), vertex(20, 20 + s, 1, 0, 40)};
         RenderStats stats;
         Drawer d = Drawer::of(fast, tex, Axis::Rows, t, &stats, Variant::Twin, true);
-        d.area2 = plan.enveloped_area2;
-        d.extent_y = plan.enveloped_extent;
+        d.limits.area2 = plan.enveloped_area2;
+        d.limits.extent_y = plan.enveloped_extent;
         EXPECT_EQ(draw_enveloped(d, tri.data(), Variant::Twin, budget), SetupStatus::Ok);
         EXPECT_EQ(stats.enveloped, scale < 1 ? 1u : 0u) << "a triangle of " << s * s / 2 << " pixels against a limit of " << pixels;
         EXPECT_EQ(stats.polygons, 1u);
@@ -298,8 +298,8 @@ TEST(Envelope, TakesTrianglesOnlyUpToTheSizeWhereNoOtherCandidateUndercutsIt) {
             const std::vector<Vertex> tri{vertex(20, 10, 1, 0, 0), vertex(22, 10, 1, 4, 0), vertex(20, 10 + h, 1, 0, 40)};
             RenderStats stats;
             Drawer d = Drawer::of(fast, tex, Axis::Rows, t, &stats, Variant::Twin, true);
-            d.area2 = plan.enveloped_area2;
-            d.extent_y = plan.enveloped_extent;
+            d.limits.area2 = plan.enveloped_area2;
+            d.limits.extent_y = plan.enveloped_extent;
             EXPECT_EQ(draw_enveloped(d, tri.data(), Variant::Twin, budget), SetupStatus::Ok);
             EXPECT_EQ(stats.enveloped, scale < 1 ? 1u : 0u) << "a sliver of " << h << " lines against a limit of " << lines;
         }
