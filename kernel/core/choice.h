@@ -132,19 +132,23 @@ void prepare_choice(const Budget& budget, const Texture& tex);
 // 1800, 0.98 (4 bench frames, QEMU icount).
 constexpr double CHOICE_COST = 1800;
 
-// At a budget of one footprint (up to two), auto's oriented candidate: fast-adaptive-1 along the
-// walker fast-oriented-1 picks, proven by its certificate from the setup alone
-// (fast_adaptive_certain: some 550 instructions, against 1100 for the spread a proof starts with).
-// It is taken without a search where, priced by fast-oriented-1's row, it costs no more than
-// ORIENTED_GATE above the least any candidate could cost with its proof (the least polygon, span
-// and pixel costs of all of them: loose, exact's setup with fast-table's pixels); elsewhere the
-// search looks only for a proven candidate cheaper than it. Why so wide a gate: on the ball at one
-// footprint (facets of some 620 pixels, 25 lines) the search cost about 4000 instructions a facet
-// beyond the oriented candidate's path and its choices saved about 1260 in the loops, while the
-// least's gap there is about 9000; on the rotozoom's quad (40000 pixels, a gap of about 285000)
-// it found fast-affine at less than two thirds of the oriented price (make bench, QEMU icount,
-// 2026-11-26: the ball at 1 went from 34.4 to 31.2 draw instructions a pixel, no other row of the
-// six demo scenes by more than 0.5%).
+// From a budget of one footprint to below four, auto's oriented candidate: fast-adaptive-B (B = 1
+// below two, 2 from two) along the walker fast-oriented-B would pick, proven by its certificate
+// from the setup alone (fast_adaptive_certain: some 550 instructions, against 1100 for the spread a
+// proof starts with). It is taken without a search where, priced by fast-oriented-1's row (B = 1)
+// or fast-adaptive-2's, it costs no more than ORIENTED_GATE above the least any candidate could
+// cost with its proof (the least polygon, span and pixel costs of all of them: loose, exact's
+// setup with fast-table's pixels), or where affine_deviation is above the budget (no affine-stepping
+// candidate can be within it, and the others share its core: the search's finds there had not
+// paid for it on the ball, the corridor and freedoom); elsewhere the search looks only for a
+// proven candidate cheaper than it. Why so wide a gate: on the ball at one footprint (facets of
+// some 620 pixels, 25 lines) the search cost about 4000 instructions a facet beyond the oriented
+// candidate's path and its choices saved about 1260 in the loops, while the least's gap there is
+// about 9000; on the rotozoom's quad (40000 pixels, a gap of about 285000) it found fast-affine at
+// less than two thirds of the oriented price (make bench, QEMU icount, 2026-11-26: the ball at 1
+// went from 34.4 to 31.2 draw instructions a pixel, no other row of the six demo scenes by more
+// than 0.5%). At four and above none: there the search finds fast-affine and fast-table on much of
+// the ball, which fast-adaptive-2 unsearched lost.
 constexpr double ORIENTED_GATE = 20000;
 
 // How much cheaper the certain candidate's setup a polygon may be than the enveloped mapper's for
@@ -209,18 +213,19 @@ double corner_footprint(const Vertex* vertices);
 // area the setup would find: polygon_sizes), before any setup. Else nullptr: choose_mapper decides.
 const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis);
 
-// How far the affine planes (fast-affine's line) lie from the exact mapping at the midpoints of
-// the edges of a polygon inside the clip, at most, in footprints there (either axis, the texel
-// distance over the footprint); 0 (nothing known) where it reaches outside the clip (a midpoint may
-// lie off the screen), where it covers fewer than AFFINE_DEVIATION_PIXELS, or where Q is not above
-// 0 at a midpoint. Not a bound, a floor: no mapper that steps the polygon affinely (affine,
-// fast-affine, fast-columns, fast-table, fast-table-columns) has a bound below it. That is measured,
-// not derived (their bounds take the deviation over the part of the polygon their spread covers,
-// which reaches the midpoints on all but small polygons: on random triangles of up to 15 pixels it
-// was up to three times their bound, on none of 100 pixels or more below it; the test asks it of
-// some 2000 bounds). Where it is above the budget, the oriented candidate's gate (choose_mapper,
-// ORIENTED_GATE) skips the search: were it wrong, auto would miss a cheaper mapper, never its
-// budget. Some 550 instructions for a quad (callgrind, 32-bit host).
+// How far the affine planes (fast-affine's line) lie from the exact mapping at the mean of the
+// corners of a polygon inside the clip, in footprints there (either axis, the texel distance over
+// the footprint); 0 (nothing known) where it reaches outside the clip, covers fewer than
+// AFFINE_DEVIATION_PIXELS, or Q is not above 0 there. Not a bound, a floor: no mapper that steps
+// the polygon affinely (affine, fast-affine, fast-columns, fast-table, fast-table-columns) has a
+// bound below it. That is measured, not derived: their bounds take the deviation over the part of
+// the polygon their spread covers, which holds the corners' mean on all but small polygons (at the
+// edges' midpoints instead, the bound was up to three times below on triangles of up to 15 pixels,
+// and 0.75 times on one of 24000 random polygons of 100 pixels or more); the test asks it of every
+// such mapper's tightest bound on 24000 random triangles and planar quads (least ratio 1.09).
+// Where it is above the budget, the oriented candidate's gate (choose_mapper, ORIENTED_GATE) skips
+// the search: were it wrong, auto would miss a cheaper mapper, never its budget. About 280
+// instructions (callgrind, 32-bit host), asked only where the gate's first test would search.
 constexpr int64_t AFFINE_DEVIATION_PIXELS = 100;
 double affine_deviation(const PolygonSetup& s, const ClipRect& clip);
 
