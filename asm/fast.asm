@@ -1032,13 +1032,18 @@ F_FRAME   equ S_FRAME > F_OY + 4 ? S_FRAME : F_OY + 4   ; (the setup's frame, th
     mov [ebx + %2], eax
 %endmacro
 
-global fast_triangle_asm
-fast_triangle_asm:
+; the entry of the two routines below that set a triangle up: ebp the setup then
+%macro TRIANGLE_ENTER 0
     LOOP_ENTER F_FRAME
     mov ebx, LOOP_ARG(F_FRAME)
     mov esi, [ebx + FTRI_in]
     mov ebp, [ebx + FTRI_setup]
     SETUP_TRIANGLE
+%endmacro
+
+global fast_triangle_asm
+fast_triangle_asm:
+    TRIANGLE_ENTER
     mov esi, ebp                        ; the setup
     mov ebp, LOOP_ARG(F_FRAME)
 .runs:                                  ; (fast_triangle_runs_asm joins here: esi the setup, ebp the block)
@@ -1183,11 +1188,7 @@ fast_triangle_runs_asm:
 ; fails, else as fast_triangle_asm.
 global fast_triangle_enveloped_asm
 fast_triangle_enveloped_asm:
-    LOOP_ENTER F_FRAME
-    mov ebx, LOOP_ARG(F_FRAME)
-    mov esi, [ebx + FTRI_in]
-    mov ebp, [ebx + FTRI_setup]
-    SETUP_TRIANGLE
+    TRIANGLE_ENTER
     mov edi, LOOP_ARG(F_FRAME)
     mov edi, [edi + FTRI_envelope]
     mov eax, [ebp + PS_max_x]
@@ -1239,13 +1240,11 @@ fast_triangle_enveloped_asm:
     jmp fast_triangle_asm.runs
 .unproven:
     mov eax, 3
-    jmp .done
+    jmp fast_triangle_asm.done          ; (the same frame)
 .refuse_pop:
-    fstp st0
+    jmp fast_triangle_asm.refuse_pop
 .refuse:
-    xor eax, eax
-.done:
-    LOOP_LEAVE F_FRAME
+    jmp fast_triangle_asm.refuse
 
 section .rodata
 align 8
