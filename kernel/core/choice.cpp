@@ -22,11 +22,23 @@ double box_inside(int64_t lo, int64_t hi, int32_t first, int32_t end) {
 }  // namespace
 
 double affine_deviation(const PolygonSetup& s, const ClipRect& clip) {
-    if (!box_in_clip(s, clip) || s.area2 < 2 * AFFINE_DEVIATION_PIXELS * SUBPIXEL_ONE * SUBPIXEL_ONE) return 0;
-    // at the corners' mean (relative to the reference vertex)
+    if (s.area2 < 2 * AFFINE_DEVIATION_PIXELS * SUBPIXEL_ONE * SUBPIXEL_ONE) return 0;
+    // at the corners' mean (relative to the reference vertex), or, reaching outside the clip, at the
+    // centre of the pixel in the middle of its box inside the clip where the polygon covers it
     double x = 0, y = 0;
-    for (int i = 0; i < s.edge_count; ++i) x += double(s.edges[i].px - s.ref_x), y += double(s.edges[i].py - s.ref_y);
-    x /= s.edge_count, y /= s.edge_count;
+    if (box_in_clip(s, clip)) {
+        for (int i = 0; i < s.edge_count; ++i) x += double(s.edges[i].px - s.ref_x), y += double(s.edges[i].py - s.ref_y);
+        x /= s.edge_count, y /= s.edge_count;
+    } else {
+        auto middle = [](int64_t lo, int64_t hi, int32_t first, int32_t end) {  // a pixel, or first - 1 where none
+            const int64_t l = int64_t(first) * SUBPIXEL_ONE, h = int64_t(end) * SUBPIXEL_ONE;
+            lo = lo < l ? l : lo, hi = hi > h ? h : hi;
+            return hi > lo ? int32_t(((lo + hi) / 2) >> SUBPIXEL_BITS) : first - 1;
+        };
+        const int32_t px = middle(s.min_x, s.max_x, clip.x0, clip.x1), py = middle(s.min_y, s.max_y, clip.y0, clip.y1);
+        if (px < clip.x0 || py < clip.y0 || px >= clip.x1 || py >= clip.y1 || !covers(s, px, py)) return 0;
+        x = double(int64_t(px) * SUBPIXEL_ONE + SUBPIXEL_HALF - s.ref_x), y = double(int64_t(py) * SUBPIXEL_ONE + SUBPIXEL_HALF - s.ref_y);
+    }
     const double q = s.q.at(x, y);
     if (!(q > 0)) return 0;
     const double du = magnitude(s.u.at(x, y) - s.pu.at(x, y) / q), dv = magnitude(s.v.at(x, y) - s.pv.at(x, y) / q);

@@ -214,15 +214,17 @@ double corner_footprint(const Vertex* vertices);
 const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis);
 
 // How far the affine planes (fast-affine's line) lie from the exact mapping at the mean of the
-// corners of a polygon inside the clip, in footprints there (either axis, the texel distance over
-// the footprint); 0 (nothing known) where it reaches outside the clip, covers fewer than
-// AFFINE_DEVIATION_PIXELS, or Q is not above 0 there. Not a bound, a floor: no mapper that steps
+// corners of a polygon inside the clip, or, reaching outside it, at the centre of the pixel in the
+// middle of its box inside the clip, in footprints there (either axis, the texel distance over the
+// footprint); 0 (nothing known) where it covers fewer than AFFINE_DEVIATION_PIXELS, does not cover
+// that pixel, or Q is not above 0 there. Not a bound, a floor: no mapper that steps
 // the polygon affinely (affine, fast-affine, fast-columns, fast-table, fast-table-columns) has a
 // bound below it. That is measured, not derived: their bounds take the deviation over the part of
 // the polygon their spread covers, which holds the corners' mean on all but small polygons (at the
 // edges' midpoints instead, the bound was up to three times below on triangles of up to 15 pixels,
 // and 0.75 times on one of 24000 random polygons of 100 pixels or more); the test asks it of every
-// such mapper's tightest bound on 24000 random triangles and planar quads (least ratio 1.09).
+// such mapper's tightest bound on 24000 random triangles and planar quads, some reaching outside
+// the clip (least ratio 1.015).
 // Where it is above the budget, the oriented candidate's gate (choose_mapper, ORIENTED_GATE) skips
 // the search: were it wrong, auto would miss a cheaper mapper, never its budget. About 280
 // instructions (callgrind, 32-bit host), asked only where the gate's first test would search.
