@@ -381,12 +381,11 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     };
     const int32_t width = inside(x_lo, x_hi, clip.x0 * one_px, clip.x1 * one_px), height = inside(y_lo, y_hi, clip.y0 * one_px, clip.y1 * one_px);
     // twice the area the setup would find (the shoelace over the corners: repeated ones add nothing)
-    double area2 = 0;
-    if (plan.sole) {
-    } else if (count == 3) {
+    double area2 = 0;  // (not needed with one candidate)
+    if (!plan.sole && count == 3) {
         const Vertex &a = vertices[0], &b = vertices[1], &c = vertices[2];
         area2 = double(b.x.raw - a.x.raw) * double(c.y.raw - a.y.raw) - double(c.x.raw - a.x.raw) * double(b.y.raw - a.y.raw);
-    } else {
+    } else if (!plan.sole) {
         for (int i = 0; i < count; ++i) {
             const Vertex &a = vertices[i], &b = vertices[i + 1 < count ? i + 1 : 0];
             area2 += double(a.x.raw) * double(b.y.raw) - double(b.x.raw) * double(a.y.raw);
