@@ -11,12 +11,12 @@ bool drawn_by_auto(const Mapper& m) { return choosable(m) || m.draw == fast_orie
 
 namespace {
 
-// The extent inside the clip [first, end) (pixels) of a box's side from lo to hi (subpixels), in
-// pixels: clamped in integers, then one exact division.
-double box_inside(int64_t lo, int64_t hi, int32_t first, int32_t end) {
-    lo = lo < first * SUBPIXEL_ONE ? first * SUBPIXEL_ONE : lo;
-    hi = hi > end * SUBPIXEL_ONE ? end * SUBPIXEL_ONE : hi;
-    return hi > lo ? double(hi - lo) / double(SUBPIXEL_ONE) : 0.0;
+// The extent inside the clip [first, end) (pixels) of a box's side from lo to hi, in subpixels:
+// clamped in 32 bits (a vertex's coordinates are, and the clip's edges in subpixels are within 2^17).
+int32_t box_inside(int32_t lo, int32_t hi, int32_t first, int32_t end) {
+    first *= int32_t(SUBPIXEL_ONE), end *= int32_t(SUBPIXEL_ONE);
+    lo = lo < first ? first : lo, hi = hi > end ? end : hi;
+    return hi > lo ? hi - lo : 0;
 }
 
 }  // namespace
@@ -47,7 +47,9 @@ double affine_deviation(const PolygonSetup& s, const ClipRect& clip) {
 
 void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size[2]) {
     const double one = double(SUBPIXEL_ONE);
-    const double w = box_inside(s.min_x, s.max_x, clip.x0, clip.x1), h = box_inside(s.min_y, s.max_y, clip.y0, clip.y1);
+    // (the box's corners are vertices': 32 bits)
+    const double w = double(box_inside(int32_t(s.min_x), int32_t(s.max_x), clip.x0, clip.x1)) / one;
+    const double h = double(box_inside(int32_t(s.min_y), int32_t(s.max_y), clip.y0, clip.y1)) / one;
     const double area = double(s.area2) / (2 * one * one), pixels = area < w * h ? area : w * h;
     size[int(Axis::Rows)] = PolygonSize{h, pixels};
     size[int(Axis::Columns)] = PolygonSize{w, pixels};
@@ -373,13 +375,7 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
         const int32_t x = vertices[i].x.raw, y = vertices[i].y.raw;
         x_lo = x < x_lo ? x : x_lo, x_hi = x > x_hi ? x : x_hi, y_lo = y < y_lo ? y : y_lo, y_hi = y > y_hi ? y : y_hi;
     }
-    // (in 32 bits: the clip's edges in subpixels are within 2^17)
-    const int32_t one_px = SUBPIXEL_ONE;
-    auto inside = [](int32_t lo, int32_t hi, int32_t first, int32_t end) {
-        lo = lo < first ? first : lo, hi = hi > end ? end : hi;
-        return hi > lo ? hi - lo : 0;
-    };
-    const int32_t width = inside(x_lo, x_hi, clip.x0 * one_px, clip.x1 * one_px), height = inside(y_lo, y_hi, clip.y0 * one_px, clip.y1 * one_px);
+    const int32_t width = box_inside(x_lo, x_hi, clip.x0, clip.x1), height = box_inside(y_lo, y_hi, clip.y0, clip.y1);
     // twice the area the setup would find (the shoelace over the corners: repeated ones add nothing)
     double area2 = 0;  // (not needed with one candidate)
     if (!plan.sole && count == 3) {
@@ -409,6 +405,7 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     if (best <= least + CHOICE_COST) return plan.certain;
     // (only where the polygon lies inside the clip: its first corner is then among the pixels
     // drawn, not off the screen where a wall comes nearest)
+    const int32_t one_px = SUBPIXEL_ONE;
     const bool in_clip = x_lo >= clip.x0 * one_px && x_hi <= clip.x1 * one_px && y_lo >= clip.y0 * one_px && y_hi <= clip.y1 * one_px;
     return in_clip && plan.exact_below > 0 && corner_footprint(vertices) < plan.exact_below ? plan.certain : nullptr;
 }

@@ -45,6 +45,9 @@ struct Drawer {
     SetupStatus draw(const Vertex* vertices, int count, Input input = Input::Any) const;
     // The same where `own`, inline: straight to the mapper's driver (a frame's loop).
     SetupStatus draw_own(const Vertex* vertices, int count, Input input) const;
+    // draw_own's work with `driver` (the mapper's draw, or its enveloped one given auto's
+    // `envelope`): the probe's laps about it, and the polygon counted unless Unproven.
+    SetupStatus drive(DrawFn driver, const Vertex* vertices, int count, Input input, const EnvelopeLimits* envelope) const;
 };
 
 // Counts a polygon drawn (or not) with `row`'s mapper: its pixels those the statistics gained from
@@ -55,17 +58,20 @@ inline void count_polygon(RenderStats* stats, int32_t row, SetupStatus status, u
         ++stats->mapper_polygons[row];
         stats->mapper_pixels[row] += stats->pixels - pixels_before;
     } else if (status == SetupStatus::Degenerate) ++stats->skipped;
-    else ++stats->rejected;
+    else if (status != SetupStatus::Unproven) ++stats->rejected;  // (Unproven: auto chooses, and counts that)
 }
 
-inline SetupStatus Drawer::draw_own(const Vertex* vertices, int count, Input input) const {
+inline SetupStatus Drawer::drive(DrawFn driver, const Vertex* vertices, int count, Input input, const EnvelopeLimits* envelope) const {
     Probe* probe = stats->probe;
     probe_lap(probe, Phase::Walk);  // what came before the polygon: the caller's loop
     const uint32_t pixels_before = stats->pixels;
-    const SetupStatus status = mapper->draw(DrawContext{*tex, axis, *target, stats, loop, nullptr, input}, vertices, count);
+    const SetupStatus status = driver(DrawContext{*tex, axis, *target, stats, loop, nullptr, input, envelope}, vertices, count);
     probe_lap(probe, Phase::Walk);
     count_polygon(stats, row, status, pixels_before);
     return status;
+}
+inline SetupStatus Drawer::draw_own(const Vertex* vertices, int count, Input input) const {
+    return drive(mapper->draw, vertices, count, input, nullptr);
 }
 
 // auto on an uncut triangle of an object whose envelope proves the mapper of `enveloped` (plan_auto,
@@ -77,17 +83,10 @@ inline SetupStatus Drawer::draw_own(const Vertex* vertices, int count, Input inp
 // (draw_unproven). Inline: once a triangle of the mesh, in the frame's loop.
 SetupStatus draw_unproven(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget);
 inline SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
-    RenderStats* stats = enveloped.stats;
-    Probe* probe = stats->probe;
-    probe_lap(probe, Phase::Walk);  // what came before the polygon: the caller's loop
-    const uint32_t pixels_before = stats->pixels;
     // (an uncut triangle: in range, as build_frame makes it)
-    const SetupStatus status = enveloped.mapper->enveloped(
-        DrawContext{*enveloped.tex, enveloped.axis, *enveloped.target, stats, enveloped.loop, nullptr, Input::InRange, &enveloped.limits}, vertices, 3);
-    probe_lap(probe, Phase::Walk);
+    const SetupStatus status = enveloped.drive(enveloped.mapper->enveloped, vertices, 3, Input::InRange, &enveloped.limits);
     if (status == SetupStatus::Unproven) return draw_unproven(enveloped, vertices, variant, budget);
-    stats->enveloped += status == SetupStatus::Ok;
-    count_polygon(stats, enveloped.row, status, pixels_before);
+    enveloped.stats->enveloped += status == SetupStatus::Ok;
     return status;
 }
 

@@ -5,37 +5,37 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1029.6f, 348.52f, 40.337f}, // 11 scenes
-    {"exact", 1011.0f, 315.92f, 80.311f}, // 11 scenes
-    {"persp-subdiv-4", 1011.0f, 321.29f, 91.383f}, // 11 scenes
-    {"persp-subdiv-8", 1011.0f, 376.03f, 59.522f}, // 11 scenes
-    {"persp-subdiv-16", 1011.0f, 415.04f, 43.461f}, // 11 scenes
-    {"persp-subdiv-32", 1011.0f, 435.48f, 35.608f}, // 11 scenes
-    {"constant-depth", 1011.0f, 451.86f, 29.805f}, // 11 scenes
-    {"persp-adaptive-0.5", 1011.0f, 908.28f, 290.049f}, // 11 scenes
-    {"persp-adaptive-1", 1011.0f, 999.34f, 51.771f}, // 11 scenes
-    {"persp-adaptive-2", 1011.0f, 1016.49f, 44.507f}, // 11 scenes
-    {"persp-adaptive-4", 1011.0f, 1029.28f, 40.041f}, // 11 scenes
-    {"fast-affine", 1054.9f, 109.17f, 5.137f}, // 11 scenes
-    {"fast-table", 1309.7f, 99.20f, 2.068f}, // 11 scenes
-    {"fast-columns", 1126.4f, 177.62f, 4.967f}, // 11 scenes
-    {"fast-table-columns", 1381.6f, 248.37f, 2.826f}, // 11 scenes
-    {"fast-subdiv-8", 1011.0f, 298.76f, 14.047f}, // 11 scenes
-    {"fast-subdiv-16", 1011.0f, 309.05f, 9.940f}, // 11 scenes
-    {"fast-subdiv-32", 1011.0f, 314.15f, 7.953f}, // 11 scenes
-    {"fast-constant-depth", 1011.0f, 318.72f, 6.313f}, // 11 scenes
-    {"fast-adaptive-1", 1011.0f, 341.61f, 9.604f}, // 11 scenes
-    {"fast-adaptive-2", 1011.0f, 345.36f, 8.123f}, // 11 scenes
-    {"fast-oriented-1", 1174.2f, 359.34f, 7.778f}, // 11 scenes
-    {"xsharp-dda", 1518.3f, 376.65f, 37.425f}, // 10 scenes
-    {"xsharp-row-out", 1518.3f, 511.92f, 18.937f}, // 10 scenes
-    {"xsharp-column", 1522.0f, 484.56f, 12.609f}, // 10 scenes
-    {"hecker-steptable", 5331.3f, 0.00f, 613.876f}, // 10 scenes
-    {"fatmap-256", 1729.5f, 162.45f, 13.643f}, // 8 scenes
-    {"fatmap-256-16", 1729.5f, 167.45f, 12.643f}, // 8 scenes
-    {"fatmap-lut", 2346.3f, 165.94f, 10.048f}, // 7 scenes
-    {"quake-subdiv16", 1503.9f, 302.03f, 13.884f}, // 10 scenes
-    {"quake-subdiv8", 1503.9f, 286.69f, 20.236f}, // 10 scenes
+    {"affine", 1031.2f, 348.98f, 40.328f}, // 11 scenes
+    {"exact", 1011.0f, 316.38f, 80.302f}, // 11 scenes
+    {"persp-subdiv-4", 1011.0f, 321.76f, 91.374f}, // 11 scenes
+    {"persp-subdiv-8", 1011.0f, 376.49f, 59.513f}, // 11 scenes
+    {"persp-subdiv-16", 1011.0f, 415.51f, 43.452f}, // 11 scenes
+    {"persp-subdiv-32", 1011.0f, 435.94f, 35.599f}, // 11 scenes
+    {"constant-depth", 1011.0f, 452.33f, 29.796f}, // 11 scenes
+    {"persp-adaptive-0.5", 1011.0f, 908.74f, 290.040f}, // 11 scenes
+    {"persp-adaptive-1", 1011.0f, 999.80f, 51.762f}, // 11 scenes
+    {"persp-adaptive-2", 1011.0f, 1016.95f, 44.498f}, // 11 scenes
+    {"persp-adaptive-4", 1011.0f, 1029.74f, 40.032f}, // 11 scenes
+    {"fast-affine", 1044.9f, 110.33f, 5.114f}, // 11 scenes
+    {"fast-table", 1299.7f, 100.36f, 2.046f}, // 11 scenes
+    {"fast-columns", 1116.4f, 178.73f, 4.943f}, // 11 scenes
+    {"fast-table-columns", 1371.6f, 249.48f, 2.802f}, // 11 scenes
+    {"fast-subdiv-8", 1011.0f, 299.23f, 14.038f}, // 11 scenes
+    {"fast-subdiv-16", 1011.0f, 309.51f, 9.931f}, // 11 scenes
+    {"fast-subdiv-32", 1011.0f, 314.61f, 7.944f}, // 11 scenes
+    {"fast-constant-depth", 1011.0f, 319.18f, 6.304f}, // 11 scenes
+    {"fast-adaptive-1", 1011.0f, 342.07f, 9.595f}, // 11 scenes
+    {"fast-adaptive-2", 1011.0f, 345.82f, 8.114f}, // 11 scenes
+    {"fast-oriented-1", 1164.2f, 360.73f, 7.759f}, // 11 scenes
+    {"xsharp-dda", 1508.3f, 377.86f, 37.397f}, // 10 scenes
+    {"xsharp-row-out", 1508.3f, 513.13f, 18.908f}, // 10 scenes
+    {"xsharp-column", 1512.0f, 485.61f, 12.584f}, // 10 scenes
+    {"hecker-steptable", 5321.4f, 0.00f, 613.915f}, // 10 scenes
+    {"fatmap-256", 1720.3f, 163.69f, 13.603f}, // 8 scenes
+    {"fatmap-256-16", 1720.3f, 168.69f, 12.603f}, // 8 scenes
+    {"fatmap-lut", 2337.0f, 167.19f, 10.004f}, // 7 scenes
+    {"quake-subdiv16", 1493.9f, 303.20f, 13.857f}, // 10 scenes
+    {"quake-subdiv8", 1493.9f, 287.85f, 20.210f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
