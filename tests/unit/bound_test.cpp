@@ -316,6 +316,51 @@ TEST(Bounds, FastAdaptiveCertificateImpliesItsBound) {
     EXPECT_GT(outside, 0);
 }
 
+// Both certificates (fast-adaptive-1's and -2's) inside random clips (the screen less up to a
+// quarter of it on each side), which cut many of the polygons: wherever one holds, the polygon lies inside the clip and its mapper's whole-polygon
+// bound along that walker is within B.
+TEST(Bounds, FastAdaptiveCertificatesHoldInsideAnyClip) {
+    const Mapper* adaptive[2] = {find_mapper("fast-adaptive-1"), find_mapper("fast-adaptive-2")};
+    TriangleGen gen(20261127u);
+    const int32_t sizes[] = {1, 64, 256};
+    int certified[2] = {0, 0}, cut = 0;
+    const int polygons = std::max(3000 / SANITIZED_SHARE, polygons_per_mapper());
+    for (int n = 0; n < polygons; ++n) {
+        const int32_t size = sizes[n % 3];
+        std::vector<uint8_t> texels(size_t(size) * size_t(size));
+        generate_texture(TextureKind::Xor, size, size, texels.data());
+        Texture tex{texels.data(), size, size, Wrap::Repeat};
+        TextureCopies copies(&tex);
+        const std::vector<Vertex> p = random_polygon(gen, n % 6);
+        const int count = int(p.size());
+        PolygonSetup s;
+        if (setup_polygon(p.data(), count, &s, PLANES_ALL) != SetupStatus::Ok) continue;
+        // (the screen less up to a quarter of it on each side)
+        auto in = [&](int32_t side) { return int32_t(gen.uniform(0, side / 4.0)); };
+        const ClipRect clip{in(SCREEN_WIDTH), in(SCREEN_HEIGHT), SCREEN_WIDTH - in(SCREEN_WIDTH), SCREEN_HEIGHT - in(SCREEN_HEIGHT)};
+        cut += !box_in_clip(s, clip);
+        for (int two = 0; two < 2; ++two)
+            for (Axis axis : {Axis::Rows, Axis::Columns}) {
+                if (!(two ? fast_adaptive_certain<8>(s, clip, tex, axis) : fast_adaptive_certain<4>(s, clip, tex, axis))) continue;
+                ++certified[two];
+                const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns") + " in clip " +
+                                         std::to_string(clip.x0) + "," + std::to_string(clip.y0) + "-" + std::to_string(clip.x1) + "," + std::to_string(clip.y1);
+                EXPECT_TRUE(box_in_clip(s, clip)) << what << ": certified, though the clip cuts it";
+                const double within = two ? 2 : 1;
+                const Mapper& m = *adaptive[two];
+                const ErrorBound whole = m.bound(BoundContext{m, tex, axis, clip, within, nullptr, true}, p.data(), count);
+                EXPECT_TRUE(whole.draws && whole.exact_coverage) << what;
+                EXPECT_LE(whole.footprint, within) << what << ": certified within " << within;
+                if (HasFailure()) return;
+            }
+    }
+    std::printf("certified: fast-adaptive-1 %d, fast-adaptive-2 %d of %d polygon-walkers each (%d polygons cut by their clip)\n", certified[0],
+                certified[1], 2 * polygons, cut);
+    EXPECT_GT(certified[0], polygons / 10);
+    EXPECT_GT(certified[1], certified[0]) << "a budget of 2 certifies more";
+    EXPECT_GT(cut, polygons / 4);
+}
+
 TEST(Bounds, RelativeChordsBoundCoversEveryFootprint) {
     raster::Random rng(4242u);
     auto error_at = [](double x, double r, double f) { return footprint_error(x * f + r, 0, f); };
