@@ -87,6 +87,9 @@ struct Candidates {
     // picks, with its own driver): the oriented candidate (choose_mapper); -1: none here
     int adaptive[2][2] = {{-1, -1}, {-1, -1}};  // [fast-adaptive-1, -2][Axis]
     int oriented_row = -1;                      // fast-oriented-1's registry row
+    // fast-constant-depth along each walker: what the oriented candidate's certificate or spread
+    // proves too (fast_chords_bound); -1: none here
+    int constant_depth[2] = {-1, -1};  // [Axis]
 };
 
 const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
@@ -117,6 +120,8 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
             if (MAPPERS[c.row[k]].span == (two ? fast_adaptive_span<8> : fast_adaptive_span<4>)) c.adaptive[two][int(c.axis[k])] = k;
     for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i)
         if (MAPPERS[i].draw == fast_oriented_draw<4> && mapper_accepts(MAPPERS[i], tex) && MAPPER_COSTS[i].polygon >= 0) c.oriented_row = i;
+    for (int k = 0; k < c.count; ++k)
+        if (MAPPERS[c.row[k]].span == fast_subdiv_span<FAST_SPAN_LONG> && c.cost[k].polygon < 1e29) c.constant_depth[int(c.axis[k])] = k;
     for (int k = c.count - 1; k >= 0; --k) {
         const bool last = k == c.count - 1;
         c.least_polygon[k] = last || c.cost[k].polygon < c.least_polygon[k + 1] ? c.cost[k].polygon : c.least_polygon[k + 1];
@@ -268,12 +273,15 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     // below two, else 2) along the walker fast-oriented-B would pick, where it is proven within B:
     // inside the clip by its certificate from the setup alone; reaching outside it (the certificate
     // takes the vertices for the corners of the part drawn) by its own bound of the whole polygon
-    // at once, from the spread of the part inside the clip (which the search then shares). Priced
-    // with no proof, by fast-oriented-1's row (B = 1: drawn by fast-oriented-1 itself, whose driver
-    // picks the same walker) or fast-adaptive-2's. Where it costs no more than the least any
-    // candidate could cost with its proof plus ORIENTED_GATE, or where no candidate that steps the
-    // polygon affinely can be within the budget (affine_deviation), it is the choice; else the price
-    // the search must undercut.
+    // at once, from the spread of the part inside the clip (which the search then shares); priced
+    // by fast-oriented-1's row with no proof (B = 1: drawn by fast-oriented-1 itself, whose driver
+    // picks the same walker) or fast-adaptive-2's. Or, cheaper by its own row, fast-constant-depth
+    // along that walker (one chord a line: never more segments than fast-adaptive's), where its
+    // chords bound is within the budget: inside the clip from the same certificate, reaching
+    // outside it from that spread (and only where it would be taken unsearched, below). Where the
+    // price is no more than the least any candidate could cost with its proof plus ORIENTED_GATE,
+    // or where no candidate that steps the polygon affinely can be within the budget
+    // (affine_deviation), it is the choice; else the price the search must undercut.
     const Mapper* oriented = nullptr;
     Axis oriented_walker = Axis::Rows;
     int32_t oriented_price = NOT_LIVE;
@@ -281,22 +289,39 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     if (budget.max_error >= 1 && budget.max_error < 4 && list.oriented_row >= 0) {
         const int two = budget.max_error >= 2;
         const double within = two ? 2 : 1;
-        oriented_walker = target.planar ? Axis::Columns : oriented_axis(prepared->setup, target.clip, fast_adaptive_room(within));
+        const PolygonSetup& s = prepared->setup;
+        oriented_walker = target.planar ? Axis::Columns : oriented_axis(s, target.clip, fast_adaptive_room(within));
         const int a = list.adaptive[two][int(oriented_walker)];
         const Mapper& m = MAPPERS[a >= 0 ? list.row[a] : 0];
-        const bool inside = box_in_clip(prepared->setup, target.clip);
+        const bool inside = box_in_clip(s, target.clip);
+        const FastCertificate certificate = inside ? fast_certificate(s, target.clip, tex) : FastCertificate{};
         auto proven = [&] {
-            if (inside) return two ? fast_adaptive_certain<8>(prepared->setup, target.clip, tex, oriented_walker)
-                                   : fast_adaptive_certain<4>(prepared->setup, target.clip, tex, oriented_walker);
+            if (inside) return two ? fast_adaptive_certain<8>(certificate, s, oriented_walker) : fast_adaptive_certain<4>(certificate, s, oriented_walker);
             const ErrorBound b = m.bound(BoundContext{m, tex, oriented_walker, target.clip, within, prepared, true}, vertices, count);
             return b.draws && b.footprint <= within;
         };
+        double estimate = 1e300;
         if (a >= 0 && proven()) {
             oriented = two ? &m : &MAPPERS[list.oriented_row];
             oriented_bound.footprint = within;
-            const double estimate = estimate_cost(MAPPER_COSTS[oriented - MAPPERS], size[int(oriented_walker)]);
-            if (estimate <= least_cost(0) + ORIENTED_GATE || affine_deviation(prepared->setup, target.clip) > budget.max_error)
-                return Choice{oriented, oriented_walker, oriented_bound, false};
+            estimate = estimate_cost(MAPPER_COSTS[oriented - MAPPERS], size[int(oriented_walker)]);
+        }
+        // (asked once, where needed)
+        int ruled_out = -1;
+        auto affine_ruled_out = [&] { return ruled_out < 0 ? (ruled_out = affine_deviation(s, target.clip) > budget.max_error) : ruled_out; };
+        const int d = list.constant_depth[int(oriented_walker)];
+        const bool by_spread = !inside && oriented;
+        const FastCertificate chords = d < 0 ? FastCertificate{} : by_spread ? fast_certificate(prepared_spread(prepared, target.clip)) : certificate;
+        if (chords.holds) {
+            const Mapper& c = MAPPERS[list.row[d]];
+            const double priced_at = estimate_cost(MAPPER_COSTS[list.row[d]], size[int(oriented_walker)]);
+            const double bound = priced_at < estimate && (!by_spread || priced_at <= least_cost(0) + ORIENTED_GATE || affine_ruled_out())
+                                     ? fast_chords_bound(chords, s, oriented_walker, FAST_SPAN_LONG)
+                                     : NO_BOUND;
+            if (bound <= budget.max_error) oriented = &c, oriented_bound.footprint = bound, estimate = priced_at;
+        }
+        if (oriented) {
+            if (estimate <= least_cost(0) + ORIENTED_GATE || affine_ruled_out()) return Choice{oriented, oriented_walker, oriented_bound, false};
             oriented_price = price_of(estimate);
         }
     }

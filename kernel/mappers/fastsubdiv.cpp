@@ -163,12 +163,12 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
     });
 }
 
-template <int QUARTERS>
-bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis) {
-    // (the mapper takes the texture: its sides divide 65536)
-    if (tex.wrap != Wrap::Repeat) return false;
+FastCertificate fast_certificate(const PolygonSetup& s, const ClipRect& clip, const Texture& tex) {
+    FastCertificate f;
+    // (the mappers take the texture: its sides divide 65536)
+    if (tex.wrap != Wrap::Repeat) return f;
     // inside the clip: the spread's corners are the vertices (spread_corners)
-    if (!box_in_clip(s, clip)) return false;
+    if (!box_in_clip(s, clip)) return f;
     constexpr double EPS = 2.220446049250313e-16, MARGIN = 1 + 1e-9;
     // Q at the corners as the spread takes it, and the corners' largest |x| and |y|
     double q_lo = 0, far_x = 0, far_y = 0;
@@ -181,10 +181,10 @@ bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Te
     auto terms = [&](const Plane& p) { return (magnitude(p.a0) + magnitude(p.gy) * far_y + magnitude(p.gx) * far_x) * MARGIN; };
     const double scale_q = terms(s.q);
     // the spread's Q_min, less twice its widening (its own evaluation of Q may round otherwise),
-    // and Q's terms within 2^26 of it (the whole bound's condition, each corner's terms at most
-    // scale_q)
+    // and Q's terms within 2^26 of it (fast-adaptive's whole bound's condition, each corner's terms
+    // at most scale_q)
     const double q_min = (q_lo - 16 * EPS * scale_q) * (1 - 1e-9);
-    if (!(q_min > 0) || !(scale_q <= q_min * 67108864.0)) return false;
+    if (!(q_min > 0) || !(scale_q <= q_min * 67108864.0)) return f;
     const Plane* exact[2] = {&s.pu, &s.pv};
     const Plane* affine[2] = {&s.u, &s.v};
     double reference = 0;
@@ -195,13 +195,52 @@ bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Te
         // chords_fit without the steps: the range of t (at most 2 |t|) and the roundings
         const double range = (2 * t_abs + 2 * (evaluation + ref)) * MARGIN * MARGIN;
         // (fits_16_16 with a start of 0, one step and a side dividing 65536: the step below 32767)
-        if (!(range < FAST_ARITHMETIC.chord)) return false;
+        if (!(range < FAST_ARITHMETIC.chord)) return f;
         reference = larger(reference, ref);
     }
+    f.holds = f.terms_within = true, f.q_min = q_min, f.reference = reference;
+    // (the spread's lines inside the clip: the box's extent plus one)
+    f.last[0] = double(s.max_x - s.min_x) / double(SUBPIXEL_ONE), f.last[1] = double(s.max_y - s.min_y) / double(SUBPIXEL_ONE);
+    return f;
+}
+
+FastCertificate fast_certificate(const PolygonSpread& p) {
+    FastCertificate f;
+    if (!(p.q_min > 0)) return f;
+    for (int t = 0; t < 2; ++t) {
+        // chords_fit's first test, as it takes it (a repeating texture whose sides divide 65536:
+        // fits_16_16 with a start of 0 and one step asks the step below 32767)
+        const double range = (p.t_max[t] - p.t_min[t] + 2 * (p.evaluation[t] + p.reference[t])) * (1 + 1e-9);
+        if (!(range < 32767) || !(range < FAST_ARITHMETIC.chord)) return f;
+    }
+    f.holds = true, f.q_min = p.q_min, f.reference = larger(p.reference[0], p.reference[1]);
+    f.last[0] = p.lines[0] - 1, f.last[1] = p.lines[1] - 1;
+    return f;
+}
+
+double fast_chords_bound(const FastCertificate& f, const PolygonSetup& s, Axis axis, double n) {
+    constexpr double MARGIN = 1 + 1e-9;
+    if (!f.holds) return NO_BOUND;
+    // as segments_bound's whole bound takes them: the chords' pixels h and steps along a line
+    const bool rows = axis == Axis::Rows;
+    const double last = f.last[rows ? 0 : 1];
+    const double h = n < last ? n : last, steps = n - 1 < last ? n - 1 : last;
+    const double qa = magnitude(rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
+    return relative_chords_bound(h * h * qa / (4 * f.q_min) * MARGIN, (FAST_ARITHMETIC.at(steps) + 2 * f.reference) * MARGIN);
+}
+
+template <int QUARTERS>
+bool fast_adaptive_certain(const FastCertificate& f, const PolygonSetup& s, Axis axis) {
     // the rounding after the longest chord, and the chords of two pixels relative to each pixel's step
-    if (!(FAST_ARITHMETIC.at(FAST_SPAN_LONG - 1) + 2 * reference <= FAST_ADAPTIVE_ROUNDING)) return false;
+    if (!f.holds || !f.terms_within || !(FAST_ARITHMETIC.at(FAST_SPAN_LONG - 1) + 2 * f.reference <= FAST_ADAPTIVE_ROUNDING)) return false;
+    constexpr double MARGIN = 1 + 1e-9;
     const double qa = magnitude(axis == Axis::Rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
-    return relative_chords_bound(qa / q_min * MARGIN, (FAST_ARITHMETIC.at(1) + 2 * reference) * MARGIN) <= QUARTERS / 4.0;
+    return relative_chords_bound(qa / f.q_min * MARGIN, (FAST_ARITHMETIC.at(1) + 2 * f.reference) * MARGIN) <= QUARTERS / 4.0;
+}
+
+template <int QUARTERS>
+bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis) {
+    return fast_adaptive_certain<QUARTERS>(fast_certificate(s, clip, tex), s, axis);
 }
 
 Axis oriented_axis(const PolygonSetup& s, const ClipRect& clip, double room) {
@@ -317,6 +356,8 @@ template ErrorBound fast_adaptive_bound<4>(const BoundContext&, const Vertex*, i
 template ErrorBound fast_adaptive_bound<8>(const BoundContext&, const Vertex*, int);
 template bool fast_adaptive_certain<4>(const PolygonSetup&, const ClipRect&, const Texture&, Axis);
 template bool fast_adaptive_certain<8>(const PolygonSetup&, const ClipRect&, const Texture&, Axis);
+template bool fast_adaptive_certain<4>(const FastCertificate&, const PolygonSetup&, Axis);
+template bool fast_adaptive_certain<8>(const FastCertificate&, const PolygonSetup&, Axis);
 template Axis fast_oriented_walker<4>(const PolygonSetup&, const ClipRect&);
 template SetupStatus fast_oriented_draw<4>(const DrawContext&, const Vertex*, int);
 template ErrorBound fast_oriented_bound<4>(const BoundContext&, const Vertex*, int);

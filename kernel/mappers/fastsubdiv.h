@@ -91,6 +91,26 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
 // spread's 1100.
 template <int QUARTERS>
 bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis);
+// The certificate's part that every chord length shares (fast_certificate, about 450 instructions),
+// and from it fast-adaptive-B's (above) and fast-subdiv-N's (fast_chords_bound): at least the
+// relative chords bound that segments_bound's whole bound of N-pixel chords along `axis` returns
+// where within a budget (fast-constant-depth: N = 512), at the least Q and the most rounding the
+// spread could find (a few instructions); NO_BOUND where the certificate does not hold.
+struct FastCertificate {
+    bool holds = false;        // Q_min above 0, and 16.16 holds the range of t without steps (chords_fit's first test)
+    bool terms_within = false; // and Q's terms within 2^26 of its least (fast-adaptive's whole bound asks it)
+    double q_min = 0;          // at most the spread's Q_min
+    double reference = 0;      // at least the spread's reference rounding, either coordinate
+    double last[2] = {0, 0};   // the spread's lines less one, by rows and by columns
+};
+// From the setup alone, where the polygon lies inside the clip and the texture repeats (the
+// caller's to ensure the mapper takes it); or from the polygon's spread (PolygonSpread: one the
+// clip cuts, whose spread a bound has computed already), its own values.
+FastCertificate fast_certificate(const PolygonSetup& s, const ClipRect& clip, const Texture& tex);
+FastCertificate fast_certificate(const PolygonSpread& p);
+template <int QUARTERS>
+bool fast_adaptive_certain(const FastCertificate& f, const PolygonSetup& s, Axis axis);
+double fast_chords_bound(const FastCertificate& f, const PolygonSetup& s, Axis axis, double n);
 
 // fast-oriented-B: fast-adaptive-B, each polygon along the walker where 1/w changes least for
 // the lines it costs (walls by columns, floors and ceilings by rows, and between them whichever

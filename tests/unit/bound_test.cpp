@@ -323,7 +323,7 @@ TEST(Bounds, FastAdaptiveCertificatesHoldInsideAnyClip) {
     const Mapper* adaptive[2] = {find_mapper("fast-adaptive-1"), find_mapper("fast-adaptive-2")};
     TriangleGen gen(20261127u);
     const int32_t sizes[] = {1, 64, 256};
-    int certified[2] = {0, 0}, cut = 0;
+    int certified[2] = {0, 0}, cut = 0, chords = 0, n_budget = 0;
     const int polygons = std::max(3000 / SANITIZED_SHARE, polygons_per_mapper());
     for (int n = 0; n < polygons; ++n) {
         const int32_t size = sizes[n % 3];
@@ -339,6 +339,22 @@ TEST(Bounds, FastAdaptiveCertificatesHoldInsideAnyClip) {
         auto in = [&](int32_t side) { return int32_t(gen.uniform(0, side / 4.0)); };
         const ClipRect clip{in(SCREEN_WIDTH), in(SCREEN_HEIGHT), SCREEN_WIDTH - in(SCREEN_WIDTH), SCREEN_HEIGHT - in(SCREEN_HEIGHT)};
         cut += !box_in_clip(s, clip);
+        // fast-subdiv-N's chords bound from the same certificate: where within a budget of 1 to 4,
+        // at least the mapper's whole bound asked with that budget
+        const FastCertificate certificate = fast_certificate(s, clip, tex);
+        EXPECT_TRUE(!certificate.holds || box_in_clip(s, clip));
+        for (const char* name : {"fast-subdiv-8", "fast-subdiv-16", "fast-subdiv-32", "fast-constant-depth"})
+            for (Axis axis : {Axis::Rows, Axis::Columns}) {
+                const Mapper& m = *find_mapper(name);
+                const double pixels = m.span == fast_subdiv_span<8> ? 8 : m.span == fast_subdiv_span<16> ? 16 : m.span == fast_subdiv_span<32> ? 32 : FAST_SPAN_LONG;
+                const double bound = fast_chords_bound(certificate, s, axis, pixels), budget = double(1 + n_budget++ % 4);
+                if (!(bound <= budget)) continue;
+                ++chords;
+                const ErrorBound whole = m.bound(BoundContext{m, tex, axis, clip, budget, nullptr, true}, p.data(), count);
+                EXPECT_TRUE(whole.draws && whole.exact_coverage) << name << " polygon " << n;
+                EXPECT_LE(whole.footprint, bound) << name << " polygon " << n << (axis == Axis::Rows ? " by rows" : " by columns") << ": its chords bound "
+                                                  << bound << " within " << budget;
+            }
         for (int two = 0; two < 2; ++two)
             for (Axis axis : {Axis::Rows, Axis::Columns}) {
                 if (!(two ? fast_adaptive_certain<8>(s, clip, tex, axis) : fast_adaptive_certain<4>(s, clip, tex, axis))) continue;
@@ -354,8 +370,9 @@ TEST(Bounds, FastAdaptiveCertificatesHoldInsideAnyClip) {
                 if (HasFailure()) return;
             }
     }
-    std::printf("certified: fast-adaptive-1 %d, fast-adaptive-2 %d of %d polygon-walkers each (%d polygons cut by their clip)\n", certified[0],
-                certified[1], 2 * polygons, cut);
+    std::printf("certified: fast-adaptive-1 %d, fast-adaptive-2 %d of %d polygon-walkers each (%d polygons cut by their clip); chords: %d\n",
+                certified[0], certified[1], 2 * polygons, cut, chords);
+    EXPECT_GT(chords, polygons / 10) << "the chords bound within a budget on many";
     EXPECT_GT(certified[0], polygons / 10);
     EXPECT_GT(certified[1], certified[0]) << "a budget of 2 certifies more";
     EXPECT_GT(cut, polygons / 4);

@@ -4,6 +4,7 @@
 // inside the budget and its coverage is exact.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "kernel/core/choice.h"
@@ -89,7 +90,8 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     const Mapper& oriented = *find_mapper("fast-oriented-1");
     const Mapper& adaptive1 = *find_mapper("fast-adaptive-1");
     const Mapper& adaptive2 = *find_mapper("fast-adaptive-2");
-    int chose[MAPPER_LIMIT][2] = {}, by_spans = 0, choices = 0, unsearched = 0, outside = 0, undercut = 0, ruled_out = 0;
+    const Mapper& constant_depth = *find_mapper("fast-constant-depth");
+    int chose[MAPPER_LIMIT][2] = {}, by_spans = 0, choices = 0, unsearched = 0, outside = 0, undercut = 0, ruled_out = 0, by_chords = 0, chords_certified = 0, chords_outside = 0;
     for (int n = 0; n < 400; ++n) {
         gen.depth_ratio = n % 4 == 0 ? 1.0001 : n % 4 == 1 ? 3 : 50;
         std::vector<Vertex> p = gen.triangle();
@@ -125,10 +127,12 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 // (B = 1 below 2, else 2) along the walker fast-oriented-B would pick, where its
                 // certificate holds (a polygon inside the clip) or its bound of the whole polygon is
                 // within B (one reaching outside it), priced by fast-oriented-1's row (B = 1) or
-                // fast-adaptive-2's; drawn so where no candidate undercuts it by more than the gate
-                // with its proof, or where the affine deviation is above the budget (then only a
-                // mapper that does not step the polygon affinely may undercut it, by any amount),
-                // else only a cheaper proven one is chosen
+                // fast-adaptive-2's; or fast-constant-depth along that walker where its chords bound
+                // from the same certificate (or, reaching outside the clip, from the spread, and only
+                // where it would be taken unsearched) is within the budget: drawn so where no
+                // candidate undercuts it by more than the gate with its proof, or where the affine
+                // deviation is above the budget (then only a mapper that does not step the polygon
+                // affinely may undercut it, by any amount), else only a cheaper proven one is chosen
                 const bool one = b.max_error >= 1 && b.max_error < 2, two = b.max_error >= 2 && b.max_error < 4;
                 const double within = two ? 2 : 1;
                 const Mapper& adaptive = two ? adaptive2 : adaptive1;
@@ -140,19 +144,52 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 const ErrorBound adaptive_whole = (one || two) && !inside
                                                       ? adaptive.bound(BoundContext{adaptive, tex, walker, clip, within, nullptr, true}, p.data(), 3)
                                                       : ErrorBound{};
-                const bool certain_inside = two ? fast_adaptive_certain<8>(setup, clip, tex, walker) : fast_adaptive_certain<4>(setup, clip, tex, walker);
-                const bool certified = (one || two) && (inside ? certain_inside : adaptive_whole.draws && adaptive_whole.footprint <= within);
-                const double estimate = certified ? estimate_cost(MAPPER_COSTS[&drawn_by - MAPPERS], sizes[int(walker)]) : 1e300;
+                const FastCertificate certificate = inside ? fast_certificate(setup, clip, tex) : FastCertificate{};
+                const bool certain_inside = two ? fast_adaptive_certain<8>(certificate, setup, walker) : fast_adaptive_certain<4>(certificate, setup, walker);
+                EXPECT_EQ(certain_inside, two ? fast_adaptive_certain<8>(setup, clip, tex, walker) : fast_adaptive_certain<4>(setup, clip, tex, walker));
                 const bool affine_ruled_out = affine_deviation(setup, clip) > b.max_error;
+                const Mapper* unsearched_by = nullptr;
+                double estimate = 1e300, unsearched_bound = within;
+                if ((one || two) && (inside ? certain_inside : adaptive_whole.draws && adaptive_whole.footprint <= within))
+                    unsearched_by = &drawn_by, estimate = estimate_cost(MAPPER_COSTS[&drawn_by - MAPPERS], sizes[int(walker)]);
+                if ((one || two) && (inside || unsearched_by) && mapper_walks(constant_depth, walker) && mapper_targets(constant_depth, target, walker)) {
+                    PolygonSpread spread;
+                    if (!inside) polygon_spread(setup, clip, &spread);
+                    const FastCertificate chords = inside ? certificate : fast_certificate(spread);
+                    const double cost = estimate_cost(MAPPER_COSTS[&constant_depth - MAPPERS], sizes[int(walker)]);
+                    const double bound = fast_chords_bound(chords, setup, walker, FAST_SPAN_LONG);
+                    // (where within the budget, at least the whole bound it stands for)
+                    if (bound <= b.max_error) {
+                        EXPECT_LE(constant_depth.bound(BoundContext{constant_depth, tex, walker, clip, b.max_error, nullptr, true}, p.data(), 3).footprint, bound);
+                        ++chords_certified;
+                    }
+                    // (what any candidate could cost at least with its proof: the least polygon, span
+                    // and pixel costs of all of them, the spans most where one costs less than 0 a span)
+                    double least[3] = {1e300, 1e300, 1e300};
+                    for (int i = 0; i < MAPPER_COUNT; ++i)
+                        for (Axis axis : {Axis::Rows, Axis::Columns}) {
+                            const Mapper& m = MAPPERS[i];
+                            if (!choosable(m) || !mapper_walks(m, axis) || !mapper_accepts(m, tex) || !mapper_targets(m, target, axis)) continue;
+                            if ((b.exact_coverage && !m.guarantee.exact_coverage) || (b.max_error == 0 && m.guarantee.max_error != 0)) continue;
+                            const CostRow r = proven_cost(m, cost_row(MAPPER_COSTS[i]));
+                            least[0] = std::min(least[0], double(r.polygon)), least[1] = std::min(least[1], double(r.span)), least[2] = std::min(least[2], double(r.pixel));
+                        }
+                    const double fewest = std::min(sizes[0].spans, sizes[1].spans), most = std::max(sizes[0].spans, sizes[1].spans);
+                    const double least_cost = least[0] + least[1] * (least[1] < 0 ? most : fewest) + least[2] * sizes[0].pixels;
+                    const bool unsearched_only = !inside && !(cost <= least_cost + ORIENTED_GATE) && !affine_ruled_out;
+                    if (cost < estimate && bound <= b.max_error && !unsearched_only) unsearched_by = &constant_depth, estimate = cost, unsearched_bound = bound;
+                }
+                const bool certified = unsearched_by != nullptr;
                 double chosen, slack = 0;
-                if (certified && c.mapper == &drawn_by && c.axis == walker && c.bound.footprint == within) {
-                    ++unsearched, outside += !inside, ruled_out += affine_ruled_out;
+                if (certified && c.mapper == unsearched_by && c.axis == walker && c.bound.footprint == unsearched_bound) {
+                    ++unsearched, outside += !inside, ruled_out += affine_ruled_out, by_chords += unsearched_by != &drawn_by;
+                    chords_outside += unsearched_by != &drawn_by && !inside;
                     chosen = estimate, slack = affine_ruled_out ? 1e300 : ORIENTED_GATE;
                 } else {
                     EXPECT_NE(c.mapper, &oriented) << "fast-oriented-1 where its candidate is not proven";
                     chosen = total(*c.mapper, c.axis);
                     EXPECT_LT(chosen, 1e300) << c.mapper->name << " has no bound within the budget";
-                    EXPECT_LE(chosen, estimate + 1) << c.mapper->name << " is dearer than the oriented candidate";
+                    EXPECT_LE(chosen, estimate + 1) << c.mapper->name << " is dearer than the unsearched candidate";
                     undercut += certified;
                 }
                 const bool affine_stepping_only = slack == 1e300;
@@ -173,9 +210,9 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 if (!affine_stepping_only) {
                     EXPECT_LE(chosen, last_total + 1 + slack) << "a looser budget chose a dearer mapper";
                 }
-                // (after the oriented candidate, what a looser budget may cost at most: fast-adaptive-B
-                // along that walker with its proof, within the budget where within B)
-                last_total = slack > 0 ? total(adaptive, walker) : chosen;
+                // (after the unsearched candidate, what a looser budget may cost at most: it with its
+                // proof, fast-adaptive-B along that walker for the oriented one)
+                last_total = slack == 0 ? chosen : unsearched_by == &drawn_by ? total(adaptive, walker) : total(*unsearched_by, walker);
             }
         }
         if (HasFailure()) return;
@@ -190,6 +227,9 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     EXPECT_GT(outside, 0) << "the oriented candidate taken on polygons reaching outside the clip";
     EXPECT_GT(undercut, 0) << "and undercut by a cheaper proven one";
     EXPECT_GT(ruled_out, 0) << "and taken where the affine deviation rules the search out";
+    EXPECT_GT(by_chords, 0) << "fast-constant-depth taken unsearched, proven by the oriented candidate's certificate or spread";
+    EXPECT_GT(chords_outside, 0) << "also on polygons reaching outside the clip, by the spread";
+    EXPECT_GT(chords_certified, by_chords) << "and proven where not taken";
 }
 
 // A planar quad in perspective: a square of side 2 (texels 0..side) about a random point in front of
