@@ -135,8 +135,10 @@ constexpr double CHOICE_COST = 1800;
 // From a budget of one footprint to below four, auto's oriented candidate: fast-adaptive-B (B = 1
 // below two, 2 from two) along the walker fast-oriented-B would pick, proven by its certificate
 // from the setup alone (fast_adaptive_certain: some 550 instructions, against 1100 for the spread a
-// proof starts with). It is taken without a search where, priced by fast-oriented-1's row (B = 1)
-// or fast-adaptive-2's, it costs no more than ORIENTED_GATE above the least any candidate could
+// proof starts with), or fast-constant-depth along that walker where the same proof bounds its one
+// chord a line within the budget (fast_chords_bound). It is taken without a search where, priced
+// by its row (fast-adaptive-1's by fast-oriented-1's, which draws it), it costs no more than
+// ORIENTED_GATE above the least any candidate could
 // cost with its proof (the least polygon, span and pixel costs of all of them: loose, exact's
 // setup with fast-table's pixels), or where affine_deviation is above the budget (no affine-stepping
 // candidate can be within it, and the others share its core: the search's finds there had not

@@ -69,7 +69,7 @@ const MeasuredError MEASURED_ERRORS[] = {
     {"ball-256", "fatmap-lut", 10.307f},
     {"ball-256", "quake-subdiv16", 3.032f},
     {"ball-256", "quake-subdiv8", 3.032f},
-    {"ball-256", "auto", 0.701f},
+    {"ball-256", "auto", 0.535f},
     {"corridor", "affine", 118.289f},
     {"corridor", "exact", 0.000f},
     {"corridor", "persp-subdiv-4", 0.911f},
