@@ -192,23 +192,26 @@ double max_step_at(const PolygonSpread& p, int t, int a, double q) { return p.k_
 double footprint_at(const PolygonSpread& p, double q) { return p.least_k > 0 ? p.least_k / (q * q) * (1 - 1e-9) : 0.0; }
 
 // Keeps the part of the polygon (n corners in x, y) on one side of the line x = at (axis 0) or
-// y = at (axis 1): where side > 0, the part at or above it. The cut corners by one division each.
-// A convex polygon gains at most one corner a cut; -1 where the corners would not fit (a polygon
-// the rounding of earlier cuts made crossed more than twice: the caller keeps the vertices).
-int cut(double* x, double* y, int n, int axis, double at, double side) {
+// y = at (axis 1), written to (to_x, to_y): where side > 0, the part at or above it. The cut corners
+// by one division each. A convex polygon gains at most one corner a cut; -1 where the corners would
+// not fit (a polygon the rounding of earlier cuts made crossed more than twice: the caller keeps
+// the vertices).
+int cut(const double* x, const double* y, int n, double* to_x, double* to_y, int axis, double at, double side) {
     constexpr int ROOM = PolygonSpread::CORNERS;
-    double* a = axis ? y : x;
-    double* b = axis ? x : y;
-    double ka[ROOM], kb[ROOM];
+    const double* a = axis ? y : x;
+    const double* b = axis ? x : y;
+    double* ka = axis ? to_y : to_x;
+    double* kb = axis ? to_x : to_y;
     int kept = 0;
+    bool in_i = (a[0] - at) * side >= 0;
     for (int i = 0; i < n; ++i) {
         const int j = i + 1 < n ? i + 1 : 0;
-        const bool in_i = (a[i] - at) * side >= 0, in_j = (a[j] - at) * side >= 0;
+        const bool in_j = (a[j] - at) * side >= 0;
         if (kept + 2 > ROOM) return -1;
         if (in_i) ka[kept] = a[i], kb[kept++] = b[i];
         if (in_i != in_j) ka[kept] = at, kb[kept++] = b[i] + (at - a[i]) * (b[j] - b[i]) / (a[j] - a[i]);
+        in_i = in_j;
     }
-    for (int i = 0; i < kept; ++i) a[i] = ka[i], b[i] = kb[i];
     return kept;
 }
 
@@ -229,11 +232,22 @@ void spread_corners(const PolygonSetup& s, const ClipRect& clip, PolygonSpread* 
     vertices();
     if (box_in_clip(s, clip)) return;
     const double ref[2] = {double(s.ref_x), double(s.ref_y)};
+    const int64_t box_lo[2] = {s.min_x, s.min_y}, box_hi[2] = {s.max_x, s.max_y};
+    // (from one buffer to the other: the corners' and these; a side of the clip the box lies
+    // strictly inside cuts nothing, every corner on its side by a whole subpixel less a few units
+    // in the last place, and is skipped)
+    double other_x[PolygonSpread::CORNERS], other_y[PolygonSpread::CORNERS];
+    double *from_x = o->corner_x, *from_y = o->corner_y, *to_x = other_x, *to_y = other_y;
     for (int axis = 0; axis < 2 && o->corners > 0; ++axis)
         for (int end = 0; end < 2 && o->corners > 0; ++end) {
-            o->corners = cut(o->corner_x, o->corner_y, o->corners, axis, double(end ? hi[axis] : lo[axis]) - ref[axis], end ? -1 : 1);
+            if (end ? box_hi[axis] < hi[axis] : box_lo[axis] > lo[axis]) continue;
+            o->corners = cut(from_x, from_y, o->corners, to_x, to_y, axis, double(end ? hi[axis] : lo[axis]) - ref[axis], end ? -1 : 1);
             if (o->corners < 0) return vertices();
+            double *x = from_x, *y = from_y;
+            from_x = to_x, from_y = to_y, to_x = x, to_y = y;
         }
+    if (from_x != o->corner_x)
+        for (int i = 0; i < o->corners; ++i) o->corner_x[i] = from_x[i], o->corner_y[i] = from_y[i];
     double far = 0;
     for (int i = 0; i < o->corners; ++i) far = larger(far, magnitude(o->corner_x[i]) + magnitude(o->corner_y[i]));
     for (int i = 0; i < s.edge_count; ++i) far = larger(far, magnitude(double(s.edges[i].px - s.ref_x)) + magnitude(double(s.edges[i].py - s.ref_y)));

@@ -69,7 +69,8 @@ SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& te
         return draw_with(Drawer::of(*find_mapper("exact"), tex, any, target, stats, variant), vertices, count, nullptr, nullptr, Input::Any);
     }
     const bool set_up = prepared->status == SetupStatus::Ok;
-    return draw_with(Drawer::of(*c.mapper, tex, c.axis, target, stats, variant), vertices, count, set_up ? &prepared->setup : nullptr,
+    // (a candidate: its walker, texture and target checked when the list was built)
+    return draw_with(Drawer::of(*c.mapper, tex, c.axis, target, stats, variant, true), vertices, count, set_up ? &prepared->setup : nullptr,
                      &prepared->walked[int(c.axis)], Input::Any);
 }
 
