@@ -266,6 +266,27 @@ TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
 // a pixel's deviation is at most X times its step plus r and its step at most its footprint F, its
 // footprint error is ceil(X F + r) / max(1, F) at most; the bound must cover that for every F and
 // reach it (as F comes down to where a texel more first appears).
+// The certificates' n-th random case: an XOR texture of 1, 64 or 256 texels a side, repeating, with
+// its copies, and a random polygon of class n % 6 (random_polygon).
+struct CertificateCase {
+    int32_t size;
+    std::vector<uint8_t> texels;
+    Texture tex;
+    TextureCopies copies;
+    std::vector<Vertex> p;
+    int count;
+    PolygonSetup s;  // every plane
+    bool set_up;
+    static std::vector<uint8_t> xor_texels(int32_t size) {
+        std::vector<uint8_t> texels(size_t(size) * size_t(size));
+        generate_texture(TextureKind::Xor, size, size, texels.data());
+        return texels;
+    }
+    CertificateCase(TriangleGen& gen, int n)
+        : size(n % 3 == 0 ? 1 : n % 3 == 1 ? 64 : 256), texels(xor_texels(size)), tex{texels.data(), size, size, Wrap::Repeat}, copies(&tex),
+          p(random_polygon(gen, n % 6)), count(int(p.size())), set_up(setup_polygon(p.data(), count, &s, PLANES_ALL) == SetupStatus::Ok) {}
+};
+
 // fast-adaptive-1's certificate (auto's oriented candidate): wherever it holds, the mapper's own
 // whole-polygon bound is within one footprint along that walker, and so is the measured error; it
 // holds on many polygons inside the screen and never on one that reaches outside or on a clamped
@@ -274,37 +295,30 @@ TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
 TEST(Bounds, FastAdaptiveCertificateImpliesItsBound) {
     const Mapper& m = *find_mapper("fast-adaptive-1");
     const ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
-    const int32_t sizes[] = {1, 64, 256};
     TriangleGen gen(20261126u);
     PolygonMeter meters[2] = {PolygonMeter(m, Axis::Rows), PolygonMeter(m, Axis::Columns)};
     int certified = 0, refused_inside = 0, outside = 0;
     const int polygons = std::max(1800 / SANITIZED_SHARE, polygons_per_mapper());
     for (int n = 0; n < polygons; ++n) {
-        const int32_t size = sizes[n % 3];
-        std::vector<uint8_t> texels(size_t(size) * size_t(size));
-        generate_texture(TextureKind::Xor, size, size, texels.data());
-        Texture tex{texels.data(), size, size, Wrap::Repeat};
-        TextureCopies copies(&tex);
-        const std::vector<Vertex> p = random_polygon(gen, n % 6);
-        const int count = int(p.size());
-        PolygonSetup s;
-        if (setup_polygon(p.data(), count, &s) != SetupStatus::Ok) continue;
+        const CertificateCase c(gen, n);
+        if (!c.set_up) continue;
+        const PolygonSetup& s = c.s;
         const bool inside = s.min_x >= 0 && s.min_y >= 0 && s.max_x <= SCREEN_WIDTH * SUBPIXEL_ONE && s.max_y <= SCREEN_HEIGHT * SUBPIXEL_ONE;
         for (Axis axis : {Axis::Rows, Axis::Columns}) {
             const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns");
-            Texture clamped = tex;
+            Texture clamped = c.tex;
             clamped.wrap = Wrap::Clamp;
             EXPECT_FALSE(fast_adaptive_certain<4>(s, clip, clamped, axis)) << what << ": a clamped texture";
-            if (!fast_adaptive_certain<4>(s, clip, tex, axis)) {
+            if (!fast_adaptive_certain<4>(s, clip, c.tex, axis)) {
                 refused_inside += inside, outside += !inside;
                 continue;
             }
             EXPECT_TRUE(inside) << what << ": certified, though it reaches outside the clip";
             ++certified;
-            const ErrorBound whole = m.bound(BoundContext{m, tex, axis, clip, 1.0, nullptr, true}, p.data(), count);
+            const ErrorBound whole = m.bound(BoundContext{m, c.tex, axis, clip, 1.0, nullptr, true}, c.p.data(), c.count);
             EXPECT_TRUE(whole.draws && whole.exact_coverage) << what;
             EXPECT_LE(whole.footprint, 1.0) << what << ": certified, but its whole-polygon bound is above one footprint";
-            const AccuracyMetrics e = meters[int(axis)].measure(p.data(), count, tex);
+            const AccuracyMetrics e = meters[int(axis)].measure(c.p.data(), c.count, c.tex);
             EXPECT_LE(e.max_footprint_error, 1 + SLACK) << what << ": measured above the certificate's footprint";
             if (HasFailure()) return;
         }
@@ -322,26 +336,19 @@ TEST(Bounds, FastAdaptiveCertificateImpliesItsBound) {
 TEST(Bounds, FastAdaptiveCertificatesHoldInsideAnyClip) {
     const Mapper* adaptive[2] = {find_mapper("fast-adaptive-1"), find_mapper("fast-adaptive-2")};
     TriangleGen gen(20261127u);
-    const int32_t sizes[] = {1, 64, 256};
     int certified[2] = {0, 0}, cut = 0, chords = 0, n_budget = 0;
     const int polygons = std::max(3000 / SANITIZED_SHARE, polygons_per_mapper());
     for (int n = 0; n < polygons; ++n) {
-        const int32_t size = sizes[n % 3];
-        std::vector<uint8_t> texels(size_t(size) * size_t(size));
-        generate_texture(TextureKind::Xor, size, size, texels.data());
-        Texture tex{texels.data(), size, size, Wrap::Repeat};
-        TextureCopies copies(&tex);
-        const std::vector<Vertex> p = random_polygon(gen, n % 6);
-        const int count = int(p.size());
-        PolygonSetup s;
-        if (setup_polygon(p.data(), count, &s, PLANES_ALL) != SetupStatus::Ok) continue;
+        const CertificateCase c(gen, n);
+        if (!c.set_up) continue;
+        const PolygonSetup& s = c.s;
         // (the screen less up to a quarter of it on each side)
         auto in = [&](int32_t side) { return int32_t(gen.uniform(0, side / 4.0)); };
         const ClipRect clip{in(SCREEN_WIDTH), in(SCREEN_HEIGHT), SCREEN_WIDTH - in(SCREEN_WIDTH), SCREEN_HEIGHT - in(SCREEN_HEIGHT)};
         cut += !box_in_clip(s, clip);
         // fast-subdiv-N's chords bound from the same certificate: where within a budget of 1 to 4,
         // at least the mapper's whole bound asked with that budget
-        const FastCertificate certificate = fast_certificate(s, clip, tex);
+        const FastCertificate certificate = fast_certificate(s, clip, c.tex);
         EXPECT_TRUE(!certificate.holds || box_in_clip(s, clip));
         for (const char* name : {"fast-subdiv-8", "fast-subdiv-16", "fast-subdiv-32", "fast-constant-depth"})
             for (Axis axis : {Axis::Rows, Axis::Columns}) {
@@ -350,21 +357,21 @@ TEST(Bounds, FastAdaptiveCertificatesHoldInsideAnyClip) {
                 const double bound = fast_chords_bound(certificate, s, axis, pixels), budget = double(1 + n_budget++ % 4);
                 if (!(bound <= budget)) continue;
                 ++chords;
-                const ErrorBound whole = m.bound(BoundContext{m, tex, axis, clip, budget, nullptr, true}, p.data(), count);
+                const ErrorBound whole = m.bound(BoundContext{m, c.tex, axis, clip, budget, nullptr, true}, c.p.data(), c.count);
                 EXPECT_TRUE(whole.draws && whole.exact_coverage) << name << " polygon " << n;
                 EXPECT_LE(whole.footprint, bound) << name << " polygon " << n << (axis == Axis::Rows ? " by rows" : " by columns") << ": its chords bound "
                                                   << bound << " within " << budget;
             }
         for (int two = 0; two < 2; ++two)
             for (Axis axis : {Axis::Rows, Axis::Columns}) {
-                if (!(two ? fast_adaptive_certain<8>(s, clip, tex, axis) : fast_adaptive_certain<4>(s, clip, tex, axis))) continue;
+                if (!(two ? fast_adaptive_certain<8>(s, clip, c.tex, axis) : fast_adaptive_certain<4>(s, clip, c.tex, axis))) continue;
                 ++certified[two];
                 const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns") + " in clip " +
                                          std::to_string(clip.x0) + "," + std::to_string(clip.y0) + "-" + std::to_string(clip.x1) + "," + std::to_string(clip.y1);
                 EXPECT_TRUE(box_in_clip(s, clip)) << what << ": certified, though the clip cuts it";
                 const double within = two ? 2 : 1;
                 const Mapper& m = *adaptive[two];
-                const ErrorBound whole = m.bound(BoundContext{m, tex, axis, clip, within, nullptr, true}, p.data(), count);
+                const ErrorBound whole = m.bound(BoundContext{m, c.tex, axis, clip, within, nullptr, true}, c.p.data(), c.count);
                 EXPECT_TRUE(whole.draws && whole.exact_coverage) << what;
                 EXPECT_LE(whole.footprint, within) << what << ": certified within " << within;
                 if (HasFailure()) return;
