@@ -290,7 +290,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         const int two = budget.max_error >= 2;
         const double within = two ? 2 : 1;
         const PolygonSetup& s = prepared->setup;
-        oriented_walker = target.planar ? Axis::Columns : oriented_axis(s, target.clip, fast_adaptive_room(within));
+        oriented_walker = target.planar ? Axis::Columns : oriented_axis(s, size, fast_adaptive_room(within));
         const int a = list.adaptive[two][int(oriented_walker)];
         const Mapper& m = MAPPERS[a >= 0 ? list.row[a] : 0];
         const bool inside = box_in_clip(s, target.clip);

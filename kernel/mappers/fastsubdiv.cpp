@@ -3,6 +3,7 @@
 
 #include "kernel/core/asm_offsets.h"
 #include "kernel/core/bound.h"
+#include "kernel/core/choice.h"
 #include "kernel/core/selftest.h"
 #include "kernel/mappers/subdiv.h"
 
@@ -243,15 +244,9 @@ bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Te
     return fast_adaptive_certain<QUARTERS>(fast_certificate(s, clip, tex), s, axis);
 }
 
-Axis oriented_axis(const PolygonSetup& s, const ClipRect& clip, double room) {
+Axis oriented_axis(const PolygonSetup& s, const PolygonSize size[2], double room) {
     const double one = double(SUBPIXEL_ONE);
-    auto inside = [](int64_t lo, int64_t hi, int32_t first, int32_t end) {  // a box's side inside the clip, pixels
-        const int64_t l = int64_t(first) * SUBPIXEL_ONE, h = int64_t(end) * SUBPIXEL_ONE;
-        lo = lo < l ? l : lo, hi = hi > h ? h : hi;
-        return hi > lo ? double(hi - lo) / double(SUBPIXEL_ONE) : 0.0;
-    };
-    const double rows = inside(s.min_y, s.max_y, clip.y0, clip.y1), columns = inside(s.min_x, s.max_x, clip.x0, clip.x1);
-    const double area = double(s.area2) / (2 * one * one), pixels = area < rows * columns ? area : rows * columns;
+    const double rows = size[int(Axis::Rows)].spans, columns = size[int(Axis::Columns)].spans, pixels = size[0].pixels;
     const double q = s.q.a0;
     if (!(q > 0)) return Axis::Rows;
     // segments beyond one a line: pixels / h_a = pixels sqrt(|Q_a| / (4 room q))
@@ -259,6 +254,12 @@ Axis oriented_axis(const PolygonSetup& s, const ClipRect& clip, double room) {
     const double by_rows = rows * (ORIENTED_LINE + ORIENTED_SEGMENT) + ORIENTED_SEGMENT * scale * __builtin_sqrt(__builtin_fabs(s.q.gx) * one);
     const double by_columns = columns * (ORIENTED_LINE + ORIENTED_SEGMENT) + ORIENTED_SEGMENT * scale * __builtin_sqrt(__builtin_fabs(s.q.gy) * one);
     return by_columns < by_rows ? Axis::Columns : Axis::Rows;
+}
+
+Axis oriented_axis(const PolygonSetup& s, const ClipRect& clip, double room) {
+    PolygonSize size[2];
+    polygon_sizes(s, clip, size);
+    return oriented_axis(s, size, room);
 }
 
 template <int QUARTERS>

@@ -125,6 +125,9 @@ double fast_chords_bound(const FastCertificate& f, const PolygonSetup& s, Axis a
 // inside the clip, its area): the fewer instructions, rows on a tie.
 constexpr double ORIENTED_LINE = 300, ORIENTED_SEGMENT = 60;
 Axis oriented_axis(const PolygonSetup& s, const ClipRect& clip, double room);
+// The same from the polygon's sizes as polygon_sizes gives them (choice.h), where the caller has them.
+struct PolygonSize;
+Axis oriented_axis(const PolygonSetup& s, const PolygonSize size[2], double room);
 // fast-oriented-B's walker (Mapper::own_walker)
 template <int QUARTERS>
 Axis fast_oriented_walker(const PolygonSetup& s, const ClipRect& clip);
