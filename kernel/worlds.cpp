@@ -114,8 +114,8 @@ FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surf
     return r;
 }
 
-const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry", "ticks_clear", "ticks_draw", "ticks_setup",
-                                                 "ticks_walk", "ticks_inner",    "ticks_blit",  "ticks_flip"};
+const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry", "ticks_clear",  "ticks_draw", "ticks_setup",
+                                                 "ticks_walk", "ticks_inner",    "ticks_choose", "ticks_blit", "ticks_flip"};
 
 namespace {
 uint64_t bench_clock() { return timer::rdtsc(); }
@@ -140,10 +140,10 @@ BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper,
     b.retrace = vga::flip(b.page);
     const uint64_t flip = timer::rdtsc() - t0;
     const scenes::RenderResult& r = f.render;
-    const uint64_t setup = timed.net(raster::Phase::Setup), inner = timed.net(raster::Phase::Inner);
-    const uint64_t walk = r.ticks_draw > setup + inner ? r.ticks_draw - setup - inner : 0;
+    const uint64_t setup = timed.net(raster::Phase::Setup), inner = timed.net(raster::Phase::Inner), choose = timed.net(raster::Phase::Choose);
+    const uint64_t walk = r.ticks_draw > setup + inner + choose ? r.ticks_draw - setup - inner - choose : 0;
     const uint64_t figures[B_FIELDS] = {f.ticks_geometry + r.ticks_clear + r.ticks_draw + r.ticks_blit, f.ticks_geometry, r.ticks_clear, r.ticks_draw,
-                                        setup, walk, inner, r.ticks_blit, flip};
+                                        setup, walk, inner, choose, r.ticks_blit, flip};
     for (uint32_t k = 0; k < B_FIELDS; ++k) b.figures[k] = figures[k];
     b.stats = r.stats;
     b.used_asm = r.used_asm;

@@ -190,7 +190,7 @@ void prepare_choice(const Budget& budget, const Texture& tex) {
 }
 
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
-                     PreparedPolygon* prepared, Input input) {
+                     PreparedPolygon* prepared, Input input, Probe* probe) {
     Choice choice;
     for (PreparedSpans& w : prepared->walked) w.count = PreparedSpans::NOT_WALKED;
     prepared->status = SetupStatus::Unsupported;
@@ -198,6 +198,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     if (list.count == 0) return choice;
     // set up once, for both walkers (the spread and the spans come when a bound asks for them)
     set_up_polygon(vertices, count, prepared, input);
+    probe_lap(probe, Phase::Setup);
     if (prepared->status != SetupStatus::Ok) return choice;
     PolygonSize size[2];
     polygon_sizes(prepared->setup, target.clip, size);

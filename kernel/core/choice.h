@@ -112,9 +112,10 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
 // per polygon, span and pixel among them) is below the cheapest priced and not yet asked; so none
 // that cannot cost less than exact is priced. The polygon is set up once, into *prepared, and walked along a
 // walker only when a bound needs its spans (the chosen mapper draws from its setup, and from its
-// spans when walked). `input`: as setup_polygon takes it.
+// spans when walked). `input`: as setup_polygon takes it. `probe`: the bench's lap timer, which
+// charges the setup to Phase::Setup (the caller laps the rest, Phase::Choose).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
-                     PreparedPolygon* prepared, Input input = Input::Any);
+                     PreparedPolygon* prepared, Input input = Input::Any, Probe* probe = nullptr);
 
 // Builds the candidate lists choose_mapper and plan_auto take for a texture at a budget, for
 // either kind of target (linear, planar), where they are not built yet: a scene's load and a change

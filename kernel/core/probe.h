@@ -1,5 +1,5 @@
 // A lap timer for the bench: splits a drawing's time into polygon setup, edge walking and the
-// inner loops. The core has no clock of its own; the caller lends one (rdtsc in the kernel and on
+// inner loops, and auto's choosing. The core has no clock of its own; the caller lends one (rdtsc in the kernel and on
 // the host). Every lap costs a clock read and a few instructions: `calibrate` measures that cost
 // and `net` takes it off again.
 #pragma once
@@ -8,7 +8,9 @@
 
 namespace raster {
 
-enum class Phase : uint8_t { Setup, Walk, Inner, Count };
+// Choose: auto's work to choose a mapper beyond setting the polygon up (plans, tests, bounds, the
+// search; choice.h); no other mapper laps it.
+enum class Phase : uint8_t { Setup, Walk, Inner, Choose, Count };
 
 struct Probe {
     uint64_t (*clock)() = nullptr;

@@ -58,12 +58,13 @@ namespace {
     return status;
 }
 
-// auto's choice for the polygon, into *prepared, and the drawing with it (the choice counts as
-// setup); where no mapper draws the polygon, exact's setup says why. `input`: as setup_polygon takes it.
+// auto's choice for the polygon, into *prepared, and the drawing with it (its setup counts as
+// setup, the rest of the choice as Phase::Choose); where no mapper draws the polygon, exact's setup
+// says why. `input`: as setup_polygon takes it.
 SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& tex, Axis axis, Target& target, RenderStats* stats,
                             Variant variant, const Budget& budget, PreparedPolygon* prepared, Input input) {
-    Choice c = choose_mapper(budget, vertices, count, tex, target, prepared, input);
-    probe_lap(stats->probe, Phase::Setup);
+    Choice c = choose_mapper(budget, vertices, count, tex, target, prepared, input, stats->probe);
+    probe_lap(stats->probe, Phase::Choose);
     if (!c.mapper) {
         const Axis any = target_supports(target, axis) ? axis : Axis::Columns;  // a walker the target takes
         return draw_with(Drawer::of(*find_mapper("exact"), tex, any, target, stats, variant), vertices, count, nullptr, nullptr, Input::Any);

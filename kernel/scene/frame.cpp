@@ -391,6 +391,17 @@ void build_texture_set(const World& world, TextureSet* out) {
     }
 }
 
+namespace {
+// unchosen_mapper, its time charged to auto's choosing (the loop's before it to walking)
+const Mapper* timed_unchosen(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis,
+                              const RenderStats& stats) {
+    probe_lap(stats.probe, Phase::Walk);
+    const Mapper* m = unchosen_mapper(plan, vertices, count, clip, axis);
+    probe_lap(stats.probe, Phase::Choose);
+    return m;
+}
+}  // namespace
+
 RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target, Variant variant,
                          Probe* probe, const Watch* watch) {
     RenderStats stats;
@@ -415,6 +426,7 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
         if (plans[o].certain)
             for (int a = 0; a < 2; ++a) certain[o][a] = Drawer::of(*plans[o].certain, textures.objects[o], Axis(a), target, &stats, variant);
     }
+    if (mapper.chooses) probe_lap(probe, Phase::Choose);  // (the plans)
     const Vertex* v = frame.vertices;
     for (int32_t i = 0; i < frame.polygon_count; ++i) {
         if (watch && watch->stops(uint32_t(i), uint32_t(frame.polygon_count), &stats)) break;
@@ -432,7 +444,7 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
             else d.draw(v, n, input);
         } else if (plan.enveloped && frame.polygon_whole[i] && n == 3)
             draw_enveloped(drawers[object], v, variant, frame.budget);
-        else if ((unchosen = unchosen_mapper(plan, v, n, target.clip, &unchosen_axis)) && unchosen == plan.certain)
+        else if ((unchosen = timed_unchosen(plan, v, n, target.clip, &unchosen_axis, stats)) && unchosen == plan.certain)
             certain[object][int(unchosen_axis)].draw(v, n, input);
         else if (unchosen)
             draw_polygon(v, n, tex, *unchosen, unchosen_axis, target, &stats, variant, DEFAULT_BUDGET, input);

@@ -104,7 +104,7 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
     row.spans = r["spans"].get<uint64_t>(), row.pixels = r["pixels"].get<uint64_t>();
     row.ticks = sum_of(r, "ticks"), row.geometry = sum_of(r, "ticks_geometry"), row.clear = sum_of(r, "ticks_clear");
     row.draw = sum_of(r, "ticks_draw"), row.setup = sum_of(r, "ticks_setup"), row.walk = sum_of(r, "ticks_walk");
-    row.inner = sum_of(r, "ticks_inner"), row.blit = sum_of(r, "ticks_blit");
+    row.inner = sum_of(r, "ticks_inner"), row.choose = sum_of(r, "ticks_choose"), row.blit = sum_of(r, "ticks_blit");
     for (const json& d : r["drawn_by"])
         row.drawn_by.emplace_back(d["mapper"].get<std::string>(), d["polygons"].get<uint64_t>(), d["pixels"].get<uint64_t>());
     row.enveloped = r.value("enveloped", uint64_t(0));

@@ -33,7 +33,8 @@ struct TradeRow {
     uint32_t frames = 0;
     // the kernel's drawing, summed over the frames: counts, and ticks (instructions under icount)
     uint64_t polygons = 0, rejected = 0, spans = 0, pixels = 0;
-    uint64_t ticks = 0, geometry = 0, clear = 0, draw = 0, setup = 0, walk = 0, inner = 0, blit = 0;
+    // (choose: auto's choosing beyond its setup of each polygon, Phase::Choose; 0 for a single mapper)
+    uint64_t ticks = 0, geometry = 0, clear = 0, draw = 0, setup = 0, walk = 0, inner = 0, choose = 0, blit = 0;
     raster::AccuracyMetrics accuracy;  // the host twin against the reference, summed over the same frames
     bool kernel_equals_host = false;   // at the last frame, by screendump
     double host_ratio = 0;             // host rdtsc cycles per pixel against the baseline mapper; 0: not measured

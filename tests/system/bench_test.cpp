@@ -49,7 +49,7 @@ TEST(Bench, FiguresAddUpAndEqualTheHostsCounts) {
     s.ok("mode modex");
     s.ok("load cube.scene");
     LoadedWorld host = load_world_file("scenes/cube.scene");
-    for (const char* m : {"exact", "persp-subdiv-16", "hecker-steptable", "xsharp-column"}) {
+    for (const char* m : {"exact", "persp-subdiv-16", "hecker-steptable", "xsharp-column", "auto"}) {
         const raster::Mapper& mapper = *raster::find_mapper(m);
         std::string surface = raster::surface_name(raster::home_surface(mapper));
         Bench b = bench(s, std::string("4 ") + m + " " + surface);
@@ -60,9 +60,13 @@ TEST(Bench, FiguresAddUpAndEqualTheHostsCounts) {
             EXPECT_EQ(f["n"], i);
             int32_t n = f["frame"].get<int32_t>();
             EXPECT_EQ(n, int32_t(i * 240 / 4)) << "frames spread over the animation";
-            EXPECT_EQ(f["ticks_setup"].get<uint64_t>() + f["ticks_walk"].get<uint64_t>() + f["ticks_inner"].get<uint64_t>(),
+            EXPECT_EQ(f["ticks_setup"].get<uint64_t>() + f["ticks_walk"].get<uint64_t>() + f["ticks_inner"].get<uint64_t>() +
+                          f["ticks_choose"].get<uint64_t>(),
                       f["ticks_draw"].get<uint64_t>())
                 << m;
+            // only auto chooses (its plans, tests and bounds: the phase probe's Choose)
+            if (mapper.chooses) EXPECT_GT(f["ticks_choose"].get<uint64_t>(), 0u) << m;
+            else EXPECT_EQ(f["ticks_choose"].get<uint64_t>(), 0u) << m;
             EXPECT_EQ(f["ticks"].get<uint64_t>(), f["ticks_geometry"].get<uint64_t>() + f["ticks_clear"].get<uint64_t>() +
                                                       f["ticks_draw"].get<uint64_t>() + f["ticks_blit"].get<uint64_t>());
             auto frame = world_frame(host, n);
@@ -136,9 +140,13 @@ TEST(Bench, ATinyRunReportsEveryMapper) {
             EXPECT_EQ(f[col["gaps[pixels]"]], "0") << name;
             EXPECT_EQ(f[col["overdraw[pixels]"]], "0") << name;
             EXPECT_GT(std::stoull(f[col["pixels[count]"]]), 0u) << name;
+            EXPECT_GT(std::stoull(f[col["ticks_choose[instructions]"]]), 0u) << name;
             continue;
         }
         mappers.insert(name);
+        if (name != "auto") {
+            EXPECT_EQ(f[col["ticks_choose[instructions]"]], "0") << name;
+        }
         on_front += f[col["pareto[bool]"]] == "true";
         if (std::stoull(f[col["pixels[count]"]]) == 0) continue;
         for (const char* positive : {"ticks_frame[instructions]", "ticks_inner[instructions]", "inner_per_pixel[instructions/pixel]",
