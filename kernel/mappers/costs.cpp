@@ -5,37 +5,37 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1031.2f, 348.98f, 40.328f}, // 11 scenes
-    {"exact", 1011.0f, 316.38f, 80.302f}, // 11 scenes
-    {"persp-subdiv-4", 1011.0f, 321.76f, 91.374f}, // 11 scenes
-    {"persp-subdiv-8", 1011.0f, 376.49f, 59.513f}, // 11 scenes
-    {"persp-subdiv-16", 1011.0f, 415.51f, 43.452f}, // 11 scenes
-    {"persp-subdiv-32", 1011.0f, 435.94f, 35.599f}, // 11 scenes
-    {"constant-depth", 1011.0f, 452.33f, 29.796f}, // 11 scenes
-    {"persp-adaptive-0.5", 1011.0f, 908.74f, 290.040f}, // 11 scenes
-    {"persp-adaptive-1", 1011.0f, 999.80f, 51.762f}, // 11 scenes
-    {"persp-adaptive-2", 1011.0f, 1016.95f, 44.498f}, // 11 scenes
-    {"persp-adaptive-4", 1011.0f, 1029.74f, 40.032f}, // 11 scenes
-    {"fast-affine", 1044.9f, 110.33f, 5.114f}, // 11 scenes
-    {"fast-table", 1299.7f, 100.36f, 2.046f}, // 11 scenes
-    {"fast-columns", 1116.4f, 178.73f, 4.943f}, // 11 scenes
-    {"fast-table-columns", 1371.6f, 249.48f, 2.802f}, // 11 scenes
-    {"fast-subdiv-8", 1011.0f, 299.23f, 14.038f}, // 11 scenes
-    {"fast-subdiv-16", 1011.0f, 309.51f, 9.931f}, // 11 scenes
-    {"fast-subdiv-32", 1011.0f, 314.61f, 7.944f}, // 11 scenes
-    {"fast-constant-depth", 1011.0f, 319.18f, 6.304f}, // 11 scenes
-    {"fast-adaptive-1", 1011.0f, 342.07f, 9.595f}, // 11 scenes
-    {"fast-adaptive-2", 1011.0f, 345.82f, 8.114f}, // 11 scenes
-    {"fast-oriented-1", 1164.2f, 360.73f, 7.759f}, // 11 scenes
-    {"xsharp-dda", 1508.3f, 377.86f, 37.397f}, // 10 scenes
-    {"xsharp-row-out", 1508.3f, 513.13f, 18.908f}, // 10 scenes
-    {"xsharp-column", 1512.0f, 485.61f, 12.584f}, // 10 scenes
-    {"hecker-steptable", 5321.4f, 0.00f, 613.915f}, // 10 scenes
-    {"fatmap-256", 1720.3f, 163.69f, 13.603f}, // 8 scenes
-    {"fatmap-256-16", 1720.3f, 168.69f, 12.603f}, // 8 scenes
-    {"fatmap-lut", 2337.0f, 167.19f, 10.004f}, // 7 scenes
-    {"quake-subdiv16", 1493.9f, 303.20f, 13.857f}, // 10 scenes
-    {"quake-subdiv8", 1493.9f, 287.85f, 20.210f}, // 10 scenes
+    {"affine", 1030.2f, 349.68f, 40.315f}, // 11 scenes
+    {"exact", 1010.0f, 317.07f, 80.289f}, // 11 scenes
+    {"persp-subdiv-4", 1010.0f, 322.45f, 91.361f}, // 11 scenes
+    {"persp-subdiv-8", 1010.0f, 377.18f, 59.500f}, // 11 scenes
+    {"persp-subdiv-16", 1010.0f, 416.20f, 43.439f}, // 11 scenes
+    {"persp-subdiv-32", 1010.0f, 436.63f, 35.586f}, // 11 scenes
+    {"constant-depth", 1010.0f, 453.02f, 29.783f}, // 11 scenes
+    {"persp-adaptive-0.5", 1010.0f, 909.44f, 290.027f}, // 11 scenes
+    {"persp-adaptive-1", 1010.0f, 1000.49f, 51.749f}, // 11 scenes
+    {"persp-adaptive-2", 1010.0f, 1017.64f, 44.485f}, // 11 scenes
+    {"persp-adaptive-4", 1010.0f, 1030.43f, 40.019f}, // 11 scenes
+    {"fast-affine", 1043.9f, 111.02f, 5.101f}, // 11 scenes
+    {"fast-table", 1298.7f, 101.06f, 2.032f}, // 11 scenes
+    {"fast-columns", 1115.4f, 179.40f, 4.929f}, // 11 scenes
+    {"fast-table-columns", 1370.6f, 250.15f, 2.788f}, // 11 scenes
+    {"fast-subdiv-8", 1010.0f, 299.92f, 14.025f}, // 11 scenes
+    {"fast-subdiv-16", 1010.0f, 310.20f, 9.918f}, // 11 scenes
+    {"fast-subdiv-32", 1010.0f, 315.30f, 7.930f}, // 11 scenes
+    {"fast-constant-depth", 1010.0f, 319.88f, 6.291f}, // 11 scenes
+    {"fast-adaptive-1", 1010.0f, 342.76f, 9.582f}, // 11 scenes
+    {"fast-adaptive-2", 1010.0f, 346.51f, 8.101f}, // 11 scenes
+    {"fast-oriented-1", 1126.2f, 361.56f, 7.749f}, // 11 scenes
+    {"xsharp-dda", 1507.3f, 378.61f, 37.382f}, // 10 scenes
+    {"xsharp-row-out", 1507.3f, 513.88f, 18.893f}, // 10 scenes
+    {"xsharp-column", 1511.0f, 486.26f, 12.572f}, // 10 scenes
+    {"hecker-steptable", 5320.2f, 0.00f, 613.940f}, // 10 scenes
+    {"fatmap-256", 1719.2f, 164.45f, 13.580f}, // 8 scenes
+    {"fatmap-256-16", 1719.2f, 169.45f, 12.580f}, // 8 scenes
+    {"fatmap-lut", 2336.0f, 167.96f, 9.980f}, // 7 scenes
+    {"quake-subdiv16", 1492.9f, 303.89f, 13.844f}, // 10 scenes
+    {"quake-subdiv8", 1492.9f, 288.55f, 20.196f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

@@ -84,7 +84,11 @@ void load_in_kernel(Session& k, const BenchScene& s) {
 }
 
 
-uint64_t sum_of(const json& r, const char* field) { return r[field]["sum"].get<uint64_t>(); }
+uint64_t sum_of(const json& r, const char* field) {
+    if (!r.contains(field) || !r[field].is_object() || !r[field].contains("sum") || !r[field]["sum"].is_number_unsigned())
+        throw HarnessError(std::string("the kernel's bench reply has no ") + field + " (a kernel older than this harness? make kernel)");
+    return r[field]["sum"].get<uint64_t>();
+}
 
 // One row: the mapper on the scene's frames, in the kernel and on the host; auto at `budget`
 // when one is given (the row is named auto@BUDGET), else at the scene's.
