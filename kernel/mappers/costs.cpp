@@ -5,37 +5,37 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1030.2f, 349.68f, 40.315f}, // 11 scenes
-    {"exact", 1010.0f, 317.07f, 80.289f}, // 11 scenes
-    {"persp-subdiv-4", 1010.0f, 322.45f, 91.361f}, // 11 scenes
-    {"persp-subdiv-8", 1010.0f, 377.18f, 59.500f}, // 11 scenes
-    {"persp-subdiv-16", 1010.0f, 416.20f, 43.439f}, // 11 scenes
-    {"persp-subdiv-32", 1010.0f, 436.63f, 35.586f}, // 11 scenes
-    {"constant-depth", 1010.0f, 453.02f, 29.783f}, // 11 scenes
-    {"persp-adaptive-0.5", 1010.0f, 909.44f, 290.027f}, // 11 scenes
-    {"persp-adaptive-1", 1010.0f, 1000.49f, 51.749f}, // 11 scenes
-    {"persp-adaptive-2", 1010.0f, 1017.64f, 44.485f}, // 11 scenes
-    {"persp-adaptive-4", 1010.0f, 1030.43f, 40.019f}, // 11 scenes
-    {"fast-affine", 1043.9f, 111.02f, 5.101f}, // 11 scenes
-    {"fast-table", 1298.7f, 101.06f, 2.032f}, // 11 scenes
-    {"fast-columns", 1115.4f, 179.40f, 4.929f}, // 11 scenes
-    {"fast-table-columns", 1370.6f, 250.15f, 2.788f}, // 11 scenes
-    {"fast-subdiv-8", 1010.0f, 299.92f, 14.025f}, // 11 scenes
-    {"fast-subdiv-16", 1010.0f, 310.20f, 9.918f}, // 11 scenes
-    {"fast-subdiv-32", 1010.0f, 315.30f, 7.930f}, // 11 scenes
-    {"fast-constant-depth", 1010.0f, 319.88f, 6.291f}, // 11 scenes
-    {"fast-adaptive-1", 1010.0f, 342.76f, 9.582f}, // 11 scenes
-    {"fast-adaptive-2", 1010.0f, 346.51f, 8.101f}, // 11 scenes
-    {"fast-oriented-1", 1126.2f, 361.56f, 7.749f}, // 11 scenes
-    {"xsharp-dda", 1507.3f, 378.61f, 37.382f}, // 10 scenes
-    {"xsharp-row-out", 1507.3f, 513.88f, 18.893f}, // 10 scenes
-    {"xsharp-column", 1511.0f, 486.26f, 12.572f}, // 10 scenes
-    {"hecker-steptable", 5320.2f, 0.00f, 613.940f}, // 10 scenes
-    {"fatmap-256", 1719.2f, 164.45f, 13.580f}, // 8 scenes
-    {"fatmap-256-16", 1719.2f, 169.45f, 12.580f}, // 8 scenes
-    {"fatmap-lut", 2336.0f, 167.96f, 9.980f}, // 7 scenes
-    {"quake-subdiv16", 1492.9f, 303.89f, 13.844f}, // 10 scenes
-    {"quake-subdiv8", 1492.9f, 288.55f, 20.196f}, // 10 scenes
+    {"affine", 1030.2f, 348.29f, 40.341f}, // 11 scenes
+    {"exact", 1010.0f, 315.69f, 80.315f}, // 11 scenes
+    {"persp-subdiv-4", 1010.0f, 321.06f, 91.388f}, // 11 scenes
+    {"persp-subdiv-8", 1010.0f, 375.80f, 59.527f}, // 11 scenes
+    {"persp-subdiv-16", 1010.0f, 414.81f, 43.466f}, // 11 scenes
+    {"persp-subdiv-32", 1010.0f, 435.25f, 35.613f}, // 11 scenes
+    {"constant-depth", 1010.0f, 451.63f, 29.810f}, // 11 scenes
+    {"persp-adaptive-0.5", 1010.0f, 908.05f, 290.054f}, // 11 scenes
+    {"persp-adaptive-1", 1010.0f, 999.11f, 51.776f}, // 11 scenes
+    {"persp-adaptive-2", 1010.0f, 1016.26f, 44.512f}, // 11 scenes
+    {"persp-adaptive-4", 1010.0f, 1029.04f, 40.046f}, // 11 scenes
+    {"fast-affine", 1047.9f, 108.24f, 5.155f}, // 11 scenes
+    {"fast-table", 1302.7f, 98.28f, 2.086f}, // 11 scenes
+    {"fast-columns", 1119.4f, 176.74f, 4.986f}, // 11 scenes
+    {"fast-table-columns", 1374.6f, 247.48f, 2.845f}, // 11 scenes
+    {"fast-subdiv-8", 1010.0f, 298.53f, 14.052f}, // 11 scenes
+    {"fast-subdiv-16", 1010.0f, 308.82f, 9.944f}, // 11 scenes
+    {"fast-subdiv-32", 1010.0f, 313.92f, 7.957f}, // 11 scenes
+    {"fast-constant-depth", 1010.0f, 318.49f, 6.317f}, // 11 scenes
+    {"fast-adaptive-1", 1010.0f, 341.37f, 9.609f}, // 11 scenes
+    {"fast-adaptive-2", 1010.0f, 345.12f, 8.127f}, // 11 scenes
+    {"fast-oriented-1", 1130.2f, 358.23f, 7.793f}, // 11 scenes
+    {"xsharp-dda", 1511.3f, 375.62f, 37.443f}, // 10 scenes
+    {"xsharp-row-out", 1511.3f, 510.89f, 18.955f}, // 10 scenes
+    {"xsharp-column", 1515.0f, 483.67f, 12.624f}, // 10 scenes
+    {"hecker-steptable", 5324.2f, 0.00f, 613.844f}, // 10 scenes
+    {"fatmap-256", 1722.9f, 161.39f, 13.675f}, // 8 scenes
+    {"fatmap-256-16", 1722.9f, 166.39f, 12.675f}, // 8 scenes
+    {"fatmap-lut", 2339.7f, 164.87f, 10.083f}, // 7 scenes
+    {"quake-subdiv16", 1496.9f, 301.10f, 13.901f}, // 10 scenes
+    {"quake-subdiv8", 1496.9f, 285.76f, 20.253f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
