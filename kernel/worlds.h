@@ -36,8 +36,8 @@ FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surf
                    raster::Probe* probe = nullptr, const raster::Watch* watch = nullptr);
 
 // The bench's figures for one frame (the `bench` command's and the show's on-screen bench's):
-// ticks of the whole frame (geometry, clear, draw, blit), and of its parts; setup and inner loops
-// from a second drawing with the probe, walking the rest of the first's drawing time.
+// ticks of the whole frame (geometry, clear, draw, blit), and of its parts; setup, inner loops and
+// auto's choosing from a second drawing with the probe, walking the rest of the first's drawing time.
 enum BenchField : uint32_t { B_TICKS, B_GEOMETRY, B_CLEAR, B_DRAW, B_SETUP, B_WALK, B_INNER, B_CHOOSE, B_BLIT, B_FLIP, B_FIELDS };
 extern const char* const BENCH_FIELD_NAMES[B_FIELDS];  // "ticks", "ticks_geometry", ...
 struct BenchFrame {
