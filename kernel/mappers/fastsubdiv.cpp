@@ -208,11 +208,13 @@ FastCertificate fast_certificate(const PolygonSetup& s, const ClipRect& clip, co
 FastCertificate fast_certificate(const PolygonSpread& p) {
     FastCertificate f;
     if (!(p.q_min > 0)) return f;
+    // (fits_16_16 with a start of 0, one step and a side dividing 65536 asks the step below 32767:
+    // the chord's limit covers it, as in the setup's certificate above)
+    static_assert(FAST_ARITHMETIC.chord <= 32767, "one test for both of chords_fit's");
     for (int t = 0; t < 2; ++t) {
-        // chords_fit's first test, as it takes it (a repeating texture whose sides divide 65536:
-        // fits_16_16 with a start of 0 and one step asks the step below 32767)
+        // chords_fit's first test, as it takes it (a repeating texture whose sides divide 65536)
         const double range = (p.t_max[t] - p.t_min[t] + 2 * (p.evaluation[t] + p.reference[t])) * (1 + 1e-9);
-        if (!(range < 32767) || !(range < FAST_ARITHMETIC.chord)) return f;
+        if (!(range < FAST_ARITHMETIC.chord)) return f;
     }
     f.holds = true, f.q_min = p.q_min, f.reference = larger(p.reference[0], p.reference[1]);
     f.last[0] = p.lines[0] - 1, f.last[1] = p.lines[1] - 1;
