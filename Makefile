@@ -8,7 +8,7 @@
 #   make bounds the error bounds against measured errors on 100000 random polygons a mapper
 #   make fuzz   every mapper over 10^6 random polygons under the sanitizers, the parsers under libFuzzer
 #   make extremes  every mapper through the classes of extreme input: build/report/extremes.md
-#   make deps   install missing tools (run, bench and test do it themselves)
+#   make deps   install missing tools (run, bench and test install what they need themselves)
 
 MAKEFLAGS += -rR --no-print-directory
 .SUFFIXES:
@@ -31,23 +31,28 @@ HCXX := g++
 NPROC := $(shell nproc 2>/dev/null || echo 2)
 SUDO := $(if $(filter 0,$(shell id -u)),,sudo)
 
-# what must be on the machine -> the Debian package that brings it
-DEPS := \
+# What must be on the machine -> the Debian package that brings it, by what needs it: the kernel
+# and the host tools (BUILD), make run (QEMU besides), make bench (its plots besides), and all the
+# rest: the ISO, the tests (GoogleTest, the 32-bit programs' emulator, Bochs, UEFI firmware, zbar).
+# `make deps` installs everything; a target that needs less asks for less (DEPS_FOR).
+DEPS_BUILD := \
 	nasm:nasm \
-	qemu-system-i386:qemu-system-x86 \
-	grub-mkrescue:grub-common \
 	grub-file:grub-common \
-	/usr/lib/grub/i386-pc/multiboot.mod:grub-pc-bin \
-	xorriso:xorriso \
-	mformat:mtools \
 	g++:g++ \
 	/usr/include/nlohmann/json.hpp:nlohmann-json3-dev \
 	/usr/include/png.h:libpng-dev \
+	i686-linux-gnu-g++:g++-i686-linux-gnu \
+	/usr/share/games/doom/freedoom1.wad:freedoom
+DEPS_RUN := $(DEPS_BUILD) qemu-system-i386:qemu-system-x86
+DEPS_BENCH := $(DEPS_RUN) gnuplot:gnuplot-nox
+DEPS_ALL := $(DEPS_BENCH) \
+	grub-mkrescue:grub-common \
+	/usr/lib/grub/i386-pc/multiboot.mod:grub-pc-bin \
+	xorriso:xorriso \
+	mformat:mtools \
 	/usr/include/gtest/gtest.h:libgtest-dev \
 	/usr/src/googletest/googletest/src/gtest-all.cc:googletest \
-	i686-linux-gnu-g++:g++-i686-linux-gnu \
-	/usr/share/games/doom/freedoom1.wad:freedoom \
-	gnuplot:gnuplot-nox \
+	qemu-i386:qemu-user \
 	zbarimg:zbar-tools \
 	bochs-bin:bochs \
 	/usr/share/bochs/BIOS-bochs-latest:bochsbios \
@@ -56,6 +61,7 @@ DEPS := \
 	/usr/lib/grub/i386-efi/multiboot.mod:grub-efi-ia32-bin \
 	/usr/share/ovmf/OVMF.fd:ovmf \
 	/usr/share/OVMF/OVMF32_CODE_4M.secboot.fd:ovmf-ia32
+DEPS_FOR ?= ALL
 
 # ---- kernel ------------------------------------------------------------------------------------
 
@@ -117,10 +123,16 @@ GTEST_SRC := /usr/src/googletest/googletest
 H32CXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -DMODEXLAB_ASM_LOOPS -I. \
 	-isystem $(GTEST_SRC)/include -MMD -MP
 ASM_TESTS := $(H32BUILD)/modexlab-asm-tests
+# runs them natively where this machine can, else under qemu-i386 (qemu/tools/run32); its probe
+RUN32 := $(H32BUILD)/run32
+NATIVE32 := $(H32BUILD)/modexlab-native32
 # real host cycles of the mappers, C++ twins and NASM loops, 32-bit static (modexlab-bench runs it)
 CYCLES := $(H32BUILD)/modexlab-cycles
-CYCLES_CXX := qemu/tools/cycles_main.cpp kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/fmt.cpp $(CORE_CXX)
-ASM_TEST_CXX := tests/main.cpp $(wildcard tests/asm/*.cpp) kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/fmt.cpp $(CORE_CXX)
+CYCLES_CXX := qemu/tools/cycles_main.cpp
+ASM_TEST_CXX := tests/main.cpp $(wildcard tests/asm/*.cpp)
+# the portable code they run is the kernel's own objects (the same -m32 -march and flags, linked
+# against the C library here): the 32-bit programs test and time the very code the kernel runs
+PORTABLE32_OBJS := $(patsubst %,$(KBUILD)/%.o,kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/fmt.cpp $(CORE_CXX)) $(LOOP_ASM:%=$(KBUILD)/%.o)
 
 HARNESS := $(HBUILD)/modexlab
 RENDER := $(HBUILD)/modexlab-render
@@ -160,7 +172,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(EXTREMES) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(FUZZ_REPLAY)
+host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(EXTREMES) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(RUN32) $(FUZZ_REPLAY)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 # $(call install,FILE:PACKAGE ...): installs the packages whose file or command is missing.
@@ -180,7 +192,7 @@ define install
 endef
 
 deps:
-	$(call install,$(DEPS))
+	$(call install,$(DEPS_$(DEPS_FOR)))
 
 $(KERNEL): $(KERNEL_OBJS) boot/linker.ld
 	$(call say,LD,$@)
@@ -255,6 +267,18 @@ $(HBUILD)/%.cpp.o: %.cpp | deps
 	$(call say,CXX,$<)
 	$(Q)$(HCXX) $(HCXXFLAGS) -c $< -o $@
 
+# The tests' heavy headers parsed once: tests/pch.h precompiled, and taken first by every test
+# object (-include; -Winvalid-pch says when one does not fit the flags). The tests' own code with
+# line tables only (-g1): a third less compile time; failures and backtraces still name lines.
+TEST_PCH := $(HBUILD)/pch/tests.h
+$(TEST_PCH).gch: tests/pch.h | deps
+	@mkdir -p $(@D)
+	$(call say,PCH,$<)
+	$(Q)cp $< $(TEST_PCH)
+	$(Q)$(HCXX) $(HCXXFLAGS) -x c++-header $(TEST_PCH) -o $@
+$(HBUILD)/tests/%.cpp.o: HCXXFLAGS += -g1 -include $(TEST_PCH) -Winvalid-pch -Wno-error=invalid-pch
+$(patsubst %,$(HBUILD)/%.o,$(filter tests/%,$(TEST_CXX) $(UNIT_CXX) $(BROWSER_TEST_CXX))): $(TEST_PCH).gch
+
 $(HARNESS): $(HBUILD)/qemu/harness/main.cpp.o $(HARNESS_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -o $@ $^ $(HLDLIBS)
@@ -270,7 +294,9 @@ $(SBUILD)/%.cpp.o: %.cpp | deps
 	$(call say,CXX-SAN,$<)
 	$(Q)$(HCXX) $(HCXXFLAGS) $(SAN_FLAGS) $(SAN_CXXFLAGS) -c $< -o $@
 
-$(SAN_TESTS): $(UNIT_CXX:%=$(SBUILD)/%.o) $(HARNESS_CXX:%=$(SBUILD)/%.o) $(PORTABLE_CXX:%=$(SBUILD)/%.o)
+# The unit tests' own code is the plain build's: the sanitizers check the code under test, linked
+# first so that the inline functions both compile are its instrumented copies.
+$(SAN_TESTS): $(HARNESS_CXX:%=$(SBUILD)/%.o) $(PORTABLE_CXX:%=$(SBUILD)/%.o) $(UNIT_CXX:%=$(HBUILD)/%.o)
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) $(SAN_FLAGS) -o $@ $^ -lgtest $(HLDLIBS)
 
@@ -300,13 +326,20 @@ $(H32BUILD)/gtest-all.o: | deps
 	$(call say,CXX32,gtest-all.cc)
 	$(Q)$(H32CXX) -std=c++20 -m32 -O2 -isystem $(GTEST_SRC)/include -I$(GTEST_SRC) -c $(GTEST_SRC)/src/gtest-all.cc -o $@
 
-$(ASM_TESTS): $(ASM_TEST_CXX:%=$(H32BUILD)/%.o) $(LOOP_ASM:%=$(KBUILD)/%.o) $(H32BUILD)/gtest-all.o
+$(ASM_TESTS): $(ASM_TEST_CXX:%=$(H32BUILD)/%.o) $(PORTABLE32_OBJS) $(H32BUILD)/gtest-all.o
 	$(call say,LINK,$@)
 	$(Q)$(H32CXX) -static -m32 -Wl,-z,noexecstack -o $@ $^ -lpthread 2>&1 | { grep -v -e getaddrinfo -e MakeConnection || true; }
 
-$(CYCLES): $(CYCLES_CXX:%=$(H32BUILD)/%.o) $(LOOP_ASM:%=$(KBUILD)/%.o)
+$(CYCLES): $(CYCLES_CXX:%=$(H32BUILD)/%.o) $(PORTABLE32_OBJS)
 	$(call say,LINK,$@)
 	$(Q)$(H32CXX) -static -m32 -Wl,-z,noexecstack -o $@ $^
+
+$(NATIVE32): $(H32BUILD)/qemu/tools/native32_main.cpp.o
+	$(call say,LINK,$@)
+	$(Q)$(H32CXX) -static -m32 -Wl,-z,noexecstack -o $@ $^
+
+$(RUN32): qemu/tools/run32 $(NATIVE32)
+	$(Q)cp $< $@
 
 $(TESTS): $(TEST_CXX:%=$(HBUILD)/%.o) $(HARNESS_OBJS)
 	$(call say,LINK,$@)
@@ -325,8 +358,9 @@ usb: $(ISO)
 # DISPLAY from the recipe; $(shell) still sees the environment make started with.
 X_DISPLAY := $(shell printenv DISPLAY)
 # `make run` builds what it runs: the kernel and the harness (not the ISO, the tools or the tests).
-run: deps
-	@$(MAKE) -s -j$(NPROC) $(KERNEL) $(HARNESS)
+run:
+	@$(MAKE) -s DEPS_FOR=RUN deps
+	@$(MAKE) -s -j$(NPROC) DEPS_FOR=RUN $(KERNEL) $(HARNESS)
 	DISPLAY=$(X_DISPLAY) $(HARNESS) run --kernel $(KERNEL) --out $(BUILD)/run $(if $(SCENE),--scene $(SCENE)) \
 		$(if $(MAPPER),--mapper $(MAPPER)) $(if $(filter 1,$(DISPLAY)),--display)
 
@@ -335,8 +369,9 @@ run: deps
 # kernel/mappers/errors.cpp, when the run is full.
 # SCENES=a,b MAPPERS=x,y FRAMES=N narrow it.
 # Then the gallery, with the report's speeds.
-bench report: deps
-	@$(MAKE) -s -j$(NPROC) $(KERNEL) $(BENCH) $(CYCLES) $(GALLERY)
+bench report:
+	@$(MAKE) -s DEPS_FOR=BENCH deps
+	@$(MAKE) -s -j$(NPROC) DEPS_FOR=BENCH $(KERNEL) $(BENCH) $(CYCLES) $(RUN32) $(GALLERY)
 	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
 		$(if $(FRAMES),--frames $(FRAMES))
 	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "cost model and measured errors not copied (a narrowed run): $(BUILD)/report/costs.cpp and errors.cpp",\
@@ -351,8 +386,9 @@ bench report: deps
 # SCENES=a,b MAPPERS=x,y narrow it.
 GALLERY_RUN = $(GALLERY) --out $(BUILD)/gallery --report $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) \
 	$(if $(MAPPERS),--mappers $(MAPPERS))
-gallery: deps
-	@$(MAKE) -s -j$(NPROC) $(GALLERY) $(FREEDOOM_TEXTURES)
+gallery:
+	@$(MAKE) -s DEPS_FOR=BUILD deps
+	@$(MAKE) -s -j$(NPROC) DEPS_FOR=BUILD $(GALLERY) $(FREEDOOM_TEXTURES)
 	$(GALLERY_RUN)
 
 # `make test-gallery`: every page of a whole gallery opened in a headless Chromium (Debian's chromium,
@@ -414,13 +450,11 @@ soak: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
 	@tests/soak $(N) $(TESTS)
 
+# The 32-bit tests, the sanitizer tests and the fuzz corpora one after another, and beside them
+# (tests/run: the last program) the unit and system tests, most of whose time is QEMU's.
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
-	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(FUZZ_REPLAY) '$(TESTS)::$(OTHER_MACHINES)' '$(TESTS)::-$(OTHER_MACHINES)'
-
-# The system tests on machines other than QEMU's BIOS PC (Bochs, UEFI), some 45 s: make test runs
-# them in the foreground after the 32-bit and sanitizer tests, beside the rest of the tests.
-OTHER_MACHINES := Bochs.*:Firmware/Uefi.*
+	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(FUZZ_REPLAY) $(TESTS)
 
 # `make test-bochs`: the Bochs tier alone (tests/system/bochs_test.cpp; make test runs it too)
 test-bochs: deps

@@ -180,27 +180,46 @@ std::string wall_clock(std::vector<BenchScene>& scenes, const std::string& kerne
     return md.str();
 }
 
+// A shell command's standard output, and whether it exited 0.
+bool command_output(const std::string& cmd, std::string* out) {
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return false;
+    out->clear();
+    char buf[4096];
+    for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out->append(buf, n);
+    return pclose(p) == 0;
+}
+
 // Real host cycles (modexlab-cycles, 32-bit static): each row's cycles per pixel as a ratio to the
-// baseline mapper's on the same scene, timed in the same run. Returns the baseline's name.
+// baseline mapper's on the same scene, timed in the same run. Returns the baseline's name, or ""
+// where this machine runs 32-bit programs only under an emulator, whose timings mean nothing: the
+// rows are then left without host cycles, and `why` says so.
 std::string host_cycles(const std::vector<BenchScene>& scenes, const std::vector<const raster::Mapper*>& mappers, int frames,
-                        std::vector<TradeRow>& rows) {
-    std::string tool = build_dir() + "/host32/modexlab-cycles";
-    if (!std::filesystem::is_regular_file(tool)) throw HarnessError(tool + " is missing: make host builds it");
-    std::string paths, names;
+                        std::vector<TradeRow>& rows, std::string* why) {
+    const std::string tool = build_dir() + "/host32/modexlab-cycles", run32 = build_dir() + "/host32/run32";
+    for (const std::string& f : {tool, run32})
+        if (!std::filesystem::is_regular_file(f)) throw HarnessError(f + " is missing: make host builds it");
+    std::string how;
+    if (!command_output("'" + run32 + "' --how", &how)) throw HarnessError(run32 + " --how failed: " + how);
+    if (how.rfind("emulated: ", 0) == 0) {
+        const std::string base = "this machine runs no 32-bit programs natively", reason = how.substr(10, how.size() - 11);  // "emulated: " ... "\n"
+        *why = "Host cycles: not measured, " + base + (reason == base ? "" : " (" + reason + ")") + ".";
+        return "";
+    }
+    if (how != "native\n") throw HarnessError(run32 + " --how said: " + how);
+    std::string paths, names, out;
     for (const BenchScene& s : scenes) paths += (paths.empty() ? "" : ",") + s.path;
     for (const raster::Mapper* m : mappers) names += (names.empty() ? "" : ",") + std::string(m->name);
-    std::string cmd = "'" + tool + "' '" + paths + "' '" + names + "' " + std::to_string(frames) + " '" + build_dir() + "/scenes'";
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) throw HarnessError("cannot run " + tool);
+    if (!command_output("'" + tool + "' '" + paths + "' '" + names + "' " + std::to_string(frames) + " '" + build_dir() + "/scenes'", &out))
+        throw HarnessError(tool + " failed");
     std::map<std::pair<std::string, std::string>, double> per_pixel;
-    char line[512];
-    while (std::fgets(line, sizeof line, p)) {
+    std::istringstream lines(out);
+    for (std::string line; std::getline(lines, line);) {
         char scene[200], mapper[100];
         unsigned long long pixels, cycles;
-        if (std::sscanf(line, "%199s %99s %llu %llu", scene, mapper, &pixels, &cycles) == 4 && pixels)
+        if (std::sscanf(line.c_str(), "%199s %99s %llu %llu", scene, mapper, &pixels, &cycles) == 4 && pixels)
             per_pixel[{scene, mapper}] = double(cycles) / double(pixels);
     }
-    if (pclose(p) != 0) throw HarnessError(tool + " failed");
     const std::string baseline = "affine";
     for (TradeRow& r : rows) {
         auto mine = per_pixel.find({r.scene, r.mapper}), base = per_pixel.find({r.scene, baseline});
@@ -275,15 +294,19 @@ int run(const Args& a) {
     k.wait_exit();
     mark_pareto(rows);
     std::fprintf(stderr, "host cycles: every mapper again, natively (32-bit, rdtsc)\n");
-    std::string baseline = host_cycles(scenes, mappers, a.frames, rows);
+    std::string unmeasured;
+    const std::string baseline = host_cycles(scenes, mappers, a.frames, rows, &unmeasured);
+    if (!unmeasured.empty()) std::fprintf(stderr, "%s\n", unmeasured.c_str());
 
     ReportInfo info;
     info.how = "Measured in the kernel under QEMU 7.2 TCG with `-icount shift=0,align=off,sleep=off`: ticks are guest "
                "instructions, identical run to run. " + std::to_string(a.frames) + " frames a scene, spread evenly over its animation; "
                "per-pixel figures divide by the pixels the mapper drew. Accuracy: the host build of the same code against the exact "
-               "reference, on the same frames. Host cycles: the same code built as a 32-bit static program (NASM loops "
-               "included) drawing the same frames into RAM on the machine that ran the bench, timed with rdtsc (the least of 9 "
-               "runs a frame), as a ratio to `" + baseline + "` on the same scene (below 1: faster than it).";
+               "reference, on the same frames. " +
+               (baseline.empty() ? unmeasured
+                                 : "Host cycles: the same code built as a 32-bit static program (NASM loops included) drawing the "
+                                   "same frames into RAM on the machine that ran the bench, timed with rdtsc (the least of 9 runs a "
+                                   "frame), as a ratio to `" + baseline + "` on the same scene (below 1: faster than it).");
     info.command = "make bench";
     if (a.wall) info.wall_clock = wall_clock(scenes, a.kernel, tty);
     for (const BenchScene& s : scenes) {

@@ -1,8 +1,11 @@
 // The NASM loops against their C++ twins, in a 32-bit static host program: 100000 random argument
-// blocks per loop (spans 0..320 long, positive and negative steps and strides, every texture size
-// the loop accepts, extreme start values), destination buffers compared byte for byte.
+// blocks per loop, or MODEXLAB_ASM_CASES (spans 0..320 long, positive and negative steps and
+// strides, every texture size the loop accepts, extreme start values), destination buffers
+// compared byte for byte.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <vector>
 
 #include "kernel/core/selftest.h"
@@ -12,7 +15,12 @@ namespace {
 
 using namespace raster;
 
-constexpr uint32_t CASES = 100000;
+// MODEXLAB_ASM_CASES=N checks N instead (the short run under the emulator in make test).
+uint32_t cases() {
+    const char* env = std::getenv("MODEXLAB_ASM_CASES");
+    return env ? uint32_t(std::max(1L, std::atol(env))) : 100000;
+}
+const uint32_t CASES = cases();
 
 // The mappers with a NASM loop, one per loop.
 struct Checked {
