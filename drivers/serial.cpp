@@ -10,7 +10,8 @@ namespace {
 constexpr uint16_t COM1 = 0x3F8;
 constexpr uint16_t DATA = COM1 + 0;     // RBR/THR; DLL when DLAB=1
 constexpr uint16_t IER = COM1 + 1;      // DLM when DLAB=1
-constexpr uint16_t FCR = COM1 + 2;
+constexpr uint16_t FCR = COM1 + 2;     // written; read, the same port is IIR
+constexpr uint16_t IIR = COM1 + 2;
 constexpr uint16_t LCR = COM1 + 3;
 constexpr uint16_t MCR = COM1 + 4;
 constexpr uint16_t LSR = COM1 + 5;
@@ -19,6 +20,7 @@ constexpr uint16_t SCRATCH = COM1 + 7;
 constexpr uint8_t LCR_DLAB = 0x80;
 constexpr uint8_t LCR_8N1 = 0x03;
 constexpr uint8_t FCR_ENABLE_CLEAR_TRIGGER14 = 0xC7;
+constexpr uint8_t IIR_FIFOS_ON = 0xC0;  // both bits: a 16550A's working FIFOs
 constexpr uint8_t MCR_DTR_RTS_OUT2 = 0x0B;
 constexpr uint8_t LSR_DATA_READY = 0x01;
 constexpr uint8_t LSR_THR_EMPTY = 0x20;
@@ -51,8 +53,18 @@ bool wait_lsr(uint8_t bit) {
     return true;
 }
 
+// THRE says the transmit FIFO is empty: so many bytes may follow before THRE is asked again (16 on
+// a 16550A with its FIFO on, 1 on an 8250 or a 16450). Half the port reads of a byte at a time.
+uint32_t g_fifo_depth = 1;
+uint32_t g_fifo_room = 0;
+
 void put(char c) {
-    if (wait_lsr(LSR_THR_EMPTY)) io::outb(DATA, uint8_t(c));
+    if (g_fifo_room == 0) {
+        if (!wait_lsr(LSR_THR_EMPTY)) return;
+        g_fifo_room = g_fifo_depth;
+    }
+    io::outb(DATA, uint8_t(c));
+    --g_fifo_room;
 }
 
 void sink_write(void*, const char* data, size_t n) { write(data, n); }
@@ -71,6 +83,8 @@ bool init() {
     io::outb(IER, 0);
     io::outb(LCR, LCR_8N1);
     io::outb(FCR, FCR_ENABLE_CLEAR_TRIGGER14);
+    g_fifo_depth = (io::inb(IIR) & IIR_FIFOS_ON) == IIR_FIFOS_ON ? 16 : 1;
+    g_fifo_room = 0;
     io::outb(MCR, MCR_DTR_RTS_OUT2);
     return g_present = true;
 }

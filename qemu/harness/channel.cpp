@@ -12,6 +12,10 @@
 
 namespace harness {
 
+namespace {
+constexpr useconds_t LINE_GATHER_US = 500;
+}  // namespace
+
 void LineSplitter::feed(std::string_view bytes) { buffer_.append(bytes); }
 
 std::optional<std::string> LineSplitter::next() {
@@ -27,8 +31,9 @@ std::optional<std::string> LineSplitter::next() {
     return line;
 }
 
-LineChannel::LineChannel(LineChannel&& other) noexcept : fd_(other.fd_), splitter_(std::move(other.splitter_)) {
+LineChannel::LineChannel(LineChannel&& other) noexcept : fd_(other.fd_), splitter_(std::move(other.splitter_)), log_(other.log_) {
     other.fd_ = -1;
+    other.log_ = nullptr;
 }
 
 LineChannel& LineChannel::operator=(LineChannel&& other) noexcept {
@@ -36,7 +41,9 @@ LineChannel& LineChannel::operator=(LineChannel&& other) noexcept {
         close();
         fd_ = other.fd_;
         splitter_ = std::move(other.splitter_);
+        log_ = other.log_;
         other.fd_ = -1;
+        other.log_ = nullptr;
     }
     return *this;
 }
@@ -46,6 +53,14 @@ LineChannel::~LineChannel() { close(); }
 void LineChannel::close() {
     if (fd_ >= 0) ::close(fd_);
     fd_ = -1;
+    if (log_) std::fclose(log_);
+    log_ = nullptr;
+}
+
+void LineChannel::log_to(const std::string& path) {
+    if (log_) std::fclose(log_);
+    log_ = std::fopen(path.c_str(), "wb");
+    if (!log_) throw HarnessError(path + ": " + std::strerror(errno));
 }
 
 std::optional<std::string> LineChannel::read_line(Clock::time_point deadline) {
@@ -71,7 +86,12 @@ std::optional<std::string> LineChannel::read_line(Clock::time_point deadline) {
             std::string partial = splitter_.pending();
             throw HarnessError(partial.empty() ? "end of stream" : "end of stream after a partial line: " + partial.substr(0, 200));
         }
-        splitter_.feed(std::string_view(buf, size_t(n)));
+        const std::string_view got(buf, size_t(n));
+        splitter_.feed(got);
+        if (log_) std::fwrite(buf, 1, size_t(n), log_), std::fflush(log_);
+        // QEMU passes a guest's serial bytes on one at a time: within a line, let some gather
+        // before the next read, rather than a poll and a read a byte
+        if (got.find('\n') == std::string_view::npos && size_t(n) < sizeof buf / 64) ::usleep(LINE_GATHER_US);
     }
 }
 

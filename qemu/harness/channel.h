@@ -2,6 +2,7 @@
 #pragma once
 
 #include <chrono>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -42,11 +43,15 @@ public:
     // Writes all of `bytes`; throws HarnessError when the peer is gone.
     void write_all(std::string_view bytes);
 
+    // From now on, every byte read is also appended to the file at `path` (created anew).
+    void log_to(const std::string& path);
+
     void close();
 
 private:
     int fd_ = -1;
     LineSplitter splitter_;
+    std::FILE* log_ = nullptr;
 };
 
 }  // namespace harness

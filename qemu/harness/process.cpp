@@ -93,7 +93,7 @@ std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& 
         "-machine", c.firmware == Firmware::Uefi32 ? "q35,smm=on,accel=tcg" : "pc,accel=tcg", "-m", c.firmware == Firmware::Bios ? "128" : "256",
         "-vga", "std", "-no-reboot",
         "-device", "isa-debug-exit,iobase=0xf4,iosize=0x04",
-        "-chardev", "socket,id=com1,path=" + serial_socket + ",logfile=" + c.run_dir + "/serial.log",
+        "-chardev", "socket,id=com1,path=" + serial_socket,
         "-serial", "chardev:com1",
         "-chardev", "socket,id=qmp,path=" + qmp_socket,
         "-mon", "chardev=qmp,mode=control",
@@ -214,6 +214,7 @@ QemuProcess::QemuProcess(const QemuConfig& config) {
     ::close(serial_listen);
     ::close(qmp_listen);
     serial_ = LineChannel(serial_fd);
+    serial_.log_to(config.run_dir + "/serial.log");
     qmp_ = LineChannel(qmp_fd);
 }
 
@@ -256,6 +257,7 @@ void QemuProcess::start_bochs(const QemuConfig& config) {
             if (fd >= 0) {
                 ::close(serial_listen);
                 serial_ = LineChannel(fd);
+                serial_.log_to(config.run_dir + "/serial.log");
                 return;
             }
         }

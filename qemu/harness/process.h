@@ -30,7 +30,7 @@ struct QemuConfig {
     std::vector<std::string> modules;  // -kernel only: Multiboot modules (-initrd), each "PATH" or "PATH NAME"
     bool display = false;    // a window (QEMU's default display) instead of none
     bool icount = false;     // -icount shift=0,align=off,sleep=off: rdtsc counts guest instructions
-    std::string run_dir;     // serial.log and qemu.log go here (Bochs: bochsrc, bochs.log)
+    std::string run_dir;     // serial.log (written as the harness reads) and qemu.log go here (Bochs: bochsrc, bochs.log, bochs.out)
     std::vector<std::string> extra_args;
 };
 
