@@ -15,7 +15,7 @@ constexpr Command COMMANDS[] = {
     {"clear", "clear PAGE [COLOUR]", 1, 2, cmd_clear},
     {"palette", "palette default|gray", 1, 1, cmd_palette},
     {"flip", "flip PAGE", 1, 1, cmd_flip},
-    {"readback", "readback PAGE", 1, 1, cmd_readback},
+    {"readback", "readback PAGE [crc]", 1, 2, cmd_readback},
     {"fault", "fault [ud|de|gp|triple|hang|texture-read|surface-write]", 0, 1, cmd_fault},
     // uploads check their own argument counts: a refused header's bytes are dropped (files.cpp)
     {"scene", "scene BYTES CRC32 (then, after the ready event, BYTES bytes of scene text, either version)", 0, MAX_ARGS, cmd_scene},

@@ -154,6 +154,14 @@ IndexImage Session::readback(int page) {
     }
 }
 
+uint32_t Session::readback_crc(int page) {
+    const json reply = ok("readback " + std::to_string(page) + " crc");
+    const std::string crc = reply.value("crc32", "");
+    if (crc.size() != 10 || crc.rfind("0x", 0) != 0 || crc.find_first_not_of("0123456789abcdef", 2) != std::string::npos)
+        fail("readback " + std::to_string(page) + " crc: no crc32 of the form 0x%08x in " + reply.dump());
+    return uint32_t(std::stoul(crc.substr(2), nullptr, 16));
+}
+
 ExitInfo Session::wait_exit(std::chrono::milliseconds timeout) {
     auto e = qemu_->wait_exit(timeout);
     if (!e) fail("QEMU still running " + std::to_string(timeout.count()) + " ms after the kernel was told to exit");

@@ -75,6 +75,8 @@ public:
     IndexImage screenshot(const std::string& name, ScreenMode mode, const raster::Palette& palette);
     // `readback PAGE`, decoded and checked.
     IndexImage readback(int page);
+    // `readback PAGE crc`: the CRC-32 of the page's indices alone (as crc32_of computes a picture's).
+    uint32_t readback_crc(int page);
 
     // Waits for QEMU to end (after `exit`); throws if it is still running after `timeout`.
     ExitInfo wait_exit(std::chrono::milliseconds timeout = std::chrono::seconds(10));

@@ -14,6 +14,7 @@
 #include <map>
 #include <sstream>
 
+#include "kernel/lib/encode.h"
 #include "qemu/lib/error.h"
 
 namespace harness {
@@ -279,5 +280,7 @@ std::string write_mismatch(const std::string& dir, const std::string& stem, cons
     }
     return "wrote " + base + "-{actual,expected}.png";
 }
+
+uint32_t crc32_of(const IndexImage& image) { return lib::crc32(0, image.index.data(), image.index.size()); }
 
 }  // namespace harness

@@ -79,6 +79,9 @@ struct Comparison {
 
 Comparison compare(const IndexImage& actual, const IndexImage& expected);
 
+// The CRC-32 of a picture's indices, row-major: what `readback PAGE crc` answers for the same page.
+uint32_t crc32_of(const IndexImage& image);
+
 // Writes DIR/STEM-actual.png, -expected.png and -diff.png (differences red over a dimmed
 // expected image); returns a line naming them.
 std::string write_mismatch(const std::string& dir, const std::string& stem, const IndexImage& actual,

@@ -30,6 +30,7 @@ TEST(Video, EveryPatternInEveryPageMatchesTheHostRendering) {
             EXPECT_TRUE(by_dump.equal()) << by_dump.summary() << "\n" << write_mismatch(s.run_dir(), stem, dump, want, default_palette());
             Comparison by_readback = compare(s.readback(page), want);
             EXPECT_TRUE(by_readback.equal()) << "readback: " << by_readback.summary();
+            EXPECT_EQ(s.readback_crc(page), crc32_of(want)) << "readback crc";
         }
     }
 }
