@@ -4,8 +4,12 @@
 
 #include "kernel/core/policy.h"
 
+#include <algorithm>
 #include <filesystem>
+#include <iterator>
+#include <list>
 #include <map>
+#include <mutex>
 #include <fstream>
 #include <sstream>
 #include <tuple>
@@ -83,7 +87,8 @@ LoadedWorld load_world_file(const std::string& path) { return parse_world_text(r
 
 std::unique_ptr<Frame> world_frame(const LoadedWorld& w, int32_t n) {
     auto frame = std::make_unique<Frame>();
-    auto scratch = std::make_unique<FrameScratch>();
+    // build_frame's working memory, megabytes: one a thread, as the kernel keeps one
+    static thread_local std::unique_ptr<FrameScratch> scratch = std::make_unique<FrameScratch>();
     build_frame(*w.world, n, frame.get(), scratch.get());
     return frame;
 }
@@ -131,6 +136,51 @@ struct HostTexture {
     }
 };
 
+// A texture's stand-ins for measuring: ones (coverage) and four that hold their own coordinates
+// (u low and high byte, v low and high byte), each with the copies the mapper reads.
+struct MeasureTextures {
+    std::vector<uint8_t> texels[5];
+    std::unique_ptr<HostTexture> textures[5];
+    size_t bytes = 0;  // all of them, copies included
+    explicit MeasureTextures(const Texture& t) {
+        const int32_t w = t.width, h = t.height;
+        for (int k = 0; k < 5; ++k) {
+            texels[k].resize(size_t(w) * size_t(h));
+            for (int32_t v = 0; v < h; ++v)
+                for (int32_t u = 0; u < w; ++u) {
+                    int32_t c = k == 0 ? 1 : k < 3 ? u : v;
+                    texels[k][size_t(v) * size_t(w) + size_t(u)] = uint8_t(k == 0 ? 1 : k % 2 ? c & 255 : c >> 8);
+                }
+            textures[k] = std::make_unique<HostTexture>(Texture{texels[k].data(), w, h, t.wrap});
+            bytes += texels[k].size() + textures[k]->bordered.size() + textures[k]->aligned.size() + textures[k]->doubled.size();
+        }
+    }
+};
+
+// By what the stand-ins depend on, a texture's size and wrap (not its texels' address: a texture
+// freed and another of another size allocated there would find the first one's stand-ins).
+using StandInKey = std::tuple<int32_t, int32_t, Wrap>;
+
+// The stand-ins for a texture, shared by every meter in the process: building them (five textures
+// with their copies, tens of megabytes for the large ones) is most of a small polygon's measure.
+// Those used last are kept, up to KEPT_BYTES (the newest whatever its size).
+std::shared_ptr<const MeasureTextures> shared_stand_ins(const Texture& t) {
+    constexpr size_t KEPT_BYTES = size_t(256) << 20;
+    static std::mutex lock;
+    static std::list<std::pair<StandInKey, std::shared_ptr<const MeasureTextures>>> recent;  // the last used first
+    const StandInKey key{t.width, t.height, t.wrap};
+    std::lock_guard<std::mutex> held(lock);
+    auto it = std::find_if(recent.begin(), recent.end(), [&](const auto& e) { return e.first == key; });
+    if (it != recent.end()) recent.splice(recent.begin(), recent, it);
+    else recent.emplace_front(key, std::make_shared<const MeasureTextures>(t));
+    size_t kept = 0;
+    for (auto e = recent.begin(); e != recent.end();) {
+        kept += e->second->bytes;
+        e = e != recent.begin() && kept > KEPT_BYTES ? recent.erase(e) : std::next(e);
+    }
+    return recent.front().second;
+}
+
 // The pixels a polygon can touch: every mapper draws inside the box of its vertices, give or take
 // a pixel; clipped to the screen.
 struct Box {
@@ -153,13 +203,18 @@ struct Box {
     }
 };
 
-std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper& mapper, Axis axis, RenderStats* stats) {
+// The scene drawn with a texture prepared as the mapper reads it.
+std::vector<uint8_t> draw_prepared(const LoadedScene& s, const Texture& prepared, const Mapper& mapper, Axis axis, RenderStats* stats) {
     HostSurface surface(mapper, axis, BACKGROUND);
-    HostTexture t(tex);
     Target target = surface.target();
-    RenderStats st = render_scene(*s.scene, t.texture, mapper, axis, target);
+    RenderStats st = render_scene(*s.scene, prepared, mapper, axis, target);
     if (stats) *stats = st;
     return surface.linear();
+}
+
+std::vector<uint8_t> draw(const LoadedScene& s, const Texture& tex, const Mapper& mapper, Axis axis, RenderStats* stats) {
+    HostTexture t(tex);
+    return draw_prepared(s, t.texture, mapper, axis, stats);
 }
 
 }  // namespace
@@ -187,34 +242,25 @@ std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const Mapper& mapp
     std::vector<uint8_t> indices = draw(s, s.texture, mapper, axis, nullptr);
     std::copy(indices.begin(), indices.end(), p->index.begin());
 
-    // texel coordinates: four renders with textures that hold their own coordinates
-    const int32_t w = s.texture.width, h = s.texture.height;
-    std::vector<uint8_t> coord(size_t(w) * size_t(h));
+    // texel coordinates: four renders with the textures that hold their own coordinates
+    const std::shared_ptr<const MeasureTextures> stand_in = shared_stand_ins(s.texture);
     std::vector<uint8_t> parts[4];
-    for (int k = 0; k < 4; ++k) {
-        for (int32_t v = 0; v < h; ++v)
-            for (int32_t u = 0; u < w; ++u) {
-                int32_t c = k < 2 ? u : v;
-                coord[size_t(v) * size_t(w) + size_t(u)] = uint8_t(k % 2 == 0 ? c & 255 : c >> 8);
-            }
-        parts[k] = draw(s, Texture{coord.data(), w, h, s.texture.wrap}, mapper, axis, nullptr);
-    }
+    for (int k = 0; k < 4; ++k) parts[k] = draw_prepared(s, stand_in->textures[k + 1]->texture, mapper, axis, nullptr);
     for (size_t i = 0; i < p->index.size(); ++i) {
         p->tu[i] = parts[0][i] | (parts[1][i] << 8);
         p->tv[i] = parts[2][i] | (parts[3][i] << 8);
     }
 
-    // coverage counts: each polygon alone on a scratch surface, with a texture of ones of the
+    // coverage counts: each polygon alone on a scratch surface, with the texture of ones of the
     // scene's size (mappers that cannot wrap check coordinates against it)
     HostSurface scratch(mapper, axis, 0);
-    std::vector<uint8_t> ones(size_t(w) * size_t(h), 1);
-    HostTexture ones_texture(Texture{ones.data(), w, h, s.texture.wrap});
+    const Texture& ones_texture = stand_in->textures[0]->texture;
     Target t = scratch.target();
     const Vertex* v = s.scene->vertices;
     RenderStats ignored;
     for (int32_t i = 0; i < s.scene->polygon_count; ++i) {
         int n = s.scene->polygon_size[i];
-        if (draw_polygon(v, n, ones_texture.texture, mapper, axis, t, &ignored) == SetupStatus::Ok) {
+        if (draw_polygon(v, n, ones_texture, mapper, axis, t, &ignored) == SetupStatus::Ok) {
             Box::around(v, n).each([&](int32_t x, int32_t y) {
                 uint8_t& c = scratch.at(x, y);
                 size_t i2 = size_t(y) * SCREEN_WIDTH + size_t(x);
@@ -229,35 +275,10 @@ std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const Mapper& mapp
     return p;
 }
 
-namespace {
-
-// A texture's stand-ins for measuring: ones (coverage) and four that hold their own coordinates
-// (u low and high byte, v low and high byte), each with the copies the mapper reads.
-struct MeasureTextures {
-    std::vector<uint8_t> texels[5];
-    std::unique_ptr<HostTexture> textures[5];
-    explicit MeasureTextures(const Texture& t) {
-        const int32_t w = t.width, h = t.height;
-        for (int k = 0; k < 5; ++k) {
-            texels[k].resize(size_t(w) * size_t(h));
-            for (int32_t v = 0; v < h; ++v)
-                for (int32_t u = 0; u < w; ++u) {
-                    int32_t c = k == 0 ? 1 : k < 3 ? u : v;
-                    texels[k][size_t(v) * size_t(w) + size_t(u)] = uint8_t(k == 0 ? 1 : k % 2 ? c & 255 : c >> 8);
-                }
-            textures[k] = std::make_unique<HostTexture>(Texture{texels[k].data(), w, h, t.wrap});
-        }
-    }
-};
-
-}  // namespace
-
 struct PolygonMeter::Parts {
     Picture ref{SCREEN_WIDTH, SCREEN_HEIGHT};  // one polygon at a time
     std::vector<HostSurface> scratch;
-    // by what they depend on, the texture's size and wrap (not its texels' address: a texture
-    // freed and another of another size allocated there would find the first one's stand-ins)
-    std::map<std::tuple<int32_t, int32_t, Wrap>, std::unique_ptr<MeasureTextures>> stand_ins;
+    std::map<StandInKey, std::shared_ptr<const MeasureTextures>> stand_ins;
 };
 
 PolygonMeter::PolygonMeter(const Mapper& mapper, Axis axis, const Budget& budget)
@@ -271,7 +292,7 @@ AccuracyMetrics PolygonMeter::measure(const Vertex* v, int n, const Texture& tex
                                       RenderStats* stats) {
     Parts& p = *parts_;
     auto& stand_in = p.stand_ins[{tex.width, tex.height, tex.wrap}];
-    if (!stand_in) stand_in = std::make_unique<MeasureTextures>(tex);
+    if (!stand_in) stand_in = shared_stand_ins(tex);
     reference_polygon(v, n, tex, p.ref.view);
     bool drawn = true;
     for (int k = 0; k < 5 && drawn; ++k) {

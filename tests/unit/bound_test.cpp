@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <map>
+#include <memory>
 #include <string>
 
 #include "kernel/core/bound.h"
@@ -158,6 +160,20 @@ TEST(Bounds, NoMapperExceedsItsBoundOnRandomPolygons) {
         texels.emplace_back(size_t(size) * size_t(size));
         generate_texture(TextureKind::Xor, size, size, texels.back().data());
     }
+    // each size's texture, repeating or clamped, with its copies: prepared once for every mapper
+    struct Prepared {
+        Texture tex;
+        std::unique_ptr<TextureCopies> copies;
+    };
+    std::map<std::pair<size_t, Wrap>, Prepared> prepared;
+    auto texture = [&](size_t t, Wrap wrap) -> const Texture& {
+        Prepared& p = prepared[{t, wrap}];
+        if (!p.copies) {
+            p.tex = Texture{texels[t].data(), sizes[t], sizes[t], wrap};
+            p.copies = std::make_unique<TextureCopies>(&p.tex);
+        }
+        return p.tex;
+    };
     std::printf("bounds on %d random polygons per mapper (median and worst of measured / bound):\n", per_mapper);
     for (int i = 0; i < MAPPER_COUNT; ++i) {
         const Mapper& m = MAPPERS[i];
@@ -174,10 +190,7 @@ TEST(Bounds, NoMapperExceedsItsBoundOnRandomPolygons) {
             if ((m.needs & (NEED_POW2_OR_INSIDE | NEED_POW2_REPEAT)) && !tiles256(sizes[t], sizes[t]) && !gets_doubled(sizes[t], sizes[t]))
                 t = n % 2 ? 5 : 3;  // 1024, 64
             Wrap wrap = (m.needs & (NEED_ALIGNED256 | NEED_POW2_REPEAT)) || n % 3 ? Wrap::Repeat : Wrap::Clamp;
-            std::vector<uint8_t> bordered(size_t(bordered_bytes(sizes[t], sizes[t]))), aligned(ALIGNED256_BYTES);
-            std::vector<uint8_t> doubled(gets_doubled(sizes[t], sizes[t]) ? size_t(doubled_bytes(sizes[t], sizes[t])) : 0);
-            Texture tex{texels[t].data(), sizes[t], sizes[t], wrap};
-            prepare_texture(&tex, bordered.data(), aligned.data(), doubled.data());
+            const Texture& tex = texture(t, wrap);
             std::vector<Vertex> p = random_polygon(gen, n % 6);
             if (m.needs & NEED_INSIDE) place_inside(gen, p, sizes[t], sizes[t]);
             bounded += check_polygon(meter, m, axis, p, tex, &tight, std::string(m.name) + " polygon " + std::to_string(n));
@@ -237,14 +250,17 @@ TEST(Bounds, NoBoundWhereQIsNotPositive) {
 TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
     for (const DemoScene& d : demo_scenes()) {
         LoadedWorld w = load_world_file(std::string("scenes/") + d.name + ".scene");
+        std::vector<std::unique_ptr<Frame>> frames;  // the bench's: 8 spread over the animation
+        for (int f = 0; f < 8; f += SANITIZED_SHARE) frames.push_back(world_frame(w, int32_t(int64_t(f) * w.world->frames / 8)));
         for (int i = 0; i < MAPPER_COUNT; ++i) {
             const Mapper& m = MAPPERS[i];
             if (m.bound == unbounded || !bound_mapper_taken(m)) continue;
             Axis axis = home_axis(m);
             PolygonMeter meter(m, axis);
             Tightness tight;
-            for (int f = 0; f < 8; f += SANITIZED_SHARE) {  // the bench's frames: 8 spread over the animation
-                auto frame = world_frame(w, int32_t(int64_t(f) * w.world->frames / 8));
+            for (size_t fi = 0; fi < frames.size(); ++fi) {
+                const int f = int(fi) * SANITIZED_SHARE;
+                const Frame* frame = frames[fi].get();
                 const Vertex* v = frame->vertices;
                 for (int32_t k = 0; k < frame->polygon_count; ++k) {
                     int n = frame->polygon_size[k];

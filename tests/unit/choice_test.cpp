@@ -365,11 +365,14 @@ TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
     const Mapper& a = auto_mapper();
     for (const DemoScene& d : demo_scenes()) {
         LoadedWorld w = load_world_file(std::string("scenes/") + d.name + ".scene");
+        std::vector<std::unique_ptr<Frame>> frames;  // the bench's
+        for (int f = 0; f < 8; f += SANITIZED_SHARE) frames.push_back(world_frame(w, int32_t(int64_t(f) * w.world->frames / 8)));
         for (const Budget& b : BUDGETS) {
             for (Axis axis : {Axis::Rows, Axis::Columns}) {
                 uint32_t by_mapper[MAPPER_LIMIT] = {};
-                for (int f = 0; f < 8; f += SANITIZED_SHARE) {  // the bench's frames
-                    auto frame = world_frame(w, int32_t(int64_t(f) * w.world->frames / 8));
+                for (size_t fi = 0; fi < frames.size(); ++fi) {
+                    const int f = int(fi) * SANITIZED_SHARE;
+                    Frame* frame = frames[fi].get();
                     frame->budget = b;
                     AccuracyMetrics m = measure_world_frame(w, *frame, a, axis);
                     std::string what = std::string(d.name) + " frame " + std::to_string(f) + " budget " + std::to_string(b.max_error) +
