@@ -2,6 +2,7 @@
 #include "drivers/keyboard.h"
 
 #include "drivers/io.h"
+#include "drivers/serial.h"
 #include "drivers/pic.h"
 
 namespace keyboard {
@@ -109,5 +110,6 @@ extern "C" void irq_handler(uint32_t irq) {
         }
     }
     if (irq == 1) keyboard::on_irq();
+    if (irq == 4) serial::on_irq();
     pic::end_of_interrupt(irq);
 }

@@ -1,7 +1,10 @@
-// COM1 16550 driver: divisor 1 (115200 baud), 8N1, FIFOs cleared with a 14-byte trigger, polling only.
+// COM1 16550 driver: divisor 1 (115200 baud), 8N1, FIFOs on; polled, but a reader waiting for a byte
+// halts until the UART's IRQ 4 where that interrupt is seen to arrive.
 #include "drivers/serial.h"
 
 #include "drivers/io.h"
+#include "drivers/pic.h"
+#include "drivers/timer.h"
 
 namespace serial {
 
@@ -19,7 +22,10 @@ constexpr uint16_t SCRATCH = COM1 + 7;
 
 constexpr uint8_t LCR_DLAB = 0x80;
 constexpr uint8_t LCR_8N1 = 0x03;
+// FIFOs on and cleared, the receiver's interrupt at 14 bytes or after 4 characters' time without one:
+// QEMU hands the guest as many bytes at once as the trigger level (at 1, a byte at a time)
 constexpr uint8_t FCR_ENABLE_CLEAR_TRIGGER14 = 0xC7;
+constexpr uint8_t IER_RECEIVED_DATA = 0x01, IER_THR_EMPTY = 0x02;
 constexpr uint8_t IIR_FIFOS_ON = 0xC0;  // both bits: a 16550A's working FIFOs
 constexpr uint8_t MCR_DTR_RTS_OUT2 = 0x0B;
 constexpr uint8_t LSR_DATA_READY = 0x01;
@@ -69,6 +75,36 @@ void put(char c) {
 
 void sink_write(void*, const char* data, size_t n) { write(data, n); }
 
+// Waiting for a byte. The UART raises IRQ 4 when bytes come (IER, only while waiting, so that
+// uploads and drawing take no interrupts: 14 bytes, or 4 characters' time after the last), and the
+// CPU halts until then instead of polling the line status: an idle kernel costs nothing (a QEMU
+// beside its tests, a PC's power). It halts only where enable_wakeup saw an IRQ 4 arrive; where
+// none comes (no PIC, OUT2 not wired to the bus, interrupts off) it polls.
+constexpr uint32_t IRQ = 4;
+constexpr uint32_t WAKEUP_TEST_MS = 20;
+volatile uint32_t g_irqs = 0;
+bool g_wakes = false;
+
+bool interrupts_on() {
+    uint32_t flags;
+    asm volatile("pushfl; popl %0" : "=r"(flags));
+    return flags & 0x200;
+}
+
+void wait_for_byte() {
+    io::outb(IER, IER_RECEIVED_DATA);
+    while (!byte_ready()) {
+        if (!g_wakes || !interrupts_on()) continue;
+        asm volatile("cli" ::: "memory");
+        if (byte_ready()) {
+            asm volatile("sti" ::: "memory");
+            break;
+        }
+        asm volatile("sti; hlt" ::: "memory");  // (sti takes effect after hlt has begun: no IRQ slips between)
+    }
+    io::outb(IER, 0);
+}
+
 }  // namespace
 
 bool init() {
@@ -111,9 +147,24 @@ bool at_line_start() { return g_at_line_start; }
 
 bool byte_ready() { return g_present && (io::inb(LSR) & LSR_DATA_READY); }
 
+// The path from the UART to the CPU tested once: a transmitter-empty interrupt is raised at once
+// where the transmitter is idle, and must arrive within WAKEUP_TEST_MS.
+void enable_wakeup() {
+    if (!g_present || !interrupts_on()) return;
+    pic::unmask(IRQ);
+    flush();
+    io::outb(IER, IER_THR_EMPTY);
+    timer::wait_ms_or(WAKEUP_TEST_MS, [](void*) { return g_irqs != 0; }, nullptr);
+    io::outb(IER, 0);
+    g_wakes = g_irqs != 0;
+}
+
+bool wakes() { return g_wakes; }
+
+void on_irq() { g_irqs = g_irqs + 1; }
+
 uint8_t read_byte() {
-    while (!byte_ready()) {
-    }
+    if (!byte_ready()) wait_for_byte();
     return io::inb(DATA);
 }
 

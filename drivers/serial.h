@@ -21,7 +21,13 @@ void flush();
 bool at_line_start();
 
 bool byte_ready();
-uint8_t read_byte();  // waits for a byte
+uint8_t read_byte();  // waits for a byte (halted, where IRQ 4 wakes the CPU: serial.cpp)
+
+// Lets IRQ 4 through the PIC (once the PICs are remapped and interrupts are on) and checks that it
+// arrives: then read_byte waits halted (wakes()). The IRQ handler calls on_irq.
+void enable_wakeup();
+bool wakes();
+void on_irq();
 
 lib::Sink sink();
 

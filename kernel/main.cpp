@@ -101,7 +101,8 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     ctx.cpu = cpu::detect();
     const bool guard_pages = guard::init(ctx.cpu.features_edx);
     ctx.tsc_hz = cpu::has_tsc(ctx.cpu) ? timer::calibrate_tsc_hz() : 0;
-    const keyboard::Status keys = keyboard::init();  // (interrupts on from here: IRQ 1 alone unmasked)
+    const keyboard::Status keys = keyboard::init();  // (interrupts on from here: IRQ 1 unmasked)
+    serial::enable_wakeup();                         // (and IRQ 4, which the UART raises only while a reader waits)
     // a UEFI loader's framebuffer (RGB, by the Multiboot header's video fields): drawn into, the VGA
     // left alone; under BIOS GRUB hands over text mode, and the kernel programs the VGA itself
     bool framebuffer = false;
@@ -137,7 +138,7 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     boot.boolean("bochs_vbe_cleared", vbe_found).u64("tsc_hz", ctx.tsc_hz);
     boot.u32("files", uint32_t(files::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
     boot.u32("memory_kib", (info->flags & multiboot::INFO_MEMORY) ? info->mem_upper + 1024 : 0);
-    boot.boolean("guard_pages", guard_pages);
+    boot.boolean("guard_pages", guard_pages).boolean("serial_wakeup", serial::wakes());
     if (framebuffer) {
         const vga::Framebuffer& fb = vga::framebuffer();
         boot.begin_object("framebuffer").hex32("address", uint32_t(reinterpret_cast<uintptr_t>(fb.base))).u32("width", fb.width);
