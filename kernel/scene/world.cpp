@@ -41,14 +41,8 @@ void copy_name(char* out, size_t capacity, StrView w) {
 
 bool name_is(const char* name, StrView w) { return w.equals(name); }
 
-// A name: 1..31 letters, digits, '-', '_' or '.'.
 bool check_name(Parser& p, StrView w, const char* what) {
-    bool ok = w.size >= 1 && w.size < size_t(MAX_WORLD_NAME);
-    for (size_t i = 0; ok && i < w.size; ++i) {
-        char c = w.data[i];
-        ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
-    }
-    if (!ok) return p.fail(Fmt().s("bad ").s(what).s(" name '").s(w).s("' (1 to 31 letters, digits, '-', '_', '.')"));
+    if (!world_name_ok(w)) return p.fail(Fmt().s("bad ").s(what).s(" name '").s(w).s("' (").s(WORLD_NAME_RULE).s(")"));
     return true;
 }
 
@@ -213,6 +207,21 @@ bool axis_angle(Parser& p, const StrView* w, const char* what, double limit, Vec
     return number(p, w[3], what, -limit, limit, angle);
 }
 
+// Between two keys of the camera's path the eye and the target move linearly (frame.cpp, on_path),
+// and so does the side vector cross(target - eye, up), which is zero where the camera looks nowhere
+// (eye on target, or view along up). False where it comes within a billionth of its larger end's
+// length of zero on the way.
+bool aimed_between(const PathKey& k0, const PathKey& k1, Vec3 up) {
+    const Vec3 a = cross(k0.target - k0.position, up), b = cross(k1.target - k1.position, up) - a;
+    const double bb = dot(b, b);
+    if (bb == 0) return true;  // the same side vector all the way: the keys' own check
+    double s = -dot(a, b) / bb;
+    s = s < 0 ? 0 : s > 1 ? 1 : s;
+    const Vec3 nearest = a + s * b, end = a + b;
+    const double larger = dot(a, a) > dot(end, end) ? dot(a, a) : dot(end, end);
+    return dot(nearest, nearest) > 1e-18 * larger;
+}
+
 bool path_key(Parser& p, int32_t* count, PathKey* keys, double time) {
     if (*count == MAX_PATH_KEYS) return p.fail(Fmt().s("too many path keys (at most 32)"));
     if (*count > 0 && !(time > keys[*count - 1].time)) return p.fail(Fmt().s("path key times must increase"));
@@ -332,6 +341,10 @@ bool end_block(Parser& p) {
         bool ok = c.key_count > 0 || aimed(c.position, c.target);
         for (int32_t i = 0; i < c.key_count; ++i) ok = ok && aimed(c.keys[i].position, c.keys[i].target);
         if (!ok) return p.fail(Fmt().s("the camera must look somewhere: target apart from its position, up not along the view"));
+        for (int32_t i = 1; i < c.key_count; ++i)
+            if (!aimed_between(c.keys[i - 1], c.keys[i], c.up))
+                return p.fail(Fmt().s("the camera must look somewhere between its keys too: from ").decimal(c.keys[i - 1].time).s(" s to ")
+                                  .decimal(c.keys[i].time).s(" s its target meets its position, or the view turns along up"));
         p.have_camera = true;
     }
     p.block = Block::None;
@@ -405,6 +418,15 @@ bool top_line(Parser& p, const StrView* w, size_t n) {
 }
 
 }  // namespace
+
+bool world_name_ok(StrView w) {
+    bool ok = w.size >= 1 && w.size < size_t(MAX_WORLD_NAME);
+    for (size_t i = 0; ok && i < w.size; ++i) {
+        char c = w.data[i];
+        ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
+    }
+    return ok;
+}
 
 bool parse_world(const char* text, size_t length, const FileResolver& files, World* world, ParseError* error) {
     world->texture_count = world->mesh_count = world->object_count = 0;

@@ -144,6 +144,10 @@ struct FileResolver {
     bool (*find)(const void* context, lib::StrView name, const uint8_t** data, size_t* size) = nullptr;
 };
 
+// The names of textures, meshes and objects.
+constexpr const char* WORLD_NAME_RULE = "1 to 31 letters, digits, '-', '_', '.'";
+bool world_name_ok(lib::StrView name);
+
 // Parses a version 2 scene into `world` (which it overwrites; on failure it holds nothing usable),
 // reading the texture files it names through `files`, remapping every texture to the scene's
 // palette. False with the first error (its line; 0 when it is about the whole file).

@@ -7,8 +7,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <sstream>
 
+#include "kernel/scene/world.h"
 #include "qemu/lib/error.h"
 
 namespace harness {
@@ -388,17 +390,27 @@ SceneChoice choose_scene(const std::string& spec) {
 }
 
 std::string obj_to_mesh(const std::string& obj, const std::string& mesh_name, const std::string& file) {
+    using namespace raster;
+    if (!world_name_ok(lib::StrView{mesh_name.data(), mesh_name.size()}))
+        throw HarnessError("bad mesh name '" + mesh_name + "' (" + WORLD_NAME_RULE + ")");
     std::istringstream in(obj);
     std::string line;
     int line_no = 0;
     std::vector<std::string> v, vt;
+    std::vector<int> v_lines, vt_lines, f_lines;  // the OBJ's line of each
     std::vector<std::vector<std::pair<int, int>>> faces;
+    size_t corners = 0;
     auto fail = [&](const std::string& what) { throw HarnessError(file + ":" + std::to_string(line_no) + ": " + what); };
-    auto number = [&](const std::string& w) {
+    // a number the scene format takes: within its limit, written back with the digits it reads
+    auto number = [&](const std::string& w, double limit, const char* what) {
         char* end = nullptr;
-        double x = std::strtod(w.c_str(), &end);
+        const double x = std::strtod(w.c_str(), &end);
         if (!end || *end || !std::isfinite(x)) fail("bad number '" + w + "'");
+        if (std::fabs(x) > limit) fail(std::string(what) + " " + w + " is beyond the scene format's limit of " + num(limit) + " either way");
         return x;
+    };
+    auto at_most = [&](size_t count, int32_t limit, const char* what) {
+        if (count > size_t(limit)) fail(std::string("more than ") + std::to_string(limit) + " " + what + ": the scene format's limit for a mesh");
     };
     while (std::getline(in, line)) {
         ++line_no;
@@ -410,12 +422,19 @@ std::string obj_to_mesh(const std::string& obj, const std::string& mesh_name, co
         for (std::string x; words >> x;) w.push_back(x);
         if (kind == "v") {
             if (w.size() < 3) fail("v needs x y z");
-            v.push_back("v " + num(number(w[0])) + " " + num(number(w[1])) + " " + num(number(w[2])));
+            const char* what = "coordinate";
+            v.push_back("v " + num(number(w[0], MAX_WORLD_COORD, what)) + " " + num(number(w[1], MAX_WORLD_COORD, what)) + " " +
+                        num(number(w[2], MAX_WORLD_COORD, what)));
+            v_lines.push_back(line_no);
+            at_most(v.size(), MAX_WORLD_POSITIONS, "positions (v)");
         } else if (kind == "vt") {
             if (w.size() < 2) fail("vt needs u v");
-            vt.push_back("vt " + num(number(w[0])) + " " + num(1 - number(w[1])));  // OBJ's v runs up
+            const char* what = "texture coordinate";
+            vt.push_back("vt " + num(number(w[0], MAX_TEXCOORD, what)) + " " + num(1 - number(w[1], MAX_TEXCOORD - 1, what)));  // OBJ's v runs up
+            vt_lines.push_back(line_no);
+            at_most(vt.size(), MAX_WORLD_UVS, "texture coordinates (vt)");
         } else if (kind == "f") {
-            if (w.size() < 3 || w.size() > 10) fail("a face needs 3 to 10 corners");
+            if (w.size() < 3 || w.size() > size_t(MAX_FACE_CORNERS)) fail("a face needs 3 to " + std::to_string(MAX_FACE_CORNERS) + " corners");
             std::vector<std::pair<int, int>> f;
             for (const std::string& c : w) {
                 size_t s1 = c.find('/');
@@ -432,12 +451,13 @@ std::string obj_to_mesh(const std::string& obj, const std::string& mesh_name, co
                 f.push_back({resolve(c.substr(0, s1), v.size()), resolve(c.substr(s1 + 1, s2 == std::string::npos ? std::string::npos : s2 - s1 - 1), vt.size())});
             }
             faces.push_back(f);
+            f_lines.push_back(line_no);
+            corners += f.size();
+            at_most(faces.size(), MAX_WORLD_FACES, "faces (f)");
+            at_most(corners, MAX_WORLD_CORNERS, "corners of faces");
         }  // o, g, s, vn, usemtl, mtllib and others: not needed
     }
-    if (faces.empty()) {
-        line_no = 0;
-        fail("no faces");
-    }
+    if (faces.empty()) throw HarnessError(file + ": no faces (f lines with v/vt corners): not a mesh");
     std::string out = "mesh " + mesh_name + "\n";
     for (const std::string& x : v) out += x + "\n";
     for (const std::string& x : vt) out += x + "\n";
@@ -446,7 +466,21 @@ std::string obj_to_mesh(const std::string& obj, const std::string& mesh_name, co
         for (const auto& [p, t] : f) out += " " + std::to_string(p) + "/" + std::to_string(t);
         out += "\n";
     }
-    return out + "end\n";
+    out += "end\n";
+    // what the scene parser says of it, in a scene of its own (the mesh from its line 3): its rules
+    // (a name's, a face's) are its alone; an error on a line of the mesh names the OBJ's line
+    const std::string scene = "modexlab-scene 2\ntexture t checker 8 8\n" + out + "object o\nmesh " + mesh_name + "\ntexture t\nend\ncamera\nend\n";
+    auto world = std::make_unique<World>();
+    ParseError e;
+    if (!parse_world(scene.data(), scene.size(), FileResolver{}, world.get(), &e)) {
+        std::vector<int> obj_lines = {0};  // the mesh's lines in order: its header, v, vt, f
+        for (const std::vector<int>* l : {&v_lines, &vt_lines, &f_lines}) obj_lines.insert(obj_lines.end(), l->begin(), l->end());
+        const size_t k = e.line >= 3 ? size_t(e.line - 3) : obj_lines.size();
+        line_no = k < obj_lines.size() ? obj_lines[k] : 0;
+        throw HarnessError(file + (line_no ? ":" + std::to_string(line_no) : std::string()) + ": the scene parser refuses the mesh (mesh " +
+                           mesh_name + "): " + e.message);
+    }
+    return out;
 }
 
 }  // namespace harness

@@ -25,8 +25,10 @@ struct SceneChoice {
 SceneChoice choose_scene(const std::string& spec);
 
 // A mesh block from a Wavefront OBJ subset (v, vt, f; f corners v/vt or v/vt/vn, negative indices
-// relative; other lines ignored): `v` flipped so that rows run down (OBJ's v runs up), faces of
-// more than 10 corners refused. Throws HarnessError "NAME:LINE: message" on anything it cannot take.
+// relative; other lines ignored): `v` flipped so that rows run down (OBJ's v runs up). What the
+// scene parser would refuse is refused here, naming the OBJ's file and line and the limit
+// (coordinates, counts, corners a face; a mesh name by the parser's own rule). Throws HarnessError
+// "FILE:LINE: message", or "FILE: message" for the file as a whole.
 std::string obj_to_mesh(const std::string& obj_text, const std::string& mesh_name, const std::string& file_name);
 
 }  // namespace harness

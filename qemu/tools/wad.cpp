@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 
+#include "kernel/core/texture.h"
 #include "qemu/lib/error.h"
 #include "qemu/lib/image.h"
 #include "qemu/tools/wad_bytes.h"
@@ -180,8 +181,10 @@ std::vector<WadListEntry> Wad::list() const {
         WadListEntry e;
         e.kind = WadKind::Texture;
         e.name = d.name;
-        if (d.width > 0 && d.height > 0) e.width = d.width, e.height = d.height;
-        else e.problem = "defined as " + size_text(d.width, d.height);
+        if (d.width <= 0 || d.height <= 0) e.problem = "defined as " + size_text(d.width, d.height);
+        else if (d.width > raster::MAX_TEXTURE_SIZE || d.height > raster::MAX_TEXTURE_SIZE)
+            e.problem = size_text(d.width, d.height) + ", above " + std::to_string(raster::MAX_TEXTURE_SIZE) + " a side: no scene can use it";
+        else e.width = d.width, e.height = d.height;
         out.push_back(std::move(e));
     }
     return out;

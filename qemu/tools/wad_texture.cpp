@@ -4,6 +4,7 @@
 
 #include <iterator>
 
+#include "kernel/core/texture.h"
 #include "qemu/lib/error.h"
 #include "qemu/tools/wad_bytes.h"
 
@@ -170,6 +171,10 @@ WadImage Wad::texture(std::string_view name) const {
     if (!def) throw HarnessError(label_ + ": no wall texture named '" + printable(wad_upper(name)) + "'");
     const std::string what = label_ + ": texture " + printable(def->name) + " (" + def->source + ")";
     if (def->width <= 0 || def->height <= 0) throw HarnessError(what + " has no pixels: it is " + size_text(def->width, def->height));
+    // before a byte is allocated: a header of a few bytes may claim 32767 x 32767
+    if (def->width > raster::MAX_TEXTURE_SIZE || def->height > raster::MAX_TEXTURE_SIZE)
+        throw HarnessError(what + " is " + size_text(def->width, def->height) + ": no scene can use a texture above " +
+                           std::to_string(raster::MAX_TEXTURE_SIZE) + " a side");
     if (find_lump("PNAMES") < 0) throw HarnessError(what + ": the WAD has no PNAMES lump to name its patches");
     const std::vector<std::string> pnames = patch_names();
     WadImage img;

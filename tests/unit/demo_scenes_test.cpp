@@ -158,8 +158,30 @@ TEST(Obj, RefusesWhatItCannotTake) {
         {"v 0 0\n", "q.obj:1: v needs x y z"},
         {"v 0 0 0\nvt 0 0\nf 1/0 1/1 1/1\n", "q.obj:3: bad index in corner '1/0'"},
         {"v 0 0 0\nvt 0 0\nf 1/1 1/1 1/1 1/1 1/1 1/1 1/1 1/1 1/1 1/1 1/1\n", "q.obj:3: a face needs 3 to 10 corners"},
-        {"v 0 0 0\n", "q.obj:0: no faces"},
+        {"v 0 0 0\n", "q.obj: no faces"},
+        {"", "q.obj: no faces"},
+        // what the scene parser would refuse: refused here, at the OBJ's line, with the limit
+        {"v 0 0 1e38\n", "q.obj:1: coordinate 1e38 is beyond the scene format's limit of 1000000"},
+        {"v 0 1e300 0\n", "q.obj:1: coordinate 1e300 is beyond"},
+        {"v 0 0 0\nvt 0 20000\n", "q.obj:2: texture coordinate 20000 is beyond"},
     };
+    std::string many;
+    for (int i = 0; i < 40000; ++i) many += "v 0 0 " + std::to_string(i) + "\n";
+    const std::pair<std::string, std::string> more[] = {{many, "q.obj:32769: more than 32768 positions (v)"}};
+    for (const auto& [obj, want] : more) {
+        try {
+            obj_to_mesh(obj, "m", "q.obj");
+            ADD_FAILURE() << "took " << obj.substr(0, 80);
+        } catch (const HarnessError& e) {
+            EXPECT_NE(std::string(e.what()).find(want), std::string::npos) << e.what();
+        }
+    }
+    try {
+        obj_to_mesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n", "two words", "q.obj");
+        ADD_FAILURE() << "took a mesh name with a space";
+    } catch (const HarnessError& e) {
+        EXPECT_NE(std::string(e.what()).find("bad mesh name 'two words'"), std::string::npos) << e.what();
+    }
     for (const auto& [obj, want] : cases) {
         try {
             obj_to_mesh(obj, "m", "q.obj");

@@ -96,6 +96,21 @@ TEST(WadErrors, RejectsBadPatchReferences) {
     expect_error([&] { Wad(build_wad(lumps), "nopn.wad").texture("CANVAS"); }, {"nopn.wad", "no PNAMES"});
 }
 
+// A WAD of a few hundred bytes may claim a 32767 x 32767 texture: refused before a byte of it is
+// allocated (no scene takes one above 1024 a side), and listed as unusable.
+TEST(WadErrors, RefusesATextureNoSceneCanUse) {
+    std::vector<Lump> lumps = sample_lumps();
+    lumps[2].data = texture_lump({{"HUGE", 32767, 32767, {{0, 0, 0}}}, {"WIDE", 1025, 8, {{0, 0, 0}}}, {"EDGE", 1024, 8, {{0, 0, 0}}}});
+    const Wad wad(build_wad(lumps), "huge.wad");
+    expect_error([&] { wad.texture("HUGE"); }, {"huge.wad", "texture HUGE", "32767x32767", "no scene can use a texture above 1024 a side"});
+    expect_error([&] { wad.texture("WIDE"); }, {"1025x8", "above 1024"});
+    EXPECT_EQ(wad.texture("EDGE").width, 1024);
+    int unusable = 0;
+    for (const WadListEntry& e : wad.list())
+        if (e.name == "HUGE" || e.name == "WIDE") unusable += e.problem.find("no scene can use it") != std::string::npos;
+    EXPECT_EQ(unusable, 2);
+}
+
 TEST(WadErrors, RejectsBrokenTextureLumps) {
     auto with_texture1 = [](std::string data) {
         std::vector<Lump> lumps = sample_lumps();

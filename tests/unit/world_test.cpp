@@ -249,6 +249,9 @@ TEST(World, EveryErrorNamesItsLine) {
         {TM + "camera\nposition 0 5 0\ntarget 0 0 0\nend\n", {17, "the camera must look somewhere"}},
         {TM + "camera\nkey 0 0 0 5 0 0 0\nkey 1 0 0 1 0 0 1\nend\n", {17, "the camera must look somewhere"}},
         {TM + "camera\nkey 0 0 0 5\n", {15, "usage: key TIME X Y Z TARGET_X"}},
+        // between keys: the eye passes through its target at 0.5 s; the view turns along up at 1.5 s
+        {TM + "camera\nkey 0 0 0 0 0 0 -2\nkey 1 0 0 -2 0 0 0\nend\n", {17, "between its keys too: from 0 s to 1 s"}},
+        {TM + "camera\nkey 0 0 0 0 0 0 -1\nkey 1 0 0 0 0 0 -1\nkey 2 0 0 0 0 2 1\nend\n", {18, "from 1 s to 2 s"}},
         {TM + CAMERA + "camera\n", {18, "a second camera"}},
         {T + "budget max-error 1\n", {3, "usage: budget"}},
         {T + "budget max-error x coverage exact\n", {3, "bad max-error 'x'"}},
