@@ -34,6 +34,7 @@ constexpr uint8_t LSR_TRANSMITTER_EMPTY = 0x40;
 
 bool g_present = false;
 bool g_at_line_start = true;
+bool g_crlf = false;  // each LF written goes out as CR LF
 bool g_stalled = false;
 
 // How long a byte waits for the transmitter. A 16550 at 115200 baud drains its FIFO in 1.4 ms, but
@@ -129,9 +130,14 @@ bool present() { return g_present; }
 
 void write(const char* data, size_t n) {
     if (!g_present) return;
-    for (size_t i = 0; i < n; ++i) put(data[i]);
+    for (size_t i = 0; i < n; ++i) {
+        if (data[i] == '\n' && g_crlf) put('\r');
+        put(data[i]);
+    }
     if (n) g_at_line_start = data[n - 1] == '\n';
 }
+
+void end_lines_with_crlf(bool crlf) { g_crlf = crlf; }
 
 void write(const char* s) {
     size_t n = 0;

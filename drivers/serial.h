@@ -14,6 +14,8 @@ bool present();
 
 void write(const char* data, size_t n);
 void write(const char* s);
+// From now on every LF written goes out as CR LF (a terminal's line end), or as LF alone.
+void end_lines_with_crlf(bool crlf);
 
 // Waits (bounded) until the transmitter has sent every byte: before an exit, so no reply is cut off.
 void flush();

@@ -33,6 +33,13 @@ size_t g_upload_used = 0;
 
 bool byte_waiting(void*) { return serial::byte_ready(); }
 
+// The next byte on COM1, waiting up to `ms` for it; false when none came.
+bool next_byte(uint32_t ms, uint8_t* out) {
+    if (!serial::byte_ready() && !timer::wait_ms_or(ms, byte_waiting, nullptr)) return false;
+    *out = serial::read_byte();
+    return true;
+}
+
 void copy_name(char* out, const char* in, size_t n) {
     size_t i = 0;
     for (; i < n && in[i] && i + 1 < size_t(raster::MAX_FILE_NAME); ++i) out[i] = in[i];
@@ -94,13 +101,15 @@ const File* find(lib::StrView name) {
     return nullptr;
 }
 
-bool receive(uint8_t* out, size_t length, uint32_t crc32, lib::Fmt* error) {
-    for (size_t i = 0; i < length; ++i) {
-        if (!serial::byte_ready() && !timer::wait_ms_or(BYTE_TIMEOUT_MS, byte_waiting, nullptr)) {
+bool receive(uint8_t* out, size_t length, uint32_t crc32, bool lead_lf, lib::Fmt* error) {
+    for (size_t i = 0; i < length;) {
+        uint8_t byte;
+        if (!next_byte(BYTE_TIMEOUT_MS, &byte)) {
             error->s("upload stalled: ").u(uint32_t(i)).s(" of ").u(uint32_t(length)).s(" bytes arrived");
             return false;
         }
-        out[i] = serial::read_byte();
+        if (!(lead_lf && i == 0 && byte == '\n')) out[i++] = byte;
+        lead_lf = false;
     }
     uint32_t got = lib::crc32(0, out, length);
     if (got != crc32) {
@@ -110,12 +119,10 @@ bool receive(uint8_t* out, size_t length, uint32_t crc32, lib::Fmt* error) {
     return true;
 }
 
-size_t discard(size_t length) {
+size_t discard(size_t length, bool lead_lf) {
     size_t i = 0;
-    for (; i < length; ++i) {
-        if (!serial::byte_ready() && !timer::wait_ms_or(DISCARD_GAP_MS, byte_waiting, nullptr)) break;
-        serial::read_byte();
-    }
+    for (uint8_t byte; i < length && next_byte(DISCARD_GAP_MS, &byte); lead_lf = false)
+        if (!(lead_lf && byte == '\n')) ++i;
     return i;
 }
 
@@ -143,10 +150,10 @@ bool upload_fits(lib::StrView name, size_t length, lib::Fmt* error) {
     return true;
 }
 
-bool upload(lib::StrView name, size_t length, uint32_t crc32, lib::Fmt* error) {
+bool upload(lib::StrView name, size_t length, uint32_t crc32, bool lead_lf, lib::Fmt* error) {
     if (!upload_fits(name, length, error)) return false;
     uint8_t* data = g_upload_space + g_upload_used;
-    if (!receive(data, length, crc32, error)) return false;
+    if (!receive(data, length, crc32, lead_lf, error)) return false;
     g_upload_used += length;
     File* f = find_upload(name);
     if (!f) {

@@ -43,18 +43,21 @@ const File* find(lib::StrView name);
 // place in the file table (a name already uploaded is replaced; the last place is SCENE_UPLOAD's
 // until it has one). False with `error` otherwise.
 bool upload_fits(lib::StrView name, size_t length, lib::Fmt* error);
+// The bytes after an upload's header. `lead_lf`: the header ended with a CR, so an LF that comes
+// first is the rest of its line end (CR LF), not a byte of the payload: dropped, not counted.
+
 // Receives `length` bytes from COM1 (a stall of 5 s between bytes ends it) and checks their CRC-32;
 // on success the file named `name` is (re)placed in the upload space. False with `error` otherwise
 // (upload_fits' refusals before reading a byte).
-bool upload(lib::StrView name, size_t length, uint32_t crc32, lib::Fmt* error);
-// Reads and drops up to `length` bytes from COM1, stopping where none comes for 250 ms: the bytes
-// that follow a refused upload's header, so that they are never taken for commands. How many it
-// read.
-size_t discard(size_t length);
+bool upload(lib::StrView name, size_t length, uint32_t crc32, bool lead_lf, lib::Fmt* error);
+// Reads and drops up to `length` bytes from COM1 (SIZE_MAX: all that come), stopping where none
+// comes for 250 ms: the bytes that follow a refused upload's header, so that they are never taken
+// for commands. How many it dropped.
+size_t discard(size_t length, bool lead_lf);
 size_t upload_space_used();
 
 // Receives bytes from COM1 into `out` with the same rules (for callers with their own buffer).
-bool receive(uint8_t* out, size_t length, uint32_t crc32, lib::Fmt* error);
+bool receive(uint8_t* out, size_t length, uint32_t crc32, bool lead_lf, lib::Fmt* error);
 
 // For parse_world: finds files here.
 raster::FileResolver resolver();

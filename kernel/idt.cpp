@@ -91,7 +91,7 @@ extern "C" [[noreturn]] void exception_handler(const idt::ExceptionFrame* f) {
         message.s("CPU exception ").s(idt::exception_name(f->vector)).s(" (vector ").u(f->vector).s(") at eip ").hex(f->eip);
         lib::JsonLine r = reply::begin(false);
         r.str("error", message.c_str())
-            .str("event", "fault")
+            .boolean("fault", true)
             .u32("vector", f->vector)
             .str("name", idt::exception_name(f->vector))
             .hex32("error_code", f->error_code)

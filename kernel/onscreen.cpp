@@ -289,12 +289,13 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
             Row& r = g_rows[g_row_count++];
             r = Row{i, m, 0, 0, 0, 0, -1, false};
             for (uint32_t k = 0; k < s.frames; ++k) {
-                if (serial::byte_ready()) return false;
+                if (server::line_arrived()) return false;
                 if (next_key(ctx) == lib::Key::Escape) {
                     stopped = r.interrupted = true;
                     break;
                 }
                 const worlds::BenchFrame b = worlds::bench_frame(k, s.frames, mapper, raster::home_surface(mapper), raster::Variant::Asm, probe, &watch);
+                if (b.cut) return false;  // a line came: the server takes over
                 r.pixels += b.stats.pixels, r.polygons += b.stats.polygons;
                 r.ticks_inner += b.figures[worlds::B_INNER], r.ticks_frame += b.figures[worlds::B_TICKS];
             }
@@ -327,7 +328,7 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
     show_page(s, k, colours);
     const int last = page_count(s) - 1;
     for (;;) {
-        if (serial::byte_ready()) return false;
+        if (server::line_arrived()) return false;
         const lib::Key key = next_key(ctx);
         if (key == lib::Key::Escape || key == lib::Key::B) return true;
         if ((key == lib::Key::Right || key == lib::Key::N || key == lib::Key::Space || key == lib::Key::PageDown) && k < last) show_page(s, ++k, colours);

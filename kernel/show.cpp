@@ -21,7 +21,7 @@ namespace show {
 
 namespace {
 
-bool byte_waiting(void*) { return serial::byte_ready(); }
+bool byte_waiting(void*) { return server::line_arrived(); }
 
 bool is_world(const files::File& f) {
     raster::ParseError e;
@@ -30,7 +30,7 @@ bool is_world(const files::File& f) {
 
 void patterns(uint32_t interval_ms) {
     for (uint32_t n = 0;; ++n) {
-        if (serial::byte_ready()) return;
+        if (server::line_arrived()) return;
         int page = (vga::shown_page() + 1) % vga::MODEX_PAGES;
         draw::pattern(raster::Pattern(n % raster::PATTERN_COUNT), page);
         vga::flip(page);
@@ -271,7 +271,7 @@ void on_key(Show& s, lib::Key key) {
 // Key presses waiting, handled in order; false when a byte on COM1 ends the show.
 bool keys(Show& s) {
     for (lib::Key k; !s.served && (k = next_key(&s)) != lib::Key::None;) on_key(s, k);
-    return !s.served && !serial::byte_ready();
+    return !s.served && !server::line_arrived();
 }
 
 void play(Show& s) {

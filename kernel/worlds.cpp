@@ -135,7 +135,8 @@ BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper,
     b.page = vga::shown_page() == 0 ? 1 : 0;
     const FrameResult f = render(b.frame, mapper, surface, b.page, variant, nullptr, watch);
     raster::Probe timed = probe;
-    render(b.frame, mapper, surface, b.page, variant, &timed, watch);
+    b.cut = f.render.stats.interrupted || render(b.frame, mapper, surface, b.page, variant, &timed, watch).render.stats.interrupted;
+    if (b.cut) return b;
     const uint64_t t0 = timer::rdtsc();
     b.retrace = vga::flip(b.page);
     const uint64_t flip = timer::rdtsc() - t0;

@@ -45,6 +45,7 @@ struct BenchFrame {
     int page;
     raster::RenderStats stats;  // the first drawing's
     bool used_asm, retrace;
+    bool cut;  // the watch stopped a drawing: nothing shown, no figure measured
     uint64_t figures[B_FIELDS];
 };
 // The probe the bench's frames are timed with: the TSC its clock, its lap cost calibrated here, in
@@ -54,7 +55,8 @@ raster::Probe bench_probe();
 
 // Frame i of `count` spread evenly over the animation (frame i * length / count), drawn twice into
 // the hidden page of pages 0 and 1 (plainly, then with a copy of the calibrated `probe`), then
-// flipped. With a watch, the drawing may stop early.
+// flipped. With a watch, a drawing may stop early: the frame is then `cut`, neither shown nor
+// measured.
 BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper, raster::Surface surface, raster::Variant variant,
                        const raster::Probe& probe, const raster::Watch* watch = nullptr);
 

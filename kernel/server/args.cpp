@@ -64,12 +64,12 @@ void cannot_draw_through(const char* cmd, const raster::Mapper& mp, raster::Surf
 
 }  // namespace
 
-bool interrupted(uint32_t step) { return step > 0 && serial::byte_ready(); }
+bool interrupted(uint32_t step) { return step > 0 && line_arrived(); }
 
 raster::Watch Progress::watch() { return raster::Watch{keep_going, this, &idt::drawing_now()}; }
 
 bool Progress::keep_going(void* ctx, uint32_t done, uint32_t total) {
-    if (serial::byte_ready()) return false;
+    if (line_arrived()) return false;
     auto* p = static_cast<Progress*>(ctx);
     const uint64_t now = timer::rdtsc();
     if (p->interval && now >= p->next) {

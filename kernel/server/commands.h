@@ -67,10 +67,14 @@ void cmd_exit(Context& ctx, const StrView* args, size_t nargs);
 
 // --- argument helpers (args.cpp): each replies with the error itself and returns false ---------
 
-// Whether a long command stops before its step `step` (a frame, a loop checked): a byte has come on
-// COM1 (the next line, left for the reader), and at least one step is done. The reply then says
+// Whether a long command stops before its step `step` (a frame, a loop checked): the next line has
+// begun on COM1 (or Ctrl-C came), and at least one step is done. The reply then says
 // `interrupted` and how far it got.
 bool interrupted(uint32_t step);
+
+// reader.cpp: whether the header line just read ended with a CR, so that an LF leading its payload belongs to
+// the line's end (files::upload, files::discard drop it); once: the reader forgets that CR.
+bool header_ended_by_cr();
 
 // A drawing watched (core/render.h): a line arriving on COM1 stops it between polygons, and where
 // `interval` is set (TSC ticks) a `progress` event goes out that often, so that a scene that takes

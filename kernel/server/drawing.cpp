@@ -86,7 +86,8 @@ void frame_fields(lib::JsonLine& r, const worlds::FrameResult& f) {
 }
 
 // The reply of play and bench begins alike: what was animated, and how.
-// `frames` drawn of `asked`: fewer where a byte on COM1 interrupted the command after a frame.
+// `frames` whole frames drawn of `asked`: fewer where the next line stopped the command (a frame it
+// cut short is neither shown nor counted).
 lib::JsonLine animation_reply(const char* cmd, uint32_t frames, uint32_t asked, const DrawArgs& d) {
     lib::JsonLine r = reply::begin(true);
     r.str("cmd", cmd).str("scene", worlds::name()).u32("frames", frames).u32("frames_asked", asked).boolean("interrupted", frames < asked);
@@ -158,6 +159,7 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
         int32_t n = int32_t(i % uint32_t(worlds::world().frames));
         d.page = hidden_page();
         worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
+        if (f.render.stats.interrupted) break;  // cut short by the next line: neither shown nor counted
         uint64_t t0 = timer::rdtsc();
         bool retrace = vga::flip(d.page);
         uint64_t flip_ticks = timer::rdtsc() - t0;
@@ -203,6 +205,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     const raster::Watch watch = p.watch();
     for (uint32_t i = 0; i < frames && !interrupted(i); ++i, ++done) {
         const worlds::BenchFrame b = worlds::bench_frame(i, frames, *d.mapper, d.surface, d.variant, probe, &watch);
+        if (b.cut) break;  // cut short by the next line: no figure of it
         d.page = b.page;
         const raster::RenderStats& r = b.stats;
         lib::JsonLine e(serial::sink());
@@ -231,7 +234,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
 void write_budget(lib::JsonLine& r, const char* key, const raster::Budget& b) {
     r.begin_object(key).boolean("given", b.given);
     if (b.max_error < 0) r.str("max_error", "any");
-    else r.fixed("max_error", b.max_error, 3);
+    else r.fixed("max_error", b.max_error, raster::MAX_DECIMALS);  // as given: every decimal the parser takes
     r.boolean("exact_coverage", b.exact_coverage).end_object();
 }
 

@@ -72,8 +72,8 @@ void load_and_reply(const char* cmd, const files::File& f) {
 // Refuses an upload: the bytes its header announced are read and dropped first (while they come,
 // files::discard), so that none of them is taken for a command, then the error, with how many were
 // dropped (a scene error carries "line" 0, as a parse error carries its line).
-void refuse_upload(const char* cmd, size_t announced, const char* message) {
-    const size_t dropped = files::discard(announced);
+void refuse_upload(const char* cmd, size_t announced, bool lead_lf, const char* message) {
+    const size_t dropped = files::discard(announced, lead_lf);
     lib::JsonLine r = reply::begin(false);
     r.str("cmd", cmd).str("error", message).u32("discarded", uint32_t(dropped));
     if (StrView{cmd, lib::c_length(cmd)}.equals("scene")) r.u32("line", 0);
@@ -81,8 +81,9 @@ void refuse_upload(const char* cmd, size_t announced, const char* message) {
 }
 
 // Checks an upload's header (lib::check_upload_header: BYTES CRC32 after `name_args` words of name)
-// and says "ready" when the bytes may come; else refuses it. False when refused.
-bool accept_upload(const char* cmd, const StrView* args, size_t nargs, size_t name_args, lib::UploadHeader* h) {
+// and says "ready" when the bytes may come; else refuses it. False when refused. `lead_lf`: whether
+// an LF leading the bytes is the header's (header_ended_by_cr).
+bool accept_upload(const char* cmd, const StrView* args, size_t nargs, size_t name_args, bool lead_lf, lib::UploadHeader* h) {
     const lib::HeaderProblem problem = lib::check_upload_header(args, nargs, name_args, UPLOADED_SCENE, files::MAX_UPLOAD,
                                                                  size_t(raster::MAX_FILE_NAME), h);
     lib::Fmt m;
@@ -96,7 +97,7 @@ bool accept_upload(const char* cmd, const StrView* args, size_t nargs, size_t na
     case lib::HeaderProblem::None: ok = files::upload_fits(h->name, h->length, &m); break;
     }
     if (!ok) {
-        refuse_upload(cmd, h->announced, m.c_str());
+        refuse_upload(cmd, h->announced, lead_lf, m.c_str());
         return false;
     }
     lib::JsonLine(serial::sink()).str("event", "ready").str("cmd", cmd).u32("bytes", h->length).end();
@@ -107,9 +108,10 @@ bool accept_upload(const char* cmd, const StrView* args, size_t nargs, size_t na
 
 void cmd_scene(Context&, const StrView* args, size_t nargs) {
     lib::UploadHeader h;
-    if (!accept_upload("scene", args, nargs, 0, &h)) return;
+    const bool lead_lf = header_ended_by_cr();
+    if (!accept_upload("scene", args, nargs, 0, lead_lf, &h)) return;
     lib::Fmt error;
-    if (!files::upload(UPLOADED_SCENE, h.length, h.crc32, &error)) {
+    if (!files::upload(UPLOADED_SCENE, h.length, h.crc32, lead_lf, &error)) {
         // every scene error carries "line", as a parse error does: 0, no line
         reply::begin(false).str("cmd", "scene").str("error", error.c_str()).u32("line", 0).end();
         return;
@@ -119,9 +121,10 @@ void cmd_scene(Context&, const StrView* args, size_t nargs) {
 
 void cmd_file(Context&, const StrView* args, size_t nargs) {
     lib::UploadHeader h;
-    if (!accept_upload("file", args, nargs, 1, &h)) return;
+    const bool lead_lf = header_ended_by_cr();
+    if (!accept_upload("file", args, nargs, 1, lead_lf, &h)) return;
     lib::Fmt error;
-    if (!files::upload(h.name, h.length, h.crc32, &error)) {
+    if (!files::upload(h.name, h.length, h.crc32, lead_lf, &error)) {
         reply::error("file", error.c_str());
         return;
     }

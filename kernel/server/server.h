@@ -17,4 +17,9 @@ struct Context {
 
 [[noreturn]] void run(Context& ctx);
 
+// Whether a line has begun on COM1 (or Ctrl-C came): what stops long work, the boot show and the
+// on-screen bench. The bytes waiting are taken into the line run() reads next, but for the LF that
+// ends a CR LF, which stops nothing.
+bool line_arrived();
+
 }  // namespace server

@@ -15,7 +15,7 @@ KernelLine classify_kernel_line(const std::string& line) {
     if (j.contains("seq")) {
         if (!j["seq"].is_number_unsigned()) throw HarnessError("reply with a bad \"seq\": " + line.substr(0, SHOWN_CHARS));
         if (!j.contains("ok") || !j["ok"].is_boolean()) throw HarnessError("reply without a boolean \"ok\": " + line.substr(0, SHOWN_CHARS));
-        if (j.value("event", "") == "fault") return {KernelLine::Kind::Fault, j};
+        if (j.value("fault", false)) return {KernelLine::Kind::Fault, j};
         return {KernelLine::Kind::Reply, j};
     }
     std::string event = j.value("event", "");

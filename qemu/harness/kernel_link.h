@@ -16,7 +16,7 @@ namespace harness {
 
 
 
-// The kernel reported a CPU exception (the reply line with "event":"fault").
+// The kernel reported a CPU exception (the reply line with "fault":true).
 class KernelFault : public HarnessError {
 public:
     KernelFault(const std::string& what, json report) : HarnessError(what), report_(std::move(report)) {}

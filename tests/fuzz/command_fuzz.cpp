@@ -1,10 +1,15 @@
 // Fuzz target `command`: any bytes a client sends to the command server, through the server's own
 // front end (kernel/lib/protocol.h): bytes into lines, lines into words, the numbers in them, and
 // the upload headers among them. Promises: one outcome a line end (LF, CR, CR LF: counted here on
-// the side); a line handed on is at most 255 characters with no control character but tab; a
-// control character is reported at its column; words are non-empty and blank-free; a number
-// parses back to its text's value; an upload header is taken only with a length of 1..4 MiB and
-// a name of 1..63 characters, and a refused one drops no more than its words announce.
+// the side) and one a Ctrl-C; a line has begun (in_line) exactly after a byte that is neither a
+// line end, nor the LF of a CR LF, nor Ctrl-C; a line handed on is at most 255 characters with no
+// control character but tab; a control character is reported at its column; words are non-empty
+// and blank-free; a number parses back to its text's value; an upload header is taken only with a
+// length of 1..4 MiB and a name of 1..63 characters, and a refused one drops no more than its
+// words announce (all that come where none can be read), a refused line too (of a line too long,
+// what its last words announce).
+#include <stdint.h>
+
 #include <string>
 
 #include "kernel/lib/protocol.h"
@@ -58,10 +63,29 @@ void check_line(const char* line, size_t length) {
             fuzz::fail("a header taken with length " + std::to_string(h.length) + ", name of " + std::to_string(h.name.size));
         return;
     }
-    // a refusal drops what one of its words announces (0: none can be read)
-    bool announced_by_a_word = h.announced == 0;
+    // a refusal drops what one of its words announces (all that come: none can be read)
+    bool announced_by_a_word = h.announced == SIZE_MAX;
     for (size_t i = 1; i < n && !announced_by_a_word; ++i) announced_by_a_word = lib::announced_length(words[i]) == h.announced;
     if (!announced_by_a_word) fuzz::fail("a refusal drops " + std::to_string(h.announced) + " bytes no word announced");
+}
+
+// A refused line's upload bytes, against its words: 0 unless its first word is scene or file;
+// else what one of its words announces, or all that come.
+void check_refused(const lib::LineAssembler& lines, lib::LineAssembler::Result r) {
+    const size_t drop = lib::refused_upload_bytes(lines, r);
+    lib::StrView words[128];
+    const size_t n = lib::split_words(lines.line(), words, 128);
+    const bool header = n > 0 && (words[0].equals("scene") || words[0].equals("file"));
+    if (!header) {
+        if (drop) fuzz::fail("a refused line that is no upload header drops bytes");
+        return;
+    }
+    bool announced = drop == SIZE_MAX;
+    for (size_t i = 1; i < n && i < 128 && !announced; ++i) announced = lib::announced_length(words[i]) == drop;
+    lib::StrView last[32];
+    const size_t t = r == lib::LineAssembler::Result::TooLong ? lib::split_words(lines.tail(), last, 32) : 0;
+    for (size_t i = 0; i < t && i < 32 && !announced; ++i) announced = lib::announced_length(last[i]) == drop;
+    if (!announced) fuzz::fail("a refused upload header drops " + std::to_string(drop) + " bytes no word announced");
 }
 
 }  // namespace
@@ -72,25 +96,33 @@ MODEXLAB_FUZZ_TARGET(command) {
     bool after_cr = false;
     for (size_t i = 0; i < size; ++i) {
         const char c = char(data[i]);
-        ends += (c == '\r') || (c == '\n' && !after_cr);
+        const bool line_end = c == '\r' || (c == '\n' && !after_cr), begins = !line_end && !(c == '\n' && after_cr) && c != 0x03;
+        ends += line_end || c == 0x03;
         after_cr = c == '\r';
-        switch (lines.feed(c)) {
+        const lib::LineAssembler::Result r = lines.feed(c);
+        switch (r) {
         case lib::LineAssembler::Result::More: break;
+        case lib::LineAssembler::Result::Cancelled: ++outcomes; break;
         case lib::LineAssembler::Result::Line:
             ++outcomes;
             check_line(lines.line(), lines.length());
             break;
-        case lib::LineAssembler::Result::TooLong: ++outcomes; break;
+        case lib::LineAssembler::Result::TooLong:
+            ++outcomes;
+            check_refused(lines, r);
+            break;
         case lib::LineAssembler::Result::Control: {
             ++outcomes;
             const size_t col = lines.column();
             if (col < 1 || col > lines.length() || uint8_t(lines.line()[col - 1]) != lines.control() || lines.control() >= 0x20 ||
                 lines.control() == '\t')
                 fuzz::fail("a control character reported at the wrong column");
+            check_refused(lines, r);
             break;
         }
         }
         if (outcomes != ends) fuzz::fail("line ends and outcomes differ: " + std::to_string(ends) + " against " + std::to_string(outcomes));
+        if (begins != lines.in_line()) fuzz::fail(begins ? "a byte of a line did not begin one" : "a line end, the LF of a CR LF or Ctrl-C left a line begun");
     }
     return 0;
 }

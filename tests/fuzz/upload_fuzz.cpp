@@ -1,7 +1,8 @@
-// Fuzz target `upload`: an upload as a client sends it, the header line and then the bytes
-// (`scene BYTES CRC32` or `file NAME BYTES CRC32`), through the kernel's own checks: the header
-// (kernel/lib/protocol.h), the CRC-32 of the bytes, and, for a scene or a `file` named *.scene
-// that arrives whole and intact, the scene parsers as `scene` and `load` run them. Promises: a
+// Fuzz target `upload`: an upload as a client sends it, the header line (ended by LF, CR or CR LF)
+// and then the bytes (`scene BYTES CRC32` or `file NAME BYTES CRC32`), through the kernel's own
+// checks: the header (kernel/lib/protocol.h), the CRC-32 of the bytes, and, for a scene or a
+// `file` named *.scene that arrives whole and intact, the scene parsers as `scene` and `load` run
+// them. Promises: a
 // header is taken only within the limits; bytes are taken only when as many came as it said and
 // their CRC-32 is the header's; a scene refused by its parser names a line of its text.
 #include <algorithm>
@@ -20,12 +21,13 @@ constexpr size_t MAX_UPLOAD = 4 << 20, MAX_NAME = 64;
 
 MODEXLAB_FUZZ_TARGET(upload) {
     const uint8_t* end = data + size;
-    const uint8_t* newline = std::find(data, end, uint8_t('\n'));
-    if (newline == end) return 0;
     lib::LineAssembler lines;
     lib::LineAssembler::Result r = lib::LineAssembler::Result::More;
-    for (const uint8_t* p = data; p <= newline; ++p) r = lines.feed(char(*p));
-    if (r != lib::LineAssembler::Result::Line) return 0;  // the line itself refused: `command` covers it
+    const uint8_t* p = data;
+    while (p < end && (r == lib::LineAssembler::Result::More || r == lib::LineAssembler::Result::Cancelled)) r = lines.feed(char(*p++));
+    if (r != lib::LineAssembler::Result::Line) return 0;  // no line, or the line itself refused: `command` covers it
+    // the header ended by CR: an LF right after it is its line end's, not the payload's (files::receive)
+    if (lines.ended_by_cr() && p < end && *p == '\n') ++p;
     lib::StrView words[128];
     const size_t n = lib::split_words(lines.line(), words, 128);
     if (n == 0 || n > 128) return 0;
@@ -36,7 +38,7 @@ MODEXLAB_FUZZ_TARGET(upload) {
         lib::HeaderProblem::None)
         return 0;
     if (h.length == 0 || h.length > MAX_UPLOAD || h.name.size == 0 || h.name.size >= MAX_NAME) fuzz::fail("a header taken out of its limits");
-    const uint8_t* bytes = newline + 1;
+    const uint8_t* bytes = p;
     if (size_t(end - bytes) < h.length) return 0;  // the rest never comes: the kernel's stall timeout
     if (lib::crc32(0, bytes, h.length) != h.crc32) return 0;  // "checksum mismatch"
     const bool scene_file = scene || (h.name.size > 6 && std::string(h.name.data + h.name.size - 6, 6) == ".scene");

@@ -79,12 +79,13 @@ TEST(Commands, LinesEndAtCrOrLfAndControlCharactersAreRefused) {
         EXPECT_NE(r.value("error", "").find(error), std::string::npos) << r.dump();
     }
     EXPECT_NE(s.command("pattern ramp 0").value("error", "").find("no graphics mode"), std::string::npos) << "'mode modex' was not run";
-    // every byte value in order: LF (10) and CR (13) end three lines, each holding control
-    // characters (backspace and DEL edit them as a terminal's would): three refusals
+    // every byte value in order: Ctrl-C (3) drops the line so far; LF (10) and CR (13) end three
+    // lines, each holding control characters (backspace and DEL edit them as a terminal's
+    // would): three refusals
     std::string every;
     for (int b = 0; b < 256; ++b) every += char(b);
     json first = s.raw(every + "\n");
-    EXPECT_NE(first.value("error", "").find("control character 0x00 at column 1"), std::string::npos) << first.dump();
+    EXPECT_NE(first.value("error", "").find("control character 0x04 at column 1"), std::string::npos) << first.dump();
     EXPECT_NE(s.raw("").value("error", "").find("control character 0x0b at column 1"), std::string::npos);
     EXPECT_NE(s.raw("").value("error", "").find("control character 0x0e at column 1"), std::string::npos);
     EXPECT_TRUE(s.ok("hello")["ok"].get<bool>());
@@ -218,6 +219,8 @@ void expect_fault(const std::string& which, int vector, const std::string& name,
     } catch (const KernelFault& f) {
         const json& r = f.report();
         EXPECT_EQ(r["seq"], 2) << "the fault report is the reply to the command";
+        EXPECT_EQ(r["fault"], true);
+        EXPECT_FALSE(r.contains("event")) << "a line with seq is a reply, never an event too";
         EXPECT_EQ(r["vector"], vector);
         EXPECT_EQ(r["name"], name);
         char want[16];

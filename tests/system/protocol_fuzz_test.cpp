@@ -1,7 +1,11 @@
 // The command server under hostile input: random and mutated command lines and uploads, from a
-// fixed seed, to one booted kernel; after each, a marker command (`load sync-N`, whose error names
-// it) must still be answered, every reply with the next sequence number, and QEMU must still run. `make test` sends a few hundred; `make fuzz-protocol` many more
-// (MODEXLAB_PROTOCOL_FUZZ inputs, MODEXLAB_PROTOCOL_SEED).
+// fixed seed, to one booted kernel, their lines ended by LF, CR or CR LF at random; after each, a
+// marker command (`load sync-N`, whose error names it) must still be answered, every reply with
+// the next sequence number, and QEMU must still run. Every payload carries lines that would
+// answer `leak-N` if run: no reply may ever name one. Long work is interrupted at random points:
+// a reply that says it was not interrupted has done all that was asked, one that was, less.
+// `make test` sends a few hundred inputs; `make fuzz-protocol` many more (MODEXLAB_PROTOCOL_FUZZ
+// inputs, MODEXLAB_PROTOCOL_SEED).
 #include <cstdlib>
 #include <random>
 
@@ -67,6 +71,17 @@ public:
         }
         return s;
     }
+    // A line end: LF, CR or CR LF.
+    std::string end() {
+        static const char* const ENDS[] = {"\n", "\r", "\r\n"};
+        return ENDS[below(3)];
+    }
+    // Lines that would answer `leak-N` if run, put into a payload at random places.
+    std::string with_leaks(std::string payload, uint32_t i) {
+        for (uint32_t n = 1 + below(3), k = 0; k < n; ++k)
+            payload.insert(payload.empty() ? 0 : below(uint32_t(payload.size())), end() + "load leak-" + std::to_string(i) + end());
+        return payload;
+    }
     // An upload's header (one line, sometimes broken when `may_break`: bytes changed, never a line
     // end) for the bytes.
     std::string upload_header(const std::string& payload, bool may_break = true) {
@@ -79,6 +94,20 @@ public:
             header[below(uint32_t(header.size()))] = c == '\n' || c == '\r' ? 'x' : c;
         }
         return header;
+    }
+    // An upload's header the server must refuse, whose length is still right: what follows it is
+    // its payload, never to be run (a name with a control byte, spaces, or too long for a line; a
+    // checksum that is no number; a word too many or too few).
+    std::string refused_header(const std::string& payload) {
+        const std::string n = std::to_string(payload.size());
+        switch (below(6)) {
+        case 0: return "scene " + n + " 0xnothex";
+        case 1: return "scene " + n + " 0 and more";
+        case 2: return "file " + std::string(250 + below(100), 'n') + " " + n + " 0";
+        case 3: return "file na" + std::string(1, char(1 + below(31))) + "me " + n + " 0";
+        case 4: return "file two words " + n + " 0";
+        default: return "file name " + n;
+        }
     }
 private:
     std::mt19937 rng_;
@@ -107,7 +136,9 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
     Fuzzer f(seed);
     const std::string scene = "modexlab-scene 1\ntexture checker 64 64\ntriangle 0 0 1 0 0  300 0 2 64 0  0 200 3 0 64\n";
     const std::string world = "modexlab-scene 2\ntexture t checker 64 64\nmesh m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 t\nobject a m\n";
-    uint32_t replies = 0, uploads = 0, taken = 0;
+    uint32_t replies = 0, uploads = 0, taken = 0, refused = 0, stopped = 0, whole = 0;
+    size_t nasm_loops = 0;  // what a whole selftest checks: each NASM loop once, under its first mapper's name
+    for (const json& m : s.ok("mappers")["mappers"]) nasm_loops += m.value("asm_loop", std::string()) == m["name"].get<std::string>();
     // the bytes after a `ready` (an upload the kernel took): as many as it asked for; after an input
     // sent with its marker (which then went into the upload), a line end and the marker again
     std::string payload, marker;
@@ -120,50 +151,98 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
         bytes.resize(e.value("bytes", size_t(0)), '\n');
         s.send(marker_again ? bytes + "\n" + marker : bytes);
     };
+    // every reply: none names a leak, a payload's line run
+    auto reply = [&](uint32_t i, const std::string& input, const KernelLink::EventFn& events) {
+        json r = s.raw("", events);
+        ++replies;
+        EXPECT_EQ(r.dump().find("leak-"), std::string::npos) << "input " << i << ": a payload's line ran: " << shown(input) << "\n" << r.dump();
+        return r;
+    };
     // reads replies up to the marker's: each has the next seq (the harness checks)
     auto until_marker = [&](uint32_t i, const std::string& input) {
         const std::string name = "'sync-" + std::to_string(i) + "'";
         json r = json::object();
-        for (uint32_t read = 0; read < 64 && r.value("error", "").find(name) == std::string::npos; ++read, ++replies) r = s.raw("", on_event);
+        for (uint32_t read = 0; read < 64 && r.value("error", "").find(name) == std::string::npos; ++read) r = reply(i, input, on_event);
         ASSERT_NE(r.value("error", "").find(name), std::string::npos) << "input " << i << " did not let the marker through: " << shown(input);
         ASSERT_FALSE(s.exit_info()) << "input " << i << ": " << shown(input);
     };
     for (uint32_t i = 0; i < inputs && !HasFatalFailure(); ++i) {
         std::string input;
         payload.clear();
-        marker = "load sync-" + std::to_string(i) + "\n";
-        switch (f.below(5)) {
-        case 0: input = f.line() + "\n"; break;
-        case 1: input = f.mutate(f.line()) + "\n"; break;
+        marker = "load sync-" + std::to_string(i) + f.end();
+        switch (f.below(7)) {
+        case 0: input = f.line() + f.end(); break;
+        case 1: input = f.mutate(f.line()) + f.end(); break;
         case 2: {  // as a protocol client: the header alone, the bytes once the kernel is ready
             const std::string& text = f.chance(50) ? scene : world;
             payload = f.chance(50) ? f.mutate(text) : text;
-            input = f.upload_header(payload) + "\n";
+            if (f.chance(50)) payload = f.with_leaks(payload, i);
+            input = f.upload_header(payload) + f.end();
             ++uploads;
             marker_again = false;
             s.send(input);
-            s.raw("", on_event);  // the header's one reply: the upload's, or why not
-            ++replies;
+            reply(i, input, on_event);  // the header's one reply: the upload's, or why not
             s.send(marker);
             until_marker(i, input);
             continue;
         }
         case 3: {  // an impatient client: the header and the bytes at once, not waiting for `ready`
             payload = f.chance(50) ? scene : world;
-            input = f.upload_header(payload, false) + "\n" + payload;
+            if (f.chance(50)) payload = f.with_leaks(payload, i);
+            input = f.upload_header(payload, false) + f.end() + payload;
             ++uploads;
             impatient = true;
             s.send(input);
-            s.raw("", on_event);  // the upload's reply (its ready event seen on the way)
-            ++replies;
+            reply(i, input, on_event);  // the upload's reply (its ready event seen on the way)
             impatient = false;
             s.send(marker);
             until_marker(i, input);
             continue;
         }
+        case 4: {  // an impatient client whose header is refused: its payload is dropped, never run
+            payload = f.with_leaks(f.chance(50) ? scene : world, i);
+            input = f.refused_header(payload) + f.end() + payload;
+            ++refused;
+            s.send(input);
+            const json r = reply(i, input, on_event);
+            EXPECT_FALSE(r["ok"].get<bool>()) << shown(input);
+            EXPECT_EQ(r.value("discarded", -1), int(payload.size())) << shown(input) << "\n" << r.dump();
+            s.send(marker);
+            until_marker(i, input);
+            continue;
+        }
+        case 5: {  // long work, stopped by the marker's line at a random point (or let finish)
+            const std::string frames = std::to_string(1 + f.below(4));
+            const std::string work[] = {"play " + frames + " fast-affine", "bench " + frames + " fast-affine", "play " + frames + " exact",
+                                        "bench " + frames + " exact", "selftest 1000"};
+            const std::string cmd = work[f.below(f.chance(20) ? 5 : 4)];
+            input = "mode modex" + f.end() + "load cube.scene" + f.end() + cmd + f.end();
+            const int stop_at = int(f.below(5)) - 1;  // -1: with the command; else after that many frames
+            s.send(stop_at < 0 ? input + marker : input);
+            reply(i, input, nullptr), reply(i, input, nullptr);
+            int events = 0;
+            bool sent = stop_at < 0;
+            const json r = reply(i, input, [&](const json& e) {
+                ++events;
+                if (!sent && events > stop_at && e.value("event", "") != "progress") sent = true, s.send(marker);
+            });
+            if (!sent) s.send(marker);
+            ASSERT_TRUE(r["ok"].get<bool>()) << shown(input) << "\n" << r.dump();
+            const bool cut = r["interrupted"].get<bool>();
+            (cut ? stopped : whole) += 1;
+            if (r.contains("frames")) {  // play, bench: one event a whole frame; all asked unless stopped
+                EXPECT_EQ(r["frames"].get<int>(), events) << shown(input) << "\n" << r.dump();
+                EXPECT_EQ(cut, r["frames"].get<int>() < r["frames_asked"].get<int>()) << shown(input) << "\n" << r.dump();
+            } else if (!cut) {  // selftest: every loop, every case, unless stopped
+                EXPECT_EQ(r["loops"].size(), nasm_loops) << shown(input) << "\n" << r.dump();
+                for (const json& l : r["loops"]) EXPECT_EQ(l["cases"], r["cases"]) << shown(input) << "\n" << r.dump();
+            }
+            until_marker(i, input);
+            continue;
+        }
         default: {
             for (uint32_t n = 1 + f.below(40), k = 0; k < n; ++k) input += char(f.below(256));
-            input += "\n";
+            input += f.end();
         }
         }
         // the input and the marker at once
@@ -172,7 +251,11 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
         until_marker(i, input);
     }
     EXPECT_GT(taken, 0u) << "some uploads were taken";
-    std::printf("  %u inputs (%u uploads, %u taken), %u replies, seed %u\n", inputs, uploads, taken, replies, seed);
+    EXPECT_GT(refused, 0u);
+    EXPECT_GT(stopped, 0u) << "some long work was stopped";
+    EXPECT_GT(whole, 0u) << "some long work ran whole";
+    std::printf("  %u inputs (%u uploads, %u taken, %u refused with their payloads; long work %u stopped, %u whole), %u replies, seed %u\n",
+                inputs, uploads, taken, refused, stopped, whole, replies, seed);
 }
 
 }  // namespace

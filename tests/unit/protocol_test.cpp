@@ -125,7 +125,7 @@ TEST(Qmp, TimesOutWhenQemuIsSilent) {
 TEST(KernelLine, Classification) {
     EXPECT_EQ(classify_kernel_line("").kind, KernelLine::Kind::Blank);
     EXPECT_EQ(classify_kernel_line(R"({"seq":1,"ok":true})").kind, KernelLine::Kind::Reply);
-    EXPECT_EQ(classify_kernel_line(R"({"seq":2,"ok":false,"event":"fault","vector":6})").kind, KernelLine::Kind::Fault);
+    EXPECT_EQ(classify_kernel_line(R"({"seq":2,"ok":false,"fault":true,"vector":6})").kind, KernelLine::Kind::Fault);
     EXPECT_EQ(classify_kernel_line(R"({"event":"boot"})").kind, KernelLine::Kind::BootEvent);
     EXPECT_EQ(classify_kernel_line(R"({"event":"panic","error":"x"})").kind, KernelLine::Kind::PanicEvent);
     for (const char* bad : {"garbage", R"({"seq":1})", R"({"seq":"1","ok":true})", R"({"seq":-1,"ok":true})",
@@ -169,7 +169,7 @@ TEST(KernelLink, FaultPanicRebootAndSilence) {
     {
         Pair p;
         KernelLink k{LineChannel(p.ours)};
-        p.say("{\"seq\":1,\"ok\":false,\"error\":\"CPU exception #UD\",\"event\":\"fault\",\"vector\":6,\"eip\":\"0x00100164\"}\n");
+        p.say("{\"seq\":1,\"ok\":false,\"error\":\"CPU exception #UD\",\"fault\":true,\"vector\":6,\"eip\":\"0x00100164\"}\n");
         try {
             k.request("fault", 1s);
             FAIL();
@@ -187,7 +187,7 @@ TEST(KernelLink, FaultPanicRebootAndSilence) {
     {
         Pair p;
         KernelLink k{LineChannel(p.ours)};
-        p.say("noise{\"seq\":1,\"ok\":false,\"event\":\"fault\",\"vector\":13}\n");
+        p.say("noise{\"seq\":1,\"ok\":false,\"fault\":true,\"vector\":13}\n");
         EXPECT_THROW(k.wait_boot(1s), KernelFault) << "a fault before the boot line";
     }
     {
