@@ -122,23 +122,25 @@ json Session::wait_event(const std::string& event) {
     return guarded([&] { return link_.wait_event(event, options_.command_timeout); });
 }
 
-RgbImage Session::screendump(const std::string& name) {
-    std::string path = run_dir_ + "/" + name + ".png";
+RgbImage Session::screendump(const std::string& name, bool kept) {
+    const std::string format = kept ? "png" : "ppm", path = run_dir_ + "/" + name + "." + format;
     if (options_.emulator != Emulator::Qemu) fail("screendump " + name + ": only QEMU has QMP (read pages back instead)");
     try {
         qmp_.execute("stop");
-        qmp_.execute("screendump", {{"filename", path}, {"format", "png"}});
+        qmp_.execute("screendump", {{"filename", path}, {"format", format}});
         qmp_.execute("cont");
-        return load_image(path);
+        RgbImage image = load_image(path);
+        if (!kept) std::filesystem::remove(path);
+        return image;
     } catch (const HarnessError& e) {
         fail(std::string("screendump ") + name + ": " + e.what());
     }
 }
 
-IndexImage Session::screenshot(const std::string& name, ScreenMode mode, const raster::Palette& palette) {
-    RgbImage dump = screendump(name);
+IndexImage Session::screenshot(const std::string& name, ScreenMode mode, const raster::Palette& palette, bool kept) {
+    RgbImage dump = screendump(name, kept);
     DecodeResult d = decode_screendump(dump, palette, mode);
-    if (!d.ok) fail("screendump " + run_dir_ + "/" + name + ".png: " + d.error);
+    if (!d.ok) fail("screendump " + run_dir_ + "/" + name + (kept ? ".png: " : ": ") + d.error);
     return d.image;
 }
 

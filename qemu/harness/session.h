@@ -69,10 +69,12 @@ public:
     // The next event the kernel sends unasked, which must be `event` (KernelLink::wait_event).
     json wait_event(const std::string& event);
 
-    // QMP stop, screendump (PNG, saved as RUN_DIR/NAME.png), cont.
-    RgbImage screendump(const std::string& name);
+    // QMP stop, screendump (PNG, saved as RUN_DIR/NAME.png), cont. Not `kept`: a PPM, read and
+    // removed, which spares QEMU the compression (for a comparison that saves its pictures only
+    // where they differ).
+    RgbImage screendump(const std::string& name, bool kept = true);
     // screendump, decoded to palette indices for `mode`; throws when it does not decode.
-    IndexImage screenshot(const std::string& name, ScreenMode mode, const raster::Palette& palette);
+    IndexImage screenshot(const std::string& name, ScreenMode mode, const raster::Palette& palette, bool kept = true);
     // `readback PAGE`, decoded and checked.
     IndexImage readback(int page);
     // `readback PAGE crc`: the CRC-32 of the page's indices alone (as crc32_of computes a picture's).

@@ -99,7 +99,7 @@ TEST(Render, KernelPicturesEqualTheHostsForEveryMapperOnEveryScene) {
             EXPECT_EQ(r["polygons"], host_stats.polygons) << mapper.name << " " << surface;
             s.ok("flip " + std::to_string(page));
             std::string stem = sc.name + "-" + mapper.name + "-" + surface;
-            IndexImage got = s.screenshot(stem, MODE_X, default_palette());
+            IndexImage got = s.screenshot(stem, MODE_X, default_palette(), false);  // (write_mismatch keeps a mismatch's pictures)
             Comparison c = compare(got, want);
             EXPECT_TRUE(c.equal()) << stem << ": " << c.summary() << "\n" << write_mismatch(s.run_dir(), stem, got, want, default_palette());
             if (std::string(mapper.name) == "exact") {  // and so the kernel's exact picture is the reference's
