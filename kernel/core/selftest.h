@@ -79,11 +79,11 @@ LoopCheck check_cases(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cas
         CheckWindow w = make(r, a);
         Args b = a;
         move_to_b(b, a, buf);
-        for (size_t i = w.lo; i < w.hi; ++i) buf.a[i] = buf.b[i] = CHECK_GUARD;
+        __builtin_memset(buf.a + w.lo, CHECK_GUARD, w.hi - w.lo);
+        __builtin_memset(buf.b + w.lo, CHECK_GUARD, w.hi - w.lo);
         m.twin(check_block(a));
         other(check_block(b));
-        bool same = same_results(a, b);
-        for (size_t i = w.lo; i < w.hi && same; ++i) same = buf.a[i] == buf.b[i];
+        const bool same = same_results(a, b) && __builtin_memcmp(buf.a + w.lo, buf.b + w.lo, w.hi - w.lo) == 0;
         ++result.cases;
         result.pixels += w.pixels;
         if (!same && result.mismatches++ == 0) result.first_mismatch = c;
