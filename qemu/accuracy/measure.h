@@ -96,8 +96,9 @@ public:
     raster::AccuracyMetrics measure(const raster::Vertex* v, int n, const raster::Texture& tex, bool* drawn = nullptr,
                                     const PixelFn& pixel = {}, raster::RenderStats* stats = nullptr);
 
-private:
     struct Parts;
+
+private:
     const raster::Mapper& mapper_;
     raster::Axis axis_;
     raster::Budget budget_;

@@ -106,8 +106,9 @@ TEST(Render, KernelPicturesEqualTheHostsForEveryMapperOnEveryScene) {
                 auto ref = render_reference(host);
                 EXPECT_TRUE(compare(got, IndexImage{ref->view.width, ref->view.height, ref->index}).equal()) << stem << " vs the reference";
             }
-            // read back too: every page by its checksum, the first scene's whole (the encoding's path)
-            if (i == 0) {
+            // read back too: every page by its checksum, the first scene's first mappers whole (the
+            // encoding's path, through each surface)
+            if (i == 0 && m < 3) {
                 Comparison rb = compare(s.readback(page), want);
                 EXPECT_TRUE(rb.equal()) << stem << " readback: " << rb.summary();
             } else {

@@ -28,9 +28,11 @@ TEST(Video, EveryPatternInEveryPageMatchesTheHostRendering) {
             IndexImage dump = s.screenshot(stem, MODE_X, default_palette());
             Comparison by_dump = compare(dump, want);
             EXPECT_TRUE(by_dump.equal()) << by_dump.summary() << "\n" << write_mismatch(s.run_dir(), stem, dump, want, default_palette());
-            Comparison by_readback = compare(s.readback(page), want);
-            EXPECT_TRUE(by_readback.equal()) << "readback: " << by_readback.summary();
-            EXPECT_EQ(s.readback_crc(page), crc32_of(want)) << "readback crc";
+            if (i == 0) {  // the encoding's path, once a page; the checksum for every pattern
+                Comparison by_readback = compare(s.readback(page), want);
+                EXPECT_TRUE(by_readback.equal()) << "readback: " << by_readback.summary();
+            }
+            EXPECT_EQ(s.readback_crc(page), crc32_of(want)) << "readback crc: " << compare(s.readback(page), want).summary();
         }
     }
 }
