@@ -10,6 +10,7 @@
 #include <random>
 
 #include "kernel/lib/encode.h"
+#include "kernel/lib/protocol.h"
 #include "tests/system/system.h"
 
 namespace {
@@ -35,6 +36,18 @@ const std::vector<std::vector<std::string>> COMMANDS = {
     {"selftest", "1", "2", "0", "100000"},
     {"vbe", "on", "off"},
 };
+
+// Whether the server, reading `input` as lines (the kernel's own line assembler), would run a
+// command that ends the session: a mutation can make one (a CR inside "default" leaves "fault").
+bool ends_session(const std::string& input) {
+    lib::LineAssembler lines;
+    for (char c : input) {
+        if (lines.feed(c) != lib::LineAssembler::Result::Line) continue;
+        lib::StrView words[2];
+        if (lib::split_words(lines.line(), words, 2) && (words[0].equals("fault") || words[0].equals("exit"))) return true;
+    }
+    return false;
+}
 
 class Fuzzer {
 public:
@@ -76,6 +89,12 @@ public:
         static const char* const ENDS[] = {"\n", "\r", "\r\n"};
         return ENDS[below(3)];
     }
+    // A header's line end before `payload`: CR alone only where the payload does not begin with LF
+    // (an LF right after a header's CR belongs to its line end: docs/protocol.md).
+    std::string end_before(const std::string& payload) {
+        const std::string e = end();
+        return e == "\r" && !payload.empty() && payload[0] == '\n' ? "\r\n" : e;
+    }
     // Lines that would answer `leak-N` if run, put into a payload at random places.
     std::string with_leaks(std::string payload, uint32_t i) {
         for (uint32_t n = 1 + below(3), k = 0; k < n; ++k)
@@ -104,7 +123,12 @@ public:
         case 0: return "scene " + n + " 0xnothex";
         case 1: return "scene " + n + " 0 and more";
         case 2: return "file " + std::string(250 + below(100), 'n') + " " + n + " 0";
-        case 3: return "file na" + std::string(1, char(1 + below(31))) + "me " + n + " 0";
+        case 3: {  // a control byte the line reader keeps and refuses: not a line end, tab, backspace or Ctrl-C
+            char c;
+            do c = char(1 + below(31));
+            while (c == '\n' || c == '\r' || c == '\t' || c == '\b' || c == 0x03);
+            return "file na" + std::string(1, c) + "me " + n + " 0";
+        }
         case 4: return "file two words " + n + " 0";
         default: return "file name " + n;
         }
@@ -138,7 +162,8 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
     const std::string world = "modexlab-scene 2\ntexture t checker 64 64\nmesh m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 t\nobject a m\n";
     uint32_t replies = 0, uploads = 0, taken = 0, refused = 0, stopped = 0, whole = 0;
     size_t nasm_loops = 0;  // what a whole selftest checks: each NASM loop once, under its first mapper's name
-    for (const json& m : s.ok("mappers")["mappers"]) nasm_loops += m.value("asm_loop", std::string()) == m["name"].get<std::string>();
+    const json listed = s.ok("mappers");  // (kept: a range-for over a temporary's member would dangle)
+    for (const json& m : listed["mappers"]) nasm_loops += m.value("asm_loop", std::string()) == m["name"].get<std::string>();
     // the bytes after a `ready` (an upload the kernel took): as many as it asked for; after an input
     // sent with its marker (which then went into the upload), a line end and the marker again
     std::string payload, marker;
@@ -151,18 +176,28 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
         bytes.resize(e.value("bytes", size_t(0)), '\n');
         s.send(marker_again ? bytes + "\n" + marker : bytes);
     };
-    // every reply: none names a leak, a payload's line run
+    // every reply: none is a payload's line run (`load leak-N`; a parser's error may quote the bytes
+    // of an upload it took)
     auto reply = [&](uint32_t i, const std::string& input, const KernelLink::EventFn& events) {
         json r = s.raw("", events);
         ++replies;
-        EXPECT_EQ(r.dump().find("leak-"), std::string::npos) << "input " << i << ": a payload's line ran: " << shown(input) << "\n" << r.dump();
+        EXPECT_FALSE(r.value("cmd", "") == "load" && r.dump().find("leak-") != std::string::npos)
+            << "input " << i << ": a payload's line ran: " << shown(input) << "\n" << r.dump();
         return r;
     };
     // reads replies up to the marker's: each has the next seq (the harness checks)
     auto until_marker = [&](uint32_t i, const std::string& input) {
-        const std::string name = "'sync-" + std::to_string(i) + "'";
+        std::string name = "'sync-" + std::to_string(i) + "'";
         json r = json::object();
-        for (uint32_t read = 0; read < 64 && r.value("error", "").find(name) == std::string::npos; ++read) r = reply(i, input, on_event);
+        for (uint32_t read = 0; read < 64 && r.value("error", "").find(name) == std::string::npos; ++read) {
+            r = reply(i, input, on_event);
+            // a random line read as a refused upload header drops what follows, the marker perhaps:
+            // a second marker, sent after that reply, is the one awaited
+            if (r.value("discarded", 0) > 0) {
+                name = "'resync-" + std::to_string(i) + "'";
+                s.send("load resync-" + std::to_string(i) + "\n");
+            }
+        }
         ASSERT_NE(r.value("error", "").find(name), std::string::npos) << "input " << i << " did not let the marker through: " << shown(input);
         ASSERT_FALSE(s.exit_info()) << "input " << i << ": " << shown(input);
     };
@@ -177,7 +212,7 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
             const std::string& text = f.chance(50) ? scene : world;
             payload = f.chance(50) ? f.mutate(text) : text;
             if (f.chance(50)) payload = f.with_leaks(payload, i);
-            input = f.upload_header(payload) + f.end();
+            input = f.upload_header(payload) + f.end_before(payload);
             ++uploads;
             marker_again = false;
             s.send(input);
@@ -189,7 +224,7 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
         case 3: {  // an impatient client: the header and the bytes at once, not waiting for `ready`
             payload = f.chance(50) ? scene : world;
             if (f.chance(50)) payload = f.with_leaks(payload, i);
-            input = f.upload_header(payload, false) + f.end() + payload;
+            input = f.upload_header(payload, false) + f.end_before(payload) + payload;
             ++uploads;
             impatient = true;
             s.send(input);
@@ -201,11 +236,11 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
         }
         case 4: {  // an impatient client whose header is refused: its payload is dropped, never run
             payload = f.with_leaks(f.chance(50) ? scene : world, i);
-            input = f.refused_header(payload) + f.end() + payload;
+            input = f.refused_header(payload) + f.end_before(payload) + payload;
             ++refused;
             s.send(input);
             const json r = reply(i, input, on_event);
-            EXPECT_FALSE(r["ok"].get<bool>()) << shown(input);
+            EXPECT_FALSE(r.value("ok", true)) << shown(input) << "\n" << r.dump();
             EXPECT_EQ(r.value("discarded", -1), int(payload.size())) << shown(input) << "\n" << r.dump();
             s.send(marker);
             until_marker(i, input);
@@ -227,7 +262,7 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
                 if (!sent && events > stop_at && e.value("event", "") != "progress") sent = true, s.send(marker);
             });
             if (!sent) s.send(marker);
-            ASSERT_TRUE(r["ok"].get<bool>()) << shown(input) << "\n" << r.dump();
+            ASSERT_TRUE(r.value("ok", false)) << shown(input) << "\n" << r.dump();
             const bool cut = r["interrupted"].get<bool>();
             (cut ? stopped : whole) += 1;
             if (r.contains("frames")) {  // play, bench: one event a whole frame; all asked unless stopped
@@ -245,6 +280,7 @@ TEST(ProtocolFuzz, TheServerAnswersAfterEveryRandomInput) {
             input += f.end();
         }
         }
+        if (ends_session(input)) input = "hello" + f.end();
         // the input and the marker at once
         marker_again = true;
         s.send(input + marker);
