@@ -54,10 +54,7 @@ inline double estimate_cost(const MapperCost& c, const PolygonSize& s) { return 
 // Whether auto may choose the mapper: not auto itself, not one that picks its own walker
 // (Mapper::own_walker: auto picks the walker of each of its candidates itself, and fast-oriented-1
 // draws what fast-adaptive-1 does along one of them), and a derived bound (not `unbounded`, the
-// placeholder a new mapper's row starts with). (Tried, 2026-11-26: fast-oriented-1 as a candidate
-// priced along its own walker by its own cost row took the corridor at budget 1 from 10.0 to 9.6
-// draw instructions a pixel and every other scene 0.5 to 1.6% the other way: one candidate more
-// to price and ask.)
+// placeholder a new mapper's row starts with).
 bool choosable(const Mapper& m);
 // The mappers auto's choices draw with: the choosable ones, and fast-oriented-1, which draws its
 // oriented candidate (ORIENTED_GATE).
@@ -148,10 +145,8 @@ constexpr double CHOICE_COST = 1800;
 // some 620 pixels, 25 lines) the search cost about 4000 instructions a facet beyond the oriented
 // candidate's path and its choices saved about 1260 in the loops, while the least's gap there is
 // about 9000; on the rotozoom's quad (40000 pixels, a gap of about 285000) it found fast-affine at
-// less than two thirds of the oriented price (make bench, QEMU icount, 2026-11-26: the ball at 1
-// went from 34.4 to 31.2 draw instructions a pixel, no other row of the six demo scenes by more
-// than 0.5%). At four and above none: there the search finds fast-affine and fast-table on much of
-// the ball, which fast-adaptive-2 unsearched lost.
+// less than two thirds of the oriented price. At four and above none: there the search finds
+// fast-affine and fast-table on much of the ball, which fast-adaptive-2 unsearched lost.
 constexpr double ORIENTED_GATE = 20000;
 
 // How much cheaper the certain candidate's setup a polygon may be than the enveloped mapper's for

@@ -87,15 +87,15 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
 // the reference's rounding and the range of t from those (docs/accuracy.md, "fast-adaptive's
 // certificate"). Then fast_adaptive_bound<QUARTERS> is within B (tested), so auto may take the
 // mapper unasked. The caller's to ensure fast-adaptive-B takes the texture (mapper_accepts: what
-// choose_mapper's candidates do). About 550 instructions (32-bit host, callgrind) against the
-// spread's 1100.
+// choose_mapper's candidates do). What it costs beside the spread: docs/accuracy.md, the same
+// section.
 template <int QUARTERS>
 bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis);
-// The certificate's part that every chord length shares (fast_certificate, about 450 instructions),
+// The certificate's part that every chord length shares (fast_certificate),
 // and from it fast-adaptive-B's (above) and fast-subdiv-N's (fast_chords_bound): at least the
 // relative chords bound that segments_bound's whole bound of N-pixel chords along `axis` returns
 // where within a budget (fast-constant-depth: N = 512), at the least Q and the most rounding the
-// spread could find (about 130 instructions, callgrind); NO_BOUND where the certificate does not hold.
+// spread could find; NO_BOUND where the certificate does not hold.
 struct FastCertificate {
     bool holds = false;        // Q_min above 0, and 16.16 holds the range of t without steps (chords_fit's first test)
     bool terms_within = false; // and Q's terms within 2^26 of its least (fast-adaptive's whole bound asks it)

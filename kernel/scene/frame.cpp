@@ -440,8 +440,7 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
             for (int a = 0; a < 2; ++a) certain[o][a] = Drawer::of(*plans[o].certain, textures.objects[o], Axis(a), target, &stats, variant);
         probe_lap(stats.probe, Phase::Choose);  // (the plans)
     }
-    // (a loop of its own for auto: a single mapper's carries none of its branches; the mesh by fast-affine
-    // at 115.8 draw instructions a pixel, from 116.4, make bench under QEMU icount)
+    // (a loop of its own for auto: a single mapper's carries none of its branches)
     if (!mapper.chooses) {
         each_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
             const Drawer& d = drawers[object];
