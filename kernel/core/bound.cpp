@@ -477,8 +477,8 @@ double spread_chords_bound(PolygonSpread& p, const PolygonSetup& s, Axis axis, d
     // By bands of Q (each twice the last): a pixel where Q lies in [q_i, q_i+1] is on a chord whose
     // ends are drawn pixels at most h away along the axis, so Q along the chord is at least
     // max(Q_min, q_i - h |Q_a|); its footprint at least the least |K| over q_i+1^2. The largest over
-    // the bands: the curvature and the footprint are no longer taken at opposite ends of the
-    // polygon's depth (a wall 50 times deeper at one end than the other: 2500 times looser).
+    // the bands, so that the curvature and the footprint are never taken at opposite ends of the
+    // polygon's depth (on a wall 50 times deeper at one end than the other, 2500 times looser).
     double worst = 0;
     for (double q_i = p.q_min; q_i < p.q_max && worst < whole;) {
         const double next = q_i * 2 < p.q_max ? q_i * 2 : p.q_max, reach = q_i - h * qa;

@@ -50,8 +50,8 @@ struct Frame {
 };
 
 // A point in clip space with its texture coordinates in texels. No default member initialisers:
-// build_frame keeps arrays of them on the stack for every face, and zeroing those cost 2.7 million
-// instructions a frame of the mesh in the kernel (40% of its geometry), for values never read.
+// build_frame keeps arrays of them on the stack for every face, and zeroing those would take a large
+// share of the geometry's time for values never read.
 struct ClipVertex {
     double x, y, w;  // w: the depth along the view direction
     double u, v;
