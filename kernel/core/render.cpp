@@ -1,4 +1,5 @@
-// The draw loop: one setup per polygon, one mapper call per span.
+// Drawing a polygon (render.h): a mapper's own driver, or setup, the walker and the mapper per span;
+// auto's choice before it; a screen-space scene polygon by polygon.
 #include "kernel/core/render.h"
 
 namespace raster {
