@@ -84,4 +84,4 @@ if [ "${YES:-0}" != 1 ]; then
 fi
 dd if="$iso" of="$target" bs=4M conv=fsync status=progress
 sync
-echo "make usb: $device written; it boots the ISO (README, 'Booting a real PC from a USB stick')"
+echo "make usb: $device written; it boots the ISO (docs/real-pc.md)"
