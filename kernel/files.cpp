@@ -33,11 +33,17 @@ size_t g_upload_used = 0;
 
 bool byte_waiting(void*) { return serial::byte_ready(); }
 
-// The next byte on COM1, waiting up to `ms` for it; false when none came.
-bool next_byte(uint32_t ms, uint8_t* out) {
-    if (!serial::byte_ready() && !timer::wait_ms_or(ms, byte_waiting, nullptr)) return false;
-    *out = serial::read_byte();
-    return true;
+// The next byte of an upload's payload on COM1, waiting up to `ms` for each; false when none came.
+// With *lead_lf (the header ended by CR), an LF coming first is the header's line end, skipped;
+// *lead_lf is cleared by the first byte.
+bool next_payload_byte(uint32_t ms, bool* lead_lf, uint8_t* out) {
+    for (;;) {
+        if (!serial::byte_ready() && !timer::wait_ms_or(ms, byte_waiting, nullptr)) return false;
+        *out = serial::read_byte();
+        const bool header_lf = *lead_lf && *out == '\n';
+        *lead_lf = false;
+        if (!header_lf) return true;
+    }
 }
 
 void copy_name(char* out, const char* in, size_t n) {
@@ -102,14 +108,11 @@ const File* find(lib::StrView name) {
 }
 
 bool receive(uint8_t* out, size_t length, uint32_t crc32, bool lead_lf, lib::Fmt* error) {
-    for (size_t i = 0; i < length;) {
-        uint8_t byte;
-        if (!next_byte(BYTE_TIMEOUT_MS, &byte)) {
+    for (size_t i = 0; i < length; ++i) {
+        if (!next_payload_byte(BYTE_TIMEOUT_MS, &lead_lf, &out[i])) {
             error->s("upload stalled: ").u(uint32_t(i)).s(" of ").u(uint32_t(length)).s(" bytes arrived");
             return false;
         }
-        if (!(lead_lf && i == 0 && byte == '\n')) out[i++] = byte;
-        lead_lf = false;
     }
     uint32_t got = lib::crc32(0, out, length);
     if (got != crc32) {
@@ -121,8 +124,7 @@ bool receive(uint8_t* out, size_t length, uint32_t crc32, bool lead_lf, lib::Fmt
 
 size_t discard(size_t length, bool lead_lf) {
     size_t i = 0;
-    for (uint8_t byte; i < length && next_byte(DISCARD_GAP_MS, &byte); lead_lf = false)
-        if (!(lead_lf && byte == '\n')) ++i;
+    for (uint8_t byte; i < length && next_payload_byte(DISCARD_GAP_MS, &lead_lf, &byte);) ++i;
     return i;
 }
 
