@@ -276,7 +276,8 @@ std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const Mapper& mapp
 }
 
 // A meter's pictures: measure() leaves them cleared, so a meter that ends hands them to the next
-// one of its thread (the same layout), which saves clearing megabytes a frame.
+// one of its thread (the same layout), which saves clearing megabytes a frame. Its stand-ins are
+// the meter's own shortcut into shared_stand_ins, dropped at its end: that cache alone keeps them.
 struct PolygonMeter::Parts {
     Picture ref{SCREEN_WIDTH, SCREEN_HEIGHT};  // one polygon at a time
     std::vector<HostSurface> scratch;
@@ -302,6 +303,7 @@ PolygonMeter::PolygonMeter(const Mapper& mapper, Axis axis, const Budget& budget
 
 PolygonMeter::~PolygonMeter() {
     if (!parts_) return;
+    parts_->stand_ins.clear();
     if (spare_parts.size() == SPARE_PARTS) spare_parts.erase(spare_parts.begin());
     spare_parts.push_back(std::move(parts_));
 }
