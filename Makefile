@@ -74,8 +74,6 @@ KERNEL_ASM := boot/entry.asm boot/isr.asm $(LOOP_ASM)
 PORTABLE_DIRS := kernel/core kernel/mappers kernel/scene
 KERNEL_CXX := $(wildcard kernel/*.cpp kernel/lib/*.cpp kernel/server/*.cpp $(PORTABLE_DIRS:%=%/*.cpp) drivers/*.cpp)
 KERNEL_OBJS := $(KERNEL_ASM:%=$(KBUILD)/%.o) $(KERNEL_CXX:%=$(KBUILD)/%.o)
-# asm/NAME.asm includes the argument-block layouts of its loops, NAME.inc, generated from the
-# offsets listed in kernel/mappers/NAME.cpp (kernel/core/asm_offsets.h)
 
 # The built-in files: the demo scenes, and the freedoom scene's textures made at build time from
 # Debian's freedoom WAD (not committed). Each is named by its path under scenes/ or build/scenes/.
@@ -204,14 +202,22 @@ $(KBUILD)/%.cpp.o: %.cpp | deps
 	$(call say,KCXX,$<)
 	$(Q)$(KCXX) $(KCXXFLAGS) -c $< -o $@
 
-$(KBUILD)/gen/%.inc: kernel/mappers/%.cpp | deps
-	@mkdir -p $(@D)
-	$(call say,GEN,$@)
-	$(Q)$(KCXX) $(KCXXFLAGS_NODEP) -DMODEXLAB_OFFSETS -MMD -MP -MF $@.d -MT $@ -S -o - $< \
-		| sed -n 's/.*@@@ \([A-Za-z0-9_]*\) \([0-9]*\).*/%define \1 \2/p' > $@
-	@test -s $@ || { echo "$@: no offsets generated (kernel/mappers/$*.cpp lists them under MODEXLAB_OFFSETS)"; rm -f $@; exit 1; }
+# asm/NAME.asm reads the layouts of gen/NAME.inc, made from the offsets its C++ home lists under
+# MODEXLAB_OFFSETS: kernel/mappers/NAME.cpp for a family, kernel/core/NAME.cpp for core's types
+# (CORE_INC, which every loop may read)
+CORE_INC := $(addprefix $(KBUILD)/gen/,setup.inc walk.inc surface.inc bound.inc)
+define OFFSETS_RULE
+$(KBUILD)/gen/%.inc: $(1)/%.cpp | deps
+	@mkdir -p $$(@D)
+	$$(call say,GEN,$$@)
+	$$(Q)$$(KCXX) $$(KCXXFLAGS_NODEP) -DMODEXLAB_OFFSETS -MMD -MP -MF $$@.d -MT $$@ -S -o - $$< \
+		| sed -n 's/.*@@@ \([A-Za-z0-9_]*\) \([0-9]*\).*/%define \1 \2/p' > $$@
+	@test -s $$@ || { echo "$$@: no offsets generated ($(1)/$$*.cpp lists them under MODEXLAB_OFFSETS)"; rm -f $$@; exit 1; }
+endef
+$(eval $(call OFFSETS_RULE,kernel/mappers))
+$(eval $(call OFFSETS_RULE,kernel/core))
 
-$(LOOP_ASM:asm/%.asm=$(KBUILD)/asm/%.asm.o): $(KBUILD)/asm/%.asm.o: $(KBUILD)/gen/%.inc
+$(LOOP_ASM:asm/%.asm=$(KBUILD)/asm/%.asm.o): $(KBUILD)/asm/%.asm.o: $(KBUILD)/gen/%.inc $(CORE_INC)
 
 $(KBUILD)/%.asm.o: %.asm | deps
 	@mkdir -p $(@D)

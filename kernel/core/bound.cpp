@@ -1,6 +1,10 @@
 // Spans as lines of the exact mapping, and the extremes the bounds need along them.
 #include "kernel/core/bound.h"
 
+#if defined(MODEXLAB_OFFSETS)
+#include "kernel/core/asm_offsets.h"
+#endif
+
 namespace raster {
 
 namespace {
@@ -546,5 +550,13 @@ double footprint_error(double du, double dv, double footprint) {
     double e = larger(texels(du), texels(dv));
     return e / larger(1.0, footprint);
 }
+
+#if defined(MODEXLAB_OFFSETS)
+// The envelope's limits, for the fast mappers' enveloped triangle (asm_offsets.h).
+void bound_offsets() {
+    ASM_FIELDS(ENV, EnvelopeLimits, area2, extent_x, extent_y)
+    ASM_CONSTANT(ENVELOPE_REACH_SUBPIXELS, ENVELOPE_REACH * SUBPIXEL_ONE);
+}
+#endif
 
 }  // namespace raster

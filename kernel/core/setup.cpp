@@ -1,6 +1,10 @@
 // Polygon setup: orientation, repeated-vertex removal, range and convexity checks, edges, planes.
 #include "kernel/core/setup.h"
 
+#if defined(MODEXLAB_OFFSETS)
+#include "kernel/core/asm_offsets.h"
+#endif
+
 namespace raster {
 
 namespace {
@@ -239,5 +243,19 @@ bool covers(const PolygonSetup& s, int32_t x, int32_t y) {
         if (edge_function(s.edges[i], px, py) < s.edges[i].threshold) return false;
     return true;
 }
+
+#if defined(MODEXLAB_OFFSETS)
+// The layouts asm/setup.asm and the fast mappers' one-call triangle read (asm_offsets.h).
+void setup_offsets() {
+    ASM_FIELDS(VERT, Vertex, x, y, u, v)
+    ASM_SIZE(VERT_SIZE, Vertex);
+    ASM_FIELDS(CLIP, ClipRect, x0, y0, x1, y1)
+    ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)
+    ASM_SIZE(EDGE_SIZE, Edge);
+    ASM_FIELDS(PLANE, Plane, a0, gx, gy)
+    ASM_FIELDS(FIX, FixedPlane, x0, y0, at, dx, dy)
+    ASM_FIELDS(PS, PolygonSetup, edge_count, edges, area2, ref_x, ref_y, min_x, min_y, max_x, max_y, u, v, u_fx, v_fx)
+}
+#endif
 
 }  // namespace raster

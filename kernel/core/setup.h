@@ -127,7 +127,7 @@ extern "C" int setup_triangle_affine_asm(const Vertex* in, PolygonSetup* out);
 // convexity, builds the edges and the planes. Any input is safe: on anything but Ok, `out` must
 // not be drawn. Where the NASM loops are built in (the kernel, the 32-bit host programs), a
 // triangle in range with affine planes only (the fast mappers' on a frame's uncut faces) goes
-// through setup_triangle_affine_asm (asm/fast.asm), whose twin setup_polygon_cpp is: it writes the
+// through setup_triangle_affine_asm (asm/setup.asm), whose twin setup_polygon_cpp is: it writes the
 // same fields with the same bits, or returns 0 and leaves the triangle to C++. (Inline: the fast
 // drivers' calls, their planes and input known, go straight to the NASM.)
 inline SetupStatus setup_polygon(const Vertex* vertices, int count, PolygonSetup* out, SetupPlanes planes = PLANES_ALL, Input input = Input::Any) {

@@ -1,6 +1,10 @@
 // Targets and the linear/planar conversions.
 #include "kernel/core/surface.h"
 
+#if defined(MODEXLAB_OFFSETS)
+#include "kernel/core/asm_offsets.h"
+#endif
+
 namespace raster {
 
 Target linear_target(uint8_t* pixels, int32_t width, int32_t height, int32_t pitch) {
@@ -30,5 +34,12 @@ void linear_from_planar(const uint8_t* planes, uint8_t* linear) {
     for (int32_t plane = 0; plane < 4; ++plane)
         for (int32_t i = 0; i < PLANE_BYTES; ++i) linear[4 * i + plane] = planes[plane * PLANE_BYTES + i];
 }
+
+#if defined(MODEXLAB_OFFSETS)
+// The target's layout, for the NASM loops that draw into one (asm_offsets.h).
+void surface_offsets() {
+    ASM_FIELDS(TGT, Target, base, pitch, clip, plane_bytes, select_plane, ctx)
+}
+#endif
 
 }  // namespace raster

@@ -1,6 +1,10 @@
 // Edge walking: the bounds of each line from the edge functions, stepped exactly in integers.
 #include "kernel/core/walk.h"
 
+#if defined(MODEXLAB_OFFSETS)
+#include "kernel/core/asm_offsets.h"
+#endif
+
 // Why it works. On line L (row y, or column x) each edge's function is linear in the minor
 // coordinate m: E = A*m + B(L), with B(L+1) = B(L) + C. Inside is E >= t, so an edge with A > 0
 // bounds m from below by ceil((t - B)/A), one with A < 0 from above by floor((B - t)/-A), and one
@@ -283,5 +287,14 @@ template void EdgeWalker::build<int32_t>(const PolygonSetup&, int32_t, int32_t, 
 template void EdgeWalker::build<int64_t>(const PolygonSetup&, int64_t, int64_t, int64_t, int64_t);
 template void EdgeWalker::build_triangle<true>(const PolygonSetup&, int32_t, int32_t, int32_t, int32_t);
 template void EdgeWalker::build_triangle<false>(const PolygonSetup&, int32_t, int32_t, int32_t, int32_t);
+
+#if defined(MODEXLAB_OFFSETS)
+// The layouts asm/walk.asm and the fast mappers' run loops read (asm_offsets.h).
+void walk_offsets() {
+    ASM_FIELDS(BOUND, EdgeBound, first, last, q, dq, r, dr, d)
+    ASM_SIZE(BOUND_SIZE, EdgeBound);
+    ASM_FIELDS(TRI, TriangleRowsArgs, edges, first, last, origin_x, origin_y, lower, upper)
+}
+#endif
 
 }  // namespace raster

@@ -39,7 +39,7 @@ struct EdgeBound {
 };
 
 // A small triangle's row bounds, as EdgeWalker builds them in 32 bits (its box under 64 pixels a
-// side): the block asm/fast.asm's triangle_rows_asm takes. The chains come back in `lower` and
+// side): the block asm/walk.asm's triangle_rows_asm takes. The chains come back in `lower` and
 // `upper` (room for three each: two bounds and the sentinel), in order of first line.
 struct TriangleRowsArgs {
     const Edge* edges;           // the setup's three

@@ -873,28 +873,15 @@ LoopCheck check_fast_column_run(const Mapper& m, LoopFn other, uint32_t seed, ui
 }
 
 #if defined(MODEXLAB_OFFSETS)
-// The block layouts asm/fast.asm reads (core/asm_offsets.h).
+// The block layouts of this family asm/fast.asm reads (core/asm_offsets.h); core's types' come
+// from kernel/core (setup.cpp, walk.cpp, surface.cpp, bound.cpp).
 void fast_offsets() {
     ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16, v_16_16,
                u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside, doubled, u_mask, v_mask, block_pitch)
-    ASM_FIELDS(BOUND, EdgeBound, first, last, q, dq, r, dr, d)
-    ASM_SIZE(BOUND_SIZE, EdgeBound);
-    ASM_FIELDS(EDGE, Edge, px, py, dx, dy, threshold)
-    ASM_SIZE(EDGE_SIZE, Edge);
-    ASM_FIELDS(TRI, TriangleRowsArgs, edges, first, last, origin_x, origin_y, lower, upper)
     ASM_FIELDS(FTRI, FastTriangleArgs, in, setup, run, target, envelope, lower, upper)
-    ASM_FIELDS(ENV, EnvelopeLimits, area2, extent_x, extent_y)
-    ASM_CONSTANT(ENVELOPE_REACH_SUBPIXELS, ENVELOPE_REACH * SUBPIXEL_ONE);
-    ASM_FIELDS(TGT, Target, base, pitch, clip, plane_bytes, select_plane, ctx)
     ASM_FIELDS(CRUN, FastColumnRunArgs, target, x, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, block_pitch, u_16_16,
                v_16_16, u_column_16_16, v_column_16_16, du_16_16, dv_16_16, tally)
-    ASM_FIELDS(CLIP, ClipRect, x0, y0, x1, y1)
-    ASM_FIELDS(VERT, Vertex, x, y, u, v)
-    ASM_SIZE(VERT_SIZE, Vertex);
-    ASM_FIELDS(PS, PolygonSetup, edge_count, edges, area2, ref_x, ref_y, min_x, min_y, max_x, max_y, u, v, u_fx, v_fx)
-    ASM_FIELDS(PLANE, Plane, a0, gx, gy)
-    ASM_FIELDS(FIX, FixedPlane, x0, y0, at, dx, dy)
     ASM_CONSTANT(MODEX_ROW_BYTES, MODEX_ROW_BYTES);
 }
 #endif

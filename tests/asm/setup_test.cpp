@@ -1,4 +1,4 @@
-// setup_polygon's NASM path for a frame's triangles (setup_triangle_affine_asm, asm/fast.asm)
+// setup_polygon's NASM path for a frame's triangles (setup_triangle_affine_asm, asm/setup.asm)
 // against its C++ twin (setup_polygon_cpp): on random triangles in range, both windings, tiny to
 // across the whole coordinate range, with repeated corners, no area, texture coordinates from 0 to
 // beyond the 16.16 range and steep enough to leave the 32-bit path, every byte of the setup the

@@ -1,4 +1,4 @@
-// The walker's NASM routine for small triangles' rows (triangle_rows_asm, asm/fast.asm) against its
+// The walker's NASM routine for small triangles' rows (triangle_rows_asm, asm/walk.asm) against its
 // C++ twin (triangle_rows): on random triangles under 64 pixels a side anywhere in the coordinate
 // range, on and off the half-pixel grid, with edges along the rows (both refuse) and a clip cutting
 // the rows now and then, the same answer and every byte of both chains the same, sentinels
