@@ -72,7 +72,7 @@ LOOP_ASM := $(wildcard asm/*.asm)
 KERNEL_ASM := boot/entry.asm boot/isr.asm $(LOOP_ASM)
 # the portable core, the mappers and the scene code, built for the kernel and the host alike
 PORTABLE_DIRS := kernel/core kernel/mappers kernel/scene
-KERNEL_CXX := $(wildcard kernel/*.cpp kernel/lib/*.cpp kernel/server/*.cpp $(PORTABLE_DIRS:%=%/*.cpp) drivers/*.cpp)
+KERNEL_CXX := $(wildcard kernel/*.cpp kernel/platform/*.cpp kernel/present/*.cpp kernel/show/*.cpp kernel/lib/*.cpp kernel/server/*.cpp $(PORTABLE_DIRS:%=%/*.cpp) drivers/*.cpp)
 KERNEL_OBJS := $(KERNEL_ASM:%=$(KBUILD)/%.o) $(KERNEL_CXX:%=$(KBUILD)/%.o)
 
 # The built-in files: the demo scenes, and the freedoom scene's textures made at build time from
@@ -409,7 +409,7 @@ test-gallery: deps
 	@tests/run $(BROWSER_TESTS)
 
 # `make bounds`: every mapper's error bound against its measured error on 100000 random polygons
-# (make test runs 600 of them) and on every demo scene (docs/accuracy.md, "Error bounds");
+# (make test runs 600 of them) and on every demo scene (docs/bounds.md);
 # MAPPERS=a,b: those mappers only.
 BOUND_POLYGONS ?= 100000
 bounds: deps

@@ -134,7 +134,7 @@ section .text
 ; The doubled core's registers (asm/core816.inc) from the steps du (eax) and dv (edx) and the
 ; segment's start [esp + L_U0], [esp + L_V0]: the pointer at the start's wholes modulo the sides,
 ; a side further on each axis along which it falls, so that a travel of less than the side and 7
-; texels either way stays in the copy (docs/accuracy.md, "The subdivided fast mappers on the doubled
+; texels either way stays in the copy (docs/bounds.md, "The subdivided fast mappers on the doubled
 ; copy"); ecx clobbered.
 %macro DCORE_LOAD 0
     mov ebp, eax

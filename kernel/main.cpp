@@ -8,17 +8,17 @@
 #include "drivers/serial.h"
 #include "drivers/timer.h"
 #include "drivers/vga.h"
-#include "kernel/files.h"
-#include "kernel/guard.h"
-#include "kernel/idt.h"
+#include "kernel/present/file_table.h"
+#include "kernel/platform/guard.h"
+#include "kernel/platform/idt.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
 #include "kernel/lib/words.h"
-#include "kernel/multiboot.h"
-#include "kernel/panic.h"
+#include "kernel/platform/multiboot.h"
+#include "kernel/platform/panic.h"
 #include "kernel/core/mapper.h"
 #include "kernel/server/server.h"
-#include "kernel/show.h"
+#include "kernel/show/show.h"
 #include "kernel/version.h"
 
 extern "C" uint8_t __kernel_start[], __kernel_end[];
@@ -128,15 +128,15 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
         panic(m.c_str());
     }
     uint32_t skipped_modules = 0;
-    files::init(info, &skipped_modules);
+    file_table::init(info, &skipped_modules);
     uint32_t modules = 0;
-    for (int i = 0; i < files::count(); ++i) modules += files::at(i).origin == files::Origin::Module;
+    for (int i = 0; i < file_table::count(); ++i) modules += file_table::at(i).origin == file_table::Origin::Module;
 
     lib::JsonLine boot(serial::sink());
     boot.str("event", "boot").str("version", MODEXLAB_VERSION).str("cmdline", ctx.cmdline);
     boot.str("boot", options.action == BootAction::Demo ? "demo" : "serve").u32("interval_ms", options.interval_ms);
     boot.boolean("bochs_vbe_cleared", vbe_found).u64("tsc_hz", ctx.tsc_hz);
-    boot.u32("files", uint32_t(files::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
+    boot.u32("files", uint32_t(file_table::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
     boot.u32("memory_kib", (info->flags & multiboot::INFO_MEMORY) ? info->mem_upper + 1024 : 0);
     boot.boolean("guard_pages", guard_pages).boolean("serial_wakeup", serial::wakes());
     if (framebuffer) {

@@ -411,7 +411,7 @@ EnvelopeBound envelope_bound(const TriangleEnvelope& e) {
     return b;
 }
 
-// The derivation, step by step, is docs/accuracy.md's ("The object's envelope"); each quantity
+// The derivation, step by step, is docs/auto.md's ("The object's envelope"); each quantity
 // below bounds the one of polygon_spread named beside it, q ones in units of the least 1/w at a
 // corner (q_lo). A plane through three values of magnitude at most m and range at most r, on a
 // triangle that passes the guards (kappa = ENVELOPE_CONDITION): |gx| W + |gy| H <= kappa r; its

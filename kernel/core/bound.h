@@ -1,4 +1,4 @@
-// Error bounds before drawing (docs/accuracy.md, "Error bounds"): how far, in footprints, a mapper's
+// Error bounds before drawing (docs/bounds.md): how far, in footprints, a mapper's
 // texel can be from the reference's on a polygon, from what setup knows. The pieces the mappers'
 // own bound functions are built from: spans, the deviation of a line from the exact mapping along
 // them, the footprint along them, and the step from a coordinate error to a footprint error.
@@ -26,7 +26,7 @@ struct ErrorBound {
     double footprint = 0;         // max footprint error on every pixel it draws (NO_BOUND: none)
 };
 
-// The whole polygon at once (docs/accuracy.md §4b, "The whole polygon"): the extremes over it of
+// The whole polygon at once (docs/bounds.md, "The whole polygon at once"): the extremes over it of
 // what the span bounds take span by span. Linear functions (Q, the affine planes, K below), P/Q
 // (monotone along any line where Q > 0) and sums of magnitudes of linear terms take their extremes
 // over a convex polygon at its vertices, so all of it comes from the vertices: the polygon's own,
@@ -66,12 +66,12 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p);
 double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double rounding, double budget);
 // How far the exact mapping can leave a plane through its values at the corners, as a share of
 // their range, over a polygon where Q lies in [q_lo, q_hi] (0 < q_lo <= q_hi): (q_hi - q_lo) /
-// (3 q_lo + q_hi), about a quarter of the relative change of Q (docs/accuracy.md, "Planes").
+// (3 q_lo + q_hi), about a quarter of the relative change of Q (docs/bounds.md, "Planes").
 double perspective_share(double q_lo, double q_hi);
 // Its texel deviations d[t] before the footprint (what spread_planes_bound divides).
 void spread_planes_deviation(const PolygonSpread& p, double rounding, double d[2]);
 
-// The object's envelope (docs/accuracy.md, "The object's envelope"): what holds for every uncut
+// The object's envelope (docs/auto.md, "The object's envelope"): what holds for every uncut
 // triangle of an object in a frame, from the object (its mesh measured once, its nearest depth in
 // the frame), so that the planes' bound above needs no spread per triangle. With the guards below,
 // checked on the triangle's setup, every field of its spread is bounded a priori.
@@ -126,7 +126,7 @@ struct EnvelopeBound {
     double footprint = NO_BOUND;
 };
 EnvelopeBound envelope_bound(const TriangleEnvelope& e);
-// The chords' bound relative to each pixel's own step (docs/accuracy.md, "Chords"): where every
+// The chords' bound relative to each pixel's own step (docs/bounds.md, "Chords, relative to the step"): where every
 // pixel's deviation from the exact mapping is within X times its own texel step along the axis plus
 // r texels, its footprint error is at most max(n0, (n0 + 1) X / (n0 - r)), n0 = ceil(X + r),
 // whatever its footprint. NO_BOUND where X or r is not finite and at least 0.

@@ -6,7 +6,7 @@
 
 namespace raster {
 
-bool choosable(const Mapper& m) { return !m.chooses && !m.own_walker && m.bound && m.bound != unbounded; }
+bool choosable(const Mapper& m) { return !m.is_auto && !m.own_walker && m.bound && m.bound != unbounded; }
 bool drawn_by_auto(const Mapper& m) { return choosable(m) || m.draw == fast_oriented_draw<4>; }
 
 namespace {

@@ -1,4 +1,4 @@
-// The budgeted choice of mapper (docs/accuracy.md, "The choice"): a scene's budget, the cost model
+// The budgeted choice of mapper (docs/auto.md): a scene's budget, the cost model
 // the bench measures, and `auto`, which draws each polygon with the cheapest mapper whose bound
 // meets the budget.
 #pragma once
@@ -70,7 +70,7 @@ struct Choice {
 // What proving a bound span by span costs auto, per span of the polygon: the instructions its
 // bounds take to walk a span (a line, the coarse bound, pieces where needed) in the kernel,
 // 400 to 900 under QEMU icount (make bench, setup per polygon of auto against the mappers it
-// chose, over the spans it proved; docs/accuracy.md, "The choice").
+// chose, over the spans it proved; docs/auto.md, "The rule").
 constexpr double BOUND_SPAN_COST = 600;
 // What asking a bound of the whole polygon costs: the polygon's spread from its vertices and the
 // bound from it, about 1400 instructions (1430 for fast-affine's on the mesh, callgrind on the

@@ -24,8 +24,8 @@ using LoopFn = void (*)(const void* args);
 #else
 #define MODEXLAB_ASM(symbol) nullptr
 #endif
-// A registry row's twin and NASM loop, named by the rule above.
-#define TWIN_AND_ASM(twin) twin, MODEXLAB_ASM(twin##_asm)
+// A registry row's twin and NASM loop (designated), named by the rule above.
+#define TWIN_AND_ASM(loop) .twin = loop, .asm_loop = MODEXLAB_ASM(loop##_asm)
 
 // What a mapper needs from the texture and the target; the caller must not give it anything else.
 enum Need : uint32_t {
@@ -167,7 +167,7 @@ using CheckFn = LoopCheck (*)(const Mapper& m, LoopFn other, uint32_t seed, uint
 // Whether auto, where a mapper's bound of the whole polygon at once is above the budget, asks its
 // bound span by span (which costs a few hundred instructions a span): only where the spans' bounds
 // can be much tighter than the whole polygon's, as they are where the error depends on each line's
-// own direction or place (docs/accuracy.md, "The choice").
+// own direction or place (docs/auto.md).
 enum SpanProof : uint8_t { SPANS_NOT_ASKED, SPANS_ASKED };
 
 struct Mapper {
@@ -178,14 +178,14 @@ struct Mapper {
     Guarantee guarantee;  // the same, checkable
     uint32_t needs;       // Need flags
     uint8_t axes;         // AxisSet
-    SpanFn span;          // for the generic walker (nullptr when draw is set)
-    LoopFn twin;          // the C++ inner loop (nullptr: span does all the work itself)
-    LoopFn asm_loop;      // its NASM twin, or nullptr
+    SpanFn span = nullptr;      // for the generic walker (nullptr when draw is set)
+    LoopFn twin = nullptr;      // the C++ inner loop (nullptr: span does all the work itself)
+    LoopFn asm_loop = nullptr;  // its NASM twin, or nullptr
     DrawFn draw = nullptr;    // its own polygon driver, or nullptr for the generic walker
     CheckFn check = nullptr;  // random cases for its loop: NASM against twin (nullptr: no NASM loop,
                               // or one the kernel checks on the VGA itself, NEED_VGA_FOR_ASM)
     BoundFn bound = nullptr;  // its error bound on a polygon (unbounded: none derived)
-    bool chooses = false;     // auto: draws each polygon with a mapper it chooses (core/choice.h)
+    bool is_auto = false;     // auto: draws each polygon with a mapper it chooses (core/choice.h)
     SpanProof span_proof = SPANS_NOT_ASKED;  // whether auto asks its bound span by span (core/choice.h)
     // Its bound is the 16.16 planes' (spread_planes_bound, planes_fit_16_16): an object's envelope
     // proves it on the object's uncut triangles (plan_auto, core/choice.h), which auto draws with

@@ -96,7 +96,7 @@ SetupStatus Drawer::draw(const Vertex* vertices, int count, Input input) const {
 
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant, const Budget& budget, Input input) {
-    if (!mapper.chooses) return Drawer::of(mapper, tex, axis, target, stats, variant).draw(vertices, count, input);
+    if (!mapper.is_auto) return Drawer::of(mapper, tex, axis, target, stats, variant).draw(vertices, count, input);
     probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
     PreparedPolygon prepared;
     return choose_and_draw(vertices, count, tex, axis, target, stats, variant, budget, &prepared, input);

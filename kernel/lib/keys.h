@@ -38,7 +38,7 @@ private:
     uint8_t skip_ = 0;  // bytes of a Pause sequence still to come
 };
 
-// What a key does in the show (kernel/show.cpp).
+// What a key does in the show (kernel/show/show.cpp).
 enum class Action : uint8_t {
     None, NextScene, PreviousScene, NextMapper, PreviousMapper, BudgetUp, BudgetDown,
     Pause, Step, Surface, Hud, Help, Bench,

@@ -38,7 +38,7 @@ void affine_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stri
     }
 }
 
-// The bound (docs/accuracy.md, "Error bounds"): on each span the mapper steps the affine planes
+// The bound (docs/bounds.md): on each span the mapper steps the affine planes
 // from the first pixel centre, so its u and v follow the planes' lines to within 16.16 rounding
 // (half a unit at the start and in the step: (1 + k) / 2^17 after k pixels); the lines' deviation
 // from the exact mapping is measured piece by piece (BOUND_PIECE pixels, over each piece's own

@@ -387,7 +387,7 @@ SetupStatus draw_table_columns(const DrawContext& c, const Vertex* vertices, int
 
 namespace {
 
-// The bound (docs/accuracy.md, "Error bounds"): the three mappers read the polygon's 16.16 planes,
+// The bound (docs/bounds.md): the three mappers read the polygon's 16.16 planes,
 // the affine planes rounded at the anchor pixel and in each gradient (half a unit each), so at pixel
 // (x, y) they are within (1 + |x - x0| + |y - y0|) / 2^17 of the affine planes; those lines'
 // deviation from the exact mapping as for affine. 256 wraps harmlessly in 16.16, but a gradient

@@ -97,7 +97,7 @@ extern "C" int fast_triangle_enveloped_asm(FastTriangleArgs* a);
 // block + (v0 whole & (H - 1)) * P + (u0 whole & (W - 1)) + table[x0 + k]; the two parts stay below
 // 2 W and 2 H, inside the copy's rows. So the texel read is (floor(u0 + k du + ½ - f_u), floor(v0 +
 // k dv + ½ - f_v)) modulo the sides, f_u and f_v the fractions of u0 and v0: fast-affine's lines
-// moved by at most half a texel on each axis (docs/accuracy.md, "The offset table"). (On the tiled
+// moved by at most half a texel on each axis (docs/bounds.md, "The offset table"). (On the tiled
 // block, 256 a row, u's part would pass 255 into the next texel row: a row off.)
 constexpr uint32_t TABLE_START = 0x8000;  // half a texel
 constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row: 320 pixels)

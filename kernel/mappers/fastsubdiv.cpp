@@ -112,7 +112,7 @@ void fast_adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32
     c.loop(&a);
 }
 
-// The bound (docs/accuracy.md, "Error bounds"): persp-subdiv-N's chords between the same exact
+// The bound (docs/bounds.md): persp-subdiv-N's chords between the same exact
 // points; the start rounded to nearest (half a 16.16 unit), each step off the chord's by less than
 // 1.5 units (the difference of two rounded ends, within one unit of the exact one, divided and
 // rounded toward zero or down), and the 32-bit difference of two ends holds a chord of less than
@@ -123,7 +123,7 @@ ErrorBound fast_subdiv_bound(const BoundContext& c, const Vertex* vertices, int 
     return segments_bound(c, vertices, count, N, FAST_ARITHMETIC);
 }
 
-// fast-adaptive-B's bound (docs/accuracy.md, "Adaptive segments on the fast core"). The whole
+// fast-adaptive-B's bound (docs/bounds.md, "Adaptive segments on the fast core"). The whole
 // polygon: where 16.16 holds chords of 511 steps and the rounding (FAST_ARITHMETIC's after 511
 // steps, and twice the reference's) is within FAST_ADAPTIVE_ROUNDING, every span whose shift found
 // chords within room is within B, and a span left at 2 pixels within the polygon's chords bound for

@@ -19,7 +19,7 @@ namespace raster {
 // Each pixel reads texel (u whole mod W, v whole mod H): from the tiled block at (v whole & 255,
 // u whole & 255), or, for a texture with a side above 256, from its doubled copy at the origin plus
 // (v whole mod H) * pitch + (u whole mod W); the NASM loop steps a pointer into the copy instead
-// where a segment's travel stays in it (docs/accuracy.md, "The subdivided fast mappers on the
+// where a segment's travel stays in it (docs/bounds.md, "The subdivided fast mappers on the
 // doubled copy"), the same texels.
 struct FastSubdivArgs {
     uint8_t* dst;            // pixel 0
@@ -45,7 +45,7 @@ ErrorBound fast_subdiv_bound(const BoundContext& c, const Vertex* vertices, int 
 
 // fast-adaptive-B (B = QUARTERS / 4 footprints, 1 or more): the same loop, its segments as long as
 // the relative chords bound allows, span by span: the longest power of two from 2 to 512 pixels
-// whose chords keep every pixel within B footprints (docs/accuracy.md, "Adaptive segments on the
+// whose chords keep every pixel within B footprints (docs/bounds.md, "Adaptive segments on the
 // fast core"). Along a span Q is linear: a chord of h pixels deviates at each pixel by at most
 // X = h^2 |Q'| / (4 Q_lo) times that pixel's own step (Q' a pixel along the span, Q_lo the least
 // of Q at the span's ends), and relative_chords_bound(X, r) <= B where X <= fast_adaptive_room(B)
@@ -84,10 +84,10 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
 // corners are then its vertices) with a repeating texture the mapper takes, and where what the
 // whole-polygon bound above checks holds for every value the spread could take there: Q and the
 // planes' terms at the corners as the spread evaluates them, |t| at most P's terms over Q's least,
-// the reference's rounding and the range of t from those (docs/accuracy.md, "fast-adaptive's
+// the reference's rounding and the range of t from those (docs/bounds.md, "fast-adaptive's
 // certificate"). Then fast_adaptive_bound<QUARTERS> is within B (tested), so auto may take the
 // mapper unasked. The caller's to ensure fast-adaptive-B takes the texture (mapper_accepts: what
-// choose_mapper's candidates do). What it costs beside the spread: docs/accuracy.md, the same
+// choose_mapper's candidates do). What it costs beside the spread: docs/bounds.md, the same
 // section.
 template <int QUARTERS>
 bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis);

@@ -1,5 +1,5 @@
 // fatmap-256, fatmap-256-16 and fatmap-lut: Mats Byggmastar's fatmap.txt triangle function and his
-// three inner loops, with their rules and flaws (docs/mappers.md); the twins and the loops' checks.
+// three inner loops, with their rules and flaws (docs/classics.md); the twins and the loops' checks.
 #include "kernel/mappers/fatmap.h"
 
 #include "kernel/core/asm_offsets.h"
@@ -254,7 +254,7 @@ RowLines row_lines(Loop loop, const Triangle& t, const Row& r) {
     return l;
 }
 
-// The bound (docs/accuracy.md, "fatmap's rows"): his setup run again, row by row, and each row's
+// The bound (docs/bounds.md, "fatmap's rows"): his setup run again, row by row, and each row's
 // lines against the exact mapping at its pixel centres (lines_bound, pieces of BOUND_PIECE
 // pixels), over every pixel he draws (the ones the reference covers among them). No bound where Q
 // is not positive along a row, where fatmap-lut's table overflows 32 bits or its lines leave the

@@ -1,5 +1,5 @@
 // hecker-steptable: Chris Hecker's subdividing perspective mapper (SUBAFXFL setup, part V's step-table
-// loop), with its rules and flaws (docs/mappers.md); the twin and the loop's checks.
+// loop), with its rules and flaws (docs/classics.md); the twin and the loop's checks.
 #include "kernel/mappers/hecker.h"
 
 #include "kernel/core/asm_offsets.h"
@@ -297,7 +297,7 @@ SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
     return SetupStatus::Ok;
 }
 
-// The bound (docs/accuracy.md, "Hecker's pieces"): his walk and his divides run again, and each
+// The bound (docs/bounds.md, "Hecker's pieces"): his walk and his divides run again, and each
 // affine piece's texel indices, floor((u + k du) / 65536) along u and v (the loop's 16-bit
 // fractions carry into the texel pointer: exactly that), against the exact mapping at its pixel
 // centres (lines_bound) over every pixel he draws. The bordered copy as for X-Sharp: one texel

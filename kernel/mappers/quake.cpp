@@ -1,5 +1,5 @@
 // quake-subdiv16 and quake-subdiv8: Quake's perspective span drawer (d_scan.c) on our walker's spans,
-// with its rules (docs/mappers.md); the twin and the loop's checks.
+// with its rules (docs/classics.md); the twin and the loop's checks.
 #include "kernel/mappers/quake.h"
 
 #include "kernel/core/asm_offsets.h"
@@ -78,7 +78,7 @@ namespace {
 constexpr double EPSILON = 2.220446049250313e-16;  // 2^-52
 constexpr double UNIT = 1.0 / 65536;                // a 16.16 unit, in texels
 
-// Quake's arithmetic on a polygon (docs/accuracy.md, "Quake's spans"), in texels from the chord
+// Quake's arithmetic on a polygon (docs/bounds.md, "Quake's spans"), in texels from the chord
 // between the exact values at its segment ends:
 // - each end is chop(s/z * z) + sadjust, clamped: the chop within a unit; Quake's own double
 //   evaluation within `evaluation` below; the clamp into [0 or n units, size - 1 unit] moves it by

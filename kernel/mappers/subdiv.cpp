@@ -154,7 +154,7 @@ void adaptive_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t st
     runs_span(c, s, dst, stride, [&](int32_t k) { return adaptive_run(l, terms, k, QUARTERS / 4.0); });
 }
 
-// The bound (docs/accuracy.md, "Error bounds"): each segment runs from the exact value at its
+// The bound (docs/bounds.md): each segment runs from the exact value at its
 // first pixel along the chord to the exact value at the next exact point, to within the
 // arithmetic's rounding; the chord's deviation from the exact mapping is measured piece by piece (a
 // segment, or BOUND_PIECE pixels of a longer one), each over its own smallest footprint.

@@ -1,5 +1,5 @@
 // xsharp-dda, xsharp-row-out and xsharp-column: X-Sharp's texture mappers (Black Book listings 57.1,
-// 57.2/58.1, 58.4) with their flaws (docs/mappers.md); the twins and the loops' checks.
+// 57.2/58.1, 58.4) with their flaws (docs/classics.md); the twins and the loops' checks.
 #include "kernel/mappers/xsharp.h"
 
 #include "kernel/core/asm_offsets.h"
@@ -265,7 +265,7 @@ void counting_line(int32_t start, int32_t step, int bits, double* a, double* b) 
     }
 }
 
-// The bound (docs/accuracy.md, "X-Sharp's lines"): DRAWTEXP.C's walk run again, and each line's
+// The bound (docs/bounds.md, "X-Sharp's lines"): DRAWTEXP.C's walk run again, and each line's
 // texel indices, floor(a + b k) along u and v, against the exact mapping at its pixel centres
 // (lines_bound, pieces of BOUND_PIECE pixels) over every pixel it draws. The loops read the
 // bordered copy, whose border repeats the edge texels: where a line's indices reach the border

@@ -1,8 +1,8 @@
 // Paging with guard pages (guard.h): a page directory of 4 MiB identity pages, and 4 KiB page tables
 // for the pool, in which take() maps the pages it hands out and unmaps the one after each buffer.
-#include "kernel/guard.h"
+#include "kernel/platform/guard.h"
 
-#include "kernel/panic.h"
+#include "kernel/platform/panic.h"
 
 namespace guard {
 

@@ -1,12 +1,12 @@
 // IDT set-up and the exception handler: one JSON event line on COM1, a text-mode line, then isa-debug-exit.
-#include "kernel/idt.h"
+#include "kernel/platform/idt.h"
 
 #include "drivers/debug_exit.h"
 #include "drivers/pic.h"
 #include "drivers/serial.h"
 #include "drivers/vga.h"
 #include "kernel/core/render.h"
-#include "kernel/guard.h"
+#include "kernel/platform/guard.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
 #include "kernel/server/reply.h"

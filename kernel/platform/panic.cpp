@@ -1,5 +1,5 @@
 // panic (panic.h).
-#include "kernel/panic.h"
+#include "kernel/platform/panic.h"
 
 #include "drivers/debug_exit.h"
 #include "drivers/serial.h"

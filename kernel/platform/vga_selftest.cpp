@@ -1,5 +1,5 @@
 // VGA loop checks: xsharp-row-out's OUT-per-pixel loop against its twin.
-#include "kernel/vga_selftest.h"
+#include "kernel/platform/vga_selftest.h"
 
 #include "drivers/vga.h"
 #include "kernel/lib/mem.h"

@@ -1,13 +1,11 @@
-// The current screen-space scene, and rendering through the three surfaces.
-#include "kernel/scenes.h"
+// The current screen-space scene (a version 1 scene file) and drawing it.
+#include "kernel/present/current_screen.h"
 
-#include "drivers/timer.h"
-#include "drivers/vga.h"
 #include "kernel/core/choice.h"
-#include "kernel/guard.h"
+#include "kernel/platform/guard.h"
 #include "kernel/lib/mem.h"
 
-namespace scenes {
+namespace current_screen {
 
 namespace {
 
@@ -16,7 +14,7 @@ bool g_loaded = false;
 raster::Texture g_texture;
 
 // What the mappers read and write, each between guard pages (guard.h): the scene's vertices, its
-// texture and the texture's copies (each placed to end where its buffer ends), the RAM surfaces.
+// texture and the texture's copies (each placed to end where its buffer ends).
 constexpr size_t TEXELS_BYTES = size_t(raster::MAX_TEXTURE_SIZE) * raster::MAX_TEXTURE_SIZE;
 constexpr size_t BORDERED_BYTES = size_t(raster::MAX_TEXTURE_SIZE + 2) * (raster::MAX_TEXTURE_SIZE + 2);
 constexpr size_t DOUBLED_BYTES = size_t(raster::doubled_bytes(raster::MAX_TEXTURE_SIZE, raster::MAX_TEXTURE_SIZE));
@@ -26,8 +24,6 @@ struct Buffers {
     uint8_t* bordered = guard::take(BORDERED_BYTES, "screen-space texture (bordered copy)");
     uint8_t* aligned = guard::take(raster::ALIGNED256_BYTES, "screen-space texture (aligned copy)");
     uint8_t* doubled = guard::take(DOUBLED_BYTES, "screen-space texture (doubled copy)");
-    uint8_t* linear = guard::take(raster::SCREEN_PIXELS, "RAM surface (linear)");
-    uint8_t* planes = guard::take(raster::SCREEN_PIXELS, "RAM surface (planar)");
 };
 // Taken when the kernel starts (a global constructor), not on first use: the first drawing then
 // costs what every other does (icount: the same frame, the same instructions).
@@ -57,50 +53,10 @@ const raster::Texture& texture() { return g_texture; }
 
 const raster::Scene& scene() { return *buffers().scene; }
 
-RenderResult render_with(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant, DrawFn draw, void* ctx) {
-    RenderResult r{};
-    uint64_t t0 = timer::rdtsc();
-    raster::Target target;
-    raster::Axis axis = raster::surface_axis(mapper, surface);
-    switch (surface) {
-    case raster::Surface::Linear:
-        memset(buffers().linear, 0, raster::SCREEN_PIXELS);
-        target = raster::linear_target(buffers().linear, raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT, raster::SCREEN_WIDTH);
-        break;
-    case raster::Surface::Planar:
-        memset(buffers().planes, 0, raster::SCREEN_PIXELS);
-        target = raster::planar_target(buffers().planes);
-        break;
-    case raster::Surface::Vga:
-        vga::clear_page(page, 0);
-        target = vga::page_target(page);
-        break;
-    }
-    uint64_t t1 = timer::rdtsc();
-    raster::LoopFn loop = raster::mapper_loop(mapper, variant, target);
-    r.used_asm = loop && loop == mapper.asm_loop;
-    r.stats = draw(ctx, target, axis, variant);
-    uint64_t t2 = timer::rdtsc();
-    if (surface == raster::Surface::Linear) vga::blit_linear(buffers().linear, page);
-    if (surface == raster::Surface::Planar) vga::blit_planar(buffers().planes, page);
-    uint64_t t3 = timer::rdtsc();
-    r.ticks_clear = t1 - t0;
-    r.ticks_draw = t2 - t1;
-    r.ticks_blit = t3 - t2;
-    return r;
+present::RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
+                             const raster::Watch* watch) {
+    present::Canvas c = present::begin(mapper, surface, page, variant);
+    return present::finish(c, raster::render_scene(*buffers().scene, g_texture, mapper, c.axis, c.target, variant, nullptr, watch));
 }
 
-RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant, const raster::Watch* watch) {
-    struct Drawing {
-        const raster::Mapper* mapper;
-        const raster::Watch* watch;
-    } drawing{&mapper, watch};
-    return render_with(mapper, surface, page, variant,
-                       [](void* ctx, raster::Target& target, raster::Axis axis, raster::Variant v) {
-                           auto* d = static_cast<Drawing*>(ctx);
-                           return raster::render_scene(*buffers().scene, g_texture, *d->mapper, axis, target, v, nullptr, d->watch);
-                       },
-                       &drawing);
-}
-
-}  // namespace scenes
+}  // namespace current_screen

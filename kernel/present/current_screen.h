@@ -1,5 +1,5 @@
-// The kernel's current screen-space scene: uploaded over COM1, parsed by the portable parser, its
-// texture generated; and rendering it into a Mode X page through one of three surfaces.
+// The kernel's current screen-space scene (a version 1 scene file): uploaded over COM1, parsed by the
+// portable parser, its texture generated; and drawing it into a page (present.h).
 #pragma once
 
 #include <stddef.h>
@@ -7,9 +7,10 @@
 
 #include "kernel/core/policy.h"
 #include "kernel/core/render.h"
+#include "kernel/present/present.h"
 #include "kernel/scene/scene.h"
 
-namespace scenes {
+namespace current_screen {
 
 // Parses a version 1 scene text and makes it the current one (its texture generated). On failure
 // the previous scene stays and `error` says why (parser errors carry a line).
@@ -18,22 +19,12 @@ bool load(const char* text, size_t length, raster::ParseError* error);
 bool loaded();
 const raster::Scene& scene();
 
-struct RenderResult {
-    raster::RenderStats stats;
-    uint64_t ticks_clear, ticks_draw, ticks_blit;
-    bool used_asm;  // the NASM loop ran (else the C++ twin)
-};
-
 // The kernel's texture for the current scene (with its bordered copy).
 const raster::Texture& texture();
 
 // Clears the surface to 0, draws the scene with `mapper`, and blits (unless drawn in place); with a
 // watch, the drawing may stop early (core/render.h).
-RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
-                    const raster::Watch* watch = nullptr);
+present::RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
+                             const raster::Watch* watch = nullptr);
 
-// The same for any drawing: clears the surface, calls draw(target, axis), blits; times each step.
-using DrawFn = raster::RenderStats (*)(void* ctx, raster::Target& target, raster::Axis axis, raster::Variant variant);
-RenderResult render_with(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant, DrawFn draw, void* ctx);
-
-}  // namespace scenes
+}  // namespace current_screen

@@ -1,15 +1,15 @@
 // The current 3D scene and its frames.
-#include "kernel/worlds.h"
+#include "kernel/present/current_world.h"
 
 #include "drivers/timer.h"
 #include "drivers/vga.h"
-#include "kernel/files.h"
+#include "kernel/present/file_table.h"
 #include "kernel/core/choice.h"
-#include "kernel/guard.h"
+#include "kernel/platform/guard.h"
 #include "kernel/lib/mem.h"
 #include "kernel/lib/words.h"
 
-namespace worlds {
+namespace current_world {
 
 namespace {
 
@@ -68,7 +68,7 @@ void prepare_choices() {
 bool load(const char* name, const uint8_t* text, size_t length, raster::ParseError* error) {
     g_loaded = false;
     g_overridden = false;
-    if (!raster::parse_world(reinterpret_cast<const char*>(text), length, files::resolver(), &g_world, error)) return false;
+    if (!raster::parse_world(reinterpret_cast<const char*>(text), length, file_table::resolver(), &g_world, error)) return false;
     raster::build_texture_set(g_world, &g_textures);
     place_textures();
     prepare_choices();
@@ -99,18 +99,9 @@ FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surf
     if (g_overridden) g_frame.budget = g_override;
     r.ticks_geometry = timer::rdtsc() - t0;
     r.frame = g_frame.stats;
-    struct Drawing {
-        const raster::Mapper* mapper;
-        raster::Probe* probe;
-        const raster::Watch* watch;
-    } drawing{&mapper, probe, watch};
-    r.render = scenes::render_with(mapper, surface, page, variant,
-                                   [](void* ctx, raster::Target& target, raster::Axis axis, raster::Variant v) {
-                                       auto* d = static_cast<Drawing*>(ctx);
-                                       if (d->probe) d->probe->start();
-                                       return raster::render_frame(g_frame, g_textures, *d->mapper, axis, target, v, d->probe, d->watch);
-                                   },
-                                   &drawing);
+    present::Canvas c = present::begin(mapper, surface, page, variant);
+    if (probe) probe->start();
+    r.render = present::finish(c, raster::render_frame(g_frame, g_textures, mapper, c.axis, c.target, variant, probe, watch));
     return r;
 }
 
@@ -140,7 +131,7 @@ BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper,
     const uint64_t t0 = timer::rdtsc();
     b.retrace = vga::flip(b.page);
     const uint64_t flip = timer::rdtsc() - t0;
-    const scenes::RenderResult& r = f.render;
+    const present::RenderResult& r = f.render;
     const uint64_t setup = timed.net(raster::Phase::Setup), inner = timed.net(raster::Phase::Inner), choose = timed.net(raster::Phase::Choose);
     const uint64_t walk = r.ticks_draw > setup + inner + choose ? r.ticks_draw - setup - inner - choose : 0;
     const uint64_t figures[B_FIELDS] = {f.ticks_geometry + r.ticks_clear + r.ticks_draw + r.ticks_blit, f.ticks_geometry, r.ticks_clear, r.ticks_draw,
@@ -151,4 +142,4 @@ BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper,
     return b;
 }
 
-}  // namespace worlds
+}  // namespace current_world

@@ -6,9 +6,9 @@
 #include <stdint.h>
 
 #include "kernel/scene/frame.h"
-#include "kernel/scenes.h"
+#include "kernel/present/present.h"
 
-namespace worlds {
+namespace current_world {
 
 // Parses a version 2 scene text (its texture files found in the file table) and makes it the
 // current one; loads its palette into the DAC when a graphics mode is on. On failure no 3D scene
@@ -20,7 +20,7 @@ const char* name();
 
 struct FrameResult {
     raster::FrameStats frame;
-    scenes::RenderResult render;
+    present::RenderResult render;
     uint64_t ticks_geometry;
 };
 
@@ -60,4 +60,4 @@ raster::Probe bench_probe();
 BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper, raster::Surface surface, raster::Variant variant,
                        const raster::Probe& probe, const raster::Watch* watch = nullptr);
 
-}  // namespace worlds
+}  // namespace current_world

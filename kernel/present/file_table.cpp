@@ -1,5 +1,5 @@
 // The file table: built-ins from the kernel image, modules from the loader, uploads in a RAM space.
-#include "kernel/files.h"
+#include "kernel/present/file_table.h"
 
 #include "drivers/serial.h"
 #include "drivers/timer.h"
@@ -16,7 +16,7 @@ extern "C" const BuiltinFile builtin_files[];
 extern "C" const uint32_t builtin_file_count;
 extern "C" uint8_t __kernel_start[], __kernel_end[];
 
-namespace files {
+namespace file_table {
 
 namespace {
 
@@ -187,4 +187,4 @@ raster::FileResolver resolver() {
     return r;
 }
 
-}  // namespace files
+}  // namespace file_table

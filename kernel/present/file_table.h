@@ -8,10 +8,10 @@
 
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/words.h"
-#include "kernel/multiboot.h"
+#include "kernel/platform/multiboot.h"
 #include "kernel/scene/world.h"
 
-namespace files {
+namespace file_table {
 
 enum class Origin : uint8_t { Builtin, Module, Upload };
 const char* origin_name(Origin o);
@@ -62,4 +62,4 @@ bool receive(uint8_t* out, size_t length, uint32_t crc32, bool lead_lf, lib::Fmt
 // For parse_world: finds files here.
 raster::FileResolver resolver();
 
-}  // namespace files
+}  // namespace file_table

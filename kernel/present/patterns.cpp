@@ -1,11 +1,11 @@
 // Pattern drawing through the VGA driver.
-#include "kernel/draw.h"
+#include "kernel/present/patterns.h"
 
 #include "drivers/vga.h"
 
-namespace draw {
+namespace patterns {
 
-void pattern(raster::Pattern p, int page) {
+void draw(raster::Pattern p, int page) {
     volatile uint8_t* base = vga::page_base(page);
     const int h = vga::height();
     const int w = vga::WIDTH;
@@ -26,4 +26,4 @@ void pattern(raster::Pattern p, int page) {
     }
 }
 
-}  // namespace draw
+}  // namespace patterns

@@ -3,9 +3,9 @@
 
 #include "kernel/scene/pattern.h"
 
-namespace draw {
+namespace patterns {
 
 // Mode X: one map-mask change per plane, then that plane's pixels of the page; mode 13h: linear.
-void pattern(raster::Pattern p, int page);
+void draw(raster::Pattern p, int page);
 
-}  // namespace draw
+}  // namespace patterns

@@ -426,7 +426,7 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
     Drawer drawers[MAX_WORLD_OBJECTS];
     Drawer certain[MAX_WORLD_OBJECTS][2];  // auto: its certain mapper, by walker (what unchosen_mapper gives)
     for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o) {
-        if (!mapper.chooses) {
+        if (!mapper.is_auto) {
             drawers[o] = Drawer::of(mapper, textures.objects[o], axis, target, &stats, variant);
             continue;
         }
@@ -441,7 +441,7 @@ RenderStats render_frame(const Frame& frame, const TextureSet& textures, const M
         probe_lap(stats.probe, Phase::Choose);  // (the plans)
     }
     // (a loop of its own for auto: a single mapper's carries none of its branches)
-    if (!mapper.chooses) {
+    if (!mapper.is_auto) {
         each_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
             const Drawer& d = drawers[object];
             if (d.own) d.draw_own(v, n, input);

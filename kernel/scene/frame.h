@@ -114,7 +114,7 @@ struct Placement {
 
 void build_frame(const World& world, int32_t frame, Frame* out, FrameScratch* scratch);
 
-// The object's envelope in a frame (TriangleEnvelope, docs/accuracy.md "The object's envelope"):
+// The object's envelope in a frame (TriangleEnvelope, docs/auto.md, "The object's envelope"):
 // its mesh's measures at its placement, `nearest` at most the least w of the positions inside every
 // clip plane that are corners of its faces drawn (build_frame: those of the faces not culled).
 TriangleEnvelope object_envelope(const World& world, int32_t object, const Placement& place, const View& view, double nearest);
@@ -134,7 +134,7 @@ struct TextureSet {
     // The doubled copies' room (four times the texels and their borders, (2 W + 16)(2 H + 16) - 4 W H
     // = 32 (W + H) + 256, at most 65792 bytes a texture), DOUBLED_BYTES at `doubled` where the caller
     // gives it (HostTextureSet); null: none built (the kernel builds each where it places the
-    // textures, worlds.cpp, and keeps no second 16 MiB).
+    // textures, kernel/present/current_world.cpp, and keeps no second 16 MiB).
     static constexpr size_t DOUBLED_BYTES = 4 * size_t(MAX_TEXEL_POOL) + MAX_WORLD_TEXTURES * size_t(doubled_bytes(MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE) - 4 * MAX_TEXTURE_SIZE * MAX_TEXTURE_SIZE);
     uint8_t* doubled = nullptr;
 };

@@ -3,10 +3,10 @@
 #include "drivers/vga.h"
 #include "drivers/serial.h"
 #include "drivers/timer.h"
-#include "kernel/idt.h"
+#include "kernel/platform/idt.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
-#include "kernel/worlds.h"
+#include "kernel/present/current_world.h"
 
 namespace server {
 
@@ -151,7 +151,7 @@ bool parse_animation_args(const char* cmd, const StrView* args, size_t nargs, ui
 }
 
 bool need_world(const char* cmd) {
-    if (worlds::loaded()) return true;
+    if (current_world::loaded()) return true;
     reply::error(cmd, "no 3D scene: 'load NAME' one (see 'files') or upload one with 'scene BYTES CRC32'");
     return false;
 }

@@ -73,7 +73,7 @@ void cmd_exit(Context& ctx, const StrView* args, size_t nargs);
 bool interrupted(uint32_t step);
 
 // reader.cpp: whether the header line just read ended with a CR, so that an LF leading its payload belongs to
-// the line's end (files::upload, files::discard drop it); once: the reader forgets that CR.
+// the line's end (file_table::upload, file_table::discard drop it); once: the reader forgets that CR.
 bool header_ended_by_cr();
 
 // A drawing watched (core/render.h): a line arriving on COM1 stops it between polygons, and where

@@ -8,19 +8,19 @@
 #include "kernel/core/policy.h"
 #include "kernel/core/render.h"
 #include "kernel/core/selftest.h"
-#include "kernel/guard.h"
-#include "kernel/idt.h"
+#include "kernel/platform/guard.h"
+#include "kernel/platform/idt.h"
 #include "kernel/lib/words.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
-#include "kernel/vga_selftest.h"
+#include "kernel/platform/vga_selftest.h"
 
 namespace server {
 
 namespace {
 
 // A mapper reading past its texture or writing past its surface, caught by the guard pages
-// (kernel/guard.h): `exact` draws a quad over the whole screen with a texture that says it is
+// (kernel/platform/guard.h): `exact` draws a quad over the whole screen with a texture that says it is
 // 64 x 64 but whose buffer holds 32 rows (clamped, the screen's lower half reads rows 32 to 63), or
 // into a linear surface that says it is 320 x 240 but whose buffer holds 120 rows. The page
 // fault's report names the buffer, the mapper and the polygon.
@@ -47,7 +47,7 @@ void draw_out_of_bounds(bool short_texture) {
 void read_past_texture() { draw_out_of_bounds(true); }
 void write_past_surface() { draw_out_of_bounds(false); }
 
-// The CPU exception's report is fault's reply (kernel/idt.cpp); triple and hang test that the
+// The CPU exception's report is fault's reply (kernel/platform/idt.cpp); triple and hang test that the
 // harness catches the failures a kernel cannot report. The first is the default.
 struct Fault {
     const char* name;

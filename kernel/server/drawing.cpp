@@ -5,11 +5,11 @@
 #include "drivers/vga.h"
 #include "kernel/lib/stats.h"
 #include "kernel/scene/scene_text.h"
-#include "kernel/scenes.h"
-#include "kernel/idt.h"
+#include "kernel/present/current_screen.h"
+#include "kernel/platform/idt.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
-#include "kernel/worlds.h"
+#include "kernel/present/current_world.h"
 
 namespace server {
 
@@ -22,8 +22,8 @@ uint32_t g_play_ticks[MAX_PLAY_FRAMES];
 // bench: each frame drawn twice, once plainly (the totals) and once with the probe (setup and
 // inner loops; walking is the rest of the plain drawing time), then flipped.
 constexpr uint32_t MAX_BENCH_FRAMES = 1000;
-using worlds::B_FIELDS;
-using worlds::BENCH_FIELD_NAMES;
+using current_world::B_FIELDS;
+using current_world::BENCH_FIELD_NAMES;
 // Static: every field of every frame for the medians, 36 KB, more than half the 64 KiB kernel stack.
 uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
 
@@ -48,14 +48,14 @@ struct MapperTally {
 
 uint32_t clamp32(uint64_t v) { return v > 0xFFFFFFFFu ? 0xFFFFFFFFu : uint32_t(v); }
 
-uint64_t render_ticks(const scenes::RenderResult& r) { return r.ticks_clear + r.ticks_draw + r.ticks_blit; }
-uint64_t frame_ticks(const worlds::FrameResult& f) { return f.ticks_geometry + render_ticks(f.render); }
+uint64_t render_ticks(const present::RenderResult& r) { return r.ticks_clear + r.ticks_draw + r.ticks_blit; }
+uint64_t frame_ticks(const current_world::FrameResult& f) { return f.ticks_geometry + render_ticks(f.render); }
 
 // Of pages 0 and 1, the one not shown: play and bench draw there, then flip.
 int hidden_page() { return vga::shown_page() == 0 ? 1 : 0; }
 
 
-void render_fields(lib::JsonLine& r, const DrawArgs& d, const scenes::RenderResult& res) {
+void render_fields(lib::JsonLine& r, const DrawArgs& d, const present::RenderResult& res) {
     r.str("mapper", d.mapper->name)
         .u32("page", uint32_t(d.page))
         .str("surface", raster::surface_name(d.surface))
@@ -72,7 +72,7 @@ void render_fields(lib::JsonLine& r, const DrawArgs& d, const scenes::RenderResu
     t.write(r);
 }
 
-void frame_fields(lib::JsonLine& r, const worlds::FrameResult& f) {
+void frame_fields(lib::JsonLine& r, const current_world::FrameResult& f) {
     r.u32("faces", f.frame.faces)
         .u32("culled", f.frame.culled)
         .u32("outside", f.frame.outside)
@@ -90,7 +90,7 @@ void frame_fields(lib::JsonLine& r, const worlds::FrameResult& f) {
 // cut short is neither shown nor counted).
 lib::JsonLine animation_reply(const char* cmd, uint32_t frames, uint32_t asked, const DrawArgs& d) {
     lib::JsonLine r = reply::begin(true);
-    r.str("cmd", cmd).str("scene", worlds::name()).u32("frames", frames).u32("frames_asked", asked).boolean("interrupted", frames < asked);
+    r.str("cmd", cmd).str("scene", current_world::name()).u32("frames", frames).u32("frames_asked", asked).boolean("interrupted", frames < asked);
     r.str("mapper", d.mapper->name);
     r.str("surface", raster::surface_name(d.surface)).str("walker", walker_name(d.axis));
     return r;
@@ -101,11 +101,11 @@ lib::JsonLine animation_reply(const char* cmd, uint32_t frames, uint32_t asked, 
 void cmd_render(Context& ctx, const StrView* args, size_t nargs) {
     DrawArgs d;
     if (!parse_draw_args("render", args, nargs, true, &d)) return;
-    if (!scenes::loaded()) {
+    if (!current_screen::loaded()) {
         reply::error("render", "no screen-space scene: upload one with 'scene BYTES CRC32' or 'load NAME' first");
         return;
     }
-    const raster::Texture& tex = scenes::texture();
+    const raster::Texture& tex = current_screen::texture();
     if (!raster::mapper_accepts(*d.mapper, tex)) {
         lib::Fmt m;
         m.s("mapper ").s(d.mapper->name).s(" cannot take this scene's ").u(uint32_t(tex.width)).s("x").u(uint32_t(tex.height)).s(" texture (needs ");
@@ -115,7 +115,7 @@ void cmd_render(Context& ctx, const StrView* args, size_t nargs) {
     }
     Progress p = progress("render", ctx);
     const raster::Watch watch = p.watch();
-    scenes::RenderResult res = scenes::render(*d.mapper, d.surface, d.page, d.variant, &watch);
+    present::RenderResult res = current_screen::render(*d.mapper, d.surface, d.page, d.variant, &watch);
     lib::JsonLine r = reply::begin(true);
     r.str("cmd", "render");
     render_fields(r, d, res);
@@ -138,9 +138,9 @@ void cmd_frame(Context& ctx, const StrView* args, size_t nargs) {
     if (!parse_draw_args("frame", args + 1, nargs - 1, true, &d) || !need_world("frame")) return;
     Progress p = progress("frame", ctx);
     const raster::Watch watch = p.watch();
-    worlds::FrameResult f = worlds::render(int32_t(n), *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
+    current_world::FrameResult f = current_world::render(int32_t(n), *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
     lib::JsonLine r = reply::begin(true);
-    r.str("cmd", "frame").str("scene", worlds::name()).u32("frame", n);
+    r.str("cmd", "frame").str("scene", current_world::name()).u32("frame", n);
     render_fields(r, d, f.render);
     frame_fields(r, f);
     r.end();
@@ -156,9 +156,9 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     Progress p{"play", 0, 0};  // stops a long frame; the frame events are the progress
     const raster::Watch watch = p.watch();
     for (uint32_t i = 0; i < frames && !interrupted(i); ++i, ++done) {
-        int32_t n = int32_t(i % uint32_t(worlds::world().frames));
+        int32_t n = int32_t(i % uint32_t(current_world::world().frames));
         d.page = hidden_page();
-        worlds::FrameResult f = worlds::render(n, *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
+        current_world::FrameResult f = current_world::render(n, *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
         if (f.render.stats.interrupted) break;  // cut short by the next line: neither shown nor counted
         uint64_t t0 = timer::rdtsc();
         bool retrace = vga::flip(d.page);
@@ -196,7 +196,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     uint32_t frames;
     DrawArgs d;
     if (!parse_animation_args("bench", args, nargs, MAX_BENCH_FRAMES, " (spread evenly over the scene's animation)", &frames, &d)) return;
-    const raster::Probe probe = worlds::bench_probe();
+    const raster::Probe probe = current_world::bench_probe();
     uint64_t polygons = 0, rejected = 0, spans = 0, pixels = 0;
     MapperTally tally;
     bool used_asm = false;
@@ -204,7 +204,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     Progress p{"bench", 0, 0};  // stops a long frame; the bench events are the progress
     const raster::Watch watch = p.watch();
     for (uint32_t i = 0; i < frames && !interrupted(i); ++i, ++done) {
-        const worlds::BenchFrame b = worlds::bench_frame(i, frames, *d.mapper, d.surface, d.variant, probe, &watch);
+        const current_world::BenchFrame b = current_world::bench_frame(i, frames, *d.mapper, d.surface, d.variant, probe, &watch);
         if (b.cut) break;  // cut short by the next line: no figure of it
         d.page = b.page;
         const raster::RenderStats& r = b.stats;
@@ -242,7 +242,7 @@ void write_budget(lib::JsonLine& r, const char* key, const raster::Budget& b) {
 // `budget MAX-ERROR|any [exact|any]` sets one (coverage exact unless `any`) until then or the next load.
 void cmd_budget(Context&, const StrView* args, size_t nargs) {
     if (nargs == 1 && args[0].equals("scene")) {
-        worlds::set_budget(nullptr);
+        current_world::set_budget(nullptr);
     } else if (nargs >= 1) {
         raster::Budget b;
         b.given = true;
@@ -256,11 +256,11 @@ void cmd_budget(Context&, const StrView* args, size_t nargs) {
             usage_error("budget");
             return;
         }
-        worlds::set_budget(&b);
+        current_world::set_budget(&b);
     }
     lib::JsonLine r = reply::begin(true);
-    r.str("cmd", "budget").str("source", worlds::budget_overridden() ? "command" : worlds::loaded() ? "scene" : "default");
-    write_budget(r, "budget", worlds::budget());
+    r.str("cmd", "budget").str("source", current_world::budget_overridden() ? "command" : current_world::loaded() ? "scene" : "default");
+    write_budget(r, "budget", current_world::budget());
     r.end();
 }
 

@@ -2,7 +2,7 @@
 // argument counts are checked here so that no handler has to. One LineAssembler takes every byte
 // that is not an upload's: the reader's, and those a long command finds waiting (line_arrived).
 #include "drivers/serial.h"
-#include "kernel/files.h"
+#include "kernel/present/file_table.h"
 #include "kernel/lib/protocol.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
@@ -38,7 +38,7 @@ void dispatch(Context& ctx, const char* line) {
 }
 
 // A line refused whole (too long, a control character) is answered; where it is an upload header
-// its payload is dropped first, as a refused header's (files::discard), and the reply says how much.
+// its payload is dropped first, as a refused header's (file_table::discard), and the reply says how much.
 void refuse_line(Result r) {
     lib::Fmt m;
     if (r == Result::TooLong) {
@@ -54,7 +54,7 @@ void refuse_line(Result r) {
         reply::error("?", m.c_str());
         return;
     }
-    const size_t dropped = files::discard(announced, header_ended_by_cr());
+    const size_t dropped = file_table::discard(announced, header_ended_by_cr());
     reply::begin(false).str("cmd", "?").str("error", m.c_str()).u32("discarded", uint32_t(dropped)).end();
 }
 

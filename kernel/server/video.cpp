@@ -2,7 +2,7 @@
 // palettes, flipping and reading back pages, and the Bochs VBE mode.
 #include "drivers/timer.h"
 #include "drivers/vga.h"
-#include "kernel/draw.h"
+#include "kernel/present/patterns.h"
 #include "kernel/lib/encode.h"
 #include "kernel/scene/pattern.h"
 #include "kernel/server/commands.h"
@@ -76,7 +76,7 @@ void cmd_pattern(Context&, const StrView* args, size_t) {
     int page;
     if (!parse_page("pattern", args[1], &page)) return;
     uint64_t t0 = timer::rdtsc();
-    draw::pattern(p, page);
+    patterns::draw(p, page);
     uint64_t ticks = timer::rdtsc() - t0;
     reply::begin(true).str("cmd", "pattern").str("pattern", raster::pattern_name(p)).u32("page", uint32_t(page)).u64("ticks", ticks).end();
 }

@@ -1,17 +1,17 @@
 // The on-screen bench (onscreen.h).
-#include "kernel/onscreen.h"
+#include "kernel/show/onscreen.h"
 
 #include "drivers/serial.h"
 #include "drivers/vga.h"
 #include "kernel/core/measured.h"
 #include "kernel/core/policy.h"
-#include "kernel/files.h"
+#include "kernel/present/file_table.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
 #include "kernel/lib/qr.h"
 #include "kernel/scene/text.h"
 #include "kernel/server/commands.h"
-#include "kernel/worlds.h"
+#include "kernel/present/current_world.h"
 
 namespace onscreen {
 
@@ -41,7 +41,7 @@ constexpr int MAX_PARTS = 32, PART_HEADER = 40;
 int g_part_start[MAX_PARTS + 1];
 int g_part_count = 0;
 
-const char* scene_name(const Setup& s, int i) { return files::at(s.scenes[i]).name; }
+const char* scene_name(const Setup& s, int i) { return file_table::at(s.scenes[i]).name; }
 
 // per pixel, in tenths
 uint64_t tenths_per_pixel(uint64_t ticks, uint64_t pixels) { return pixels ? ticks * 10 / pixels : 0; }
@@ -270,7 +270,7 @@ void show_page(const Setup& s, int k, raster::TextColours c) {
 
 bool run(const Setup& s, NextKey next_key, void* ctx) {
     g_row_count = 0;
-    const raster::Probe probe = worlds::bench_probe();
+    const raster::Probe probe = current_world::bench_probe();
     // the bench command's watch: a byte on COM1 stops a long frame (and so the bench), a page fault
     // names the mapper and polygon; and the same instructions as the command's, which it is compared with
     server::Progress progress{"bench", 0, 0};
@@ -280,10 +280,10 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
     const int scenes = s.scene_count < MAX_SCENES ? s.scene_count : MAX_SCENES;
     const int total = scenes * raster::MAPPER_COUNT;
     for (int i = 0; i < scenes && !stopped; ++i) {
-        const files::File& f = files::at(s.scenes[i]);
+        const file_table::File& f = file_table::at(s.scenes[i]);
         raster::ParseError pe;
-        if (!worlds::load(f.name, f.data, f.size, &pe)) continue;
-        colours = raster::text_colours(worlds::world().palette);
+        if (!current_world::load(f.name, f.data, f.size, &pe)) continue;
+        colours = raster::text_colours(current_world::world().palette);
         for (int m = 0; m < raster::MAPPER_COUNT && !stopped; ++m) {
             const raster::Mapper& mapper = raster::MAPPERS[m];
             Row& r = g_rows[g_row_count++];
@@ -294,10 +294,10 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
                     stopped = r.interrupted = true;
                     break;
                 }
-                const worlds::BenchFrame b = worlds::bench_frame(k, s.frames, mapper, raster::home_surface(mapper), raster::Variant::Asm, probe, &watch);
+                const current_world::BenchFrame b = current_world::bench_frame(k, s.frames, mapper, raster::home_surface(mapper), raster::Variant::Asm, probe, &watch);
                 if (b.cut) return false;  // a line came: the server takes over
                 r.pixels += b.stats.pixels, r.polygons += b.stats.polygons;
-                r.ticks_inner += b.figures[worlds::B_INNER], r.ticks_frame += b.figures[worlds::B_TICKS];
+                r.ticks_inner += b.figures[current_world::B_INNER], r.ticks_frame += b.figures[current_world::B_TICKS];
             }
             double e;
             if (raster::measured_error(f.name, mapper.name, &e)) r.error = e;

@@ -1,21 +1,21 @@
 // The boot show: scenes played frame by frame, or patterns; the keyboard drives it, the serial
 // line interrupts it.
-#include "kernel/show.h"
+#include "kernel/show/show.h"
 
 #include "drivers/keyboard.h"
 #include "drivers/serial.h"
 #include "drivers/timer.h"
 #include "drivers/vga.h"
 #include "kernel/core/choice.h"
-#include "kernel/draw.h"
-#include "kernel/files.h"
+#include "kernel/present/patterns.h"
+#include "kernel/present/file_table.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
 #include "kernel/lib/keys.h"
-#include "kernel/onscreen.h"
+#include "kernel/show/onscreen.h"
 #include "kernel/scene/text.h"
 #include "kernel/server/commands.h"
-#include "kernel/worlds.h"
+#include "kernel/present/current_world.h"
 
 namespace show {
 
@@ -23,7 +23,7 @@ namespace {
 
 bool byte_waiting(void*) { return server::line_arrived(); }
 
-bool is_world(const files::File& f) {
+bool is_world(const file_table::File& f) {
     raster::ParseError e;
     return raster::scene_version(reinterpret_cast<const char*>(f.data), f.size, &e) == 2;
 }
@@ -32,7 +32,7 @@ void patterns(uint32_t interval_ms) {
     for (uint32_t n = 0;; ++n) {
         if (server::line_arrived()) return;
         int page = (vga::shown_page() + 1) % vga::MODEX_PAGES;
-        draw::pattern(raster::Pattern(n % raster::PATTERN_COUNT), page);
+        patterns::draw(raster::Pattern(n % raster::PATTERN_COUNT), page);
         vga::flip(page);
         if (timer::wait_ms_or(interval_ms, byte_waiting, nullptr)) return;
     }
@@ -67,13 +67,13 @@ struct Show {
     bool served = false;  // a byte on COM1 ended the on-screen bench: the show gives way
 };
 
-const files::File& scene_file(const Show& s) { return files::at(s.scenes[s.scene]); }
+const file_table::File& scene_file(const Show& s) { return file_table::at(s.scenes[s.scene]); }
 
 bool load_scene(Show& s) {
-    const files::File& f = scene_file(s);
+    const file_table::File& f = scene_file(s);
     raster::ParseError e;
-    s.loaded = worlds::load(f.name, f.data, f.size, &e);
-    if (s.loaded) s.colours = raster::text_colours(worlds::world().palette);
+    s.loaded = current_world::load(f.name, f.data, f.size, &e);
+    if (s.loaded) s.colours = raster::text_colours(current_world::world().palette);
     s.next_frame = 0;
     return s.loaded;
 }
@@ -84,15 +84,15 @@ void set_line(Show& s, const lib::Fmt& f) {
 
 // The HUD's lines for a frame just drawn: the scene and frame, the mapper (auto: its budget and
 // shares), frames a second and cycles a pixel (TSC; the HUD's own drawing left out), the surface.
-void compose_hud(Show& s, const worlds::FrameResult& r, uint64_t period) {
+void compose_hud(Show& s, const current_world::FrameResult& r, uint64_t period) {
     s.hud_count = 0;
     lib::Fmt a;
-    a.s(worlds::name()).s("  frame ").u(uint32_t(s.shown_frame)).s("/").u(uint32_t(worlds::world().frames));
+    a.s(current_world::name()).s("  frame ").u(uint32_t(s.shown_frame)).s("/").u(uint32_t(current_world::world().frames));
     set_line(s, a);
     lib::Fmt b;
     b.s(s.mapper->name);
-    if (s.mapper->chooses) {
-        const raster::Budget budget = worlds::budget();
+    if (s.mapper->is_auto) {
+        const raster::Budget budget = current_world::budget();
         b.s(", budget ");
         if (budget.max_error < 0) b.s("any");
         else b.decimal(budget.max_error);
@@ -118,7 +118,7 @@ void compose_hud(Show& s, const worlds::FrameResult& r, uint64_t period) {
         d.s(" all");
     }
     set_line(s, d);
-    if (!s.mapper->chooses || pixels == 0) return;
+    if (!s.mapper->is_auto || pixels == 0) return;
     // auto: the mappers that drew pixels, the most first, with their shares
     bool listed[raster::MAPPER_LIMIT] = {};
     for (int k = 0; k < HUD_SHARES; ++k) {
@@ -145,7 +145,7 @@ void draw_hud(Show& s, int page) {
 void draw_frame(Show& s, int32_t n, bool running) {
     const int page = vga::shown_page() == 0 ? 1 : 0;
     const uint64_t start = timer::rdtsc();
-    const worlds::FrameResult r = worlds::render(n, *s.mapper, s.surface, page, raster::Variant::Asm);
+    const current_world::FrameResult r = current_world::render(n, *s.mapper, s.surface, page, raster::Variant::Asm);
     s.shown_frame = n;
     const uint64_t period = running && s.running_before ? start - s.last_start - s.last_hud_ticks : 0;
     const uint64_t hud_start = timer::rdtsc();
@@ -168,7 +168,7 @@ void draw_help_page(Show& s) {
 }
 
 void step_budget(int direction) {
-    raster::Budget b = worlds::budget();
+    raster::Budget b = current_world::budget();
     const double now = budget_order(b.max_error);
     int pick = -1;
     for (int i = 0; i < BUDGET_STEP_COUNT; ++i) {
@@ -182,7 +182,7 @@ void step_budget(int direction) {
     if (pick < 0) return;
     b.given = true;
     b.max_error = BUDGET_STEPS[pick];
-    worlds::set_budget(&b);
+    current_world::set_budget(&b);
 }
 
 int mapper_index(const raster::Mapper* m) { return int(m - raster::MAPPERS); }
@@ -234,7 +234,7 @@ void on_key(Show& s, lib::Key key) {
         redraw = false;
         if (s.loaded) {
             draw_frame(s, s.next_frame, false);
-            s.next_frame = (s.next_frame + 1) % worlds::world().frames;
+            s.next_frame = (s.next_frame + 1) % current_world::world().frames;
         }
         break;
     case lib::Action::Surface: s.surface = s.surface == raster::Surface::Vga ? raster::Surface::Linear : raster::Surface::Vga; break;
@@ -256,12 +256,12 @@ void on_key(Show& s, lib::Key key) {
     if (redraw && s.loaded && !s.help) {
         const int32_t n = moved ? 0 : s.shown_frame < 0 ? 0 : s.shown_frame;
         draw_frame(s, n, false);
-        s.next_frame = (n + 1) % worlds::world().frames;
+        s.next_frame = (n + 1) % current_world::world().frames;
     }
     lib::JsonLine e(serial::sink());
     e.str("event", "key").str("key", lib::key_name(key)).str("action", lib::action_name(action));
-    e.str("scene", s.loaded ? worlds::name() : "").i32("frame", s.shown_frame).str("mapper", s.mapper->name);
-    server::write_budget(e, "budget", worlds::budget());
+    e.str("scene", s.loaded ? current_world::name() : "").i32("frame", s.shown_frame).str("mapper", s.mapper->name);
+    server::write_budget(e, "budget", current_world::budget());
     e.boolean("paused", s.paused).str("surface", s.surface == raster::Surface::Vga ? "vga" : "ram").boolean("help", s.help);
     e.begin_array("hud");
     for (int i = 0; i < s.hud_count; ++i) e.item_str(s.hud_text[i]);
@@ -282,7 +282,7 @@ void play(Show& s) {
         if (!keys(s)) return;
         if (s.paused || s.help || !s.loaded) continue;
         draw_frame(s, s.next_frame, true);
-        if (++s.next_frame < worlds::world().frames) continue;
+        if (++s.next_frame < current_world::world().frames) continue;
         s.next_frame = 0;
         if (s.pinned) continue;
         s.scene = (s.scene + 1) % s.scene_count;  // the animation played: on to the next scene
@@ -301,9 +301,9 @@ void run(const Options& o) {
     s.options = o;
     s.mapper = o.mapper.empty() ? nullptr : raster::find_mapper(o.mapper);
     if (!s.mapper) s.mapper = raster::find_mapper("auto");
-    for (int i = 0; i < files::count() && s.scene_count < MAX_SCENES; ++i) {
-        const files::File& f = files::at(i);
-        if (!is_world(f) || files::find(lib::StrView{f.name, lib::c_length(f.name)}) != &f) continue;  // (shadowed by a module)
+    for (int i = 0; i < file_table::count() && s.scene_count < MAX_SCENES; ++i) {
+        const file_table::File& f = file_table::at(i);
+        if (!is_world(f) || file_table::find(lib::StrView{f.name, lib::c_length(f.name)}) != &f) continue;  // (shadowed by a module)
         if (!o.scene.empty() && o.scene.equals(f.name)) s.scene = s.scene_count, s.pinned = true;
         s.scenes[s.scene_count++] = i;
     }

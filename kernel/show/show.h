@@ -22,7 +22,7 @@ struct Options {
     uint32_t bench_frames = 0;    // run the on-screen bench first, this many frames a row (0: not)
 };
 
-// Sets Mode X and plays (after the on-screen bench, kernel/onscreen.h, when `bench_frames` asks;
+// Sets Mode X and plays (after the on-screen bench, kernel/show/onscreen.h, when `bench_frames` asks;
 // over the scene given, else every 3D scene): every 3D scene file, or only `scene` when it is given (until a key picks
 // another), drawn into the back page, flipped on the retrace, the HUD over it. With `patterns` (or
 // without any 3D scene, or a `scene` that is not there) the test patterns instead. Returns as soon as

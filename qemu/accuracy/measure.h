@@ -133,7 +133,7 @@ raster::AccuracyMetrics measure_world_frame(const LoadedWorld& w, const raster::
 
 // What a single mapper proves on a frame before drawing it: the largest of its error bounds
 // (footprints, the tightest it gives) over the polygons it draws, NO_BOUND where one has none, and
-// whether every one of them promises exact coverage (docs/accuracy.md, "Error bounds"); the
+// whether every one of them promises exact coverage (docs/bounds.md); the
 // screen's clip.
 struct FrameBound {
     double footprint = 0;

@@ -124,7 +124,7 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
         auto frame = world_frame(s.host, n);
         if (budget) frame->budget = *budget;
         raster::accumulate(row.accuracy, measure_world_frame(s.host, *frame, m, axis));
-        if (!m.chooses) {
+        if (!m.is_auto) {
             const FrameBound proof = world_frame_bound(s.host, *frame, m, axis);
             row.max_bound = i == 0 || proof.footprint > row.max_bound ? proof.footprint : row.max_bound;
             row.bound_exact = (i == 0 || row.bound_exact) && proof.exact_coverage;
@@ -279,7 +279,7 @@ int run(const Args& a) {
             rows.push_back(row);
         }
         for (const raster::Mapper* m : mappers) {
-            if (!m->chooses) continue;
+            if (!m->is_auto) continue;
             for (double e : AUTO_BUDGETS) {
                 raster::Budget b{true, e, true};
                 std::fprintf(stderr, "[%s] %s auto at budget %s ", s.name.c_str(), s.name.c_str(), budget_text(e).c_str());

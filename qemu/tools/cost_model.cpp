@@ -77,7 +77,7 @@ std::string cost_model_source(const std::map<std::string, FittedCost>& costs, co
     for (int i = 0; i < raster::MAPPER_COUNT; ++i) {
         const char* name = raster::MAPPERS[i].name;
         auto c = costs.find(name);
-        bool measured = c != costs.end() && !raster::MAPPERS[i].chooses;
+        bool measured = c != costs.end() && !raster::MAPPERS[i].is_auto;
         std::snprintf(line, sizeof line, "    {\"%s\", %.1ff, %.2ff, %.3ff},%s\n", name, measured ? c->second.polygon : -1.0,
                       measured ? c->second.span : -1.0, measured ? c->second.pixel : -1.0,
                       measured ? (" // " + std::to_string(c->second.scenes) + " scenes").c_str() : "");

@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
                 char* end = nullptr;
                 const std::string b = full_name.substr(at + 1);
                 budget = Budget{true, std::strtod(b.c_str(), &end), true};
-                if (!m->chooses || b.empty() || *end || !(budget.max_error >= 0)) fail("'" + full_name + "': only auto takes @BUDGET, a number of footprints from 0");
+                if (!m->is_auto || b.empty() || *end || !(budget.max_error >= 0)) fail("'" + full_name + "': only auto takes @BUDGET, a number of footprints from 0");
             }
             const Axis axis = home_axis(*m);
             const bool planar = ram_planar(*m, axis);

@@ -247,7 +247,7 @@ std::string card_html(const GalleryPage& page, const GalleryCard& c) {
              std::to_string(m.exact) + "\" data-drawn=\"" + std::to_string(m.drawn_pixels) + "\" data-gaps=\"" +
              std::to_string(m.gaps) + "\" data-overdraw=\"" + std::to_string(m.overdraw) + "\" data-max-footprint=\"" +
              fixed(m.max_footprint_error, 6) + "\"";
-        if (c.mapper->chooses) s += " data-budget=\"" + (c.budget.max_error < 0 ? "any" : budget_text(c.budget.max_error)) + "\"";
+        if (c.mapper->is_auto) s += " data-budget=\"" + (c.budget.max_error < 0 ? "any" : budget_text(c.budget.max_error)) + "\"";
     }
     s += ">\n<h3>" + escape(c.title) + "</h3>\n<div class=\"maps\">\n";
     if (!c.mapper) {
@@ -257,11 +257,11 @@ std::string card_html(const GalleryPage& page, const GalleryCard& c) {
     }
     s += figure(image_path(page, c, "frame"), c.title + ": the frame");
     s += figure(image_path(page, c, "error"), c.title + ": footprint error");
-    if (c.mapper->chooses) s += figure(image_path(page, c, "mappers"), c.title + ": the mapper of each pixel");
+    if (c.mapper->is_auto) s += figure(image_path(page, c, "mappers"), c.title + ": the mapper of each pixel");
     s += "</div>\n<table class=\"figures\">\n";
     auto row = [&](const std::string& name, const std::string& value) { s += "<tr><th>" + name + "</th><td>" + value + "</td></tr>\n"; };
     row("speed", speed_text(page, c));
-    if (c.mapper->chooses) row("budget", escape(budget_words(c.budget)));
+    if (c.mapper->is_auto) row("budget", escape(budget_words(c.budget)));
     const bool compared = m.compared > 0;
     row("footprint error max / p99.9 / mean", compared ? fixed(m.max_footprint_error, 3) + " / " + fixed(m.p999_footprint_error, 3) + " / " +
                                                              fixed(m.mean_footprint_error, 4)
@@ -271,7 +271,7 @@ std::string card_html(const GalleryPage& page, const GalleryCard& c) {
     row("gaps / overdraw", std::to_string(m.gaps) + " / " + std::to_string(m.overdraw));
     s += "</table>\n";
     if (!c.refused.empty()) s += "<p class=\"refused\">" + escape(c.refused) + "</p>\n";
-    if (c.mapper->chooses) {
+    if (c.mapper->is_auto) {
         // the mappers auto drew with: polygons, and the pixels each shows (the mapper map's)
         std::map<const raster::Mapper*, std::pair<uint32_t, uint32_t>> share;
         for (const FrameMap::Polygon& p : c.map.polygons)
@@ -301,7 +301,7 @@ void write_page(const std::string& dir, const GalleryPage& page, const raster::P
         }
         save_png(dir + "/" + image_path(page, c, "frame"), colourise(c.picture, palette));
         save_png(dir + "/" + image_path(page, c, "error"), error_map_image(c.map));
-        if (c.mapper->chooses) save_png(dir + "/" + image_path(page, c, "mappers"), mapper_map_image(c.map));
+        if (c.mapper->is_auto) save_png(dir + "/" + image_path(page, c, "mappers"), mapper_map_image(c.map));
     }
     const std::string path = dir + "/" + page.scene + ".html";
     std::ofstream out = open_page(path);

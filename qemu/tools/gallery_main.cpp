@@ -112,7 +112,7 @@ GalleryPage scene_page(const std::string& spec, const Args& a) {
     }
     for (const std::string& name : a.mappers) {
         const raster::Mapper& m = *raster::find_mapper({name.data(), name.size()});
-        if (!m.chooses) continue;
+        if (!m.is_auto) continue;
         for (double e : AUTO_BUDGETS) {
             page.cards.push_back(mapper_card(w, *frame, m, raster::Budget{true, e, true}, true));
             progress(page.cards.back());

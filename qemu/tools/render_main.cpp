@@ -19,7 +19,7 @@ const char* USAGE =
     "usage: modexlab-render SCENE --mapper NAME|reference [--axis rows|columns] --out FILE.png\n"
     "                       [--frame N] [--compare [--diff FILE.png]]\n"
     "  --frame    a 3D scene's frame (default 0; frame n shows time n/30 s)\n"
-    "  --mapper   a mapper of the registry (docs/mappers.md: exact, affine, fast-affine, ...) or 'reference'\n"
+    "  --mapper   a mapper of the registry (docs/mappers.md and docs/classics.md: exact, affine, fast-affine, ...) or 'reference'\n"
     "  --axis     the walker: rows or columns (default: the mapper's own, rows for those that walk\n"
     "             both; our generic walkers cover the same pixels either way)\n"
     "  --out      the picture, 320x240, in the scene's palette\n"
@@ -149,7 +149,7 @@ int render(const std::vector<std::string>& words) {
         throw HarnessError(std::string(mapper->name) + " cannot take this scene's texture (" +
                            raster::texture_kind_name(s.scene->texture_kind) + " " + std::to_string(s.texture.width) + "x" +
                            std::to_string(s.texture.height) + " " + raster::wrap_name(s.texture.wrap) +
-                           "): see its needs in docs/mappers.md");
+                           "): see its needs in docs/mappers.md or docs/classics.md");
     raster::RenderStats stats;
     IndexImage picture = render_mapper(s, *mapper, axis, &stats);
     save_png(out, colourise(picture, pal));

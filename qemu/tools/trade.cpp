@@ -49,7 +49,7 @@ std::vector<const TradeRow*> drawing_rows_by_speed(const std::vector<TradeRow>& 
 
 // The classics' own published figures: cycles per pixel of the inner loop as their authors gave
 // them, and the instructions a pixel of the published listing, counted by hand in the steady state
-// (docs/mappers.md, "The published loops counted"), beside the same count for our reproduction.
+// (docs/classics.md, "The published loops counted"), beside the same count for our reproduction.
 // A Pentium pairs two simple instructions a cycle, so its cycles and instructions do not divide.
 struct Published {
     const char* mapper;  // ours that is that loop, or "" when we did not build it
@@ -192,7 +192,7 @@ bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage) {
 // "auto" and "auto@BUDGET").
 bool single_mapper(const TradeRow& r) {
     const raster::Mapper* m = raster::find_mapper(r.mapper.c_str());
-    return m && !m->chooses;
+    return m && !m->is_auto;
 }
 
 // Whether the row's own bounds prove a budget on the whole scene before drawing: everything drawn,
@@ -209,7 +209,7 @@ void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
     std::string table;
     for (const TradeRow& a : rows) {
         const raster::Mapper* m = raster::find_mapper(a.mapper.substr(0, a.mapper.find('@')).c_str());
-        if (!m || !m->chooses || !a.pixels) continue;
+        if (!m || !m->is_auto || !a.pixels) continue;
         const TradeRow *best = nullptr, *proven = nullptr;
         for (const TradeRow& r : rows) {
             if (r.scene != a.scene || !single_mapper(r)) continue;
@@ -356,7 +356,7 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "ours counted: the same count for our NASM loop. Ours measured: guest instructions per pixel of our loop under QEMU "
            "icount (with its per-span and per-segment work), on the scene where the mapper drew the most pixels without "
            "refusing a polygon. A Pentium pairs two simple instructions a cycle: cycles and instructions sit side by side, "
-           "they do not divide (docs/mappers.md, \"The published loops counted\").\n\n"
+           "they do not divide (docs/classics.md, \"The published loops counted\").\n\n"
         << "| loop | published cycles/px | machine | listing instr/px | ours | ours counted | ours measured instr/px | scene |\n"
            "|---|--:|---|---|---|---|--:|---|\n";
     auto best_row = [&](const std::string& mapper) -> const TradeRow* {

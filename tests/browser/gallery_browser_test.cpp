@@ -99,14 +99,14 @@ TEST_P(GalleryBrowser, EveryImageLoadsAndThePageShowsWhatItSays) {
         ASSERT_NE(m, nullptr) << card.at("data-mapper");
         if (kind == "mapper") mappers.insert(m->name);
         if (kind == "budget") {
-            EXPECT_TRUE(m->chooses) << m->name;
+            EXPECT_TRUE(m->is_auto) << m->name;
             budgets.insert(card.at("data-budget"));
             EXPECT_EQ(card.at("data-title"), std::string(m->name) + "@" + card.at("data-budget"));
         }
         size_t pictures = 0;  // the frame, its error map, and auto's mapper map
         const std::string section = element(dom, "id=\"" + card.at("id") + "\"", "</section>");
         for (const Attributes& img : htmltest::tags(section, "img")) pictures += img.at("src").find("img/" + page + "-") == 0;
-        EXPECT_EQ(pictures, m->chooses ? 3u : 2u) << card.at("id");
+        EXPECT_EQ(pictures, m->is_auto ? 3u : 2u) << card.at("id");
     }
     EXPECT_EQ(references, 1);
     std::multiset<std::string> registry;

@@ -114,7 +114,7 @@ TEST(Gallery, PagesImagesAndFiguresAgree) {
         if (card.count("data-budget") && card.at("data-budget") != "any") {
             EXPECT_LE(max, std::stod(card.at("data-budget")) + 1e-9);
         }
-        if (!raster::find_mapper(mapper.c_str())->chooses) continue;
+        if (!raster::find_mapper(mapper.c_str())->is_auto) continue;
         // auto's mapper map: only the mappers listed, each with the pixels it says, adding up to those drawn
         ASSERT_TRUE(card.count("data-budget"));
         RgbImage by = load_image(stem + "-mappers.png");

@@ -1,4 +1,4 @@
-// System tests: the kernel's guard pages (kernel/guard.h) catch a mapper reading past its texture or
+// System tests: the kernel's guard pages (kernel/platform/guard.h) catch a mapper reading past its texture or
 // writing past its surface, and the kernel's `fuzz` command draws the host's random extreme polygons
 // (kernel/core/fuzz.h) with every mapper between guard pages, with the host's very counts.
 #include <memory>

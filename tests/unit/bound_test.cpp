@@ -278,7 +278,7 @@ TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
 
 }  // namespace
 
-// The chords' bound relative to the step (docs/accuracy.md, "Chords, relative to the step"): where
+// The chords' bound relative to the step (docs/bounds.md, "Chords, relative to the step"): where
 // a pixel's deviation is at most X times its step plus r and its step at most its footprint F, its
 // footprint error is ceil(X F + r) / max(1, F) at most; the bound must cover that for every F and
 // reach it (as F comes down to where a texel more first appears).

@@ -42,7 +42,7 @@ TEST(MeasuredErrors, EveryDemoSceneAndMapperHasItsRow) {
             EXPECT_TRUE(measured_error((std::string(d.name) + ".scene").c_str(), MAPPERS[i].name, &e))
                 << d.name << " " << MAPPERS[i].name << ": kernel/mappers/errors.cpp is out of date: run make bench";
             EXPECT_GE(e, -1) << d.name << " " << MAPPERS[i].name;
-            if (MAPPERS[i].guarantee.max_error == 0 && MAPPERS[i].guarantee.exact_coverage && !MAPPERS[i].chooses) {
+            if (MAPPERS[i].guarantee.max_error == 0 && MAPPERS[i].guarantee.exact_coverage && !MAPPERS[i].is_auto) {
                 EXPECT_EQ(e, 0) << d.name << " " << MAPPERS[i].name << " promises the reference";
             }
         }

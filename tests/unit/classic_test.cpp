@@ -1,5 +1,5 @@
 // The classic mappers' own properties: what each reproduces, checked where the published
-// algorithm says what it does (docs/mappers.md).
+// algorithm says what it does (docs/classics.md).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -376,7 +376,7 @@ TEST(FastAffine, TakesEveryPowerOfTwoTextureAsItsTiling) {
 
 // fast-table draws the pixels fast-affine draws, each texel within one on each axis of fast-affine's,
 // and both ways somewhere; and each texel's centre within one texel of fast-affine's 16.16 line at
-// the pixel (the line moved by at most half a texel, then floored: docs/accuracy.md, "The offset
+// the pixel (the line moved by at most half a texel, then floored: docs/bounds.md, "The offset
 // table"; a table without the half on v, or on the tiled block whose u carries into the next row,
 // reads a texel whose centre is 1.5 away). fast-table-columns likewise against fast-columns (a
 // planar target): on random triangles with texel coordinates over many periods, steps to several

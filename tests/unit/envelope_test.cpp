@@ -1,4 +1,4 @@
-// The object's envelope (docs/accuracy.md, "The object's envelope"): its bound on a triangle is
+// The object's envelope (docs/auto.md, "The object's envelope"): its bound on a triangle is
 // never below what the triangle's own spread gives (spread_planes_deviation, the fast mappers'
 // whole-polygon bound) nor below the error fast-affine measures on it: on random triangles fitted
 // tightly by their envelope (tiny to the reach guard's limit, slivers up to the conditioning

@@ -114,7 +114,7 @@ TEST(Stability, PlaneSelectionOnPlanarTargets) {
             selects = 0;
             RenderStats stats;
             for (const auto& p : polygons) draw_polygon(p.data(), int(p.size()), tex, mapper, axis, t, &stats);
-            if (axis == Axis::Columns || mapper.chooses) {
+            if (axis == Axis::Columns || mapper.is_auto) {
                 EXPECT_EQ(uint32_t(selects), stats.spans) << mapper.name << ": one plane selection per column";
                 EXPECT_GT(stats.pixels, 0u) << mapper.name;
             } else if (mapper.needs & NEED_PLANAR_TARGET) {

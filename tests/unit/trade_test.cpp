@@ -201,7 +201,7 @@ TEST(Probe, ChangesNoPictureAndItsPhasesAddUp) {
         for (uint64_t ticks : probe.ticks) sum += ticks;
         EXPECT_EQ(sum, probe.last - start) << m.name;
         // only auto laps its choosing
-        EXPECT_EQ(probe.laps[int(Phase::Choose)] > 0, m.chooses) << m.name;
+        EXPECT_EQ(probe.laps[int(Phase::Choose)] > 0, m.is_auto) << m.name;
         EXPECT_EQ(probe.net(Phase::Choose), 0u) << m.name;
         if (stats.polygons) {
             ++probed;
