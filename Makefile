@@ -374,9 +374,10 @@ run:
 	DISPLAY=$(X_DISPLAY) $(HARNESS) run --kernel $(KERNEL) --out $(BUILD)/run $(if $(SCENE),--scene $(SCENE)) \
 		$(if $(MAPPER),--mapper $(MAPPER)) $(if $(filter 1,$(DISPLAY)),--display)
 
-# `make bench`: every mapper on every demo scene; the report in build/report (docs/bench.md), and the
-# cost model auto chooses by, kernel/mappers/costs.cpp, and the errors the on-screen bench shows,
-# kernel/mappers/errors.cpp, when the run is full.
+# `make bench`: every mapper on every demo scene; the report in build/report (docs/bench.md), and,
+# when the run is full, the cost model auto chooses by (kernel/mappers/costs.cpp), the errors the
+# on-screen bench shows (kernel/mappers/errors.cpp), and the docs' figures (docs/data/trade.csv,
+# the generated tables of README.md and docs/results.md, the README's plot).
 # SCENES=a,b MAPPERS=x,y FRAMES=N narrow it.
 # Then the gallery, with the report's speeds.
 bench report:
@@ -384,11 +385,15 @@ bench report:
 	@$(MAKE) -s -j$(NPROC) DEPS_FOR=BENCH $(KERNEL) $(BENCH) $(CYCLES) $(RUN32) $(GALLERY)
 	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
 		$(if $(FRAMES),--frames $(FRAMES))
-	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "cost model and measured errors not copied (a narrowed run): $(BUILD)/report/costs.cpp and errors.cpp",\
+	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "not copied (a narrowed run): the cost model and measured errors and the docs' figures in $(BUILD)/report",\
 		cmp -s $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model unchanged" || \
 		{ cp $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model updated: kernel/mappers/costs.cpp (commit it)"; }; \
 		cmp -s $(BUILD)/report/errors.cpp kernel/mappers/errors.cpp && echo "measured errors unchanged" || \
-		{ cp $(BUILD)/report/errors.cpp kernel/mappers/errors.cpp && echo "measured errors updated: kernel/mappers/errors.cpp (commit it)"; })
+		{ cp $(BUILD)/report/errors.cpp kernel/mappers/errors.cpp && echo "measured errors updated: kernel/mappers/errors.cpp (commit it)"; }; \
+		cmp -s $(BUILD)/report/trade.csv docs/data/trade.csv || { mkdir -p docs/data && cp $(BUILD)/report/trade.csv docs/data/trade.csv && \
+			echo "the docs' figures updated: docs/data/trade.csv (commit it)"; }; \
+		$(BENCH) --refresh-docs docs/data/trade.csv; \
+		if [ -f $(BUILD)/report/trade-corridor.png ]; then cp $(BUILD)/report/trade-corridor.png docs/img/trade-corridor.png; fi)
 	$(GALLERY_RUN)
 
 # `make gallery`: a page a demo scene in build/gallery, every mapper's frame beside its footprint-error

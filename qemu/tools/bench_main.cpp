@@ -20,6 +20,7 @@
 #include "qemu/accuracy/measure.h"
 #include "qemu/harness/session.h"
 #include "qemu/tools/trade.h"
+#include "qemu/tools/trade_docs.h"
 
 namespace {
 
@@ -28,12 +29,15 @@ using namespace harness;
 const char* USAGE =
     "usage: modexlab-bench [--scenes NAME,...] [--mappers NAME,...] [--frames N] [--out DIR] [--kernel ELF] [--no-wall]\n"
     "       modexlab-bench --costs-from CSV [--out DIR]\n"
+    "       modexlab-bench --refresh-docs CSV\n"
     "  --scenes   demo scenes (default: all; modexlab-scene list) or scene files (uploaded; procedural textures only)\n"
     "  --mappers  mappers (default: all of the registry)\n"
     "  --frames   frames a scene, spread evenly over its animation (default 8)\n"
     "  --out      where the report goes (default build/report): trade.csv, trade.md, trade-SCENE.png, costs.cpp\n"
     "  --no-wall  skip the wall-clock frames per second (QEMU without icount)\n"
-    "  --costs-from  measure nothing: fit the cost model (costs.cpp) to an earlier run's trade.csv\n";
+    "  --costs-from  measure nothing: fit the cost model (costs.cpp) to an earlier run's trade.csv\n"
+    "  --refresh-docs  measure nothing: rewrite the generated tables of README.md and docs/results.md (run from the\n"
+    "             source tree) from a trade.csv, and say which changed\n";
 
 struct BenchScene {
     std::string name;  // in the report
@@ -45,13 +49,13 @@ struct BenchScene {
 struct Args {
     std::vector<std::string> scenes, mappers;
     int frames = 8;
-    std::string out, kernel, costs_from;
+    std::string out, kernel, costs_from, refresh_docs;
     bool wall = true;
 };
 
 // The settings a command line asks for; none when it asks for the usage.
 std::optional<Args> parse(const std::vector<std::string>& words) {
-    const CommandLine args = parse_command_line(words, {"--scenes", "--mappers", "--frames", "--out", "--kernel", "--costs-from"}, {"--no-wall"});
+    const CommandLine args = parse_command_line(words, {"--scenes", "--mappers", "--frames", "--out", "--kernel", "--costs-from", "--refresh-docs"}, {"--no-wall"});
     if (args.help()) return std::nullopt;
     if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
     Args a;
@@ -62,6 +66,7 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     a.kernel = args.text("--kernel");
     a.wall = !args.has("--no-wall");
     a.costs_from = args.text("--costs-from");
+    a.refresh_docs = args.text("--refresh-docs");
     if (a.scenes.empty())
         for (const DemoScene& d : demo_scenes()) a.scenes.push_back(d.name);
     if (a.mappers.empty())
@@ -113,7 +118,7 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
         row.drawn_by.emplace_back(d["mapper"].get<std::string>(), d["polygons"].get<uint64_t>(), d["pixels"].get<uint64_t>());
     row.enveloped = r.value("enveloped", uint64_t(0));
     const raster::Budget& b = budget ? *budget : s.host.world->budget;
-    row.budget_error = b.max_error, row.budget_exact = b.exact_coverage;
+    row.budget_error = b.max_error, row.budget_exact = b.exact_coverage, row.budget_given = b.given;
     row.budget = budget_words(b);
 
     // accuracy on the host twin, the same frames; the last one also against the kernel's screen
@@ -246,7 +251,23 @@ void write_costs(const std::string& csv, const std::string& dir) {
     std::printf("cost model: %s/costs.cpp, measured errors: %s/errors.cpp\n", dir.c_str(), dir.c_str());
 }
 
+// The docs' generated tables (trade_docs.h) from `csv`, each file rewritten only where it changed.
+void refresh_docs(const std::string& csv) {
+    const std::vector<TradeRow> rows = read_trade(csv);
+    for (const std::string& path : GENERATED_DOCS) {
+        const std::string text = read_whole_file(path);
+        int blocks = 0;
+        const std::string fresh = refresh_generated(text, rows, path, &blocks);
+        if (fresh != text) write_text(path, fresh);
+        std::printf("%s: %d generated tables, %s\n", path.c_str(), blocks, fresh == text ? "unchanged" : "refreshed (commit it)");
+    }
+}
+
 int run(const Args& a) {
+    if (!a.refresh_docs.empty()) {
+        refresh_docs(a.refresh_docs);
+        return 0;
+    }
     if (!a.costs_from.empty()) {
         write_costs(a.costs_from, a.out);
         return 0;
@@ -313,8 +334,9 @@ int run(const Args& a) {
         std::string png = write_plot(a.out, s.name, rows);
         if (!png.empty()) info.plots.push_back(std::filesystem::path(png).filename().string());
     }
+    // trade.md from the CSV read back: the figures it shows are the CSV's, as the docs' tables are
     write_csv(a.out + "/trade.csv", rows);
-    write_markdown(a.out + "/trade.md", rows, info);
+    write_markdown(a.out + "/trade.md", read_trade(a.out + "/trade.csv"), info);
     write_costs(a.out + "/trade.csv", a.out);
     int differs = 0;
     for (const TradeRow& r : rows) differs += !r.kernel_equals_host;

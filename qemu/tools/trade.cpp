@@ -136,7 +136,8 @@ std::vector<std::string> csv_header() {
             "folded[pixels]", "share_exact[share]",
             "share_within_one[share]", "reference_pixels[pixels]", "gaps[pixels]", "overdraw[pixels]", "overlaps[pixels]",
             "index_differs[pixels]", "kernel_equals_host[bool]", "pareto[bool]", "max_bound[footprints]", "bound_exact_coverage[bool]",
-            "drawn_by[mapper:polygons:pixels;...]"};
+            "drawn_by[mapper:polygons:pixels;...]", "compared[pixels]", "exact[pixels]", "within_one[pixels]", "enveloped[polygons]",
+            "budget_error[footprints]", "budget_exact[bool]", "budget_given[bool]"};
 }
 
 void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
@@ -161,6 +162,9 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
             << "," << (r.max_bound < 0 ? "" : r.bound_exact ? "true" : "false") << ",";
         for (size_t i = 0; i < r.drawn_by.size(); ++i)
             out << (i ? ";" : "") << std::get<0>(r.drawn_by[i]) << ":" << std::get<1>(r.drawn_by[i]) << ":" << std::get<2>(r.drawn_by[i]);
+        out << "," << a.compared << "," << a.exact << "," << a.within_one << "," << r.enveloped << ","
+            << (r.budget_error < 0 ? "any" : budget_text(r.budget_error)) << "," << (r.budget_exact ? "true" : "false") << ","
+            << (r.budget_given ? "true" : "false");
         out << "\n";
     }
 }
@@ -177,6 +181,78 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
         lines.push_back(fields);
     }
     return lines;
+}
+
+std::vector<TradeRow> read_trade(const std::string& path) {
+    const std::vector<std::vector<std::string>> lines = read_csv(path);
+    if (lines.empty()) throw HarnessError(path + ": empty, not a trade.csv");
+    const std::vector<std::string>& header = lines[0];
+    auto column = [&](const std::string& name) {
+        for (size_t i = 0; i < header.size(); ++i)
+            if (header[i] == name || header[i].rfind(name + "[", 0) == 0) return i;
+        throw HarnessError(path + ": no column '" + name + "' (a trade.csv of an older make bench: run it again)");
+    };
+    std::vector<TradeRow> rows;
+    for (size_t n = 1; n < lines.size(); ++n) {
+        const std::vector<std::string>& f = lines[n];
+        const std::string where = path + ": line " + std::to_string(n + 1) + ": ";
+        if (f.size() != header.size())
+            throw HarnessError(where + std::to_string(f.size()) + " fields, the header has " + std::to_string(header.size()));
+        auto text = [&](const char* name) -> const std::string& { return f[column(name)]; };
+        auto number = [&](const char* name) {
+            const std::string& s = text(name);
+            char* end = nullptr;
+            const double v = std::strtod(s.c_str(), &end);
+            if (s.empty() || *end) throw HarnessError(where + name + " '" + s + "' is not a number");
+            return v;
+        };
+        auto count = [&](const char* name) {
+            const std::string& s = text(name);
+            char* end = nullptr;
+            const unsigned long long v = std::strtoull(s.c_str(), &end, 10);
+            if (s.empty() || *end || s[0] == '-') throw HarnessError(where + name + " '" + s + "' is not a count");
+            return uint64_t(v);
+        };
+        auto flag = [&](const char* name) {
+            const std::string& s = text(name);
+            if (s != "true" && s != "false") throw HarnessError(where + name + " '" + s + "' is not true or false");
+            return s == "true";
+        };
+        TradeRow r;
+        r.scene = text("scene"), r.mapper = text("mapper"), r.family = text("family"), r.surface = text("surface");
+        r.walker = text("walker"), r.loop = text("loop");
+        r.frames = uint32_t(count("frames")), r.polygons = count("polygons"), r.rejected = count("rejected");
+        r.spans = count("spans"), r.pixels = count("pixels");
+        r.ticks = count("ticks_frame"), r.geometry = count("ticks_geometry"), r.clear = count("ticks_clear"), r.draw = count("ticks_draw");
+        r.setup = count("ticks_setup"), r.walk = count("ticks_walk"), r.inner = count("ticks_inner"), r.choose = count("ticks_choose");
+        r.blit = count("ticks_blit");
+        r.host_ratio = text("host_cycles_ratio").empty() ? 0 : number("host_cycles_ratio");
+        raster::AccuracyMetrics& a = r.accuracy;
+        a.max_texel_error = uint32_t(count("max_texel_error")), a.mean_texel_error = number("mean_texel_error");
+        a.p999_texel_error = uint32_t(count("p999_texel_error"));
+        a.max_footprint_error = number("max_footprint_error"), a.mean_footprint_error = number("mean_footprint_error");
+        a.p999_footprint_error = number("p999_footprint_error");
+        a.folded = uint32_t(count("folded")), a.reference_pixels = uint32_t(count("reference_pixels"));
+        a.gaps = uint32_t(count("gaps")), a.overdraw = uint32_t(count("overdraw")), a.overlaps = uint32_t(count("overlaps"));
+        a.index_differs = uint32_t(count("index_differs"));
+        a.compared = uint32_t(count("compared")), a.exact = uint32_t(count("exact")), a.within_one = uint32_t(count("within_one"));
+        r.kernel_equals_host = flag("kernel_equals_host"), r.pareto = flag("pareto");
+        const std::string& bound = text("max_bound");
+        r.max_bound = bound.empty() ? -1 : bound == "none" ? raster::NO_BOUND : number("max_bound");
+        r.bound_exact = !bound.empty() && flag("bound_exact_coverage");
+        std::stringstream drawn(text("drawn_by"));
+        for (std::string item; std::getline(drawn, item, ';');) {
+            const size_t c1 = item.find(':'), c2 = item.rfind(':');
+            if (c1 == std::string::npos || c2 == c1) throw HarnessError(where + "drawn_by '" + item + "' is not mapper:polygons:pixels");
+            r.drawn_by.emplace_back(item.substr(0, c1), std::stoull(item.substr(c1 + 1, c2 - c1 - 1)), std::stoull(item.substr(c2 + 1)));
+        }
+        r.enveloped = count("enveloped");
+        r.budget_error = text("budget_error") == "any" ? raster::ANY_ERROR : number("budget_error");
+        r.budget_exact = flag("budget_exact"), r.budget_given = flag("budget_given");
+        r.budget = budget_words(raster::Budget{r.budget_given, r.budget_error, r.budget_exact});
+        rows.push_back(std::move(r));
+    }
+    return rows;
 }
 
 namespace {
@@ -202,14 +278,16 @@ bool proves_budget(const TradeRow& r, double max_error, bool exact_coverage) {
            (!exact_coverage || r.bound_exact);
 }
 
+}  // namespace
+
 // auto against the fastest single mapper that meets the same budget on the whole scene, by its
 // measured error; and against the fastest single mapper whose own bounds prove it on every polygon
 // (what auto proves of its own choice before drawing).
-void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
+std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only) {
     std::string table;
     for (const TradeRow& a : rows) {
         const raster::Mapper* m = raster::find_mapper(a.mapper.substr(0, a.mapper.find('@')).c_str());
-        if (!m || !m->is_auto || !a.pixels) continue;
+        if (!m || !m->is_auto || !a.pixels || (scene_budget_only && a.mapper != m->name)) continue;
         const TradeRow *best = nullptr, *proven = nullptr;
         for (const TradeRow& r : rows) {
             if (r.scene != a.scene || !single_mapper(r)) continue;
@@ -227,6 +305,17 @@ void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
                  " | " + against(best) + " | " + (best && aside > 0 ? fixed(best->draw_per_pixel() / aside, 2) + "×" : std::string("-")) + " | " +
                  against(proven) + " |\n";
     }
+    if (table.empty()) return "";
+    return "| scene | row | budget | draw instr/px | choosing instr/px | max footprint err | within | fastest single mapper within | "
+           "its draw instr/px | speed-up | choosing aside | fastest single mapper proven within | its draw instr/px | speed-up |\n"
+           "|---|---|---|--:|--:|--:|---|---|--:|--:|--:|---|--:|--:|\n" + table;
+}
+
+namespace {
+
+// trade.md's auto section: every auto row.
+void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
+    const std::string table = auto_rows(rows, false);
     if (table.empty()) return;
     out << "\n## auto against the single mappers\n\n"
         << "auto at the scene's budget and at budgets of 0 to 4 footprints (exact coverage), beside the fastest single mapper "
@@ -238,9 +327,7 @@ void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
            "`ticks_choose`); its setup of a polygon with every plane, which the chosen mapper draws from, counts as setup, "
            "and so do the envelope's guards, which run inside fast-affine's own call for the triangle. Choosing aside: the "
            "speed-up were the choosing free.\n\n"
-        << "| scene | row | budget | draw instr/px | choosing instr/px | max footprint err | within | fastest single mapper within | "
-           "its draw instr/px | speed-up | choosing aside | fastest single mapper proven within | its draw instr/px | speed-up |\n"
-        << "|---|---|---|--:|--:|--:|---|---|--:|--:|--:|---|--:|--:|\n" << table;
+        << table;
 }
 
 // Per polygon drawn, what the outer loops cost beside the inner ones (issue 14's lean outer
@@ -269,6 +356,59 @@ void write_outer_loops(std::ostream& out, const std::vector<TradeRow>& rows) {
         << "|---|---|--:|--:|--:|--:|--:|--:|--:|\n" << table;
 }
 
+}  // namespace
+
+std::string scene_table(const std::vector<TradeRow>& rows, const std::string& scene) {
+    std::ostringstream out;
+    out << "| mapper | surface | inner instr/px | draw instr/px | frame instr/px | setup instr/polygon | walk instr/span | host cycles (ratio) "
+           "| texel err max / mean / p99.9 | footprint err max / mean / p99.9 | exact | gaps | overdraw | kernel = host | Pareto |\n";
+    out << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|---|\n";
+    for (const TradeRow* r : drawing_rows_by_speed(rows, scene)) {
+        const raster::AccuracyMetrics& a = r->accuracy;
+        std::string front = r->pareto ? "**yes**" : r->rejected ? "partial: " + std::to_string(r->rejected) + " polygons refused" : "";
+        out << "| " << r->mapper << " | " << r->surface << " | " << fixed(r->inner_per_pixel(), 1) << " | "
+            << fixed(r->draw_per_pixel(), 1) << " | " << fixed(r->frame_per_pixel(), 1) << " | " << fixed(r->setup_per_polygon(), 0) << " | " << fixed(r->walk_per_span(), 1)
+            << " | " << (r->host_ratio > 0 ? fixed(r->host_ratio, 2) : "-") << " | " << a.max_texel_error << " / "
+            << fixed(a.mean_texel_error, 3) << " / " << a.p999_texel_error << " | " << fixed(a.max_footprint_error, 2) << " / "
+            << fixed(a.mean_footprint_error, 3) << " / " << fixed(a.p999_footprint_error, 2) << " | " << fixed(100 * r->share_exact(), 1) << "% | " << a.gaps << " | " << a.overdraw
+            << " | " << (r->kernel_equals_host ? "equal" : "DIFFERS") << " | " << front << " |\n";
+    }
+    std::string refused;
+    for (const TradeRow& r : rows) {
+        if (r.scene != scene || r.pixels != 0) continue;
+        lib::Fmt needs;
+        if (const raster::Mapper* m = raster::find_mapper(r.mapper.c_str())) raster::describe_needs(needs, m->needs & raster::SCENE_NEEDS);
+        refused += (refused.empty() ? "" : "; ") + r.mapper + (*needs.c_str() ? std::string(" (needs ") + needs.c_str() + ")" : "");
+    }
+    if (!refused.empty()) out << "\nCannot draw this scene (every polygon refused): " << refused << ".\n";
+    for (const TradeRow& r : rows) {
+        if (r.scene != scene || r.drawn_by.size() < 2 || !r.pixels) continue;
+        out << "\n" << r.mapper << " (" << r.budget << ") drew with:";
+        for (size_t i = 0; i < r.drawn_by.size(); ++i)
+            out << (i ? ";" : "") << " " << std::get<0>(r.drawn_by[i]) << " " << std::get<1>(r.drawn_by[i]) << " polygons, "
+                << fixed(100.0 * double(std::get<2>(r.drawn_by[i])) / double(r.pixels), 1) << "% of the pixels";
+        if (r.enveloped) out << "; " << r.enveloped << " of the polygons proven by their object's envelope";
+        out << ".\n";
+    }
+    return out.str();
+}
+
+std::string same_work_table(const std::vector<TradeRow>& rows, const std::string& scene) {
+    std::string table = "| mapper | inner instr/px | draw instr/px | setup instr/polygon | walk instr/span | footprint err max / mean |\n"
+                        "|---|--:|--:|--:|--:|--:|\n";
+    for (const TradeRow& r : rows)
+        if (r.scene == scene && single_mapper(r) && !r.draws_everything()) return "";
+    for (const TradeRow* r : drawing_rows_by_speed(rows, scene)) {
+        if (!single_mapper(*r)) continue;
+        table += "| " + r->mapper + " | " + fixed(r->inner_per_pixel(), 1) + " | " + fixed(r->draw_per_pixel(), 1) + " | " +
+                 fixed(r->setup_per_polygon(), 0) + " | " + fixed(r->walk_per_span(), 1) + " | " + fixed(r->accuracy.max_footprint_error, 2) +
+                 " / " + fixed(r->accuracy.mean_footprint_error, 3) + " |\n";
+    }
+    return table;
+}
+
+namespace {
+
 // The scenes every single mapper draws whole (issue 14, goal 1: the same pictures and polygons for
 // all), each mapper's figures side by side; the scenes left out, with how many mappers refuse some
 // or all of their polygons.
@@ -286,14 +426,7 @@ void write_whole_scenes(std::ostream& out, const std::vector<TradeRow>& rows) {
             left_out += (left_out.empty() ? "" : ", ") + scene + " (" + std::to_string(partial) + " of " + std::to_string(singles) + ")";
             continue;
         }
-        tables += "\n### " + scene + "\n\n| mapper | inner instr/px | draw instr/px | setup instr/polygon | walk instr/span | footprint err max / mean |\n"
-                  "|---|--:|--:|--:|--:|--:|\n";
-        for (const TradeRow* r : drawing_rows_by_speed(rows, scene)) {
-            if (!single_mapper(*r)) continue;
-            tables += "| " + r->mapper + " | " + fixed(r->inner_per_pixel(), 1) + " | " + fixed(r->draw_per_pixel(), 1) + " | " +
-                      fixed(r->setup_per_polygon(), 0) + " | " + fixed(r->walk_per_span(), 1) + " | " + fixed(r->accuracy.max_footprint_error, 2) +
-                      " / " + fixed(r->accuracy.mean_footprint_error, 3) + " |\n";
-        }
+        tables += "\n### " + scene + "\n\n" + same_work_table(rows, scene);
     }
     out << "\n## Every mapper on the same work\n\n"
         << "Only the scenes where every single mapper draws every polygon (none refused for its texture or its coordinates), "
@@ -314,36 +447,7 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
         out << "\n## " << scene << "\n\n";
         std::string plot = "trade-" + scene + ".png";
         if (std::find(info.plots.begin(), info.plots.end(), plot) != info.plots.end()) out << "![" << scene << "](" << plot << ")\n\n";
-        out << "| mapper | surface | inner instr/px | draw instr/px | frame instr/px | setup instr/polygon | walk instr/span | host cycles (ratio) "
-               "| texel err max / mean / p99.9 | footprint err max / mean / p99.9 | exact | gaps | overdraw | kernel = host | Pareto |\n";
-        out << "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|---|---|\n";
-        for (const TradeRow* r : drawing_rows_by_speed(rows, scene)) {
-            const raster::AccuracyMetrics& a = r->accuracy;
-            std::string front = r->pareto ? "**yes**" : r->rejected ? "partial: " + std::to_string(r->rejected) + " polygons refused" : "";
-            out << "| " << r->mapper << " | " << r->surface << " | " << fixed(r->inner_per_pixel(), 1) << " | "
-                << fixed(r->draw_per_pixel(), 1) << " | " << fixed(r->frame_per_pixel(), 1) << " | " << fixed(r->setup_per_polygon(), 0) << " | " << fixed(r->walk_per_span(), 1)
-                << " | " << (r->host_ratio > 0 ? fixed(r->host_ratio, 2) : "-") << " | " << a.max_texel_error << " / "
-                << fixed(a.mean_texel_error, 3) << " / " << a.p999_texel_error << " | " << fixed(a.max_footprint_error, 2) << " / "
-                << fixed(a.mean_footprint_error, 3) << " / " << fixed(a.p999_footprint_error, 2) << " | " << fixed(100 * r->share_exact(), 1) << "% | " << a.gaps << " | " << a.overdraw
-                << " | " << (r->kernel_equals_host ? "equal" : "DIFFERS") << " | " << front << " |\n";
-        }
-        std::string refused;
-        for (const TradeRow& r : rows) {
-            if (r.scene != scene || r.pixels != 0) continue;
-            lib::Fmt needs;
-            if (const raster::Mapper* m = raster::find_mapper(r.mapper.c_str())) raster::describe_needs(needs, m->needs & raster::SCENE_NEEDS);
-            refused += (refused.empty() ? "" : "; ") + r.mapper + (*needs.c_str() ? std::string(" (needs ") + needs.c_str() + ")" : "");
-        }
-        if (!refused.empty()) out << "\nCannot draw this scene (every polygon refused): " << refused << ".\n";
-        for (const TradeRow& r : rows) {
-            if (r.scene != scene || r.drawn_by.size() < 2 || !r.pixels) continue;
-            out << "\n" << r.mapper << " (" << r.budget << ") drew with:";
-            for (size_t i = 0; i < r.drawn_by.size(); ++i)
-                out << (i ? ";" : "") << " " << std::get<0>(r.drawn_by[i]) << " " << std::get<1>(r.drawn_by[i]) << " polygons, "
-                    << fixed(100.0 * double(std::get<2>(r.drawn_by[i])) / double(r.pixels), 1) << "% of the pixels";
-            if (r.enveloped) out << "; " << r.enveloped << " of the polygons proven by their object's envelope";
-            out << ".\n";
-        }
+        out << scene_table(rows, scene);
     }
 
     write_whole_scenes(out, rows);

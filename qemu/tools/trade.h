@@ -44,8 +44,9 @@ struct TradeRow {
     std::vector<std::tuple<std::string, uint64_t, uint64_t>> drawn_by;
     uint64_t enveloped = 0;  // of those, the polygons auto drew as their object's envelope proved
     std::string budget;
-    double budget_error = -1;   // the budget's footprint error (below 0: any), and whether it asks
-    bool budget_exact = false;  // for exact coverage
+    double budget_error = -1;   // the budget's footprint error (below 0: any), whether it asks for
+    bool budget_exact = false;  // exact coverage, and whether the scene states it (else the default)
+    bool budget_given = false;
     // A single mapper's proof on the same frames (world_frame_bound): the largest of its bounds over
     // the polygons it draws (NO_BOUND: one has none), and whether each promised exact coverage;
     // below 0: not computed (auto's rows: every polygon proven within the budget by its choice)
@@ -75,6 +76,10 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows);
 std::vector<std::string> csv_header();
 // Reads such a file back: a vector of fields a line (no quoting: no field holds a comma).
 std::vector<std::vector<std::string>> read_csv(const std::string& path);
+// The rows of a trade.csv, every figure as the file holds it (columns found by name; HarnessError
+// naming the line and field where one is missing or malformed). The report and the docs' tables
+// are written from these, so that both show the CSV's figures.
+std::vector<TradeRow> read_trade(const std::string& path);
 
 struct ReportInfo {
     std::string how;       // how the figures were measured (QEMU icount, frames, ...)
@@ -82,6 +87,15 @@ struct ReportInfo {
     std::vector<std::string> plots;  // plot files written (for the links)
     std::string wall_clock;          // the Markdown of the wall-clock table, if measured
 };
+
+// The Markdown that trade.md and the docs share (docs/results.md, the README): a scene's table,
+// sorted by speed, with the mappers that cannot draw it and what auto drew it with; the table of
+// the single mappers on a scene every one of them draws whole ("" where one refuses a polygon);
+// auto's rows against the fastest single mappers within their budget (only the rows at the
+// scene's own budget: scene_budget_only).
+std::string scene_table(const std::vector<TradeRow>& rows, const std::string& scene);
+std::string same_work_table(const std::vector<TradeRow>& rows, const std::string& scene);
+std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only);
 
 // build/report/trade.md: per scene, a table sorted by speed; the mappers that cannot draw it; the
 // classics' published figures beside ours.

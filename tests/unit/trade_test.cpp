@@ -14,6 +14,8 @@
 #include "kernel/core/render.h"
 #include "qemu/accuracy/measure.h"
 #include "qemu/tools/trade.h"
+#include "qemu/tools/trade_docs.h"
+#include "qemu/lib/error.h"
 
 namespace {
 
@@ -164,6 +166,84 @@ TEST(Trade, AutoIsSetAgainstTheFastestMeasuredAndTheFastestProven) {
     rows[1].max_bound = raster::NO_BOUND;  // one polygon without a bound: not proven; then only exact is
     const std::string t2 = markdown_of(dir + "/trade.md", rows);
     EXPECT_NE(t2.find("| fast-table | 10.0 | 0.40× | 0.67× | exact | 90.0 | 3.60× |"), std::string::npos) << t2;
+}
+
+// The CSV read back holds every figure the report and the docs show: written again, it is the same
+// file, byte for byte; a malformed field is named with its line.
+TEST(Trade, TheCsvReadBackIsTheSameRows) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "fast-affine", 3000, 1.25), row("a", "auto", 2500, 0.5)};
+    rows[0].max_bound = 0, rows[0].bound_exact = true;
+    rows[1].max_bound = raster::NO_BOUND, rows[1].host_ratio = 0.625, rows[1].accuracy.max_footprint_error = 3.5;
+    rows[2].drawn_by = {{"exact", 3, 40}, {"fast-affine", 17, 60}}, rows[2].enveloped = 12, rows[2].choose = 77;
+    rows[2].budget_error = 0.5, rows[2].budget_exact = true, rows[2].budget_given = true;
+    rows[1].budget_error = raster::ANY_ERROR;
+    for (TradeRow& r : rows) r.accuracy.exact = 61, r.accuracy.within_one = 90, r.accuracy.gaps = 2, r.frames = 8;
+    mark_pareto(rows);
+    const std::string dir = testing::TempDir() + "/trade_back";
+    write_csv(dir + "/trade.csv", rows);
+    const std::vector<TradeRow> back = read_trade(dir + "/trade.csv");
+    ASSERT_EQ(back.size(), rows.size());
+    write_csv(dir + "/again.csv", back);
+    EXPECT_EQ(read_whole_file(dir + "/again.csv"), read_whole_file(dir + "/trade.csv"));
+    EXPECT_EQ(back[2].budget, "footprint error 0.5, exact coverage");
+    EXPECT_EQ(back[1].budget_error, raster::ANY_ERROR);
+    EXPECT_EQ(back[1].max_bound, raster::NO_BOUND);
+    EXPECT_EQ(back[2].drawn_by, rows[2].drawn_by);
+
+    std::vector<std::vector<std::string>> lines = read_csv(dir + "/trade.csv");
+    const size_t frames = size_t(std::find(lines[0].begin(), lines[0].end(), "frames[count]") - lines[0].begin());
+    lines[3].at(frames) = "x";
+    {
+        std::ofstream bad(dir + "/bad.csv");
+        for (const auto& fields : lines)
+            for (size_t i = 0; i < fields.size(); ++i) bad << fields[i] << (i + 1 < fields.size() ? "," : "\n");
+    }
+    try {
+        read_trade(dir + "/bad.csv");
+        ADD_FAILURE() << "a bad count was read";
+    } catch (const HarnessError& e) {
+        EXPECT_NE(std::string(e.what()).find("line 4: frames 'x' is not a count"), std::string::npos) << e.what();
+    }
+}
+
+// A generated block is the generator's output for its name, between its markers; the text around it
+// stays; an unknown name or a block without its end is an error, not a silent skip.
+TEST(TradeDocs, BlocksAreRegeneratedBetweenTheirMarkers) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "fast-affine", 2000, 1), row("a", "auto", 2500, 0)};
+    for (TradeRow& r : rows) r.accuracy.max_footprint_error = 0.5, r.budget_error = 1, r.budget_exact = true;
+    const std::string text = "before\n<!-- make bench: headline -->\nstale figures\n<!-- end make bench -->\nbetween\n"
+                             "<!-- make bench: scene a -->\n<!-- end make bench -->\nafter\n";
+    int blocks = 0;
+    const std::string fresh = refresh_generated(text, rows, "t.md", &blocks);
+    EXPECT_EQ(blocks, 2);
+    EXPECT_EQ(fresh.find("stale"), std::string::npos) << fresh;
+    EXPECT_NE(fresh.find("<!-- make bench: headline -->\n" + headline_table(rows) + "<!-- end make bench -->\nbetween\n"), std::string::npos) << fresh;
+    EXPECT_NE(fresh.find("| a | 1, exact coverage | 25.0 | 0.50 | fast-affine | 20.0 | 90.0 |"), std::string::npos) << fresh;
+    EXPECT_NE(fresh.find("<!-- make bench: scene a -->\n" + scene_table(rows, "a") + "<!-- end make bench -->\nafter\n"), std::string::npos);
+    EXPECT_EQ(refresh_generated(fresh, rows, "t.md", nullptr), fresh);
+    EXPECT_THROW(refresh_generated("<!-- make bench: nonsense -->\n<!-- end make bench -->\n", rows, "t.md", nullptr), HarnessError);
+    EXPECT_THROW(refresh_generated("<!-- make bench: scene b -->\n<!-- end make bench -->\n", rows, "t.md", nullptr), HarnessError);
+    EXPECT_THROW(refresh_generated("x\n<!-- make bench: headline -->\nno end\n", rows, "t.md", nullptr), HarnessError);
+}
+
+// The figures in README.md and docs/results.md are the generator's, from the committed CSV of the
+// last full make bench: a typed or stale figure in a generated table fails here.
+TEST(TradeDocs, TheCommittedDocsHoldTheGeneratorsFigures) {
+    const std::vector<TradeRow> rows = read_trade(DOCS_TRADE_CSV);
+    ASSERT_FALSE(rows.empty());
+    for (const std::string& path : GENERATED_DOCS) {
+        const std::string text = read_whole_file(path);
+        int blocks = 0;
+        const std::string fresh = refresh_generated(text, rows, path, &blocks);
+        EXPECT_GT(blocks, 0) << path << " has no generated table";
+        if (fresh == text) continue;
+        size_t at = 0;
+        while (at < text.size() && at < fresh.size() && text[at] == fresh[at]) ++at;
+        const size_t line = 1 + size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
+        ADD_FAILURE() << path << ": line " << line << " differs from what make bench generates from " << DOCS_TRADE_CSV
+                      << " (run `build/host/modexlab-bench --refresh-docs " << DOCS_TRADE_CSV << "`):\n"
+                      << text.substr(text.rfind('\n', at) + 1, 300);
+    }
 }
 
 LoadedWorld demo(const char* name) { return load_world_file(std::string("scenes/") + name + ".scene"); }
