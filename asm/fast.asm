@@ -700,12 +700,7 @@ fast_triangle_asm:
 .walk:
     mov eax, 2
     jmp .done
-.refuse_pop:
-    fstp st0
-.refuse:
-    xor eax, eax
-.done:
-    LOOP_LEAVE F_FRAME
+    SETUP_EXITS F_FRAME
 
 ; fast_triangle_runs_asm(FastTriangleArgs* a): the same for a triangle set up already (`setup` read,
 ; of its planes the 16.16 ones only): from the rows on (twin: fast_triangle_runs). Returns 1, or 2

@@ -23,12 +23,7 @@ setup_triangle_affine_asm:
     SETUP_TRIANGLE
     mov eax, 1
     jmp .done
-.refuse_pop:
-    fstp st0
-.refuse:
-    xor eax, eax
-.done:
-    LOOP_LEAVE S_FRAME
+    SETUP_EXITS S_FRAME
 
 section .rodata
 align 8
