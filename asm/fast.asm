@@ -301,7 +301,7 @@ fast_run_loop_asm:
     RUN_ENTER
     mov eax, [ecx + RUN_texture]
     mov [esp + L_TEXTURE], eax
-    cmp dword [ecx + RUN_doubled], 0
+    cmp dword [ecx + RUN_source], SOURCE_TILED_BLOCK
     jne fast_run_doubled
     CORE_STEPS RUN
     cmp dword [ecx + RUN_inside], 0
@@ -312,7 +312,7 @@ fast_run_loop_asm:
 fast_run_inside:
     RUN_ROWS 0, run_inside_entries
 
-; fast_run_loop_asm's rows on a doubled copy (RUN_doubled: textures above 256 a side): the same
+; fast_run_loop_asm's rows on a doubled copy (RUN_source DOUBLED_COPY: textures above 256 a side): the same
 ; rows, the span's texels read through a pointer into the copy that steps as Quake's d_draw16.s
 ; steps its own (no wrap: u and v come less their window's corner, and the window fits the copy):
 ; v's carry picks a step with a row more or without, u's adds one by adc; pixels in pairs, al then
@@ -690,15 +690,15 @@ fast_triangle_asm:
     setle al
 .inside:
     mov [ebx + RUN_inside], eax
-    mov eax, 1
+    mov eax, TRIANGLE_RUNS
     jmp .done
 .empty:                                 ; no row: `lines` 0 alone
     mov ebx, [ebp + FTRI_run]
     mov dword [ebx + RUN_lines], 0
-    mov eax, 1
+    mov eax, TRIANGLE_RUNS
     jmp .done
 .walk:
-    mov eax, 2
+    mov eax, TRIANGLE_TO_WALKER
     jmp .done
     SETUP_EXITS F_FRAME
 
@@ -772,7 +772,7 @@ fast_triangle_enveloped_asm:
     mov ebp, LOOP_ARG(F_FRAME)
     jmp fast_triangle_asm.runs
 .unproven:
-    mov eax, 3
+    mov eax, TRIANGLE_OUTSIDE_ENVELOPE
     jmp fast_triangle_asm.done          ; (the same frame)
 .refuse_pop:
     jmp fast_triangle_asm.refuse_pop

@@ -115,21 +115,21 @@ namespace {
 
 // The triangle's set-up in one call (fast_triangle's, or its NASM routine's where built in), and
 // the same from the rows on (fast_triangle_runs').
-inline int set_up_triangle(FastTriangleArgs* t) {
+inline TriangleTaken set_up_triangle(FastTriangleArgs* t) {
 #if defined(MODEXLAB_ASM_LOOPS)
     return fast_triangle_asm(t);
 #else
     return fast_triangle(t);
 #endif
 }
-inline int walk_triangle(FastTriangleArgs* t) {
+inline TriangleTaken walk_triangle(FastTriangleArgs* t) {
 #if defined(MODEXLAB_ASM_LOOPS)
     return fast_triangle_runs_asm(t);
 #else
     return fast_triangle_runs(t);
 #endif
 }
-inline int set_up_enveloped(FastTriangleArgs* t) {
+inline TriangleTaken set_up_enveloped(FastTriangleArgs* t) {
 #if defined(MODEXLAB_ASM_LOOPS)
     return fast_triangle_enveloped_asm(t);
 #else
@@ -172,7 +172,7 @@ template <Axis AXIS, typename Args>
 
 template <bool DOUBLED>
 [[gnu::always_inline]] inline void run(const DrawContext& c, const FastRunArgs& a) {
-    if (DOUBLED && a.doubled == 2) run_wrapping(c, a);
+    if (DOUBLED && a.source == BY_MASKS) run_wrapping(c, a);
     else emit(c, &a, 0, 0);
 }
 
@@ -193,18 +193,19 @@ template <bool TABLE, bool DOUBLED = false, bool ENVELOPED = false>
     PolygonSetup own;
     FastTriangleArgs t;  // (the chains' room, and its outputs written by the call)
     t.in = vertices, t.setup = &own, t.run = &a, t.target = &c.target;
-    int taken = 0;  // set_up_triangle's or walk_triangle's answer, 0: neither has taken it
+    TriangleTaken taken = TRIANGLE_TO_SETUP;  // set_up_triangle's or walk_triangle's answer
     if constexpr (ENVELOPED) {
         t.envelope = c.envelope;
-        if (count == 3 && !c.setup && c.input == Input::InRange && (taken = set_up_enveloped(&t)) == 3) return SetupStatus::Unproven;
+        if (count == 3 && !c.setup && c.input == Input::InRange && (taken = set_up_enveloped(&t)) == TRIANGLE_OUTSIDE_ENVELOPE)
+            return SetupStatus::Unproven;
     } else if (count == 3 && !c.setup && c.input == Input::InRange) {
         taken = set_up_triangle(&t);
     }
     SetupStatus status = SetupStatus::Ok;
-    const PolygonSetup& s = taken ? own : *set_up(c, vertices, count, &own, &status);
+    const PolygonSetup& s = taken != TRIANGLE_TO_SETUP ? own : *set_up(c, vertices, count, &own, &status);
     if (status != SetupStatus::Ok) return status;
-    if (ENVELOPED && !taken && !within_envelope(s, *c.envelope)) return SetupStatus::Unproven;
-    if (!taken && s.edge_count == 3) {  // a triangle set up already (auto's), or by setup_polygon
+    if (ENVELOPED && taken == TRIANGLE_TO_SETUP && !within_envelope(s, *c.envelope)) return SetupStatus::Unproven;
+    if (taken == TRIANGLE_TO_SETUP && s.edge_count == 3) {  // a triangle set up already (auto's), or by setup_polygon
         t.setup = const_cast<PolygonSetup*>(&s);  // (read only)
         taken = walk_triangle(&t);
     }
@@ -225,18 +226,18 @@ template <bool TABLE, bool DOUBLED = false, bool ENVELOPED = false>
         a.texture = block.block, a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.block_pitch = block.pitch;
     } else {
         a.texture = c.tex.aligned256;
-        a.doubled = 0;
+        a.source = TILED_BLOCK;
         if constexpr (DOUBLED) {
             if (doubled_window(s, c.tex, c.target.clip, &u_base, &v_base)) {
-                a.texture = c.tex.doubled, a.block_pitch = doubled_pitch(c.tex.width), a.doubled = 1;
-            } else {  // the texture itself, wrapped by masks (fast_run_loop_wrapping)
-                a.doubled = 2;
+                a.texture = c.tex.doubled, a.block_pitch = doubled_pitch(c.tex.width), a.source = DOUBLED_COPY;
+            } else {
+                a.source = BY_MASKS;
             }
         }
     }
     uint32_t drawn[2] = {0, 0};  // spans, pixels
     a.tally = drawn;
-    if (taken == 1) {
+    if (taken == TRIANGLE_RUNS) {
         setup_done(c);
         if (a.lines > 0) {
             if constexpr (TABLE) {  // u and v at the table's first pixel, not at pixel 0
@@ -470,26 +471,26 @@ void run_rows(const FastRunArgs& a, Span&& span) {
 
 }  // namespace
 
-int fast_triangle(FastTriangleArgs* a) {
-    if (setup_polygon_cpp(a->in, 3, a->setup, PLANES_AFFINE, Input::InRange) != SetupStatus::Ok) return 0;
+TriangleTaken fast_triangle(FastTriangleArgs* a) {
+    if (setup_polygon_cpp(a->in, 3, a->setup, PLANES_AFFINE, Input::InRange) != SetupStatus::Ok) return TRIANGLE_TO_SETUP;
     return fast_triangle_runs(a);
 }
 
-int fast_triangle_enveloped(FastTriangleArgs* a) {
-    if (setup_polygon_cpp(a->in, 3, a->setup, PLANES_AFFINE, Input::InRange) != SetupStatus::Ok) return 0;
-    if (!within_envelope(*a->setup, *a->envelope)) return 3;
+TriangleTaken fast_triangle_enveloped(FastTriangleArgs* a) {
+    if (setup_polygon_cpp(a->in, 3, a->setup, PLANES_AFFINE, Input::InRange) != SetupStatus::Ok) return TRIANGLE_TO_SETUP;
+    if (!within_envelope(*a->setup, *a->envelope)) return TRIANGLE_OUTSIDE_ENVELOPE;
     return fast_triangle_runs(a);
 }
 
-int fast_triangle_runs(FastTriangleArgs* a) {
+TriangleTaken fast_triangle_runs(FastTriangleArgs* a) {
     const PolygonSetup& s = *a->setup;
     const Target& target = *a->target;
     TriangleRunsArgs t;
     t.setup = &s, t.clip_lo = target.clip.y0, t.clip_hi = target.clip.y1 - 1, t.lower = a->lower, t.upper = a->upper;
-    if (!triangle_runs(&t)) return 2;
+    if (!triangle_runs(&t)) return TRIANGLE_TO_WALKER;
     FastRunArgs& r = *a->run;
     r.lines = t.lines;
-    if (t.lines == 0) return 1;
+    if (t.lines == 0) return TRIANGLE_RUNS;
     r.lower = t.run_lower, r.upper = t.run_upper;
     r.next_lines = t.next_lines, r.next_lower = t.next_lower, r.next_upper = t.next_upper;
     r.pitch = target.pitch;
@@ -500,7 +501,7 @@ int fast_triangle_runs(FastTriangleArgs* a) {
     r.u_row_16_16 = uint32_t(s.u_fx.dy), r.v_row_16_16 = uint32_t(s.v_fx.dy);
     r.du_16_16 = s.u_fx.dx, r.dv_16_16 = s.v_fx.dx;
     r.inside = fast::inside_columns(s, target.clip);
-    return 1;
+    return TRIANGLE_RUNS;
 }
 
 namespace {
@@ -543,7 +544,7 @@ void run_row_pixels(const FastRunArgs& a, Pixels&& draw) {
 void fast_run_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
     run_row_pixels(a, [&](uint8_t* dst, int32_t count, uint32_t u, uint32_t v) {
-        if (a.doubled) doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, u, v, dst, count, 1);
+        if (a.source == DOUBLED_COPY) doubled_pixels(a.texture, a.block_pitch, a.du_16_16, a.dv_16_16, u, v, dst, count, 1);
         else tiled_pixels(a.texture, a.du_16_16, a.dv_16_16, u, v, dst, count, 1);
     });
 }
@@ -773,8 +774,8 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         // the texture: fast-table's doubled copy (its pitch and masks), fast-affine's tiled block or a
         // third of the time a doubled copy
         const bool table = m.twin == fast_table_loop;
-        a.doubled = table || r.below(3) == 0;
-        const TableBlock block = a.doubled ? random_doubled_block(r, buf, !table) : TableBlock{check_aligned_texture(buf), 255, 255, 256};
+        a.source = table || r.below(3) == 0 ? DOUBLED_COPY : TILED_BLOCK;
+        const TableBlock block = a.source == DOUBLED_COPY ? random_doubled_block(r, buf, !table) : TableBlock{check_aligned_texture(buf), 255, 255, 256};
         a.texture = block.block;
         a.u_mask = block.u_mask, a.v_mask = block.v_mask, a.block_pitch = block.pitch;
         a.u_16_16 = r.next();
@@ -783,7 +784,7 @@ LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t 
         a.v_row_16_16 = r.next();
         a.du_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
         a.dv_16_16 = r.below(4) == 0 ? int32_t(r.next()) : r.range(-0x40000, 0x40000);
-        if (m.twin == fast_run_loop && a.doubled) {
+        if (m.twin == fast_run_loop && a.source == DOUBLED_COPY) {
             random_doubled_uv(r, a);  // (its u and v at pixel 0 of the first row)
             a.u_row_16_16 = uint32_t(r.range(-0x40000, 0x40000));
             a.v_row_16_16 = uint32_t(r.range(-0x4000, 0x4000));
@@ -878,11 +879,16 @@ LoopCheck check_fast_column_run(const Mapper& m, LoopFn other, uint32_t seed, ui
 void fast_offsets() {
     ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16, v_16_16,
-               u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside, doubled, u_mask, v_mask, block_pitch)
+               u_row_16_16, v_row_16_16, du_16_16, dv_16_16, tally, table, inside, source, u_mask, v_mask, block_pitch)
     ASM_FIELDS(FTRI, FastTriangleArgs, in, setup, run, target, envelope, lower, upper)
     ASM_FIELDS(CRUN, FastColumnRunArgs, target, x, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, block_pitch, u_16_16,
                v_16_16, u_column_16_16, v_column_16_16, du_16_16, dv_16_16, tally)
     ASM_CONSTANT(MODEX_ROW_BYTES, MODEX_ROW_BYTES);
+    ASM_CONSTANT(SOURCE_TILED_BLOCK, TILED_BLOCK);
+    ASM_CONSTANT(TRIANGLE_TO_SETUP, TRIANGLE_TO_SETUP);
+    ASM_CONSTANT(TRIANGLE_RUNS, TRIANGLE_RUNS);
+    ASM_CONSTANT(TRIANGLE_TO_WALKER, TRIANGLE_TO_WALKER);
+    ASM_CONSTANT(TRIANGLE_OUTSIDE_ENVELOPE, TRIANGLE_OUTSIDE_ENVELOPE);
 }
 #endif
 

@@ -10,6 +10,14 @@
 
 namespace raster {
 
+// Where fast-affine's run loop reads its texels. TILED_BLOCK: the tiled block's (v whole & 255) *
+// 256 + (u whole & 255), which the NASM loops take by bl and bh. DOUBLED_COPY (textures above 256 a
+// side): block_pitch bytes a row, u and v the polygon's less its window's corner
+// (fast::doubled_window), so their wholes are the texel's column and row in the copy, and the loop
+// steps a texel pointer from there without wrapping. BY_MASKS: the driver runs
+// fast_run_loop_wrapping instead (the polygon spans more of the texture than a window).
+enum RunSource : int32_t { TILED_BLOCK, DOUBLED_COPY, BY_MASKS };
+
 // fast-affine: a run of rows of a polygon (EdgeWalker::run), the edge walking and the spans in one
 // loop. On each row: first pixel max(lower.q, clip_lo), last pixel min(upper.q, clip_hi), both
 // bounds stepped; a non-empty span drawn with fatmap2's 8:16 arithmetic (16.16 u and v, wrapping
@@ -37,13 +45,8 @@ struct FastRunArgs {
     // lies inside the clip), so the NASM loops need not clip (the twins clip all the same)
     int32_t inside;
     // fast-table: the doubled copy (Texture::doubled), a row's first texel at texture + (v whole &
-    // v_mask) * block_pitch + (u whole & u_mask); `doubled` unread. fast-affine: the doubled copy
-    // where `doubled` is 1 (textures above 256 a side), block_pitch bytes a row: u and v are the
-    // polygon's less its window's corner (fast::doubled_window), so their wholes are the texel's
-    // column and row in the copy, and the loop steps a texel pointer from there without wrapping.
-    // Else the tiled block's (v whole & 255) * 256 + (u whole & 255), which the NASM loops take by
-    // bl and bh. (fast-affine's driver sets 2 where it runs fast_run_loop_wrapping instead.)
-    int32_t doubled;
+    // v_mask) * block_pitch + (u whole & u_mask); `source` unread. fast-affine: see RunSource.
+    RunSource source;
     uint32_t u_mask, v_mask;
     int32_t block_pitch;
 };
@@ -78,13 +81,20 @@ struct FastTriangleArgs {
     const EnvelopeLimits* envelope;  // (fast_triangle_enveloped's only)
     EdgeBound lower[3], upper[3];  // the chains
 };
-int fast_triangle(FastTriangleArgs* a);
-int fast_triangle_runs(FastTriangleArgs* a);
-int fast_triangle_enveloped(FastTriangleArgs* a);
+// What fast_triangle and its kin did (the NASM routines return the same numbers in eax).
+enum TriangleTaken : int32_t {
+    TRIANGLE_TO_SETUP = 0,         // nothing: setup_polygon must set it up
+    TRIANGLE_RUNS = 1,             // set up, its runs and the run loop's block written
+    TRIANGLE_TO_WALKER = 2,        // only the setup written: the walker walks it
+    TRIANGLE_OUTSIDE_ENVELOPE = 3  // (fast_triangle_enveloped) the setup written, the envelope refuses it
+};
+TriangleTaken fast_triangle(FastTriangleArgs* a);
+TriangleTaken fast_triangle_runs(FastTriangleArgs* a);
+TriangleTaken fast_triangle_enveloped(FastTriangleArgs* a);
 #if defined(MODEXLAB_ASM_LOOPS)
-extern "C" int fast_triangle_asm(FastTriangleArgs* a);
-extern "C" int fast_triangle_runs_asm(FastTriangleArgs* a);
-extern "C" int fast_triangle_enveloped_asm(FastTriangleArgs* a);
+extern "C" TriangleTaken fast_triangle_asm(FastTriangleArgs* a);
+extern "C" TriangleTaken fast_triangle_runs_asm(FastTriangleArgs* a);
+extern "C" TriangleTaken fast_triangle_enveloped_asm(FastTriangleArgs* a);
 #endif
 
 // fast-table: the offsets of pixel k of any span from its first pixel's texel in the texture's
