@@ -1,6 +1,8 @@
 // The cheapest mapper within the budget, polygon by polygon.
 #include "kernel/core/choice.h"
 
+#include "kernel/core/envelope.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/policy.h"
 #include "kernel/mappers/fastsubdiv.h"
 

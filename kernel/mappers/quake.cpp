@@ -4,8 +4,11 @@
 
 #include "kernel/core/asm_offsets.h"
 #include "kernel/core/bound.h"
+#include "kernel/core/footprint.h"
+#include "kernel/core/prepared.h"
 #include "kernel/core/selftest.h"
 
+#include "kernel/core/spread.h"
 #include "kernel/mappers/classic.h"
 #include "kernel/mappers/subdiv.h"
 
