@@ -3,7 +3,7 @@
 
 namespace raster {
 
-void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out, Input input) {
+void prepare_setup(const Vertex* vertices, int count, PreparedPolygon* out, Input input) {
     for (PreparedSpans& w : out->walked) w.count = PreparedSpans::NOT_WALKED, w.pixels = 0, w.first = 0;
     out->status = setup_polygon(vertices, count, &out->setup, PLANES_ALL, input);
     out->spread_known = false;
@@ -26,7 +26,7 @@ void walk_polygon(PreparedPolygon* p, Axis axis, const ClipRect& clip) {
 }
 
 void prepare_polygon(const Vertex* vertices, int count, Axis axis, const ClipRect& clip, PreparedPolygon* out) {
-    set_up_polygon(vertices, count, out);
+    prepare_setup(vertices, count, out);
     walk_polygon(out, axis, clip);
 }
 

@@ -31,7 +31,7 @@ struct PreparedPolygon {
     PreparedSpans walked[2];  // [Axis]
 };
 // Sets the polygon up, not walked (`input`: as setup_polygon takes it).
-void set_up_polygon(const Vertex* vertices, int count, PreparedPolygon* out, Input input = Input::Any);
+void prepare_setup(const Vertex* vertices, int count, PreparedPolygon* out, Input input = Input::Any);
 // Walks it along the axis.
 void walk_polygon(PreparedPolygon* p, Axis axis, const ClipRect& clip);
 // Both.
