@@ -205,7 +205,7 @@ $(KBUILD)/%.cpp.o: %.cpp | deps
 # asm/NAME.asm reads the layouts of gen/NAME.inc, made from the offsets its C++ home lists under
 # MODEXLAB_OFFSETS: kernel/mappers/NAME.cpp for a family, kernel/core/NAME.cpp for core's types
 # (CORE_INC, which every loop may read)
-CORE_INC := $(addprefix $(KBUILD)/gen/,setup.inc walk.inc surface.inc bound.inc)
+CORE_INC := $(addprefix $(KBUILD)/gen/,setup.inc walk.inc surface.inc envelope.inc)
 define OFFSETS_RULE
 $(KBUILD)/gen/%.inc: $(1)/%.cpp | deps
 	@mkdir -p $$(@D)

@@ -23,7 +23,7 @@ bits 32
 %include "setup.inc"
 %include "walk.inc"
 %include "surface.inc"
-%include "bound.inc"
+%include "envelope.inc"
 %include "loop.inc"
 %include "core816.inc"
 %include "triangle_setup.inc"
@@ -713,7 +713,7 @@ fast_triangle_runs_asm:
     jmp fast_triangle_asm.runs
 
 ; fast_triangle_enveloped_asm(FastTriangleArgs* a): fast_triangle_asm for auto's envelope (twin:
-; fast_triangle_enveloped): after the setup, within_envelope (kernel/core/bound.h) with the limits
+; fast_triangle_enveloped): after the setup, within_envelope (kernel/core/envelope.h) with the limits
 ; at `envelope`, in integers: the box's sides (the low halves: in range they are below 2^23
 ; subpixels) within the extents and their sum within the reach, D (twice the area) within the
 ; limits' area2, W H <= 16384 D where D is below 2^22 (4 W H <= 65536 D; above, at once: W H is

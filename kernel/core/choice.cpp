@@ -1,6 +1,8 @@
 // The cheapest mapper within the budget, polygon by polygon.
 #include "kernel/core/choice.h"
 
+#include "kernel/core/envelope.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/policy.h"
 #include "kernel/mappers/fastsubdiv.h"
 
@@ -197,7 +199,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     const Candidates& list = candidates(tex, target, budget);
     if (list.count == 0) return choice;
     // set up once, for both walkers (the spread and the spans come when a bound asks for them)
-    set_up_polygon(vertices, count, prepared, input);
+    prepare_setup(vertices, count, prepared, input);
     probe_lap(probe, Phase::Setup);
     if (prepared->status != SetupStatus::Ok) return choice;
     PolygonSize size[2];

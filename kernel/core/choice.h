@@ -6,6 +6,7 @@
 #include <stdint.h>
 
 #include "kernel/core/bound.h"
+#include "kernel/core/prepared.h"
 
 namespace raster {
 

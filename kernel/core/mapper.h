@@ -95,7 +95,7 @@ struct RenderStats {
 };
 
 // A mapper with its own setup and edge walking (the classics, our fast loops) draws whole polygons.
-struct EnvelopeLimits;  // (bound.h)
+struct EnvelopeLimits;  // (envelope.h)
 struct DrawContext {
     const Texture& tex;
     Axis axis;
@@ -107,7 +107,7 @@ struct DrawContext {
     const PolygonSetup* setup = nullptr;
     Input input = Input::Any;             // for the driver's own setup_polygon
     // auto's envelope (draw_enveloped, render.h), for a mapper's Mapper::enveloped driver: right
-    // after its setup it checks within_envelope (bound.h) and returns Unproven, nothing drawn,
+    // after its setup it checks within_envelope (envelope.h) and returns Unproven, nothing drawn,
     // where the triangle fails it
     const EnvelopeLimits* envelope = nullptr;
 };

@@ -2,6 +2,8 @@
 // auto's choice before it; a screen-space scene polygon by polygon.
 #include "kernel/core/render.h"
 
+#include "kernel/core/prepared.h"
+
 namespace raster {
 
 namespace {

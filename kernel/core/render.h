@@ -3,8 +3,8 @@
 
 #include <stdint.h>
 
-#include "kernel/core/bound.h"
 #include "kernel/core/choice.h"
+#include "kernel/core/envelope.h"
 #include "kernel/core/mapper.h"
 #include "kernel/scene/scene.h"
 #include "kernel/core/setup.h"

@@ -2,6 +2,9 @@
 #include "kernel/mappers/affine.h"
 
 #include "kernel/core/bound.h"
+#include "kernel/core/footprint.h"
+#include "kernel/core/spanline.h"
+#include "kernel/core/spread.h"
 
 namespace raster {
 

@@ -5,7 +5,11 @@
 
 #include "kernel/core/asm_offsets.h"
 #include "kernel/core/bound.h"
+#include "kernel/core/envelope.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/selftest.h"
+#include "kernel/core/spanline.h"
+#include "kernel/core/spread.h"
 
 namespace raster::fast {
 
@@ -875,7 +879,7 @@ LoopCheck check_fast_column_run(const Mapper& m, LoopFn other, uint32_t seed, ui
 
 #if defined(MODEXLAB_OFFSETS)
 // The block layouts of this family asm/fast.asm reads (core/asm_offsets.h); core's types' come
-// from kernel/core (setup.cpp, walk.cpp, surface.cpp, bound.cpp).
+// from kernel/core (setup.cpp, walk.cpp, surface.cpp, envelope.cpp).
 void fast_offsets() {
     ASM_FIELDS(TCOL, FastTableColumnArgs, dst, count, source, table)
     ASM_FIELDS(RUN, FastRunArgs, row, pitch, lines, clip_lo, clip_hi, lower, upper, next_lines, next_lower, next_upper, texture, u_16_16, v_16_16,

@@ -6,6 +6,7 @@
 
 #include "kernel/core/bound.h"
 #include "kernel/core/mapper.h"
+#include "kernel/core/spread.h"
 
 namespace raster {
 

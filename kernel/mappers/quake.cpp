@@ -4,8 +4,11 @@
 
 #include "kernel/core/asm_offsets.h"
 #include "kernel/core/bound.h"
+#include "kernel/core/footprint.h"
+#include "kernel/core/prepared.h"
 #include "kernel/core/selftest.h"
 
+#include "kernel/core/spread.h"
 #include "kernel/mappers/classic.h"
 #include "kernel/mappers/subdiv.h"
 
@@ -137,7 +140,7 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
     // set up once for the arithmetic and the chords both: auto's polygon, or one prepared here
     PreparedPolygon own;
     BoundContext with = c;
-    if (!with.prepared) set_up_polygon(vertices, count, &own), with.prepared = &own;
+    if (!with.prepared) prepare_setup(vertices, count, &own), with.prepared = &own;
     if (with.prepared->status != SetupStatus::Ok) return b;
     const SegmentArithmetic a = arithmetic(c, with.prepared->setup, prepared_spread(with.prepared, c.clip), shift, 1 << SHIFT);
     if (a.fixed < NO_BOUND) return segments_bound(with, vertices, count, 1 << SHIFT, a);

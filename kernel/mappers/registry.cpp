@@ -1,7 +1,6 @@
 // The mapper registry: one row per mapper, in the order the tables list them. Adding a mapper with
 // a NASM loop: kernel/mappers/NAME.h and NAME.cpp (driver, argument block, twin, checks, offsets),
 // asm/NAME.asm, and its row here (docs/architecture.md, "Where to add").
-#include "kernel/core/bound.h"
 #include "kernel/core/choice.h"
 #include "kernel/core/mapper.h"
 #include "kernel/mappers/affine.h"

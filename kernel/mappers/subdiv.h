@@ -7,7 +7,10 @@
 #include <stdint.h>
 
 #include "kernel/core/bound.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/mapper.h"
+#include "kernel/core/spanline.h"
+#include "kernel/core/spread.h"
 
 namespace raster {
 

@@ -4,6 +4,7 @@
 
 #include "kernel/core/asm_offsets.h"
 #include "kernel/core/bound.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/selftest.h"
 
 #include "kernel/mappers/classic.h"

@@ -1,6 +1,7 @@
 // From a 3D scene to a frame of screen-space polygons, and drawing them.
 #include "kernel/scene/frame.h"
 
+#include "kernel/core/footprint.h"
 #include "kernel/core/policy.h"
 
 namespace raster {

@@ -4,6 +4,7 @@
 
 #include <stdint.h>
 
+#include "kernel/core/envelope.h"
 #include "kernel/core/render.h"
 #include "kernel/scene/world.h"
 

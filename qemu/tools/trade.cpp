@@ -9,7 +9,7 @@
 #include <map>
 #include <sstream>
 
-#include "kernel/core/bound.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/mapper.h"
 #include "qemu/lib/args.h"
 #include "qemu/lib/error.h"

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <random>
 
-#include "kernel/core/bound.h"
+#include "kernel/core/envelope.h"
 #include "kernel/core/fixed.h"
 #include "kernel/core/walk.h"
 #include "kernel/mappers/fast.h"

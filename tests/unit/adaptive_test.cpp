@@ -12,7 +12,10 @@
 #include <random>
 
 #include "kernel/core/bound.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/policy.h"
+#include "kernel/core/spanline.h"
+#include "kernel/core/spread.h"
 #include "kernel/mappers/fastsubdiv.h"
 #include "kernel/mappers/subdiv.h"
 #include "tests/unit/raster_helpers.h"

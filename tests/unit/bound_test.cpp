@@ -15,8 +15,10 @@
 #include <string>
 
 #include "kernel/core/bound.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/policy.h"
 #include "kernel/core/random.h"
+#include "kernel/core/spread.h"
 #include "kernel/mappers/fastsubdiv.h"
 #include "qemu/tools/demo_scenes.h"
 #include "tests/unit/raster_helpers.h"

@@ -7,9 +7,13 @@
 #include <algorithm>
 #include <string>
 
+#include "kernel/core/bound.h"
 #include "kernel/core/choice.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/measured.h"
 #include "kernel/core/policy.h"
+#include "kernel/core/prepared.h"
+#include "kernel/core/spread.h"
 #include "kernel/mappers/fastsubdiv.h"
 #include "qemu/tools/demo_scenes.h"
 #include "tests/unit/raster_helpers.h"

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "kernel/core/bound.h"
 #include "kernel/core/policy.h"
 #include "kernel/mappers/classic.h"
 #include "kernel/mappers/fast.h"

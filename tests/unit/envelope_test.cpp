@@ -13,8 +13,10 @@
 #include <random>
 #include <string>
 
-#include "kernel/core/bound.h"
+#include "kernel/core/envelope.h"
+#include "kernel/core/footprint.h"
 #include "kernel/core/policy.h"
+#include "kernel/core/spread.h"
 #include "qemu/tools/demo_scenes.h"
 #include "tests/unit/raster_helpers.h"
 

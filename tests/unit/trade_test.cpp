@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "kernel/core/footprint.h"
 #include "kernel/core/policy.h"
 #include "kernel/scene/frame.h"
 #include "kernel/core/render.h"
