@@ -108,7 +108,7 @@ PORTABLE_CXX := kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/qr.cpp kerne
 # host-only code: the exact reference and the accuracy measures, the harness, the tools' libraries
 HARNESS_CXX := $(filter-out %/main.cpp %_main.cpp,$(wildcard qemu/*/*.cpp))
 HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
-TEST_CXX := $(wildcard tests/*.cpp tests/unit/*.cpp tests/system/*.cpp)
+TEST_CXX := $(wildcard tests/*.cpp tests/unit/*.cpp tests/unit/*/*/*.cpp tests/system/*.cpp)
 
 HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -I. -MMD -MP -DMODEXLAB_BUILD_DIR='"$(abspath $(BUILD))"'
 HLDLIBS := -lpng -lpthread
@@ -147,7 +147,7 @@ SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-fr
 # name file and line
 SAN_CXXFLAGS := -O1 -g1
 SAN_TESTS := $(SBUILD)/modexlab-unit-tests-san
-UNIT_CXX := tests/main.cpp $(wildcard tests/unit/*.cpp)
+UNIT_CXX := tests/main.cpp $(wildcard tests/unit/*.cpp tests/unit/*/*/*.cpp)
 # the gallery's pages in a headless browser (make test-gallery, a tier of its own)
 BROWSER_TESTS := $(HBUILD)/modexlab-browser-tests
 BROWSER_TEST_CXX := tests/main.cpp $(wildcard tests/browser/*.cpp)

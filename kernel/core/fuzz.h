@@ -1,5 +1,5 @@
 // Random polygons of every class of extreme, and a mapper drawing many of them: the same sequence
-// and the same counts on the host (tests/unit/stability_test.cpp, under the sanitizers) and in the
+// and the same counts on the host (tests/unit/kernel/core/stability_test.cpp, under the sanitizers) and in the
 // kernel (the `fuzz` command, between guard pages). Portable: no libm, its own random numbers.
 // docs/fuzzing.md lists the classes.
 #pragma once

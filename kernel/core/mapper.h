@@ -142,7 +142,7 @@ inline void emit(const DrawContext& c, const void* args, uint32_t spans, uint32_
     tally(c.stats, spans, pixels);
 }
 
-// What a mapper promises about accuracy, in checkable form (tests/unit/promise_test.cpp checks it
+// What a mapper promises about accuracy, in checkable form (tests/unit/kernel/mappers/promise_test.cpp checks it
 // on every screen-space scene; the prose is in `promise`).
 struct Guarantee {
     bool exact_coverage;     // draws exactly the pixels the reference covers: no gaps, no overdraw

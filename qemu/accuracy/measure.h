@@ -14,7 +14,7 @@
 #include "qemu/accuracy/reference.h"
 #include "kernel/core/render.h"
 #include "kernel/scene/scene.h"
-#include "qemu/lib/image.h"
+#include "qemu/lib/host_image.h"
 
 namespace harness {
 

@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-#include "qemu/lib/json.h"
+#include "qemu/lib/ordered_json.h"
 
 #include "qemu/harness/channel.h"
 #include "qemu/lib/error.h"

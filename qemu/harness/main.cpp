@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "qemu/tools/demo_scenes.h"
-#include "qemu/lib/args.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
-#include "qemu/lib/image.h"
+#include "qemu/lib/host_image.h"
 #include "qemu/accuracy/measure.h"
 #include "qemu/harness/session.h"
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "qemu/lib/json.h"
+#include "qemu/lib/ordered_json.h"
 
 #include "qemu/harness/channel.h"
 

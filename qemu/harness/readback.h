@@ -1,9 +1,9 @@
 // Decoding a `readback` reply: base64, then PackBits, then the CRC-32 check (docs/protocol.md).
 #pragma once
 
-#include "qemu/lib/json.h"
+#include "qemu/lib/ordered_json.h"
 
-#include "qemu/lib/image.h"
+#include "qemu/lib/host_image.h"
 
 namespace harness {
 

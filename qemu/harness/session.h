@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "qemu/lib/json.h"
+#include "qemu/lib/ordered_json.h"
 
-#include "qemu/lib/image.h"
+#include "qemu/lib/host_image.h"
 #include "qemu/harness/kernel_link.h"
 #include "qemu/harness/process.h"
 #include "qemu/harness/qmp.h"

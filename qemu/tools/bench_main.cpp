@@ -14,9 +14,9 @@
 
 #include "qemu/tools/cost_model.h"
 #include "qemu/tools/demo_scenes.h"
-#include "qemu/lib/args.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
-#include "qemu/lib/image.h"
+#include "qemu/lib/host_image.h"
 #include "qemu/accuracy/measure.h"
 #include "qemu/harness/session.h"
 #include "qemu/tools/trade.h"

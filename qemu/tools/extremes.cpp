@@ -22,7 +22,7 @@
 #include "kernel/scene/math3d.h"
 #include "qemu/accuracy/guarded_surface.h"
 #include "qemu/accuracy/measure.h"
-#include "qemu/lib/args.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
 #include "qemu/tools/trade.h"
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "qemu/harness/session.h"
-#include "qemu/lib/args.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
 #include "qemu/tools/extremes.h"
 #include "qemu/tools/trade.h"

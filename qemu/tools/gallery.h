@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "qemu/accuracy/measure.h"
-#include "qemu/lib/image.h"
+#include "qemu/lib/host_image.h"
 
 namespace harness {
 

@@ -10,7 +10,7 @@
 
 #include "qemu/accuracy/measure.h"
 #include "qemu/harness/session.h"
-#include "qemu/lib/args.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
 #include "qemu/tools/demo_scenes.h"
 #include "qemu/tools/gallery.h"

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "qemu/lib/args.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
-#include "qemu/lib/image.h"
+#include "qemu/lib/host_image.h"
 #include "qemu/accuracy/measure.h"
 
 namespace {

@@ -6,7 +6,7 @@
 
 #include "kernel/scene/world.h"
 #include "qemu/tools/demo_scenes.h"
-#include "qemu/lib/args.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
 #include "qemu/accuracy/measure.h"
 

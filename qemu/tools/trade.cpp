@@ -11,7 +11,7 @@
 
 #include "kernel/core/footprint.h"
 #include "kernel/core/mapper.h"
-#include "qemu/lib/args.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
 
 namespace harness {

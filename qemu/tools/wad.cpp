@@ -11,7 +11,7 @@
 
 #include "kernel/core/texture.h"
 #include "qemu/lib/error.h"
-#include "qemu/lib/image.h"
+#include "qemu/lib/host_image.h"
 #include "qemu/tools/wad_bytes.h"
 
 namespace harness {

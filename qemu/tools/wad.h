@@ -127,7 +127,7 @@ private:
 // Upper-cases ASCII letters (lump names are ASCII).
 std::string wad_upper(std::string_view name);
 
-// Writes the image as an 8-bit BMP, through the generic write_bmp8 in qemu/lib/image.h; throws if its
+// Writes the image as an 8-bit BMP, through the generic write_bmp8 in qemu/lib/host_image.h; throws if its
 // pixel count does not match its size.
 void write_bmp8(const std::string& path, const WadImage& image);
 

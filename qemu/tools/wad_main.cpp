@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "qemu/lib/args.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
 #include "qemu/tools/wad.h"
 

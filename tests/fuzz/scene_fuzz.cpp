@@ -14,7 +14,7 @@
 #include "kernel/scene/scene.h"
 #include "kernel/scene/world.h"
 #include "tests/fuzz/fuzz.h"
-#include "tests/unit/texture_files.h"
+#include "tests/unit/kernel/scene/texture_files.h"
 
 namespace {
 

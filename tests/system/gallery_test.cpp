@@ -9,7 +9,7 @@
 #include <set>
 
 #include "kernel/core/mapper.h"
-#include "qemu/lib/image.h"
+#include "qemu/lib/host_image.h"
 #include "qemu/tools/gallery.h"
 #include "qemu/tools/trade.h"
 #include "tests/html.h"

@@ -1,0 +1,111 @@
+// The host tools' argument parser (args.h): sorting the words, the checked getters, run_cli.
+#include "qemu/lib/command_line.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstdio>
+
+namespace harness {
+
+CommandLine parse_command_line(const std::vector<std::string>& words, const std::vector<std::string_view>& with_value,
+                               const std::vector<std::string_view>& flags) {
+    CommandLine c;
+    c.declared_.assign(with_value.begin(), with_value.end());
+    c.declared_.insert(c.declared_.end(), flags.begin(), flags.end());
+    auto named = [](const std::vector<std::string_view>& names, const std::string& w) {
+        return std::find(names.begin(), names.end(), w) != names.end();
+    };
+    for (size_t i = 0; i < words.size(); ++i) {
+        const std::string& w = words[i];
+        if (w == "-h" || w == "--help") {
+            c.help_ = true;
+            break;
+        }
+        if (named(with_value, w)) {
+            if (i + 1 >= words.size()) throw UsageError(w + " needs a value");
+            c.given_.emplace_back(w, words[++i]);
+        } else if (named(flags, w)) {
+            c.given_.emplace_back(w, std::string());
+        } else if (w.rfind("--", 0) == 0) {
+            throw UsageError("unknown option " + w);
+        } else {
+            c.positionals_.push_back(w);
+        }
+    }
+    return c;
+}
+
+const std::string* CommandLine::last_value(std::string_view option) const {
+    if (std::find(declared_.begin(), declared_.end(), option) == declared_.end())
+        throw std::logic_error("the command line was parsed without " + std::string(option));
+    for (auto it = given_.rbegin(); it != given_.rend(); ++it)
+        if (it->first == option) return &it->second;
+    return nullptr;
+}
+
+bool CommandLine::has(std::string_view option) const { return last_value(option) != nullptr; }
+
+std::string CommandLine::text(std::string_view option, std::string fallback) const {
+    const std::string* v = last_value(option);
+    return v ? *v : fallback;
+}
+
+std::vector<std::string> CommandLine::texts(std::string_view option) const {
+    last_value(option);  // only for its check that the option was declared
+    std::vector<std::string> out;
+    for (const auto& [name, value] : given_)
+        if (name == option) out.push_back(value);
+    return out;
+}
+
+std::vector<std::string> CommandLine::list(std::string_view option) const {
+    std::vector<std::string> out;
+    std::string all = text(option);
+    for (size_t start = 0; start <= all.size();) {
+        size_t comma = std::min(all.find(',', start), all.size());
+        if (comma > start) out.push_back(all.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return out;
+}
+
+int CommandLine::integer(std::string_view option, int low, int high, int fallback) const {
+    const std::string* v = last_value(option);
+    if (!v) return fallback;
+    // from_chars, not atoi: "12abc", "" and " 12" are refused rather than read as 12 or 0
+    long long n = 0;
+    auto [end, error] = std::from_chars(v->data(), v->data() + v->size(), n);
+    if (error != std::errc() || end != v->data() + v->size() || n < low || n > high)
+        throw UsageError(std::string(option) + " takes " + std::to_string(low) + ".." + std::to_string(high));
+    return int(n);
+}
+
+std::string CommandLine::one_of(const std::vector<std::string_view>& names) {
+    std::string out;
+    for (size_t i = 0; i < names.size(); ++i) {
+        if (i) out += i + 1 == names.size() ? " or " : ", ";
+        out += names[i];
+    }
+    return out;
+}
+
+int run_cli(std::string_view program, std::string_view usage, const std::function<int()>& body) {
+    const std::string name(program);
+    try {
+        return body();
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "%s: %s\n%.*s", name.c_str(), e.what(), int(usage.size()), usage.data());
+        return 2;
+    } catch (const std::exception& e) {
+        // HarnessError says what and where; anything else (out of memory) is still reported, not a crash
+        std::fprintf(stderr, "%s: %s\n", name.c_str(), e.what());
+        return 1;
+    }
+}
+
+int show_usage(std::string_view usage) {
+    std::fwrite(usage.data(), 1, usage.size(), stdout);
+    return 0;
+}
+
+}  // namespace harness

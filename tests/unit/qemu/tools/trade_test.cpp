@@ -1,0 +1,349 @@
+// Under test: qemu/tools/trade.h, trade_docs.h; qemu/accuracy/measure.h.
+// The bench's pieces on the host: the Pareto front on hand-made points, the report files, the
+// phase probe (it must not change a picture, and its phases add up), and the 3D accuracy measure
+// (the exact mapper measures as exact; the pixels a mapper counts are the pixels the reference
+// covers for every mapper that promises exact coverage).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "kernel/core/footprint.h"
+#include "kernel/core/policy.h"
+#include "kernel/scene/frame.h"
+#include "kernel/core/render.h"
+#include "qemu/accuracy/measure.h"
+#include "qemu/tools/trade.h"
+#include "qemu/tools/trade_docs.h"
+#include "qemu/lib/error.h"
+
+namespace {
+
+using namespace harness;
+using namespace raster;
+
+TEST(Trade, ParetoFrontOfHandMadePoints) {
+    //                 0       1       2       3       4       5         6         7
+    std::vector<std::pair<double, double>> p = {{1, 5}, {2, 3}, {3, 3}, {4, 1}, {2, 6}, {5, 0.5}, {5, 0.5}, {6, 0.5}};
+    // 2 is beaten by 1 (as exact, faster); 4 by 0 (faster and more exact); 7 by 5 and 6; 5 and 6 tie
+    EXPECT_EQ(pareto_front(p), (std::vector<size_t>{0, 1, 3, 5, 6}));
+    EXPECT_EQ(pareto_front({}), std::vector<size_t>{});
+    EXPECT_EQ(pareto_front({{3, 3}}), std::vector<size_t>{0});
+}
+
+TradeRow row(const std::string& scene, const std::string& mapper, uint64_t draw, double mean_error, uint64_t rejected = 0) {
+    TradeRow r;
+    r.scene = scene, r.mapper = mapper;
+    r.pixels = 100, r.polygons = 4, r.spans = 10, r.rejected = rejected;
+    r.draw = draw, r.ticks = draw + 500, r.inner = draw / 2, r.setup = draw / 4, r.walk = draw - draw / 2 - draw / 4;
+    r.accuracy.compared = 100, r.accuracy.mean_texel_error = mean_error, r.accuracy.mean_footprint_error = mean_error;
+    return r;
+}
+
+// trade.md of these rows, written into `path` and read back.
+std::string markdown_of(const std::string& path, const std::vector<TradeRow>& rows, const ReportInfo& info = ReportInfo{}) {
+    write_markdown(path, rows, info);
+    std::ifstream md(path);
+    std::stringstream text;
+    text << md.rdbuf();
+    return text.str();
+}
+
+TEST(Trade, ParetoIsPerSceneAndLeavesOutMappersThatRefusePolygons) {
+    std::vector<TradeRow> rows = {row("a", "slow-exact", 9000, 0), row("a", "fast-rough", 1000, 5), row("a", "middle", 5000, 6),
+                                  row("a", "fastest-partial", 500, 0, 3), row("b", "slow-exact", 9000, 0), row("b", "fast-rough", 1000, 0)};
+    rows.push_back(row("b", "nothing", 0, 0));
+    rows.back().pixels = 0;
+    mark_pareto(rows);
+    EXPECT_TRUE(rows[0].pareto);
+    EXPECT_TRUE(rows[1].pareto);
+    EXPECT_FALSE(rows[2].pareto);  // slower and less exact than fast-rough
+    EXPECT_FALSE(rows[3].pareto);  // refuses polygons: not comparable
+    EXPECT_FALSE(rows[4].pareto);  // in scene b, fast-rough is as exact and faster
+    EXPECT_TRUE(rows[5].pareto);
+    EXPECT_FALSE(rows[6].pareto);
+}
+
+
+TEST(Trade, TheCsvHasAUnitForEveryColumnAndAFieldForEveryColumn) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "affine", 3000, 2.5)};
+    rows[1].host_ratio = 0.5;
+    mark_pareto(rows);
+    std::string dir = testing::TempDir() + "/trade_csv";
+    write_csv(dir + "/trade.csv", rows);
+    auto lines = read_csv(dir + "/trade.csv");
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_EQ(lines[0], csv_header());
+    for (size_t i = 6; i < lines[0].size(); ++i) EXPECT_NE(lines[0][i].find('['), std::string::npos) << lines[0][i];
+    std::map<std::string, size_t> column;
+    for (size_t i = 0; i < lines[0].size(); ++i) column[lines[0][i]] = i;
+    for (size_t r = 1; r < lines.size(); ++r) ASSERT_EQ(lines[r].size(), lines[0].size()) << "row " << r;
+    EXPECT_EQ(lines[2][column["mapper"]], "affine");
+    EXPECT_DOUBLE_EQ(std::stod(lines[2][column["draw_per_pixel[instructions/pixel]"]]), 30.0);
+    EXPECT_DOUBLE_EQ(std::stod(lines[2][column["frame_per_pixel[instructions/pixel]"]]), 35.0);
+    EXPECT_DOUBLE_EQ(std::stod(lines[2][column["host_cycles_ratio[ratio]"]]), 0.5);
+    EXPECT_EQ(lines[1][column["host_cycles_ratio[ratio]"]], "");  // not measured
+    EXPECT_EQ(lines[1][column["pareto[bool]"]], "true");
+    EXPECT_EQ(lines[2][column["pareto[bool]"]], "true");
+
+    ReportInfo info;
+    info.how = "by hand";
+    info.command = "make bench";
+    const std::string md_text = markdown_of(dir + "/trade.md", rows, info);
+    // sorted by speed: affine (30 per pixel) before exact (90)
+    size_t affine = md_text.find("\n| affine |"), exact = md_text.find("\n| exact |");
+    ASSERT_NE(affine, std::string::npos);
+    ASSERT_NE(exact, std::string::npos);
+    EXPECT_LT(affine, exact);
+
+    // the classics' published figures: every row of the table has its eight cells, the counted
+    // listing beside ours (a row of quake-subdiv16 says both)
+    size_t table = md_text.find("| loop | published cycles/px | machine | listing instr/px | ours | ours counted | ours measured instr/px | scene |");
+    ASSERT_NE(table, std::string::npos);
+    std::istringstream lines_after(md_text.substr(table));
+    std::string line;
+    int published_rows = 0;
+    while (std::getline(lines_after, line) && line.rfind("|", 0) == 0) {
+        EXPECT_EQ(std::count(line.begin(), line.end(), '|'), 9) << line;
+        published_rows += line.find("quake-subdiv16") != std::string::npos && line.find("6 + 68/16") != std::string::npos &&
+                          line.find("9 + 98/16") != std::string::npos;
+    }
+    EXPECT_EQ(published_rows, 1);
+}
+
+// The outer loops per polygon drawn: each phase's ticks over the polygons, outer the sum of the
+// first three; only exact and fast-affine, only where they draw every polygon.
+TEST(Trade, TheOuterLoopsArePerPolygonDrawn) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "fast-affine", 3000, 1), row("a", "affine", 3000, 1)};
+    for (TradeRow& r : rows) r.frames = 2, r.polygons = 10, r.geometry = 1000, r.setup = 2000, r.walk = 500, r.inner = 70;
+    rows[1].rejected = 1;  // fast-affine refused one: no row
+    std::string dir = testing::TempDir() + "/trade_outer";
+    const std::string t = markdown_of(dir + "/trade.md", rows);
+    EXPECT_NE(t.find("| a | exact | 5 | " + fixed(double(rows[0].pixels) / 10, 1) + " | 100 | 200 | 50 | 7 | 350 |"), std::string::npos) << t;
+    EXPECT_EQ(t.find("| a | fast-affine |"), std::string::npos);
+    EXPECT_EQ(t.find("| a | affine | 5 |"), std::string::npos);
+}
+
+// "Every mapper on the same work": only scenes no single mapper refuses a polygon of (auto does not
+// count), each mapper's row; the others named with how many single mappers refuse some.
+TEST(Trade, EveryMapperOnTheSameWorkListsOnlyScenesNoMapperRefuses) {
+    std::vector<TradeRow> rows = {row("whole", "exact", 9000, 0),   row("whole", "fast-affine", 3000, 1), row("whole", "auto", 2000, 1),
+                                  row("split", "exact", 9000, 0),   row("split", "fast-affine", 3000, 1), row("split", "affine", 3000, 1),
+                                  row("split", "auto", 2000, 1)};
+    rows[4].rejected = 1;  // fast-affine refused one polygon of "split"
+    rows[2].rejected = 1;  // auto's refusals do not count (it is not a single mapper)
+    std::string dir = testing::TempDir() + "/trade_whole";
+    const std::string t = markdown_of(dir + "/trade.md", rows);
+    const size_t at = t.find("## Every mapper on the same work");
+    ASSERT_NE(at, std::string::npos) << t;
+    const std::string section = t.substr(at, t.find("\n## ", at + 1) - at);
+    EXPECT_NE(section.find("### whole"), std::string::npos) << section;
+    EXPECT_NE(section.find("| fast-affine | "), std::string::npos) << section;
+    EXPECT_EQ(section.find("| auto | "), std::string::npos) << section;
+    EXPECT_EQ(section.find("### split"), std::string::npos) << section;
+    EXPECT_NE(section.find("Left out (mappers that refuse some or all of the polygons, of the single mappers): split (1 of 3)"), std::string::npos)
+        << section;
+}
+
+// auto's table: beside the fastest single mapper whose measured error meets the budget, the fastest
+// whose own bounds prove it (its largest bound within it, exact coverage promised where asked, every
+// polygon drawn); a mapper measured within but not proven, or proven only with its coverage its
+// own, is not the second. Beside auto's draw, its choosing a pixel, and the first speed-up were it free.
+TEST(Trade, AutoIsSetAgainstTheFastestMeasuredAndTheFastestProven) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "fast-affine", 2000, 1), row("a", "fast-table", 1000, 1),
+                                  row("a", "xsharp-dda", 1500, 1), row("a", "auto", 2500, 0)};
+    for (TradeRow& r : rows) r.accuracy.max_footprint_error = 0.5, r.budget_error = 1, r.budget_exact = true, r.budget = "1";
+    rows[0].max_bound = 0, rows[0].bound_exact = true;
+    rows[1].max_bound = 1, rows[1].bound_exact = true;         // proven within 1
+    rows[2].max_bound = 2, rows[2].bound_exact = true;         // measured within, its bound above the budget
+    rows[3].max_bound = 0.5, rows[3].bound_exact = false;      // within, but no exact coverage promised
+    rows[4].max_bound = -1;
+    rows[4].choose = 1000;  // 10 of its 25 a pixel
+    std::string dir = testing::TempDir() + "/trade_auto";
+    const std::string t = markdown_of(dir + "/trade.md", rows);
+    EXPECT_NE(t.find("| a | auto | 1 | 25.0 | 10.00 | 0.500 | yes | fast-table | 10.0 | 0.40× | 0.67× | fast-affine | 20.0 | 0.80× |"), std::string::npos)
+        << t;
+    rows[1].max_bound = raster::NO_BOUND;  // one polygon without a bound: not proven; then only exact is
+    const std::string t2 = markdown_of(dir + "/trade.md", rows);
+    EXPECT_NE(t2.find("| fast-table | 10.0 | 0.40× | 0.67× | exact | 90.0 | 3.60× |"), std::string::npos) << t2;
+}
+
+// The CSV read back holds every figure the report and the docs show: written again, it is the same
+// file, byte for byte; a malformed field is named with its line.
+TEST(Trade, TheCsvReadBackIsTheSameRows) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "fast-affine", 3000, 1.25), row("a", "auto", 2500, 0.5)};
+    rows[0].max_bound = 0, rows[0].bound_exact = true;
+    rows[1].max_bound = raster::NO_BOUND, rows[1].host_ratio = 0.625, rows[1].accuracy.max_footprint_error = 3.5;
+    rows[2].drawn_by = {{"exact", 3, 40}, {"fast-affine", 17, 60}}, rows[2].enveloped = 12, rows[2].choose = 77;
+    rows[2].budget_error = 0.5, rows[2].budget_exact = true, rows[2].budget_given = true;
+    rows[1].budget_error = raster::ANY_ERROR;
+    for (TradeRow& r : rows) r.accuracy.exact = 61, r.accuracy.within_one = 90, r.accuracy.gaps = 2, r.frames = 8;
+    mark_pareto(rows);
+    const std::string dir = testing::TempDir() + "/trade_back";
+    write_csv(dir + "/trade.csv", rows);
+    const std::vector<TradeRow> back = read_trade(dir + "/trade.csv");
+    ASSERT_EQ(back.size(), rows.size());
+    write_csv(dir + "/again.csv", back);
+    EXPECT_EQ(read_whole_file(dir + "/again.csv"), read_whole_file(dir + "/trade.csv"));
+    EXPECT_EQ(back[2].budget, "footprint error 0.5, exact coverage");
+    EXPECT_EQ(back[1].budget_error, raster::ANY_ERROR);
+    EXPECT_EQ(back[1].max_bound, raster::NO_BOUND);
+    EXPECT_EQ(back[2].drawn_by, rows[2].drawn_by);
+
+    std::vector<std::vector<std::string>> lines = read_csv(dir + "/trade.csv");
+    const size_t frames = size_t(std::find(lines[0].begin(), lines[0].end(), "frames[count]") - lines[0].begin());
+    lines[3].at(frames) = "x";
+    {
+        std::ofstream bad(dir + "/bad.csv");
+        for (const auto& fields : lines)
+            for (size_t i = 0; i < fields.size(); ++i) bad << fields[i] << (i + 1 < fields.size() ? "," : "\n");
+    }
+    try {
+        read_trade(dir + "/bad.csv");
+        ADD_FAILURE() << "a bad count was read";
+    } catch (const HarnessError& e) {
+        EXPECT_NE(std::string(e.what()).find("line 4: frames 'x' is not a count"), std::string::npos) << e.what();
+    }
+}
+
+// A generated block is the generator's output for its name, between its markers; the text around it
+// stays; an unknown name or a block without its end is an error, not a silent skip.
+TEST(TradeDocs, BlocksAreRegeneratedBetweenTheirMarkers) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "fast-affine", 2000, 1), row("a", "auto", 2500, 0)};
+    for (TradeRow& r : rows) r.accuracy.max_footprint_error = 0.5, r.budget_error = 1, r.budget_exact = true;
+    const std::string text = "before\n<!-- make bench: headline -->\nstale figures\n<!-- end make bench -->\nbetween\n"
+                             "<!-- make bench: scene a -->\n<!-- end make bench -->\nafter\n";
+    int blocks = 0;
+    const std::string fresh = refresh_generated(text, rows, "t.md", &blocks);
+    EXPECT_EQ(blocks, 2);
+    EXPECT_EQ(fresh.find("stale"), std::string::npos) << fresh;
+    EXPECT_NE(fresh.find("<!-- make bench: headline -->\n" + headline_table(rows) + "<!-- end make bench -->\nbetween\n"), std::string::npos) << fresh;
+    EXPECT_NE(fresh.find("| a | 1, exact coverage | 25.0 | 0.50 | fast-affine | 20.0 | 90.0 |"), std::string::npos) << fresh;
+    EXPECT_NE(fresh.find("<!-- make bench: scene a -->\n" + scene_table(rows, "a") + "<!-- end make bench -->\nafter\n"), std::string::npos);
+    EXPECT_EQ(refresh_generated(fresh, rows, "t.md", nullptr), fresh);
+    EXPECT_THROW(refresh_generated("<!-- make bench: nonsense -->\n<!-- end make bench -->\n", rows, "t.md", nullptr), HarnessError);
+    EXPECT_THROW(refresh_generated("<!-- make bench: scene b -->\n<!-- end make bench -->\n", rows, "t.md", nullptr), HarnessError);
+    EXPECT_THROW(refresh_generated("x\n<!-- make bench: headline -->\nno end\n", rows, "t.md", nullptr), HarnessError);
+}
+
+// The figures in README.md and docs/results.md are the generator's, from the committed CSV of the
+// last full make bench: a typed or stale figure in a generated table fails here.
+TEST(TradeDocs, TheCommittedDocsHoldTheGeneratorsFigures) {
+    const std::vector<TradeRow> rows = read_trade(DOCS_TRADE_CSV);
+    ASSERT_FALSE(rows.empty());
+    for (const std::string& path : GENERATED_DOCS) {
+        const std::string text = read_whole_file(path);
+        int blocks = 0;
+        const std::string fresh = refresh_generated(text, rows, path, &blocks);
+        EXPECT_GT(blocks, 0) << path << " has no generated table";
+        if (fresh == text) continue;
+        size_t at = 0;
+        while (at < text.size() && at < fresh.size() && text[at] == fresh[at]) ++at;
+        const size_t line = 1 + size_t(std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n'));
+        ADD_FAILURE() << path << ": line " << line << " differs from what make bench generates from " << DOCS_TRADE_CSV
+                      << " (run `build/host/modexlab-bench --refresh-docs " << DOCS_TRADE_CSV << "`):\n"
+                      << text.substr(text.rfind('\n', at) + 1, 300);
+    }
+}
+
+LoadedWorld demo(const char* name) { return load_world_file(std::string("scenes/") + name + ".scene"); }
+
+
+// A clock that counts its own reads: deterministic phases.
+uint64_t g_clock = 0;
+uint64_t counting_clock() { return g_clock += 7; }
+
+TEST(Probe, ChangesNoPictureAndItsPhasesAddUp) {
+    LoadedWorld w = demo("cube");
+    auto frame = world_frame(w, 40);
+    int probed = 0;
+    for (int i = 0; i < MAPPER_COUNT; ++i) {
+        const Mapper& m = MAPPERS[i];
+        Axis axis = home_axis(m);
+        RenderStats plain;
+        IndexImage want = render_world_frame(w, *frame, m, axis, &plain);
+        // the same drawing through the probe, on the same kind of surface
+        std::vector<uint8_t> surface(SCREEN_PIXELS, 0);
+        bool planar = ram_planar(m, axis);
+        Target t = ram_target(surface.data(), planar);
+        Probe probe;
+        probe.clock = counting_clock;
+        probe.calibrate();
+        EXPECT_EQ(probe.lap_cost, 7u);
+        probe.start();
+        const uint64_t start = probe.last;
+        RenderStats stats = render_frame(*frame, *w.textures, m, axis, t, Variant::Twin, &probe);
+        EXPECT_EQ(stats.pixels, plain.pixels) << m.name;
+        std::vector<uint8_t> mine = surface;
+        if (planar) linear_from_planar(surface.data(), mine.data());
+        EXPECT_EQ(mine, want.index) << m.name;
+        uint64_t sum = 0;
+        for (uint64_t ticks : probe.ticks) sum += ticks;
+        EXPECT_EQ(sum, probe.last - start) << m.name;
+        // only auto laps its choosing
+        EXPECT_EQ(probe.laps[int(Phase::Choose)] > 0, m.is_auto) << m.name;
+        EXPECT_EQ(probe.net(Phase::Choose), 0u) << m.name;
+        if (stats.polygons) {
+            ++probed;
+            EXPECT_GT(probe.laps[int(Phase::Setup)], 0u) << m.name;
+            EXPECT_GT(probe.laps[int(Phase::Inner)], 0u) << m.name << ": its per-span code is never timed";
+            // each lap read the clock once: with the cost taken off, nothing is left
+            EXPECT_EQ(probe.net(Phase::Setup), 0u) << m.name;
+            EXPECT_EQ(probe.net(Phase::Inner), 0u) << m.name;
+        }
+    }
+    EXPECT_GE(probed, 10);
+}
+
+TEST(Measure3d, TheExactMapperMeasuresAsExact) {
+    for (const char* name : {"ball", "corridor", "cube"}) {
+        LoadedWorld w = demo(name);
+        auto frame = world_frame(w, 25);
+        AccuracyMetrics m = measure_world_frame(w, *frame, *find_mapper("exact"), Axis::Rows);
+        EXPECT_GT(m.reference_pixels, 1000u) << name;
+        EXPECT_EQ(m.compared, m.exact) << name;
+        EXPECT_EQ(m.max_texel_error, 0u) << name;
+        EXPECT_EQ(m.gaps + m.overdraw + m.overlaps + m.index_differs, 0u) << name;
+    }
+}
+
+TEST(Measure3d, MappersThatPromiseExactCoverageCountThePixelsTheReferenceCovers) {
+    for (const char* name : {"corridor", "mesh", "rotozoom"}) {
+        LoadedWorld w = demo(name);
+        auto frame = world_frame(w, 60);
+        // the reference's pixels, polygon by polygon (what a frame's pixel count adds up)
+        uint64_t covered = 0;
+        Picture p(SCREEN_WIDTH, SCREEN_HEIGHT);
+        const Vertex* v = frame->vertices;
+        for (int32_t i = 0; i < frame->polygon_count; ++i) {
+            clear_pixel_image(p.view, 0);
+            reference_polygon(v, frame->polygon_size[i], w.textures->objects[frame->polygon_object[i]], p.view);
+            for (uint8_t c : p.coverage) covered += c;
+            v += frame->polygon_size[i];
+        }
+        ASSERT_GT(covered, 0u);
+        for (int i = 0; i < MAPPER_COUNT; ++i) {
+            const Mapper& m = MAPPERS[i];
+            if (!m.guarantee.exact_coverage) continue;
+            RenderStats stats;
+            render_world_frame(w, *frame, m, home_axis(m), &stats);
+            if (stats.rejected) continue;  // textures it cannot take
+            EXPECT_EQ(stats.pixels, covered) << name << " " << m.name;
+            AccuracyMetrics a = measure_world_frame(w, *frame, m, home_axis(m));
+            EXPECT_EQ(a.gaps + a.overdraw + a.overlaps, 0u) << name << " " << m.name;
+        }
+    }
+}
+
+TEST(Measure3d, AffineIsWorseThanSubdividedPerspectiveOnTheCorridor) {
+    LoadedWorld w = demo("corridor");
+    auto frame = world_frame(w, 0);
+    AccuracyMetrics affine = measure_world_frame(w, *frame, *find_mapper("affine"), Axis::Rows);
+    AccuracyMetrics subdiv = measure_world_frame(w, *frame, *find_mapper("persp-subdiv-8"), Axis::Rows);
+    EXPECT_GT(affine.mean_texel_error, 10 * subdiv.mean_texel_error);
+    EXPECT_GT(subdiv.exact, affine.exact);
+}
+
+}  // namespace
