@@ -250,7 +250,7 @@ $(WRONG_MAGIC_LOADER): $(KBUILD)/tests/fixtures/wrong_magic_loader.asm.o
 # The ISO: the kernel, every built-in file again as a module under /boot/files (the kernel prefers a
 # module to a built-in of the same name, so files on a USB stick can be changed without a rebuild),
 # and a menu entry per demo scene loading just that scene and the files it names. GRUB's own files
-# go in uncompressed: the ISO is rebuilt at every kernel change, and compressing them was most of that.
+# go in uncompressed: the ISO is rebuilt at every kernel change, and compressing them would be most of that.
 $(ISO): $(KERNEL) boot/grub.cfg $(BUILTIN_SOURCES)
 	$(call say,ISO,$@)
 	$(Q)rm -rf $(BUILD)/isodir && mkdir -p $(BUILD)/isodir/boot/grub $(BUILD)/isodir/boot/files
@@ -459,7 +459,7 @@ fuzz-corpus: deps
 		{ cat $(FBUILD)/logs/merge-$$t.log; exit 1; }; \
 		echo "fuzz-corpus: $$t: $$before -> $$(ls tests/fuzz/corpus/$$t | wc -l) inputs"; done
 
-# `make soak N=20`: the system-test tier N times; which tests changed their result (issue 13).
+# `make soak N=20`: the system-test tier N times; which tests changed their result (flaky ones).
 N ?= 20
 soak: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures

@@ -40,10 +40,10 @@ bool g_stalled = false;
 // How long a byte waits for the transmitter. A 16550 at 115200 baud drains its FIFO in 1.4 ms, but
 // under QEMU the host's back-pressure reaches the guest: while the client is not reading, the
 // socket is full, the byte waits in the transmitter and THRE stays clear, for as long as the client
-// stalls. Giving up early loses a byte from the middle of a reply (a bounded wait of 10^6 polls,
-// ~75 ms under TCG, did: the readback flake, docs/platform.md). So the wait is bounded only
-// against a UART that never drains: 2^28 polls, ~20 s under QEMU TCG, minutes on a PC. After such a
-// timeout the port counts as stalled: bytes are dropped without waiting until THRE shows again.
+// stalls. Giving up early loses a byte from the middle of a reply (docs/platform.md, "Measured in
+// QEMU 7.2"). So the wait is bounded only against a UART that never drains: 2^28 polls, ~20 s under
+// QEMU TCG, minutes on a PC. After such a timeout the port counts as stalled: bytes are dropped
+// without waiting until THRE shows again.
 constexpr uint32_t DRAIN_POLLS = 1u << 28;
 
 bool wait_lsr(uint8_t bit) {

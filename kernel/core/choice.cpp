@@ -65,8 +65,7 @@ namespace {
 // only the reference itself promises: every other bound counts some rounding), so each set is
 // built once, in the order of their cost per pixel (the term that dominates on all but the smallest
 // polygons), so that a polygon prices them lazily: only while one not yet priced could cost less
-// than the cheapest priced and not yet asked (of some 25 candidates, the ten or so dearest per
-// pixel are mostly never priced).
+// than the cheapest priced and not yet asked (the dearest per pixel are mostly never priced).
 struct Candidates {
     bool built = false;
     int count = 0;
@@ -209,7 +208,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     // each one it asks); NOT_LIVE: asked already, or not priced
     constexpr int32_t NOT_LIVE = 0x7FFFFFFF;
     // (to the nearest whole number by adding 1.5 * 2^52, which leaves it in the sum's low bits:
-    // int32_t() on the x87 switches the rounding mode twice, about 15 instructions more a candidate)
+    // int32_t() on the x87 would switch the rounding mode twice a candidate)
     auto price_of = [](double c) {
         if (!(c < 2e9)) return NOT_LIVE;
         if (!(c > -2e9)) return -NOT_LIVE;
@@ -219,7 +218,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         return int32_t(uint32_t(bits));
     };
     // (written as each is priced, the certain one first: nothing reads a candidate not yet priced,
-    // so no fill of the whole list, some 150 instructions a polygon)
+    // so the list is never filled whole)
     double cost[2 * MAPPER_LIMIT];
     int32_t price[2 * MAPPER_LIMIT];
     const bool rows_fewer = size[0].spans < size[1].spans;
@@ -272,19 +271,14 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         choice.mapper = &m, choice.axis = list.axis[k], choice.bound = b, choice.by_spans = !whole_only;
         return true;
     };
-    // The oriented candidate, from a budget of one footprint to below four: fast-adaptive-B (B = 1
-    // below two, else 2) along the walker fast-oriented-B would pick, where it is proven within B:
-    // inside the clip by its certificate from the setup alone; reaching outside it (the certificate
-    // takes the vertices for the corners of the part drawn) by its own bound of the whole polygon
-    // at once, from the spread of the part inside the clip (which the search then shares); priced
-    // by fast-oriented-1's row with no proof (B = 1: drawn by fast-oriented-1 itself, whose driver
-    // picks the same walker) or fast-adaptive-2's. Or, cheaper by its own row, fast-constant-depth
-    // along that walker (one chord a line: never more segments than fast-adaptive's), where its
-    // chords bound is within the budget: inside the clip from the same certificate, reaching
-    // outside it from that spread (and only where it would be taken unsearched, below). Where the
-    // price is no more than the least any candidate could cost with its proof plus ORIENTED_GATE,
-    // or where no candidate that steps the polygon affinely can be within the budget
-    // (affine_deviation), it is the choice; else the price the search must undercut.
+    // The oriented candidate (ORIENTED_GATE; docs/auto.md, "The rule", 4): fast-adaptive-B (B = 1
+    // below two, else 2) along the walker fast-oriented-B would pick, proven within B by its
+    // certificate inside the clip, else by its whole bound from the spread inside (which the search
+    // then shares); priced by fast-oriented-1's row (B = 1: drawn by it, whose driver picks the same
+    // walker) or fast-adaptive-2's. Or fast-constant-depth along that walker, cheaper by its row,
+    // where the same proof bounds its chords within the budget (outside the clip: only if taken
+    // unsearched). The choice where its price is within the gate of the least any candidate could
+    // cost, or affine_deviation is above the budget; else the price the search must undercut.
     const Mapper* oriented = nullptr;
     Axis oriented_walker = Axis::Rows;
     int32_t oriented_price = NOT_LIVE;

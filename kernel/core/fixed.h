@@ -13,12 +13,12 @@ inline double larger(double a, double b) { return a > b ? a : b; }
 // The integer nearest x by the FPU's rounding mode, whatever it is (one FIST or CVTSD2SI): within
 // 1 of x, |x| < 2^63. The floors below take it and step down where it lies above x, which gives
 // floor(x) exactly under any rounding mode (a truncating conversion changes the x87's rounding
-// mode and back around a FISTP: some 20 instructions against 3 on i686).
+// mode and back around a FISTP).
 inline int64_t nearby_i64(double x) { return __builtin_llrint(x); }
 
 // floor(x) for |x| < SMALL_FLOOR, in 32 bits (a 32-bit FIST within 1 of x, no overflow): the floors
 // below take this path first, with none of their range checks (NaN fails the test), and give the
-// same value; on i686 some 15 instructions less a conversion.
+// same value, cheaper on i686.
 constexpr double SMALL_FLOOR = 2147483647.0;
 inline int32_t floor_small(double x) {
     const int32_t t = int32_t(__builtin_lrint(x));
@@ -53,9 +53,8 @@ inline int32_t floor_div32(int32_t n, int32_t d) {
 }
 
 // Floor division for a positive divisor: floor(n / d), d > 0. One division: on i686 (where a
-// 64-bit one is a libgcc call of some 50 instructions) one IDIV of n by a 32-bit d wherever the
-// quotient fits in 32 bits (checked first: beyond, IDIV faults); elsewhere in 32 bits when both
-// fit.
+// 64-bit one is a libgcc call) one IDIV of n by a 32-bit d wherever the quotient fits in 32 bits
+// (checked first: beyond, IDIV faults); elsewhere in 32 bits when both fit.
 inline int64_t floor_div(int64_t n, int64_t d) {
 #if defined(__i386__)
     if (d == int64_t(int32_t(d)) && n >= -(d << 31) && n < (d << 31)) {

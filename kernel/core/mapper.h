@@ -134,7 +134,7 @@ inline void emit(Probe* probe, RenderStats* stats, uint32_t spans, uint32_t pixe
     tally(stats, spans, pixels);
 }
 // The common case: the context's loop on one argument block. (Written out rather than through the
-// lambda form: the drivers' register allocation, and so the bench's figures, stay as they were.)
+// lambda form, which changes the drivers' register allocation, and so their cost.)
 inline void emit(const DrawContext& c, const void* args, uint32_t spans, uint32_t pixels) {
     probe_lap(c.stats->probe, Phase::Walk);
     c.loop(args);
@@ -165,7 +165,7 @@ using BoundFn = ErrorBound (*)(const BoundContext& c, const Vertex* vertices, in
 using CheckFn = LoopCheck (*)(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
 
 // Whether auto, where a mapper's bound of the whole polygon at once is above the budget, asks its
-// bound span by span (which costs a few hundred instructions a span): only where the spans' bounds
+// bound span by span (BOUND_SPAN_COST a span, core/choice.h): only where the spans' bounds
 // can be much tighter than the whole polygon's, as they are where the error depends on each line's
 // own direction or place (docs/auto.md).
 enum SpanProof : uint8_t { SPANS_NOT_ASKED, SPANS_ASKED };
@@ -193,7 +193,7 @@ struct Mapper {
     // envelope proves it. (A driver of its own, so that the mapper's own path checks nothing.)
     DrawFn enveloped = nullptr;
     // The planes its span routine reads, all draw_with sets up for it (the perspective ones, but
-    // for affine's: the affine planes and their 16.16 form cost some 400 instructions a polygon).
+    // for affine's): setting up a plane the routine does not read would cost every polygon.
     SetupPlanes span_planes = PLANES_PERSPECTIVE;
     // Where the target takes rows, the walker it draws a polygon along, which it picks itself
     // polygon by polygon (fast-oriented), from the polygon's setup (any planes) and the clip: asked

@@ -80,7 +80,7 @@ enum class SetupStatus : uint8_t {
 const char* setup_status_name(SetupStatus s);
 
 // No default member initialisers: a setup is declared for every polygon drawn, and setup_polygon
-// writes what it says it does (zeroing the rest first cost some 30 instructions a polygon).
+// writes what it says it does (zeroing the rest first would cost every polygon).
 struct PolygonSetup {
     int32_t edge_count;
     Edge edges[MAX_POLYGON_VERTICES];
@@ -145,8 +145,7 @@ inline double centre_x(const PolygonSetup& s, int32_t x) { return double(int64_t
 inline double centre_y(const PolygonSetup& s, int32_t y) { return double(int64_t(y) * SUBPIXEL_ONE + SUBPIXEL_HALF - s.ref_y); }
 // The same for a pixel of the polygon (a span's: inside its box, so within 16384 pixels of 0 by
 // setup's range, as is the reference vertex) in 32 bits: each difference is within 2^23
-// subpixels, so the value is the same; on i686 the 64-bit product and difference cost some 15
-// instructions a span more.
+// subpixels, so the value is the same, without i686's 64-bit product and difference a span.
 inline double span_centre_x(const PolygonSetup& s, int32_t x) {
     return double(int32_t(uint32_t(x) * uint32_t(SUBPIXEL_ONE) + uint32_t(SUBPIXEL_HALF) - uint32_t(s.ref_x)));
 }

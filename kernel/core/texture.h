@@ -32,12 +32,10 @@ struct Texture {
     // For textures whose sides are powers of two up to 1024: the repeating texture over (2 width + 2
     // DOUBLED_LEAD) x (2 height + 2 DOUBLED_LEAD) texels, doubled_pitch(width) bytes a row, at row r
     // and column c texel ((c - DOUBLED_LEAD) mod width, (r - DOUBLED_LEAD) mod height): twice the
-    // texture each way from its origin, the texel (0, 0) at row and column DOUBLED_LEAD, and a few
-    // texels before and after (make_doubled). Two readers: fast-table's offsets from the origin
-    // (TableBlock, every size), whose sums of two wholes taken modulo the sides stay below 2 width
-    // and 2 height; and, for textures with a side above 256 (beyond_tile), fast-affine's and the
-    // other fast loops' texel pointer, which walks a polygon whose coordinates span at most the
-    // sides and a few texels without wrapping (fast::doubled_window). Null when not built.
+    // texture each way from its origin, texel (0, 0) at row and column DOUBLED_LEAD (make_doubled).
+    // Read by fast-table's offsets from the origin (TableBlock, every size: sums of two wholes taken
+    // modulo the sides stay below 2 width and 2 height) and, above 256 a side (beyond_tile), by the
+    // other fast loops' texel pointer on a window of it (fast::doubled_window). Null when not built.
     const uint8_t* doubled = nullptr;
 };
 
@@ -122,8 +120,7 @@ bool wrap_from_name(lib::StrView name, Wrap* out);
 //   checker:  8x8-texel squares, white (15) and blue (1)
 //   grid:     white (15) lines on texel rows and columns that are multiples of 8; each 8x8 cell
 //             inside has its own colour from the colour cube, so a wrong cell shows
-//   xor:      (u xor v) mod 256
-//   gradient: colour-cube entries, 12 steps across u and 20 down v
+//   xor:      (u xor v) mod 256;   gradient: colour-cube entries, 12 steps across u and 20 down v
 //   numbered: white lines on texel rows and columns that are multiples of 16; each 16x16 cell its
 //             own colour with its number (row-major from 0, two digits, mod 100) in black: the
 //             cell a pixel shows can be read off a screenshot

@@ -5,16 +5,13 @@
 #include "kernel/core/asm_offsets.h"
 #endif
 
-// Why it works. On line L (row y, or column x) each edge's function is linear in the minor
-// coordinate m: E = A*m + B(L), with B(L+1) = B(L) + C. Inside is E >= t, so an edge with A > 0
-// bounds m from below by ceil((t - B)/A), one with A < 0 from above by floor((B - t)/-A), and one
-// with A = 0 keeps or drops whole lines: it narrows the range of lines once, at the start.
-//
-// The polygon is convex, so every edge's line supports it: on line L the tightest lower bound is
-// the one of an edge whose closed extent along the major axis holds L's centre (any other lower
-// edge's line passes outside the polygon there, or through the same boundary point only when L's
-// centre is within that edge's extent too). So each bound is stepped only on its own lines, at
-// most two of a kind at once, and a triangle costs two bounds a line.
+// Why it works (docs/accuracy.md, "Screen, grid and coverage"): on line L each edge's function is
+// linear in the minor coordinate m, E = A*m + B(L) with B(L+1) = B(L) + C, so inside (E >= t) an edge
+// with A > 0 bounds m from below by ceil((t - B)/A), one with A < 0 from above by floor((B - t)/-A),
+// and one with A = 0 narrows the range of lines once, at the start. The polygon is convex, so the
+// tightest bound on a side is that of an edge whose closed extent along the major axis holds L's
+// centre: each bound is stepped only on its own lines, at most two of a kind at once, and a
+// triangle costs two bounds a line.
 namespace raster {
 
 namespace {

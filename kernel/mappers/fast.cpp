@@ -70,15 +70,12 @@ void plane_ranges(const PolygonSetup& s, const ClipRect& clip, double extra, dou
 
 // fast-affine on a doubled copy: the corner of the window of the copy that its texel pointer walks
 // on the polygon without wrapping, as 16.16 values to take from u and v (their wholes then the
-// texel's column and row in the copy). The floors of u over the pixels lie in [f, g] (plane_ranges).
-// The copy's columns are texels a - L .. a + 2 width + L - 1 (L = DOUBLED_LEAD) for a multiple a of
-// the width, the largest with a - L <= f, so texel t's column is t - (a - L), which holds t mod
-// width; then g < a + 2 width + L fits the copy, always where g - f <= width + 2 L. A face that maps
-// the texture once, [0, width], has f = -1 and g = width with its rounding (a = 0); where its affine
-// planes overshoot at a corner, as a quad's fourth may by a fifth of the side, f down to -width - L
-// (a = -width) or g up to 2 width + L - 1 (a = 0) still fit. The same for v. False where the polygon
-// spans more (fast-affine then reads the texture itself by masks), or its range is not a finite one
-// within int32.
+// texel's column and row in the copy). With [f, g] the floors of u over the pixels (plane_ranges)
+// and a the largest multiple of the width with a - DOUBLED_LEAD <= f, the window fits where
+// g < a + 2 width + DOUBLED_LEAD: always where g - f <= width + 2 DOUBLED_LEAD, and on a face that
+// maps the texture once even where its affine planes overshoot at a corner (docs/bounds.md,
+// "fast-affine and fast-columns on the doubled copy"). The same for v. False where the polygon spans
+// more (fast-affine then reads the texture by masks), or its range is not finite within int32.
 bool doubled_window(const PolygonSetup& s, const Texture& tex, const ClipRect& clip, uint32_t* u_base, uint32_t* v_base) {
     double lo[2], hi[2];
     plane_ranges(s, clip, 0, lo, hi);
@@ -180,16 +177,13 @@ template <bool DOUBLED>
     else emit(c, &a, 0, 0);
 }
 
-// Rows go by runs: a run's rows have one live bound a side, so the run loop walks them itself, two
-// runs a call where the second follows at once (a triangle's, but where a vertex lies on a row's
-// centre). A frame's uncut triangle is set up with its runs and the loop's block in one call
-// (set_up_triangle), any other triangle's runs and block come from one call after its setup
-// (walk_triangle); any other polygon, and a triangle those leave, goes by setup_polygon and the
-// walker, where a row with a vertex on its centre (two live bounds on a side) is walked by next()
-// and drawn as a run of one row between constant bounds. With an offset table (fast-table), the
-// table for the polygon's longest span is built once, after the walk's set-up (what the setup
-// phase counts). Given auto's envelope (DrawContext::envelope), a frame's uncut triangle is set up
-// by set_up_enveloped, which checks it, and any other after its setup here.
+// Rows go by runs (docs/mappers.md, "fast-affine, fast-columns"): a run's rows have one live bound a
+// side, so the run loop walks them itself, two runs a call where the second follows at once. A
+// frame's uncut triangle is set up with its runs and the loop's block in one call (set_up_triangle,
+// or with auto's envelope set_up_enveloped, which checks it), any other triangle's after its setup
+// (walk_triangle; the envelope checked here); any other polygon, and a triangle those leave, by
+// setup_polygon and the walker. With an offset table (fast-table), the table for the polygon's
+// longest span is built once, after the walk's set-up (what the setup phase counts).
 // DOUBLED: fast-affine on a texture's doubled copy; ENVELOPED: its driver for auto's envelope
 template <bool TABLE, bool DOUBLED = false, bool ENVELOPED = false>
 [[gnu::always_inline]] inline SetupStatus draw_runs(const DrawContext& c, const Vertex* vertices, int count) {

@@ -58,21 +58,14 @@ void fast_run_loop(const void* args);
 void wrapping_pixels(const Texture& tex, int32_t du, int32_t dv, uint32_t u, uint32_t v, uint8_t* dst, int32_t count, int32_t stride);
 void fast_run_loop_wrapping(const FastRunArgs& a, const Texture& tex);
 
-// A triangle in range (a frame's uncut face) drawn by a run loop, set up and its walk set up in one
-// call: setup_polygon's work (PLANES_AFFINE, Input::InRange) into `setup`, then triangle_runs on it
-// (the target's clip), and the run loop's block from them: lines, and where it is not 0 (a row to
-// walk) row, pitch, the clip's columns, the runs, u and v at pixel 0 of the first row, their steps
-// and `inside` (texture, tally and table are the caller's). Returns 1; 2 where only the setup is
-// written (the walker walks it: triangle_runs says no); 0 where setup_polygon must set it up (the
-// NASM routine leaves some triangles to C++). The twin, fast_triangle, sets up every triangle in
-// C++; fast_triangle_asm (asm/fast.asm) is the NASM routine.
-// fast_triangle_runs is the same from the rows on, for a triangle set up already (`setup` read, its
-// 16.16 planes among what it holds: auto's, or setup_polygon's on a polygon of three corners after
-// any check): 1, or 2 for the walker. Twin and NASM as above (fast_triangle_runs_asm).
-// fast_triangle_enveloped is fast_triangle for auto's envelope (draw_enveloped): after the setup,
-// within_envelope on it with `envelope`'s limits, and 3 (the setup written, nothing else) where
-// the triangle fails it; else as fast_triangle. Twin and NASM as above
-// (fast_triangle_enveloped_asm: the guards in integers, 25 instructions or so).
+// A frame's uncut triangle set up for a run loop in one call: setup_polygon's work (PLANES_AFFINE,
+// Input::InRange) into `setup`, triangle_runs on it (the target's clip), and the run loop's block
+// from them (lines; where there is a row to walk, all but texture, tally and table: the caller's).
+// Returns 1; 2 where only the setup is written (the walker walks it); 0 (the NASM routine only)
+// where setup_polygon must set it up. fast_triangle_runs: the same from the rows on, for a triangle
+// set up already with its 16.16 planes (auto's, or setup_polygon's): 1 or 2. fast_triangle_enveloped:
+// fast_triangle, then within_envelope with `envelope`'s limits: 3 where it fails (the setup written).
+// Each the C++ twin of its _asm routine (asm/fast.asm; docs/mappers.md, "fast-affine, fast-columns").
 struct FastTriangleArgs {
     const Vertex* in;
     PolygonSetup* setup;  // (fast_triangle_runs: read, never written)
@@ -98,17 +91,13 @@ extern "C" TriangleTaken fast_triangle_enveloped_asm(FastTriangleArgs* a);
 #endif
 
 // fast-table: the offsets of pixel k of any span from its first pixel's texel in the texture's
-// doubled copy (TableBlock: W x H its sides, P its pitch), for a polygon whose u and v step by du and
-// dv (16.16) a pixel: table[k] = (floor(½ + k dv) & (H - 1)) * P + (floor(½ + k du) & (W - 1)), the
-// floors of 16.16 values in exact integer arithmetic (TABLE_START), k = 0 .. length - 1 (fatmap's
-// table idea: one table a polygon, not a step a pixel). fast_table_loop walks fast_run_loop's rows
-// and reads pixel x0 + k of a row whose u and v are u0, v0 at pixel x0, the pixel the polygon's
-// table starts at (at or left of every span's first pixel: the table written from table + x0), from
-// block + (v0 whole & (H - 1)) * P + (u0 whole & (W - 1)) + table[x0 + k]; the two parts stay below
-// 2 W and 2 H, inside the copy's rows. So the texel read is (floor(u0 + k du + ½ - f_u), floor(v0 +
-// k dv + ½ - f_v)) modulo the sides, f_u and f_v the fractions of u0 and v0: fast-affine's lines
-// moved by at most half a texel on each axis (docs/bounds.md, "The offset table"). (On the tiled
-// block, 256 a row, u's part would pass 255 into the next texel row: a row off.)
+// doubled copy (TableBlock: W x H its sides, P its pitch), for a polygon whose u and v step by du
+// and dv (16.16) a pixel: table[k] = (floor(½ + k dv) & (H - 1)) * P + (floor(½ + k du) & (W - 1)),
+// k = 0 .. length - 1, exact in integers (TABLE_START). fast_table_loop walks fast_run_loop's rows
+// and reads pixel x0 + k of a row (u0, v0 at x0, where the table starts: at or left of every span's
+// first pixel, written from table + x0) at block + (v0 whole & (H - 1)) * P + (u0 whole & (W - 1))
+// + table[x0 + k]: the floor of fast-affine's line moved by at most half a texel on each axis
+// (docs/bounds.md, "The offset table"; why not the tiled block: docs/mappers.md, "fast-table").
 constexpr uint32_t TABLE_START = 0x8000;  // half a texel
 constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row: 320 pixels)
 void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block);

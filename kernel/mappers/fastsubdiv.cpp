@@ -59,7 +59,7 @@ void fast_subdiv_loop(const void* raw) {
 namespace {
 
 // The loop's block for span s (all but the segments' shift): each plane along the span's line.
-// (Inlined: called once a span, and a copy of the block costs some twenty instructions.)
+// (Inlined: called once a span; out of line, the block would cost a copy a span.)
 [[gnu::always_inline]] inline void span_args(const PolygonSetup& setup, Axis axis, const Span& s, const Texture& tex, uint8_t* dst,
                                              int32_t stride, FastSubdivArgs* out) {
     FastSubdivArgs& a = *out;
@@ -130,10 +130,9 @@ ErrorBound fast_subdiv_bound(const BoundContext& c, const Vertex* vertices, int 
 // steps, and twice the reference's) is within FAST_ADAPTIVE_ROUNDING, every span whose shift found
 // chords within room is within B, and a span left at 2 pixels within the polygon's chords bound for
 // 2 pixels: the larger of the two; else the chords bound for 512 (no chord is longer). The rule
-// trusts Q as the span evaluates it: where Q's terms at a corner are at most 2^26 times its least,
-// its relative rounding (a few 2^-52 of the terms) is far inside the room's 10^-6. A span: its
-// chords as drawn (segments_span_bound), or the relative chords bound at its own Q, whichever is
-// less.
+// trusts Q as the span evaluates it, so Q's terms at a corner must be within 2^26 times its least.
+// A span: its chords as drawn (segments_span_bound), or the relative chords bound at its own Q,
+// whichever is less.
 template <int QUARTERS>
 ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, int count) {
     if (!mapper_accepts(c.mapper, c.tex)) return ErrorBound{false, true, 0};

@@ -11,17 +11,13 @@
 namespace raster {
 
 // One span, segment by segment: the exact point (u, v) = (pu/q, pv/q) at pixel 0, at every
-// N = 2^shift pixels after it and at the last pixel, each plane evaluated along the span (a row:
-// (a0 + gy y) + gx x, as the reference does, c below being a0 + gy y; a column: (a0 + gx x) + gy y),
-// each coordinate scaled to 16.16 and rounded to
-// nearest in 64 bits, of which the low 32 are kept (a whole number of 65536-texel periods off: the
-// tiled block repeats every 256). Between two points the 8:16 core steps by their 32-bit difference
-// over the pixels between them: by a shift over N, by a division over fewer (the last segment).
-// Each pixel reads texel (u whole mod W, v whole mod H): from the tiled block at (v whole & 255,
-// u whole & 255), or, for a texture with a side above 256, from its doubled copy at the origin plus
-// (v whole mod H) * pitch + (u whole mod W); the NASM loop steps a pointer into the copy instead
-// where a segment's travel stays in it (docs/bounds.md, "The subdivided fast mappers on the
-// doubled copy"), the same texels.
+// N = 2^shift pixels after it and at the last pixel, each plane evaluated along the span as the
+// reference does (a row: (a0 + gy y) + gx x, c below being a0 + gy y; a column: (a0 + gx x) + gy y),
+// scaled to 16.16, rounded to nearest in 64 bits and kept modulo 2^32 (whole 65536-texel periods:
+// the tiled block repeats every 256). Between two points the 8:16 core steps by their 32-bit
+// difference over the pixels between: by a shift over N, by a division over fewer (the last one).
+// Each pixel reads texel (u whole mod W, v whole mod H), from the tiled block or, a side above 256,
+// the doubled copy (docs/bounds.md, "The subdivided fast mappers on the doubled copy").
 struct FastSubdivArgs {
     uint8_t* dst;            // pixel 0
     int32_t stride;          // bytes from a pixel to the next: 1 (a row, drawn in pairs), or a column's
@@ -83,13 +79,10 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
 // Whether fast-adaptive-B's bound along `axis` is within B on the polygon, from its setup alone
 // (every plane), without the spread: true only where the polygon lies inside the clip (the spread's
 // corners are then its vertices) with a repeating texture the mapper takes, and where what the
-// whole-polygon bound above checks holds for every value the spread could take there: Q and the
-// planes' terms at the corners as the spread evaluates them, |t| at most P's terms over Q's least,
-// the reference's rounding and the range of t from those (docs/bounds.md, "fast-adaptive's
-// certificate"). Then fast_adaptive_bound<QUARTERS> is within B (tested), so auto may take the
-// mapper unasked. The caller's to ensure fast-adaptive-B takes the texture (mapper_accepts: what
-// choose_mapper's candidates do). What it costs beside the spread: docs/bounds.md, the same
-// section.
+// whole-polygon bound above checks holds for every value the spread could take there (docs/bounds.md,
+// "fast-adaptive's certificate": the checks, and what it costs beside the spread). Then
+// fast_adaptive_bound<QUARTERS> is within B (tested), so auto may take the mapper unasked. The
+// caller's to ensure fast-adaptive-B takes the texture (mapper_accepts, as choose_mapper's candidates).
 template <int QUARTERS>
 bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis);
 // The certificate's part that every chord length shares (fast_certificate),
@@ -114,16 +107,13 @@ bool fast_adaptive_certain(const FastCertificate& f, const PolygonSetup& s, Axis
 double fast_chords_bound(const FastCertificate& f, const PolygonSetup& s, Axis axis, double n);
 
 // fast-oriented-B: fast-adaptive-B, each polygon along the walker where 1/w changes least for
-// the lines it costs (walls by columns, floors and ceilings by rows, and between them whichever
-// oriented_axis counts cheaper), its own polygon driver: a single mapper that draws every polygon
-// along its own line of near-constant depth, as auto does with its candidates. Asked for rows (a
-// target that takes rows: linear) it takes the walker oriented_axis picks; asked for columns (a
-// planar target), columns. Its bound is fast-adaptive-B's along the walker it draws with.
-// oriented_axis counts a line as ORIENTED_LINE instructions and a segment as ORIENTED_SEGMENT
-// (fast-adaptive's per span and per segment, make bench, QEMU icount, rounded), a line of L pixels
-// along axis a as 1 + L / h_a segments, h_a = 2 sqrt(room Q / |Q_a|) (fast_adaptive_shift's rule
-// at Q at the reference vertex), and the polygon's lines and pixels as the cost model does (its box
-// inside the clip, its area): the fewer instructions, rows on a tie.
+// the lines it costs (walls by columns, floors and ceilings by rows), its own polygon driver: asked
+// for rows (a linear target) it takes the walker oriented_axis picks, asked for columns (a planar
+// target) columns. Its bound is fast-adaptive-B's along the walker it draws with. oriented_axis
+// counts a line as ORIENTED_LINE and a segment as ORIENTED_SEGMENT (fast-adaptive's cost a span and
+// a segment, rounded), a line of L pixels along axis a as 1 + L / h_a segments (fast_adaptive_shift's
+// h at Q at the reference vertex), and the lines and pixels as the cost model does: the fewer
+// instructions, rows on a tie (docs/bounds.md, "Along its own walker").
 constexpr double ORIENTED_LINE = 300, ORIENTED_SEGMENT = 60;
 Axis oriented_axis(const PolygonSetup& s, const ClipRect& clip, double room);
 // The same from the polygon's sizes as polygon_sizes gives them (choice.h), where the caller has them.

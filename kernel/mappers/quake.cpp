@@ -82,14 +82,11 @@ constexpr double EPSILON = 2.220446049250313e-16;  // 2^-52
 constexpr double UNIT = 1.0 / 65536;                // a 16.16 unit, in texels
 
 // Quake's arithmetic on a polygon (docs/bounds.md, "Quake's spans"), in texels from the chord
-// between the exact values at its segment ends:
-// - each end is chop(s/z * z) + sadjust, clamped: the chop within a unit; Quake's own double
-//   evaluation within `evaluation` below; the clamp into [0 or n units, size - 1 unit] moves it by
-//   no more than the exact value's distance from that range, which is at most n units when the
-//   exact value lies in [0, size] (P/Q over a convex polygon stays between its values at the
-//   vertices, which the shift puts in the texture), plus how far the vertices' values may leave it;
-// - the step (snext - s) >> shift (or / (count - 1) on the last segment) is within a unit of the
-//   chord's slope: the drawn value within j units after j steps.
+// between the exact values at its segment ends: each end is chop(s/z * z) + sadjust, clamped: the
+// chop within a unit, Quake's own double evaluation within `evaluation` below, and the clamp moving
+// it by no more than the exact value's distance from its range (at most n units, plus how far the
+// vertices' values leave [0, size]); the step (snext - s) >> shift (or / (count - 1) on the last
+// segment) within a unit of the chord's slope, so the value drawn within j units after j steps.
 // NO_BOUND (as `fixed`) where the spread cannot say (Q not positive from the vertices) or s/z * z
 // might not fit 32 bits.
 SegmentArithmetic arithmetic(const BoundContext& c, const PolygonSetup& s, const PolygonSpread& p, const double* shift, int n) {

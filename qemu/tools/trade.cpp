@@ -330,10 +330,9 @@ void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
         << table;
 }
 
-// Per polygon drawn, what the outer loops cost beside the inner ones (issue 14's lean outer
-// loops): the frame's geometry (transform, cull, clip, project: the same for every mapper of a
-// scene), the setup, the edge walking and the inner loops, for exact and fast-affine where each
-// draws every polygon.
+// Per polygon drawn, what the outer loops cost beside the inner ones (docs/bench.md): the frame's
+// geometry (transform, cull, clip, project: the same for every mapper of a scene), the setup, the
+// edge walking and the inner loops, for exact and fast-affine where each draws every polygon.
 void write_outer_loops(std::ostream& out, const std::vector<TradeRow>& rows) {
     std::string table;
     for (const std::string& scene : scenes_in_order(rows))
@@ -409,8 +408,8 @@ std::string same_work_table(const std::vector<TradeRow>& rows, const std::string
 
 namespace {
 
-// The scenes every single mapper draws whole (issue 14, goal 1: the same pictures and polygons for
-// all), each mapper's figures side by side; the scenes left out, with how many mappers refuse some
+// The scenes every single mapper draws whole (the same pictures and polygons for all), each
+// mapper's figures side by side; the scenes left out, with how many mappers refuse some
 // or all of their polygons.
 void write_whole_scenes(std::ostream& out, const std::vector<TradeRow>& rows) {
     std::string tables, left_out;

@@ -63,17 +63,14 @@ TEST(TriangleRows, NasmMatchesTheTwinBitForBit) {
     EXPECT_GT(swapped, 10000) << "chains of two, both orders";
 }
 
-// fast_triangle_asm (asm/fast.asm) against its twin (fast_triangle): on random triangles in range,
-// both windings, small enough for the chains and not, on and off the half-pixel grid, with edges
-// along the rows, texture coordinates from 0 to beyond the 16.16 range, and the clip cutting the
-// rows and columns now and then: where the NASM routine sets the triangle up, the same answer and
-// every byte of the setup, the chains and the run loop's block the same (each run's bounds at the
-// same place in its chain); where it leaves it to C++, setup_triangle_affine_asm leaves it too, and
-// from C++'s setup fast_triangle_runs_asm and its twin fast_triangle_runs agree as above.
-// With `enveloped`, fast_triangle_enveloped_asm against fast_triangle_enveloped the same way, each
-// triangle under limits drawn at random about its own area and box (EnvelopeLimits) and texture
-// coordinates that make some steps pass the guards' 32766 texels: the same answer, 3 (unproven)
-// exactly where within_envelope says no, the setup written then too.
+// fast_triangle_asm (asm/fast.asm) against its twin (fast_triangle) on random triangles in range
+// (both windings, small enough for the chains and not, on and off the half-pixel grid, edges along
+// the rows, texture coordinates to beyond the 16.16 range, the clip cutting rows and columns now and
+// then): where the NASM routine sets the triangle up, the same answer and every byte of the setup,
+// the chains (each run's bounds at the same place) and the run loop's block; where it leaves it to
+// C++, setup_triangle_affine_asm does too, and fast_triangle_runs_asm agrees with its twin from C++'s
+// setup. `enveloped`: fast_triangle_enveloped_asm so, under random limits about each triangle's area
+// and box, some steps past 32766 texels: 3 (the setup written) exactly where within_envelope says no.
 void nasm_matches_the_twin(bool enveloped) {
     std::mt19937 rng(enveloped ? 20261201u : 20261127u);
     int unproven = 0;

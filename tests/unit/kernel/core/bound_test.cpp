@@ -446,7 +446,7 @@ TEST(Bounds, RelativeChordsBoundSettlesConstantDepthLinesAlone) {
 // random triangles and quads (points inside and on the edges, Q over ratios up to 10^4), never
 // above; on a segment from Q = a to Q = b (t from 0 to 1) the deviation's largest is
 // (sqrt(b) - sqrt(a)) / (sqrt(b) + sqrt(a)), at Q = sqrt(ab): the share is at least that and at most
-// 4/3 of it (where the old (b - a) / 2a was twice it or more).
+// 4/3 of it (the cruder (b - a) / 2a is twice it or more: docs/bounds.md, "Planes").
 TEST(Bounds, PerspectiveShareBoundsThePlanesDeviation) {
     raster::Random rng(2611u);
     for (int n = 0; n < 20000; ++n) {

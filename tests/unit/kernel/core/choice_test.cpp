@@ -129,15 +129,13 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                     return 1e300;
                 };
                 // the oriented candidate (ORIENTED_GATE): from a budget of 1 to below 4, fast-adaptive-B
-                // (B = 1 below 2, else 2) along the walker fast-oriented-B would pick, where its
-                // certificate holds (a polygon inside the clip) or its bound of the whole polygon is
-                // within B (one reaching outside it), priced by fast-oriented-1's row (B = 1) or
-                // fast-adaptive-2's; or fast-constant-depth along that walker where its chords bound
-                // from the same certificate (or, reaching outside the clip, from the spread, and only
-                // where it would be taken unsearched) is within the budget: drawn so where no
-                // candidate undercuts it by more than the gate with its proof, or where the affine
-                // deviation is above the budget (then only a mapper that does not step the polygon
-                // affinely may undercut it, by any amount), else only a cheaper proven one is chosen
+                // (B = 1 below 2, else 2) along fast-oriented-B's walker, where its certificate holds
+                // (inside the clip) or its whole bound is within B (reaching outside), priced by
+                // fast-oriented-1's row (B = 1) or fast-adaptive-2's; or fast-constant-depth along that
+                // walker where the same proof bounds its chords within the budget (outside the clip only
+                // where taken unsearched): drawn so where no candidate with its proof undercuts it by more than the gate,
+                // or where the affine deviation is above the budget (then only a mapper that does not
+                // step affinely may undercut it, by any amount); else only a cheaper proven one is chosen
                 const bool one = b.max_error >= 1 && b.max_error < 2, two = b.max_error >= 2 && b.max_error < 4;
                 const double within = two ? 2 : 1;
                 const Mapper& adaptive = two ? adaptive2 : adaptive1;

@@ -327,12 +327,11 @@ TEST(PolygonFuzz, EveryMapperKeepsToItsTextureAndItsClip) {
 // Hecker's loop reads wherever a piece points; his driver must keep it inside the bordered copy.
 // Here the fuzzer's polygons and textures (every class, every texture of its bank) go through his
 // driver with a loop that walks each piece's texel pointer as his does and counts the reads that
-// fall outside every copy of the bank (reading nothing): seeds of make test's fuzz run (registry
-// rows 14, 22, 30, 38; without the guard each reads outside a copy, row 22's found by the fuzzer
-// under AddressSanitizer once fast-adaptive moved hecker-steptable there). The pixels the driver
-// draws itself (the nearest texel, where his would have left the copy) must occur, or the test
-// would not reach the case. (The batches are fuzz_mapper's, written out here to call his driver
-// with this loop; were they to drift apart, the last check fails.)
+// fall outside every copy of the bank (reading nothing), on the seeds of make test's fuzz run for
+// registry rows 14, 22, 30 and 38 (without the guard, each reads outside a copy). The pixels the
+// driver draws itself (the nearest texel) must occur, or the test would not reach the case. (The
+// batches are fuzz_mapper's, written out here to call his driver with this loop; were they to drift
+// apart, the last check fails.)
 struct HeckerReads {
     const Texture* bank;
     uint64_t outside, pixels;

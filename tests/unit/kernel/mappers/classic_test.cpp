@@ -573,14 +573,12 @@ TEST(FastAffine, TakesTexturesAbove256ByTheDoubledCopy) {
 
 // The subdivided fast mappers take repeating textures with a side above 256 (powers of two up to
 // 1024) through their doubled copy: on a texture that repeats a tile of at most 256 a side, each
-// draws, rows and columns, NASM loop and twin, exactly what it draws with the tile itself on the
-// tiled block (the same 16.16 points and steps: texel (u mod W, v mod H) of the big texture is the
-// tile's (u mod w, v mod h)), on random triangles in perspective over many periods, so that some
-// segments travel further than the copy holds (read by masks) and most do not (the texel pointer);
-// a wrong origin, pitch, start or step reads another texel of the random tile. Without the copy
-// each refuses the texture, and a clamped one. (The texels beyond the tile's period: the loop's
-// random cases, on copies of hashed texels, and the bound tests, which measure these mappers on
-// 1024 x 1024 textures that hold their own coordinates.)
+// draws, rows and columns, NASM loop and twin, exactly what it draws with the tile on the tiled
+// block (texel (u mod W, v mod H) of the big texture is the tile's (u mod w, v mod h)), on random
+// triangles in perspective over many periods, some segments beyond the copy (read by masks), most
+// not (the texel pointer); a wrong origin, pitch, start or step reads another texel of the random
+// tile. Without the copy each refuses the texture, and a clamped one. (Texels beyond the tile's
+// period: the loop's random cases on hashed texels, and the bound tests on 1024 x 1024 textures.)
 TEST(FastSubdiv, TakesTexturesAbove256ByTheDoubledCopy) {
     const int32_t shapes[][4] = {{512, 512, 256, 256}, {1024, 64, 256, 64}, {64, 1024, 64, 128}, {1024, 1024, 32, 256}};
     const char* names[] = {"fast-subdiv-8", "fast-subdiv-16", "fast-subdiv-32", "fast-constant-depth", "fast-adaptive-1", "fast-adaptive-2", "fast-oriented-1"};

@@ -21,11 +21,11 @@ TEST(DemoScenes, TheCommittedFilesAreTheGeneratorsOutput) {
             << d.name << ": regenerate with build/host/modexlab-scene make all scenes";
 }
 
-// The variants every mapper draws whole (issue 14, goal 1): corridor-cut (the corridor's faces cut
-// along their textures' period lines), ball-256 and cube-256 (their textures at 256 x 256),
-// freedoom-256 (its pictures tiled to 256 x 256, its faces cut at their periods). At 8
-// frames spread over each, no mapper refuses a polygon, the classics that cannot wrap or take only
-// 256 x 256 included, while on the original some mappers refuse some or all.
+// The variants every mapper draws whole, so that all are benched on the same work: corridor-cut
+// (the corridor's faces cut along their textures' period lines), ball-256 and cube-256 (their
+// textures at 256 x 256), freedoom-256 (its pictures tiled to 256 x 256, its faces cut at their
+// periods). At 8 frames spread over each, no mapper refuses a polygon, the classics that cannot
+// wrap or take only 256 x 256 included, while on the original some mappers refuse some or all.
 TEST(DemoScenes, EveryMapperDrawsTheVariantsWhole) {
     const std::pair<const char*, const char*> variants[] = {{"corridor-cut", "corridor"}, {"ball-256", "ball"}, {"cube-256", "cube"},
                                                                  {"freedoom-256", "freedoom"}};
@@ -50,9 +50,9 @@ TEST(DemoScenes, EveryMapperDrawsTheVariantsWhole) {
     }
 }
 
-// cube-1024, its textures above 256 a side (issue 14, goal 2): every fast mapper of ours draws all
-// of it through the doubled copies, at 8 frames spread over it; fatmap's loops, which take only
-// 256 x 256 textures, refuse its faces.
+// cube-1024, its textures above 256 a side: every fast mapper of ours draws all of it through the
+// doubled copies, at 8 frames spread over it; fatmap's loops, which take only 256 x 256 textures,
+// refuse its faces.
 TEST(DemoScenes, OurFastMappersDrawTheCubeAbove256Whole) {
     LoadedWorld w = load_world_file("scenes/cube-1024.scene");
     uint32_t drawn = 0, refused = 0;
