@@ -4,6 +4,8 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "kernel/core/render.h"
@@ -35,6 +37,13 @@ struct TextureCopies {
         prepare_texture(t, bordered.data(), aligned.data(), doubled.empty() ? nullptr : doubled.data());
     }
 };
+
+// The registry's mapper of that name (std::runtime_error where there is none).
+inline const Mapper& mapper(const char* name) {
+    const Mapper* m = find_mapper(name);
+    if (!m) throw std::runtime_error(std::string("no mapper ") + name);
+    return *m;
+}
 
 inline Vertex vertex_raw(int32_t x_raw, int32_t y_raw, double w = 1, double u = 0, double v = 0) {
     return Vertex{Fixed24_8::from_raw(x_raw), Fixed24_8::from_raw(y_raw), w, u, v};
@@ -111,6 +120,12 @@ inline std::vector<int> walk_counts(const std::vector<std::vector<Vertex>>& poly
             }
     }
     return counts;
+}
+
+// A screen-space scene drawn by rows by the named mapper, against the reference.
+inline AccuracyMetrics accuracy(const LoadedScene& s, const char* name) {
+    auto ref = render_reference(s);
+    return compare_to_reference(ref->view, measure_mapper(s, mapper(name), Axis::Rows)->view, s.texture.width, s.texture.height, s.texture.wrap);
 }
 
 }  // namespace rastertest
