@@ -1,6 +1,7 @@
-// Our fastest affine mappers (repeating textures tiled over 256 x 256): the polygon drivers, the loops'
-// argument blocks, the twins and the NASM loops (asm/fast.asm); fast-table, the same runs of rows
-// with the texel offsets along a span precomputed once a polygon.
+// Our fastest affine mappers (repeating textures tiled over 256 x 256): the loops' argument blocks,
+// their twins and NASM loops (fast.cpp, asm/fast.asm), a frame's triangle in one call
+// (fast_triangle.cpp, asm/fast_triangle.asm) and the polygon drivers (fast_draw.cpp); fast-table,
+// the same runs of rows with the texel offsets along a span precomputed once a polygon.
 #pragma once
 
 #include <stdint.h>
@@ -166,5 +167,13 @@ ErrorBound table_bound(const BoundContext& c, const Vertex* vertices, int count)
 // fast-affine on a texture's doubled copy: whether the polygon's u and v over the pixels of the clip
 // it covers fit a window of the copy, and that window's corner (16.16, to take from u and v)
 bool doubled_window(const PolygonSetup& s, const Texture& tex, const ClipRect& clip, uint32_t* u_base, uint32_t* v_base);
+
+// The run loop's `inside`: whether the box lies within the clip's columns (a pixel whose centre lies
+// in the box [min_x, max_x] lies in [x0, x1) where the box does; the box, within setup's range, and
+// the clip's sides in subpixels within 32 bits).
+inline int32_t inside_columns(const PolygonSetup& s, const ClipRect& clip) {
+    constexpr int32_t ONE = int32_t(SUBPIXEL_ONE);
+    return int32_t(s.min_x) >= clip.x0 * ONE && int32_t(s.max_x) <= clip.x1 * ONE;
+}
 
 }  // namespace raster::fast

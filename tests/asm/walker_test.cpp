@@ -63,7 +63,7 @@ TEST(TriangleRows, NasmMatchesTheTwinBitForBit) {
     EXPECT_GT(swapped, 10000) << "chains of two, both orders";
 }
 
-// fast_triangle_asm (asm/fast.asm) against its twin (fast_triangle) on random triangles in range
+// fast_triangle_asm (asm/fast_triangle.asm) against its twin (fast_triangle) on random triangles in range
 // (both windings, small enough for the chains and not, on and off the half-pixel grid, edges along
 // the rows, texture coordinates to beyond the 16.16 range, the clip cutting rows and columns now and
 // then): where the NASM routine sets the triangle up, the same answer and every byte of the setup,
