@@ -17,7 +17,10 @@ namespace raster {
 // An inner loop: one pointer to its argument block. The C++ twin is the specification; the NASM
 // loop (asm/NAME.asm) must match it bit for bit. Naming rule: the twin is NAME_loop (or
 // NAME_KIND_loop) in namespace raster, its NASM loop the same name with _asm, extern "C".
-using LoopFn = void (*)(const void* args);
+// An inner loop's type: a mapper's header declares its twin and NASM loop as `Loop NAME_loop;` and
+// `extern "C" Loop NAME_loop_asm;`.
+using Loop = void(const void* args);
+using LoopFn = Loop*;
 
 #if defined(MODEXLAB_ASM_LOOPS)
 #define MODEXLAB_ASM(symbol) (&symbol)
@@ -162,7 +165,8 @@ struct BoundContext;
 // What the mapper promises for a polygon before drawing it (core/bound.h).
 using BoundFn = ErrorBound (*)(const BoundContext& c, const Vertex* vertices, int count);
 // The differential check of a mapper's NASM loop against its twin (core/selftest.h).
-using CheckFn = LoopCheck (*)(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+using Check = LoopCheck(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+using CheckFn = Check*;
 
 // Whether auto, where a mapper's bound of the whole polygon at once is above the budget, asks its
 // bound span by span (BOUND_SPAN_COST a span, core/choice.h): only where the spans' bounds

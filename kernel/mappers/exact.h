@@ -23,15 +23,15 @@ struct ExactArgs {
     double q[3], pu[3], pv[3];  // each plane: a0, gx, gy (Plane's layout)
 };
 
-void exact_loop(const void* args);
+Loop exact_loop;
 
 void exact_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
 ErrorBound exact_bound(const BoundContext& c, const Vertex* vertices, int count);
-LoopCheck check_exact(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+Check check_exact;
 
 }  // namespace raster
 
 extern "C" {
-void exact_loop_asm(const void* args);
+raster::Loop exact_loop_asm;
 }
 

@@ -51,7 +51,7 @@ struct FastRunArgs {
     uint32_t u_mask, v_mask;
     int32_t block_pitch;
 };
-void fast_run_loop(const void* args);
+Loop fast_run_loop;
 // fast-affine's and fast-columns' pixels on a polygon that spans more of a texture above 256 a side
 // than a window of its doubled copy: the texels the 8:16 core would read, (u whole mod width, v
 // whole mod height), from the texture itself by masks, count pixels `stride` bytes apart (C++ only:
@@ -102,7 +102,7 @@ extern "C" TriangleTaken fast_triangle_enveloped_asm(FastTriangleArgs* a);
 constexpr uint32_t TABLE_START = 0x8000;  // half a texel
 constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row: 320 pixels)
 void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block);
-void fast_table_loop(const void* args);
+Loop fast_table_loop;
 
 // fast-columns: the same arithmetic down Mode X columns, 80 bytes between pixels.
 constexpr int32_t MODEX_ROW_BYTES = 80;
@@ -131,26 +131,26 @@ struct FastColumnRunArgs {
     int32_t du_16_16, dv_16_16;       // per pixel down a column
     uint32_t* tally;                  // tally[0] += the columns drawn, tally[1] += their pixels
 };
-void fast_column_run(const void* args);
+Loop fast_column_run;
 // fast-table-columns: a Mode X column through the polygon's offset table along y (as fast-table's
 // rows along x): pixel n, 80 bytes after pixel n - 1, is source[table[n]], source the column's first
 // texel in the table block; fatmap-lut's block (the same reading, its stride a row of a plane).
 using FastTableColumnArgs = FatmapLutArgs;
-void fast_table_column_loop(const void* args);
+Loop fast_table_column_loop;
 
 // fast_run_loop's and fast_table_loop's random cases (a run and the offset table of its steps)
-LoopCheck check_fast_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+Check check_fast_run;
 // fast_column_run's random cases (runs of columns into a planar target, the tiled block or a doubled copy)
-LoopCheck check_fast_column_run(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-LoopCheck check_fast_table_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+Check check_fast_column_run;
+Check check_fast_table_column;
 
 }  // namespace raster
 
 extern "C" {
-void fast_run_loop_asm(const void* args);
-void fast_table_loop_asm(const void* args);
-void fast_column_run_asm(const void* args);
-void fast_table_column_loop_asm(const void* args);
+raster::Loop fast_run_loop_asm;
+raster::Loop fast_table_loop_asm;
+raster::Loop fast_column_run_asm;
+raster::Loop fast_table_column_loop_asm;
 }
 
 namespace raster::fast {

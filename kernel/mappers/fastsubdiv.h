@@ -29,7 +29,7 @@ struct FastSubdivArgs {
     double c[3], g[3];       // q, pu, pv on the span's line: a0 + gy y and gx (a row), a0 + gx x and gy (a column)
 };
 
-void fast_subdiv_loop(const void* args);
+Loop fast_subdiv_loop;
 
 // Segments longer than any row or column (320 pixels at most): one a span, exact at its first and
 // last pixels (fast-constant-depth: constant-depth on the fast core).
@@ -127,10 +127,10 @@ SetupStatus fast_oriented_draw(const DrawContext& c, const Vertex* vertices, int
 template <int QUARTERS>
 ErrorBound fast_oriented_bound(const BoundContext& c, const Vertex* vertices, int count);
 
-LoopCheck check_fast_subdiv(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+Check check_fast_subdiv;
 
 }  // namespace raster
 
 extern "C" {
-void fast_subdiv_loop_asm(const void* args);
+raster::Loop fast_subdiv_loop_asm;
 }

@@ -18,8 +18,8 @@ struct FatmapArgs {
     int32_t u_16_16, v_16_16;
     int32_t du_16_16, dv_16_16;  // per pixel
 };
-void fatmap_loop(const void* args);    // 8-bit fractions
-void fatmap16_loop(const void* args);  // 16-bit fractions
+Loop fatmap_loop;    // 8-bit fractions
+Loop fatmap16_loop;  // 16-bit fractions
 
 // fatmap-lut: texel n is source[table[n]]: the triangle's table of offsets from its first pixel.
 struct FatmapLutArgs {
@@ -28,17 +28,17 @@ struct FatmapLutArgs {
     const uint8_t* source;   // the scanline's first texel
     const int32_t* table;    // the offsets, one per pixel
 };
-void fatmap_lut_loop(const void* args);
+Loop fatmap_lut_loop;
 
-LoopCheck check_fatmap(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
-LoopCheck check_fatmap_lut(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+Check check_fatmap;
+Check check_fatmap_lut;
 
 }  // namespace raster
 
 extern "C" {
-void fatmap_loop_asm(const void* args);
-void fatmap16_loop_asm(const void* args);
-void fatmap_lut_loop_asm(const void* args);
+raster::Loop fatmap_loop_asm;
+raster::Loop fatmap16_loop_asm;
+raster::Loop fatmap_lut_loop_asm;
 }
 
 namespace raster::fatmap {

@@ -20,14 +20,14 @@ struct HeckerArgs {
     int32_t step_carry;      // whole du + whole dv times the pitch, plus the pitch: v carried
     int32_t step_no_carry;   // whole du + whole dv times the pitch
 };
-void hecker_loop(const void* args);
+Loop hecker_loop;
 
-LoopCheck check_hecker(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+Check check_hecker;
 
 }  // namespace raster
 
 extern "C" {
-void hecker_loop_asm(const void* args);
+raster::Loop hecker_loop_asm;
 }
 
 namespace raster::hecker {

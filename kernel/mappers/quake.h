@@ -25,14 +25,14 @@ struct QuakeArgs {
     double z_origin, z_stepu, z_stepv;  // 1/z
     double s_stepu_n, t_stepu_n, z_stepu_n;  // the steps times the segment length
 };
-void quake_span_loop(const void* args);
+Loop quake_span_loop;
 
-LoopCheck check_quake(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+Check check_quake;
 
 }  // namespace raster
 
 extern "C" {
-void quake_span_loop_asm(const void* args);
+raster::Loop quake_span_loop_asm;
 }
 
 namespace raster::quake {

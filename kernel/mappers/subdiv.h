@@ -31,8 +31,8 @@ struct StepArgs {
     uint32_t width_mask, height_mask;
     int32_t u_16_16, v_16_16, du_16_16, dv_16_16;
 };
-void step_loop(const void* args);
-LoopCheck check_step(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+Loop step_loop;
+Check check_step;
 
 template <int N>
 void subdiv_span(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
@@ -70,5 +70,5 @@ ErrorBound adaptive_bound(const BoundContext& c, const Vertex* vertices, int cou
 }  // namespace raster
 
 extern "C" {
-void step_loop_asm(const void* args);
+raster::Loop step_loop_asm;
 }

@@ -26,7 +26,7 @@ struct XSharpRowArgs {
     void (*select_plane)(void* ctx, int plane);
     void* ctx;
 };
-void xsharp_row_loop(const void* args);
+Loop xsharp_row_loop;
 
 // xsharp-column (listing 58.4, as X-Sharp 22 shipped it: unrolled twice, with a second loop for
 // X running backwards): a column of Mode X pixels 80 bytes apart, the map mask set by the caller.
@@ -42,9 +42,9 @@ struct XSharpColumnArgs {
     int32_t row;             // +-pitch, added on a Y carry
     int32_t backwards;       // X runs backwards: an X carry moves one texel left (X-Sharp 22's SBB loop)
 };
-void xsharp_column_loop(const void* args);
+Loop xsharp_column_loop;
 
-LoopCheck check_xsharp_column(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cases, const CheckBuffers& buffers);
+Check check_xsharp_column;
 struct Random;
 // Random XSharpRowArgs for a row of up to 320 pixels starting at plane offset `offset` of a page
 // whose rows are 80 bytes (the kernel's VGA check), texel reads inside `texels` (CHECK_TEXEL_BYTES).
@@ -53,8 +53,8 @@ void random_xsharp_row(Random& r, const uint8_t* texels, XSharpRowArgs* a, int32
 }  // namespace raster
 
 extern "C" {
-void xsharp_row_loop_asm(const void* args);  // VGA only: writes the Map Mask through port 0x3C5
-void xsharp_column_loop_asm(const void* args);
+raster::Loop xsharp_row_loop_asm;  // VGA only: writes the Map Mask through port 0x3C5
+raster::Loop xsharp_column_loop_asm;
 }
 
 namespace raster::xsharp {
