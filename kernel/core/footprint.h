@@ -15,7 +15,16 @@ constexpr double NO_BOUND = 1e30;
 
 // A coordinate off by at most `du` and `dv` texels reads a texel at most ceil(du), ceil(dv) away;
 // over max(1, footprint) that is the footprint error.
-double footprint_error(double du, double dv, double footprint);
+inline double footprint_error(double du, double dv, double footprint) {
+    auto texels = [](double d) {  // ceil(d) for d >= 0, without libm
+        if (d <= 0) return 0.0;
+        if (d >= 1e15) return d;  // beyond any budget; and int64_t would not hold it
+        double whole = double(int64_t(d));
+        return whole < d ? whole + 1 : whole;
+    };
+    double e = larger(texels(du), texels(dv));
+    return e / larger(1.0, footprint);
+}
 
 // 16.16 rounding to nearest: half a unit in the last place.
 constexpr double HALF_ULP_16_16 = 1.0 / 131072.0;

@@ -193,16 +193,6 @@ void spread_steps(const PolygonSetup& s, PolygonSpread* p) {
     o.footprint = footprint_at(o, o.q_max);
 }
 
-double perspective_share(double q_lo, double q_hi) {
-    // sum (l_i - m_i) t_i with sum (l_i - m_i) = 0 is at most (t_max - t_min) times the sum of
-    // its positive weights, half of sum |l_i - m_i| = sum l_i |Q - Q_i| / Q: half the mean absolute
-    // deviation of a distribution on [a, b] with mean Q, over Q. (x - Q)+ is convex, so below its
-    // chord over [a, b]: the mean deviation is at most 2 (Q - a)(b - Q) / (b - a), and
-    // (Q - a)(b - Q) / Q is largest at Q = sqrt(ab), where it is (sqrt(b) - sqrt(a))^2. So the share
-    // is at most (b - a) / (sqrt(a) + sqrt(b))^2, and (sqrt(a) + sqrt(b))^2 >= 3a + b.
-    return (q_hi - q_lo) / (3 * q_lo + q_hi);
-}
-
 void spread_planes_deviation(const PolygonSpread& p, double rounding, double d[2]) {
     for (int t = 0; t < 2; ++t) {
         // L - P/Q at a point of the polygon, with weights l_i of the vertices (sum 1) and

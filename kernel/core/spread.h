@@ -48,7 +48,15 @@ double spread_planes_bound(PolygonSpread& p, const PolygonSetup& s, double round
 // How far the exact mapping can leave a plane through its values at the corners, as a share of
 // their range, over a polygon where Q lies in [q_lo, q_hi] (0 < q_lo <= q_hi): (q_hi - q_lo) /
 // (3 q_lo + q_hi), about a quarter of the relative change of Q (docs/bounds.md, "Planes").
-double perspective_share(double q_lo, double q_hi);
+inline double perspective_share(double q_lo, double q_hi) {
+    // sum (l_i - m_i) t_i with sum (l_i - m_i) = 0 is at most (t_max - t_min) times the sum of
+    // its positive weights, half of sum |l_i - m_i| = sum l_i |Q - Q_i| / Q: half the mean absolute
+    // deviation of a distribution on [a, b] with mean Q, over Q. (x - Q)+ is convex, so below its
+    // chord over [a, b]: the mean deviation is at most 2 (Q - a)(b - Q) / (b - a), and
+    // (Q - a)(b - Q) / Q is largest at Q = sqrt(ab), where it is (sqrt(b) - sqrt(a))^2. So the share
+    // is at most (b - a) / (sqrt(a) + sqrt(b))^2, and (sqrt(a) + sqrt(b))^2 >= 3a + b.
+    return (q_hi - q_lo) / (3 * q_lo + q_hi);
+}
 // Its texel deviations d[t] before the footprint (what spread_planes_bound divides).
 void spread_planes_deviation(const PolygonSpread& p, double rounding, double d[2]);
 // The chords' bound relative to each pixel's own step (docs/bounds.md, "Chords, relative to the step"): where every

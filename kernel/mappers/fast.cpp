@@ -102,17 +102,6 @@ void fast_run_loop_wrapping(const FastRunArgs& a, const Texture& tex) {
     run_row_pixels(a, [&](uint8_t* dst, int32_t count, uint32_t u, uint32_t v) { wrapping_pixels(tex, a.du_16_16, a.dv_16_16, u, v, dst, count, 1); });
 }
 
-// 16.16 values modulo 2^32, whose wholes modulo a power of two up to 65536 are the floors' (2^32 is
-// a multiple of 2^32 / 65536)
-void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
-    uint32_t u = TABLE_START, v = TABLE_START;
-    for (int32_t k = 0; k < length; ++k) {
-        table[k] = int32_t(((v >> 16) & block.v_mask) * uint32_t(block.pitch) + ((u >> 16) & block.u_mask));
-        u += uint32_t(du_16_16);
-        v += uint32_t(dv_16_16);
-    }
-}
-
 void fast_table_loop(const void* raw) {
     const auto& a = *static_cast<const FastRunArgs*>(raw);
     const TableBlock block{a.texture, a.u_mask, a.v_mask, a.block_pitch};

@@ -101,7 +101,16 @@ extern "C" TriangleTaken fast_triangle_enveloped_asm(FastTriangleArgs* a);
 // (docs/bounds.md, "The offset table"; why not the tiled block: docs/mappers.md, "fast-table").
 constexpr uint32_t TABLE_START = 0x8000;  // half a texel
 constexpr int32_t TABLE_LIMIT = 512;        // room for the longest span (a row: 320 pixels)
-void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block);
+// (u and v are 16.16 values modulo 2^32, whose wholes modulo a power of two up to 65536 are the
+// floors': 2^32 is a multiple of 2^32 / 65536.)
+inline void build_offset_table(int32_t du_16_16, int32_t dv_16_16, int32_t length, int32_t* table, const TableBlock& block) {
+    uint32_t u = TABLE_START, v = TABLE_START;
+    for (int32_t k = 0; k < length; ++k) {
+        table[k] = int32_t(((v >> 16) & block.v_mask) * uint32_t(block.pitch) + ((u >> 16) & block.u_mask));
+        u += uint32_t(du_16_16);
+        v += uint32_t(dv_16_16);
+    }
+}
 Loop fast_table_loop;
 
 // fast-columns: the same arithmetic down Mode X columns, 80 bytes between pixels.
