@@ -219,10 +219,13 @@ $(eval $(call OFFSETS_RULE,kernel/core))
 
 $(LOOP_ASM:asm/%.asm=$(KBUILD)/asm/%.asm.o): $(KBUILD)/asm/%.asm.o: $(KBUILD)/gen/%.inc $(CORE_INC)
 
+# The NASM runs on a 486: an object with a P6 instruction (CMOV, FCMOV, FCOMI, FUCOMI) is refused.
 $(KBUILD)/%.asm.o: %.asm | deps
 	@mkdir -p $(@D)
 	$(call say,NASM,$<)
 	$(Q)$(NASM) $(NASMFLAGS) -MD $(@:.o=.d) -MT $@ -MP $< -o $@
+	@if $(CROSS)objdump -d $@ | grep -iE '[[:space:]](cmov|fcmov|fcomi|fucomi)'; then \
+		echo "$<: P6 instructions above, which a 486 does not have"; rm -f $@; exit 1; fi
 
 $(FREEDOOM_TEXTURES) &: $(WAD) | deps
 	$(call say,WAD,$(FREEDOOM_DIR))

@@ -7,11 +7,6 @@ bits 32
 %include "exact.inc"
 %include "loop.inc"
 
-section .rodata
-align 8
-max_i32:    dq 2147483647.0         ; floor saturates to INT32_MAX at and above this
-min_i32:    dq -2147483648.0        ; and to INT32_MIN at and below this
-
 section .text
 
 ; plane value (a0 + gy*y) + gx*x -> st0, for the plane at [ebx + %1]; x, y from the args block
@@ -24,35 +19,28 @@ section .text
     faddp st1, st0                  ; (a0 + gy*y) + gx*x
 %endmacro
 
-; floor of st0 (popped) -> eax, saturating, NaN -> 0; %1 is a unique label prefix
+; floor of st0 (popped) -> eax, saturating, NaN -> 0; %1 is a unique label prefix. FIST rounds
+; down under the control word at [esp + 8] (the caller's at [esp + 12] is back after it); it gives
+; 0x80000000 for NaN, for a value beyond int32 and for a floor of -2^31, which FTST tells apart.
 %macro FLOOR_I32 1
-    fucomi st0, st0
-    jp %1_nan                       ; unordered: NaN
-    fld qword [max_i32]
-    fcomip st0, st1
-    jbe %1_max                      ; 2147483647.0 <= x
-    fld qword [min_i32]
-    fcomip st0, st1
-    jae %1_min                      ; -2147483648.0 >= x
-    fist dword [esp]                ; nearest integer n (the control word rounds to nearest)
-    fild dword [esp]
-    fcomip st0, st1                 ; n > x: one too many
-    fstp st0
+    fldcw [esp + 8]
+    fist dword [esp]
+    fldcw [esp + 12]
     mov eax, [esp]
-    jbe %1_done
-    dec eax
-    jmp %1_done
-%1_nan:
+    cmp eax, 0x80000000
+    jne %1_pop
+    ftst
+    fnstsw ax
     fstp st0
-    xor eax, eax
-    jmp %1_done
-%1_max:
-    fstp st0
+    sahf
+    mov eax, 0
+    jp %1_done                      ; NaN
     mov eax, 0x7FFFFFFF
+    ja %1_done                      ; above 0: at or beyond INT32_MAX
+    mov eax, 0x80000000             ; at or below INT32_MIN
     jmp %1_done
-%1_min:
+%1_pop:
     fstp st0
-    mov eax, 0x80000000
 %1_done:
 %endmacro
 
@@ -81,7 +69,13 @@ section .text
 
 global exact_loop_asm
 exact_loop_asm:
-    LOOP_ENTER 16 + EXACT_ARGS_SIZE   ; [esp]: integer scratch; [esp+16]: a private copy of the args
+    LOOP_ENTER 16 + EXACT_ARGS_SIZE   ; [esp]: integer scratch; [esp+8], [esp+12]: the control
+                                      ; words (rounding down, the caller's); [esp+16]: a copy of the args
+    fnstcw [esp + 12]
+    mov ax, [esp + 12]
+    and ax, 0xF3FF
+    or ax, 0x0400                     ; RC = 01: toward -infinity
+    mov [esp + 8], ax
     ; copy the block: x and y advance in the copy, the caller's stays untouched
     mov esi, LOOP_ARG(16 + EXACT_ARGS_SIZE)
     lea edi, [esp + 16]

@@ -66,16 +66,14 @@ fast_triangle_asm:
     sar ecx, 8
     mov edi, [ebp + FTRI_target]
     mov edx, [edi + TGT_clip + CLIP_y0]
-    cmp ecx, edx
-    cmovl ecx, edx
+    MAX_SIGNED ecx, edx
     mov edx, [esi + PS_max_y]
     mov ebx, edx
     sub edx, 128
     sar edx, 8
     mov edi, [edi + TGT_clip + CLIP_y1]
     dec edi
-    cmp edx, edi
-    cmovg edx, edi
+    MIN_SIGNED edx, edi
     cmp ecx, edx
     jg .empty
     mov [esp + F_LINE], ecx

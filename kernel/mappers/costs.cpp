@@ -6,7 +6,7 @@ namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
     {"affine", 1030.2f, 348.46f, 40.338f}, // 11 scenes
-    {"exact", 1010.0f, 315.86f, 80.312f}, // 11 scenes
+    {"exact", 1010.0f, 320.86f, 64.312f}, // 11 scenes
     {"persp-subdiv-4", 1010.0f, 321.23f, 91.384f}, // 11 scenes
     {"persp-subdiv-8", 1010.0f, 375.97f, 59.523f}, // 11 scenes
     {"persp-subdiv-16", 1010.0f, 414.98f, 43.462f}, // 11 scenes
@@ -16,8 +16,8 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-1", 1010.0f, 999.28f, 51.772f}, // 11 scenes
     {"persp-adaptive-2", 1010.0f, 1016.43f, 44.508f}, // 11 scenes
     {"persp-adaptive-4", 1010.0f, 1029.22f, 40.042f}, // 11 scenes
-    {"fast-affine", 1047.9f, 108.42f, 5.151f}, // 11 scenes
-    {"fast-table", 1302.7f, 98.45f, 2.082f}, // 11 scenes
+    {"fast-affine", 1054.8f, 108.42f, 5.151f}, // 11 scenes
+    {"fast-table", 1309.6f, 98.45f, 2.082f}, // 11 scenes
     {"fast-columns", 1119.4f, 176.90f, 4.982f}, // 11 scenes
     {"fast-table-columns", 1374.6f, 247.65f, 2.841f}, // 11 scenes
     {"fast-subdiv-8", 1010.0f, 298.70f, 14.048f}, // 11 scenes
