@@ -5,6 +5,7 @@
 
 #include "kernel/core/mapper.h"
 #include "qemu/lib/error.h"
+#include "qemu/tools/trade.h"
 
 namespace harness {
 
@@ -17,11 +18,7 @@ struct Sums {
 };
 
 // Where each named column is (the unit in brackets aside).
-size_t column(const std::vector<std::string>& header, const std::string& name) {
-    for (size_t i = 0; i < header.size(); ++i)
-        if (header[i] == name || header[i].rfind(name + "[", 0) == 0) return i;
-    throw HarnessError("trade.csv has no column '" + name + "'");
-}
+size_t column(const std::vector<std::string>& header, const std::string& name) { return csv_column(header, name, "trade.csv"); }
 
 FittedCost fit(const Sums& s) {
     FittedCost c;

@@ -183,15 +183,17 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
     return lines;
 }
 
+size_t csv_column(const std::vector<std::string>& header, const std::string& name, const std::string& where) {
+    for (size_t i = 0; i < header.size(); ++i)
+        if (header[i] == name || header[i].rfind(name + "[", 0) == 0) return i;
+    throw HarnessError(where + ": no column '" + name + "' (a trade.csv of an older make bench: run it again)");
+}
+
 std::vector<TradeRow> read_trade(const std::string& path) {
     const std::vector<std::vector<std::string>> lines = read_csv(path);
     if (lines.empty()) throw HarnessError(path + ": empty, not a trade.csv");
     const std::vector<std::string>& header = lines[0];
-    auto column = [&](const std::string& name) {
-        for (size_t i = 0; i < header.size(); ++i)
-            if (header[i] == name || header[i].rfind(name + "[", 0) == 0) return i;
-        throw HarnessError(path + ": no column '" + name + "' (a trade.csv of an older make bench: run it again)");
-    };
+    auto column = [&](const std::string& name) { return csv_column(header, name, path); };
     std::vector<TradeRow> rows;
     for (size_t n = 1; n < lines.size(); ++n) {
         const std::vector<std::string>& f = lines[n];
@@ -264,13 +266,6 @@ bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage) {
            (!exact_coverage || (r.accuracy.gaps == 0 && r.accuracy.overdraw == 0));
 }
 
-// Whether the row is a single mapper's (a registry row that does not choose; auto's rows are
-// "auto" and "auto@BUDGET").
-bool single_mapper(const TradeRow& r) {
-    const raster::Mapper* m = raster::find_mapper(r.mapper.c_str());
-    return m && !m->is_auto;
-}
-
 // Whether the row's own bounds prove a budget on the whole scene before drawing: everything drawn,
 // its largest bound within it, and exact coverage promised if it asks for it.
 bool proves_budget(const TradeRow& r, double max_error, bool exact_coverage) {
@@ -280,6 +275,20 @@ bool proves_budget(const TradeRow& r, double max_error, bool exact_coverage) {
 
 }  // namespace
 
+bool single_mapper(const TradeRow& r) {
+    const raster::Mapper* m = raster::find_mapper(r.mapper.c_str());
+    return m && !m->is_auto;
+}
+
+const TradeRow* fastest_within(const std::vector<TradeRow>& rows, const TradeRow& a) {
+    const TradeRow* best = nullptr;
+    for (const TradeRow& r : rows)
+        if (r.scene == a.scene && single_mapper(r) && meets_budget(r, a.budget_error, a.budget_exact) &&
+            (!best || r.draw_per_pixel() < best->draw_per_pixel()))
+            best = &r;
+    return best;
+}
+
 // auto against the fastest single mapper that meets the same budget on the whole scene, by its
 // measured error; and against the fastest single mapper whose own bounds prove it on every polygon
 // (what auto proves of its own choice before drawing).
@@ -288,12 +297,11 @@ std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only)
     for (const TradeRow& a : rows) {
         const raster::Mapper* m = raster::find_mapper(a.mapper.substr(0, a.mapper.find('@')).c_str());
         if (!m || !m->is_auto || !a.pixels || (scene_budget_only && a.mapper != m->name)) continue;
-        const TradeRow *best = nullptr, *proven = nullptr;
-        for (const TradeRow& r : rows) {
-            if (r.scene != a.scene || !single_mapper(r)) continue;
-            if (meets_budget(r, a.budget_error, a.budget_exact) && (!best || r.draw_per_pixel() < best->draw_per_pixel())) best = &r;
-            if (proves_budget(r, a.budget_error, a.budget_exact) && (!proven || r.draw_per_pixel() < proven->draw_per_pixel())) proven = &r;
-        }
+        const TradeRow *best = fastest_within(rows, a), *proven = nullptr;
+        for (const TradeRow& r : rows)
+            if (r.scene == a.scene && single_mapper(r) && proves_budget(r, a.budget_error, a.budget_exact) &&
+                (!proven || r.draw_per_pixel() < proven->draw_per_pixel()))
+                proven = &r;
         auto against = [&](const TradeRow* r) {
             return r ? r->mapper + " | " + fixed(r->draw_per_pixel(), 1) + " | " + fixed(r->draw_per_pixel() / a.draw_per_pixel(), 2) + "×"
                      : std::string("none | - | -");

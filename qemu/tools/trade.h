@@ -76,6 +76,9 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows);
 std::vector<std::string> csv_header();
 // Reads such a file back: a vector of fields a line (no quoting: no field holds a comma).
 std::vector<std::vector<std::string>> read_csv(const std::string& path);
+// Where the column `name` is in such a file's header, its unit in brackets aside (HarnessError
+// naming `where` when it has none).
+size_t csv_column(const std::vector<std::string>& header, const std::string& name, const std::string& where);
 // The rows of a trade.csv, every figure as the file holds it (columns found by name; HarnessError
 // naming the line and field where one is missing or malformed). The report and the docs' tables
 // are written from these, so that both show the CSV's figures.
@@ -87,6 +90,13 @@ struct ReportInfo {
     std::vector<std::string> plots;  // plot files written (for the links)
     std::string wall_clock;          // the Markdown of the wall-clock table, if measured
 };
+
+// Whether the row is a single mapper's (a registry row that does not choose; auto's rows are
+// "auto" and "auto@BUDGET").
+bool single_mapper(const TradeRow& r);
+// The fastest single mapper on a's scene whose measured error meets a's budget on every frame
+// (everything drawn, its max footprint error within, exact coverage where asked); nullptr: none.
+const TradeRow* fastest_within(const std::vector<TradeRow>& rows, const TradeRow& a);
 
 // The Markdown that trade.md and the docs share (docs/results.md, the README): a scene's table,
 // sorted by speed, with the mappers that cannot draw it and what auto drew it with; the table of

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 
-#include "kernel/core/mapper.h"
 #include "qemu/lib/error.h"
 
 namespace harness {
@@ -12,28 +11,15 @@ namespace {
 
 const std::string BEGIN = "<!-- make bench: ", BEGIN_END = " -->", END = "<!-- end make bench -->";
 
-bool single(const TradeRow& r) {
-    const raster::Mapper* m = raster::find_mapper(r.mapper.c_str());
-    return m && !m->is_auto;
-}
-
-bool within(const TradeRow& r, const TradeRow& budget) {
-    return r.draws_everything() && (budget.budget_error < 0 || r.accuracy.max_footprint_error <= budget.budget_error) &&
-           (!budget.budget_exact || (r.accuracy.gaps == 0 && r.accuracy.overdraw == 0));
-}
-
 }  // namespace
 
 std::string headline_table(const std::vector<TradeRow>& rows) {
     std::string table;
     for (const TradeRow& a : rows) {
         if (a.mapper != "auto" || !a.pixels) continue;
-        const TradeRow *best = nullptr, *exact = nullptr;
-        for (const TradeRow& r : rows) {
-            if (r.scene != a.scene || !single(r)) continue;
-            if (r.mapper == "exact" && r.draws_everything()) exact = &r;
-            if (within(r, a) && (!best || r.draw_per_pixel() < best->draw_per_pixel())) best = &r;
-        }
+        const TradeRow *best = fastest_within(rows, a), *exact = nullptr;
+        for (const TradeRow& r : rows)
+            if (r.scene == a.scene && r.mapper == "exact" && r.draws_everything()) exact = &r;
         table += "| " + a.scene + " | " + (a.budget_error < 0 ? std::string("any") : budget_text(a.budget_error)) +
                  (a.budget_exact ? ", exact coverage" : "") + " | " + fixed(a.draw_per_pixel(), 1) + " | " +
                  fixed(a.accuracy.max_footprint_error, 2) + " | " + (best ? best->mapper + " | " + fixed(best->draw_per_pixel(), 1) : "none | -") +
