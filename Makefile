@@ -73,7 +73,24 @@ KERNEL_ASM := boot/entry.asm boot/isr.asm $(LOOP_ASM)
 # the portable core, the mappers and the scene code, built for the kernel and the host alike
 PORTABLE_DIRS := kernel/core kernel/mappers kernel/scene
 KERNEL_CXX := $(wildcard kernel/*.cpp kernel/platform/*.cpp kernel/present/*.cpp kernel/show/*.cpp kernel/lib/*.cpp kernel/server/*.cpp $(PORTABLE_DIRS:%=%/*.cpp) drivers/*.cpp)
-KERNEL_OBJS := $(KERNEL_ASM:%=$(KBUILD)/%.o) $(KERNEL_CXX:%=$(KBUILD)/%.o)
+# One kernel for every PC from the 486 on: its C++ is built for the 486 (KARCH), and built again for
+# the P6 (P6ARCH: CMOV, FCOMI), which runs where CPUID reports CMOV (kernel/platform/isa.h). Each
+# build is bundled (ld -r) with its constructors in a section of its own, the P6 one with every
+# symbol it defines renamed p6.NAME. The drivers, kernel/platform (the IRQs' state, the CPU's, the
+# pool) and the replies' sequence counter (the exception handler replies too) are built once, for
+# the 486, and serve both.
+KARCH := -march=i486 -mtune=generic
+P6ARCH := -march=i686 -mtune=i686
+# (the objects depend on the file that records both: a change to either rebuilds them)
+ARCH_FILE := $(KBUILD)/arch.txt
+$(shell mkdir -p $(KBUILD) && { echo '$(KARCH) / $(P6ARCH)' | cmp -s - $(ARCH_FILE) || echo '$(KARCH) / $(P6ARCH)' >$(ARCH_FILE); })
+SHARED_CXX := $(filter drivers/% kernel/platform/% kernel/server/reply.cpp,$(KERNEL_CXX))
+TWICE_CXX := $(filter-out $(SHARED_CXX),$(KERNEL_CXX))
+I486_BUNDLE := $(KBUILD)/i486.bundle.o
+P6_BUNDLE := $(KBUILD)/p6.bundle.o
+# (the P6 bundle has the NASM loops too, assembled with -DP6: min and max by CMOV, asm/loop.inc)
+P6_LOOP_OBJS := $(LOOP_ASM:%=$(KBUILD)/p6/%.o)
+KERNEL_OBJS := $(KERNEL_ASM:%=$(KBUILD)/%.o) $(SHARED_CXX:%=$(KBUILD)/%.o) $(I486_BUNDLE) $(P6_BUNDLE)
 
 # The built-in files: the demo scenes, and the freedoom scene's textures made at build time from
 # Debian's freedoom WAD (not committed). Each is named by its path under scenes/ or build/scenes/.
@@ -91,7 +108,7 @@ WARNINGS := -Wall -Wextra -Werror -Wshadow -Wnon-virtual-dtor -Wcast-align -Wund
 # -ffp-contract=off (all builds): no fused multiply-adds, so double arithmetic rounds the same on
 # the host (SSE2) and in the kernel (x87 at 53-bit precision, set in boot/entry.asm). -fno-math-errno:
 # a square root is the instruction (sqrtsd, fsqrt: correctly rounded on both), not a libm call.
-KCXXFLAGS_NODEP = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -DMODEXLAB_ASM_LOOPS \
+KCXXFLAGS_NODEP = -std=c++20 -m32 $(KARCH) -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -DMODEXLAB_ASM_LOOPS \
 	-ffreestanding -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit \
 	-fno-stack-protector -fno-pic -fno-pie -fno-asynchronous-unwind-tables -fno-omit-frame-pointer \
 	-nostdinc -isystem $(shell $(KCXX) -print-file-name=include 2>/dev/null) -I.
@@ -118,7 +135,7 @@ HLDLIBS := -lpng -lpthread
 H32BUILD := $(BUILD)/host32
 H32CXX := i686-linux-gnu-g++
 GTEST_SRC := /usr/src/googletest/googletest
-H32CXXFLAGS = -std=c++20 -m32 -march=i686 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -DMODEXLAB_ASM_LOOPS -I. \
+H32CXXFLAGS = -std=c++20 -m32 $(KARCH) -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -DMODEXLAB_ASM_LOOPS -I. \
 	-isystem $(GTEST_SRC)/include -MMD -MP
 ASM_TESTS := $(H32BUILD)/modexlab-asm-tests
 # runs them natively where this machine can, else under qemu-i386 (qemu/tools/run32); its probe
@@ -166,7 +183,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures usb run bench test-bochs report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
+.PHONY: all iso kernel host fixtures usb run bench test-bochs test-cpu report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
@@ -192,15 +209,42 @@ endef
 deps:
 	$(call install,$(DEPS_$(DEPS_FOR)))
 
+# The 486 runs it: a P6 instruction (CMOV, FCMOV, FCOMI, FUCOMI) outside the P6 build's functions
+# (p6.NAME) fails the link, the function and the instruction named.
+P6_ONLY := cmov|fcmov|fcomi|fucomi
 $(KERNEL): $(KERNEL_OBJS) boot/linker.ld
 	$(call say,LD,$@)
-	$(Q)$(KCXX) $(KLDFLAGS) -o $@ $(KERNEL_OBJS) -lgcc
-	@grub-file --is-x86-multiboot $@ || { echo "$@: not a Multiboot v1 kernel"; rm -f $@; exit 1; }
+	$(Q)$(KCXX) $(KLDFLAGS) -o $@.tmp $(KERNEL_OBJS) -lgcc
+	@grub-file --is-x86-multiboot $@.tmp || { echo "$@: not a Multiboot v1 kernel"; rm -f $@.tmp; exit 1; }
+	@$(CROSS)objdump -d --no-show-raw-insn $@.tmp | awk '/^[0-9a-f]+ <.*>:$$/ { fn = $$0 } \
+		$$2 ~ /^($(P6_ONLY))/ && fn !~ /^[0-9a-f]+ <p6\./ { print fn " " $$2; bad = 1 } END { exit bad }' || \
+		{ echo "$@: P6 instructions above outside the P6 build, which a 486 does not have"; rm -f $@.tmp; exit 1; }
+	@mv $@.tmp $@
 
-$(KBUILD)/%.cpp.o: %.cpp | deps
+$(KBUILD)/%.cpp.o: %.cpp $(ARCH_FILE) | deps
 	@mkdir -p $(@D)
 	$(call say,KCXX,$<)
 	$(Q)$(KCXX) $(KCXXFLAGS) -c $< -o $@
+
+$(KBUILD)/p6/%.cpp.o: %.cpp $(ARCH_FILE) | deps
+	@mkdir -p $(@D)
+	$(call say,KCXX-P6,$<)
+	$(Q)$(KCXX) $(KCXXFLAGS) $(P6ARCH) -c $< -o $@
+
+# bundle(objects, constructors' section, rename): ld -r, the constructors moved to their section (or
+# left where they are: -), and with `rename`, every symbol the bundle defines (its locals too) renamed p6.NAME
+define bundle
+	@mkdir -p $(@D)
+	$(call say,BUNDLE,$@)
+	$(Q)$(CROSS)ld -m elf_i386 -r -z noexecstack -o $@.tmp $(1)
+	$(Q)$(if $(3),$(CROSS)nm -P --defined-only $@.tmp | awk '!seen[$$1]++ { print $$1 " p6." $$1 }' >$@.syms,: >$@.syms)
+	$(Q)$(CROSS)objcopy --redefine-syms=$@.syms $(if $(filter -,$(2)),,--rename-section .init_array=$(2)) $@.tmp $@
+	@rm -f $@.tmp
+endef
+$(I486_BUNDLE): $(TWICE_CXX:%=$(KBUILD)/%.o)
+	$(call bundle,$^,.i486_init_array,)
+$(P6_BUNDLE): $(TWICE_CXX:%=$(KBUILD)/p6/%.o) $(P6_LOOP_OBJS)
+	$(call bundle,$^,.p6_init_array,rename)
 
 # asm/NAME.asm reads the layouts of gen/NAME.inc, made from the offsets its C++ home lists under
 # MODEXLAB_OFFSETS: kernel/mappers/NAME.cpp for a family, kernel/core/NAME.cpp for core's types
@@ -217,6 +261,7 @@ endef
 $(eval $(call OFFSETS_RULE,kernel/mappers))
 $(eval $(call OFFSETS_RULE,kernel/core))
 
+$(LOOP_ASM:asm/%.asm=$(KBUILD)/p6/asm/%.asm.o): $(KBUILD)/p6/asm/%.asm.o: $(KBUILD)/gen/%.inc $(CORE_INC)
 $(LOOP_ASM:asm/%.asm=$(KBUILD)/asm/%.asm.o): $(KBUILD)/asm/%.asm.o: $(KBUILD)/gen/%.inc $(CORE_INC)
 
 # The NASM runs on a 486: an object with a P6 instruction (CMOV, FCMOV, FCOMI, FUCOMI) is refused.
@@ -226,6 +271,11 @@ $(KBUILD)/%.asm.o: %.asm | deps
 	$(Q)$(NASM) $(NASMFLAGS) -MD $(@:.o=.d) -MT $@ -MP $< -o $@
 	@if $(CROSS)objdump -d $@ | grep -iE '[[:space:]](cmov|fcmov|fcomi|fucomi)'; then \
 		echo "$<: P6 instructions above, which a 486 does not have"; rm -f $@; exit 1; fi
+
+$(KBUILD)/p6/%.asm.o: %.asm | deps
+	@mkdir -p $(@D)
+	$(call say,NASM-P6,$<)
+	$(Q)$(NASM) $(NASMFLAGS) -DP6 -MD $(@:.o=.d) -MT $@ -MP $< -o $@
 
 $(FREEDOOM_TEXTURES) &: $(WAD) | deps
 	$(call say,WAD,$(FREEDOOM_DIR))
@@ -328,7 +378,7 @@ $(FBUILD)/fuzz-%: $(FBUILD)/tests/fuzz/%_fuzz.cpp.o $(FBUILD)/tests/fuzz/fuzz.cp
 	$(call say,LINK,$@)
 	$(Q)$(FUZZ_CXX) $(FUZZ_FLAGS) -fsanitize=fuzzer -o $@ $^ $(HLDLIBS)
 
-$(H32BUILD)/%.cpp.o: %.cpp | deps
+$(H32BUILD)/%.cpp.o: %.cpp $(ARCH_FILE) | deps
 	@mkdir -p $(@D)
 	$(call say,CXX32,$<)
 	$(Q)$(H32CXX) $(H32CXXFLAGS) -c $< -o $@
@@ -338,7 +388,11 @@ $(H32BUILD)/gtest-all.o: | deps
 	$(call say,CXX32,gtest-all.cc)
 	$(Q)$(H32CXX) -std=c++20 -m32 -O2 -isystem $(GTEST_SRC)/include -I$(GTEST_SRC) -c $(GTEST_SRC)/src/gtest-all.cc -o $@
 
-$(ASM_TESTS): $(ASM_TEST_CXX:%=$(H32BUILD)/%.o) $(PORTABLE32_OBJS) $(H32BUILD)/gtest-all.o
+# the P6 build of the same portable code, every symbol p6.NAME (tests/asm/p6_build_test.cpp)
+P6_PORTABLE32_BUNDLE := $(H32BUILD)/p6-portable.bundle.o
+$(P6_PORTABLE32_BUNDLE): $(patsubst %,$(KBUILD)/p6/%.o,kernel/lib/words.cpp kernel/lib/keys.cpp kernel/lib/fmt.cpp $(CORE_CXX)) $(P6_LOOP_OBJS)
+	$(call bundle,$^,-,rename)
+$(ASM_TESTS): $(ASM_TEST_CXX:%=$(H32BUILD)/%.o) $(PORTABLE32_OBJS) $(P6_PORTABLE32_BUNDLE) $(H32BUILD)/gtest-all.o
 	$(call say,LINK,$@)
 	$(Q)$(H32CXX) -static -m32 -Wl,-z,noexecstack -o $@ $^ -lpthread 2>&1 | { grep -v -e getaddrinfo -e MakeConnection || true; }
 
@@ -470,9 +524,22 @@ soak: deps
 
 # The 32-bit tests, the sanitizer tests and the fuzz corpora one after another, and beside them
 # (tests/run: the last program) the unit and system tests, most of whose time is QEMU's.
+# The CPU tier: the system tests that boot the kernel and draw, again on QEMU's models of the era:
+# the 486 (no TSC, no CMOV: the PIT clock and the 486's build) and the Pentium (a P5: TSC, no CMOV),
+# each with 64 MiB
+CPU_TIER_TESTS := Boot.KernelByMultiboot:Boot.IsoAsCdrom:Cpu.*:Video.EveryPatternInEveryPageMatchesTheHostRendering:$\
+	Scenes3d.EveryBuiltInSceneEqualsTheHostAtFixedFrames:Render.KernelPicturesEqualTheHostsForEveryMapperOnEveryScene:$\
+	Mappers.TheKernelSelftestComparesEveryNasmLoopWithItsTwin:Bench.FiguresAddUpAndEqualTheHostsCounts:Clock.*
+CPU_TIER := $(foreach cpu,486 pentium,MODEXLAB_TEST_CPU=$(cpu),MODEXLAB_TEST_MEMORY_MIB=64@$(TESTS)::$(CPU_TIER_TESTS))
+
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures
-	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(FUZZ_REPLAY) $(TESTS)
+	@tests/run $(ASM_TESTS) $(SAN_TESTS) $(FUZZ_REPLAY) $(CPU_TIER) $(TESTS)
+
+# `make test-cpu`: the CPU tier alone (make test runs it too)
+test-cpu: deps
+	@$(MAKE) -s -j$(NPROC) all host fixtures
+	@tests/run $(CPU_TIER)
 
 # `make test-bochs`: the Bochs tier alone (tests/system/bochs_test.cpp; make test runs it too)
 test-bochs: deps

@@ -43,7 +43,7 @@ stack_top:
 
 section .text
 global _start
-extern kernel_main
+extern kernel_start
 extern __bss_start, __bss_end
 extern __init_array_start, __init_array_end
 
@@ -84,7 +84,7 @@ _start:
     fninit
     fldcw [fpu_control]
 
-    ; C++ global constructors, in link order
+    ; the C++ built once's global constructors, in link order (kernel_start runs the others)
     mov esi, __init_array_start
 .ctor_loop:
     cmp esi, __init_array_end
@@ -96,11 +96,11 @@ _start:
 
     pop ebx
     pop edx
-    push ebx                            ; kernel_main(uint32_t magic, const MultibootInfo* info)
+    push ebx                            ; kernel_start(uint32_t magic, const MultibootInfo* info)
     push edx
-    call kernel_main
+    call kernel_start
 
-.halt:                                  ; kernel_main does not return; if it does, stop here for good
+.halt:                                  ; kernel_start does not return; if it does, stop here for good
     cli
     hlt
     jmp .halt

@@ -74,6 +74,13 @@ Info detect() {
     return info;
 }
 
+const char* class_name(const Info& info) {
+    if (!info.has_cpuid) return "386/486 (no CPUID)";
+    if (info.family <= 4) return "486";
+    if (info.family == 5) return "Pentium (P5)";
+    return "P6 or later";
+}
+
 bool has(const Info& info, const Feature& f) {
     return ((f.in_ecx ? info.features_ecx : info.features_edx) >> f.bit) & 1;
 }

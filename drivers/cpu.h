@@ -25,6 +25,8 @@ extern const int FEATURE_COUNT;
 
 Info detect();
 bool has(const Info& info, const Feature& f);
+// The CPU's class for people: "386/486 (no CPUID)", "486", "Pentium (P5)", "P6 or later".
+const char* class_name(const Info& info);
 inline bool has_tsc(const Info& info) { return info.has_cpuid && ((info.features_edx >> 4) & 1); }
 
 }  // namespace cpu

@@ -4,6 +4,7 @@
 #include "drivers/io.h"
 #include "drivers/serial.h"
 #include "drivers/pic.h"
+#include "drivers/timer.h"
 
 namespace keyboard {
 
@@ -109,6 +110,7 @@ extern "C" void irq_handler(uint32_t irq) {
             return;
         }
     }
+    if (irq == 0) timer::on_irq0();
     if (irq == 1) keyboard::on_irq();
     if (irq == 4) serial::on_irq();
     pic::end_of_interrupt(irq);

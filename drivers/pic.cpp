@@ -46,6 +46,10 @@ bool in_service(uint32_t irq) {
     return isr & (1u << (irq & 7));
 }
 
+bool requested(uint32_t irq) {
+    return io::inb(irq < 8 ? 0x20 : 0xA0) & (1u << (irq & 7));  // (OCW3 left reading the IRR)
+}
+
 void end_of_interrupt(uint32_t irq) {
     if (irq >= 8) io::outb(0xA0, 0x20);
     io::outb(0x20, 0x20);

@@ -12,6 +12,8 @@ void remap_and_mask();
 void unmask(uint32_t irq);
 // Whether the IRQ is in service (OCW3: read the ISR): a spurious IRQ 7 or 15 is not.
 bool in_service(uint32_t irq);
+// Whether the IRQ waits in the request register (raised, not yet acknowledged), masked or not.
+bool requested(uint32_t irq);
 void end_of_interrupt(uint32_t irq);
 
 }  // namespace pic

@@ -1,4 +1,5 @@
-// kernel_main: bring up COM1, the IDT and the timers, check the loader, read the boot options, then show and serve.
+// kernel_main (from kernel_start, which checked the loader and placed the pool): bring up COM1, the
+// IDT and the timers, read the boot options, then show and serve.
 #include <stdint.h>
 
 #include "drivers/cpu.h"
@@ -11,6 +12,7 @@
 #include "kernel/present/file_table.h"
 #include "kernel/platform/guard.h"
 #include "kernel/platform/idt.h"
+#include "kernel/platform/isa.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
 #include "kernel/lib/words.h"
@@ -20,8 +22,6 @@
 #include "kernel/server/server.h"
 #include "kernel/show/show.h"
 #include "kernel/version.h"
-
-extern "C" uint8_t __kernel_start[], __kernel_end[];
 
 namespace {
 
@@ -34,6 +34,7 @@ struct BootOptions {
     lib::StrView mapper;  // and draws with this mapper
     bool patterns = false;  // the demo shows the test patterns, not scenes
     uint32_t bench_frames = 0;  // the demo starts with the on-screen bench, this many frames a row
+    bool pit_clock = false;     // clock=pit: time with the PIT even where the CPU has a TSC
     lib::StrView rejected[4];  // words we did not understand, reported in the boot line
     size_t rejected_count = 0;
 };
@@ -75,6 +76,8 @@ BootOptions parse_options(const char* cmdline) {
         else if (w.equals("show=patterns") || w.equals("show=scenes")) o.patterns = w.equals("show=patterns");
         else if (w.starts_with("mapper=") && raster::find_mapper(w.drop(7))) o.mapper = w.drop(7);
         else if (w.starts_with("bench=") && lib::parse_u32(w.drop(6), &v) && v >= 1 && v <= MAX_BENCH_FRAMES) o.bench_frames = v;
+        else if (w.equals("clock=pit") || w.equals("clock=tsc")) o.pit_clock = w.equals("clock=pit");
+        else if (w.equals("isa=i486")) continue;  // (kernel_start's: kernel/platform/isa.h)
         else if (o.rejected_count < 4) o.rejected[o.rejected_count++] = w;
     }
     return o;
@@ -82,16 +85,10 @@ BootOptions parse_options(const char* cmdline) {
 
 }  // namespace
 
-extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* info) {
+extern "C" [[noreturn]] void kernel_main(uint32_t /*magic: kernel_start checked it*/, const multiboot::Info* info) {
     serial::init();
     pic::remap_and_mask();
     idt::init();
-
-    if (magic != multiboot::BOOTLOADER_MAGIC) {
-        lib::Fmt m;
-        m.s("bad multiboot magic ").hex(magic).s(" (expected ").hex(multiboot::BOOTLOADER_MAGIC).s("): not loaded by a Multiboot loader");
-        panic(m.c_str());
-    }
 
     if (g_constructor_check.value != CONSTRUCTED) panic("C++ global constructors did not run");
 
@@ -100,7 +97,8 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     BootOptions options = parse_options(ctx.cmdline);
     ctx.cpu = cpu::detect();
     const bool guard_pages = guard::init(ctx.cpu.features_edx);
-    ctx.tsc_hz = cpu::has_tsc(ctx.cpu) ? timer::calibrate_tsc_hz() : 0;
+    timer::init(cpu::has_tsc(ctx.cpu) && !options.pit_clock);  // (the PIT clock turns interrupts on: IRQ 0 counts its wraps)
+    ctx.tsc_hz = timer::tsc_hz();
     const keyboard::Status keys = keyboard::init();  // (interrupts on from here: IRQ 1 unmasked)
     serial::enable_wakeup();                         // (and IRQ 4, which the UART raises only while a reader waits)
     // a UEFI loader's framebuffer (RGB, by the Multiboot header's video fields): drawn into, the VGA
@@ -117,16 +115,6 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
         framebuffer = f->type == 1 && vga::use_framebuffer(fb);
     }
     bool vbe_found = vga::disable_bochs_vbe();
-    // (by the memory map where there is one: UEFI firmware leaves reserved islands above 1 MiB, so
-    // mem_upper, the RAM up to the first of them, says too little there)
-    const uint64_t kernel_start = reinterpret_cast<uintptr_t>(__kernel_start), kernel_end = reinterpret_cast<uintptr_t>(__kernel_end);
-    const uint64_t missing = multiboot::first_not_ram(info, kernel_start, kernel_end);
-    if (missing < kernel_end) {
-        lib::Fmt m;
-        m.s("not enough memory: the kernel's image and buffers need RAM from ").hex(uint32_t(kernel_start)).s(" to ").hex(uint32_t(kernel_end));
-        m.s(", the loader reports none at ").hex(uint32_t(missing));
-        panic(m.c_str());
-    }
     uint32_t skipped_modules = 0;
     file_table::init(info, &skipped_modules);
     uint32_t modules = 0;
@@ -136,8 +124,12 @@ extern "C" [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* 
     boot.str("event", "boot").str("version", MODEXLAB_VERSION).str("cmdline", ctx.cmdline);
     boot.str("boot", options.action == BootAction::Demo ? "demo" : "serve").u32("interval_ms", options.interval_ms);
     boot.boolean("bochs_vbe_cleared", vbe_found).u64("tsc_hz", ctx.tsc_hz);
+    boot.str("clock", timer::clock_name(timer::clock())).u64("clock_hz", timer::hz()).u32("clock_read_cost", timer::read_cost());
+    boot.str("cpu_class", cpu::class_name(ctx.cpu)).str("isa", isa::name(isa::in_use())).str("cpu_isa", isa::name(isa::for_this_cpu()));
     boot.u32("files", uint32_t(file_table::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
     boot.u32("memory_kib", (info->flags & multiboot::INFO_MEMORY) ? info->mem_upper + 1024 : 0);
+    boot.begin_object("pool").hex32("start", guard::pool_start()).u32("kib", uint32_t(guard::pool_bytes() >> 10));
+    boot.u32("taken_kib", uint32_t(guard::taken_bytes() >> 10)).end_object();
     boot.boolean("guard_pages", guard_pages).boolean("serial_wakeup", serial::wakes());
     if (framebuffer) {
         const vga::Framebuffer& fb = vga::framebuffer();

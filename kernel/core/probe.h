@@ -1,6 +1,6 @@
 // A lap timer for the bench: splits a drawing's time into polygon setup, edge walking, the inner
-// loops and auto's choosing. The core has no clock of its own; the caller lends one (rdtsc in the
-// kernel and on the host). Every lap costs a clock read and a few instructions: `calibrate`
+// loops and auto's choosing. The core has no clock of its own; the caller lends one (timer::now in the
+// kernel, rdtsc on the host). Every lap costs a clock read and a few instructions: `calibrate`
 // measures that cost and `net` takes it off again.
 #pragma once
 

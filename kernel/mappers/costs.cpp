@@ -5,37 +5,37 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1030.2f, 348.46f, 40.338f}, // 11 scenes
-    {"exact", 1010.0f, 320.86f, 64.312f}, // 11 scenes
-    {"persp-subdiv-4", 1010.0f, 321.23f, 91.384f}, // 11 scenes
-    {"persp-subdiv-8", 1010.0f, 375.97f, 59.523f}, // 11 scenes
-    {"persp-subdiv-16", 1010.0f, 414.98f, 43.462f}, // 11 scenes
-    {"persp-subdiv-32", 1010.0f, 435.42f, 35.609f}, // 11 scenes
-    {"constant-depth", 1010.0f, 451.81f, 29.806f}, // 11 scenes
-    {"persp-adaptive-0.5", 1010.0f, 908.22f, 290.050f}, // 11 scenes
-    {"persp-adaptive-1", 1010.0f, 999.28f, 51.772f}, // 11 scenes
-    {"persp-adaptive-2", 1010.0f, 1016.43f, 44.508f}, // 11 scenes
-    {"persp-adaptive-4", 1010.0f, 1029.22f, 40.042f}, // 11 scenes
-    {"fast-affine", 1054.8f, 108.42f, 5.151f}, // 11 scenes
-    {"fast-table", 1309.6f, 98.45f, 2.082f}, // 11 scenes
-    {"fast-columns", 1119.4f, 176.90f, 4.982f}, // 11 scenes
-    {"fast-table-columns", 1374.6f, 247.65f, 2.841f}, // 11 scenes
-    {"fast-subdiv-8", 1010.0f, 298.70f, 14.048f}, // 11 scenes
-    {"fast-subdiv-16", 1010.0f, 308.99f, 9.941f}, // 11 scenes
-    {"fast-subdiv-32", 1010.0f, 314.09f, 7.954f}, // 11 scenes
-    {"fast-constant-depth", 1010.0f, 318.66f, 6.314f}, // 11 scenes
-    {"fast-adaptive-1", 1010.0f, 341.55f, 9.605f}, // 11 scenes
-    {"fast-adaptive-2", 1010.0f, 345.30f, 8.124f}, // 11 scenes
-    {"fast-oriented-1", 1130.2f, 358.44f, 7.789f}, // 11 scenes
-    {"xsharp-dda", 1511.3f, 375.81f, 37.439f}, // 10 scenes
-    {"xsharp-row-out", 1511.3f, 511.07f, 18.951f}, // 10 scenes
-    {"xsharp-column", 1515.0f, 483.83f, 12.620f}, // 10 scenes
-    {"hecker-steptable", 5324.2f, 0.00f, 613.850f}, // 10 scenes
-    {"fatmap-256", 1722.9f, 161.58f, 13.669f}, // 8 scenes
-    {"fatmap-256-16", 1722.9f, 166.58f, 12.669f}, // 8 scenes
-    {"fatmap-lut", 2339.7f, 165.06f, 10.076f}, // 7 scenes
-    {"quake-subdiv16", 1496.9f, 301.28f, 13.897f}, // 10 scenes
-    {"quake-subdiv8", 1496.9f, 285.94f, 20.249f}, // 10 scenes
+    {"affine", 1028.2f, 349.02f, 40.326f}, // 11 scenes
+    {"exact", 1008.0f, 321.42f, 64.301f}, // 11 scenes
+    {"persp-subdiv-4", 1008.0f, 321.80f, 91.373f}, // 11 scenes
+    {"persp-subdiv-8", 1008.0f, 376.53f, 59.512f}, // 11 scenes
+    {"persp-subdiv-16", 1008.0f, 415.55f, 43.451f}, // 11 scenes
+    {"persp-subdiv-32", 1008.0f, 435.98f, 35.598f}, // 11 scenes
+    {"constant-depth", 1008.0f, 452.37f, 29.795f}, // 11 scenes
+    {"persp-adaptive-0.5", 1008.0f, 908.78f, 290.039f}, // 11 scenes
+    {"persp-adaptive-1", 1008.0f, 999.84f, 51.761f}, // 11 scenes
+    {"persp-adaptive-2", 1008.0f, 1016.99f, 44.497f}, // 11 scenes
+    {"persp-adaptive-4", 1008.0f, 1029.78f, 40.031f}, // 11 scenes
+    {"fast-affine", 1045.9f, 108.98f, 5.140f}, // 11 scenes
+    {"fast-table", 1300.7f, 99.02f, 2.071f}, // 11 scenes
+    {"fast-columns", 1117.4f, 177.44f, 4.970f}, // 11 scenes
+    {"fast-table-columns", 1372.6f, 248.19f, 2.829f}, // 11 scenes
+    {"fast-subdiv-8", 1008.0f, 299.27f, 14.037f}, // 11 scenes
+    {"fast-subdiv-16", 1008.0f, 309.55f, 9.929f}, // 11 scenes
+    {"fast-subdiv-32", 1008.0f, 314.65f, 7.942f}, // 11 scenes
+    {"fast-constant-depth", 1008.0f, 319.22f, 6.303f}, // 11 scenes
+    {"fast-adaptive-1", 1008.0f, 342.11f, 9.594f}, // 11 scenes
+    {"fast-adaptive-2", 1008.0f, 345.86f, 8.112f}, // 11 scenes
+    {"fast-oriented-1", 1128.2f, 359.12f, 7.780f}, // 11 scenes
+    {"xsharp-dda", 1509.3f, 376.41f, 37.426f}, // 10 scenes
+    {"xsharp-row-out", 1509.3f, 511.68f, 18.937f}, // 10 scenes
+    {"xsharp-column", 1513.0f, 484.35f, 12.609f}, // 10 scenes
+    {"hecker-steptable", 5321.9f, 0.00f, 613.872f}, // 10 scenes
+    {"fatmap-256", 1720.9f, 162.20f, 13.650f}, // 8 scenes
+    {"fatmap-256-16", 1720.9f, 167.20f, 12.650f}, // 8 scenes
+    {"fatmap-lut", 2337.7f, 165.68f, 10.056f}, // 7 scenes
+    {"quake-subdiv16", 1494.9f, 301.85f, 13.884f}, // 10 scenes
+    {"quake-subdiv8", 1494.9f, 286.50f, 20.237f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

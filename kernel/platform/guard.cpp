@@ -8,15 +8,18 @@ namespace guard {
 
 namespace {
 
-constexpr size_t POOL_BYTES = 40u << 20;
 constexpr size_t BIG_PAGE = 4u << 20;
-constexpr size_t POOL_TABLES = POOL_BYTES / BIG_PAGE;
+// (a pool that does not start on a 4 MiB boundary spans one block more)
+constexpr size_t MAX_TABLES = MAX_POOL_BYTES / BIG_PAGE + 1;
 constexpr uint32_t PRESENT = 1, WRITABLE = 2, BIG = 1 << 7;
 constexpr int MAX_REGIONS = 160;
 
-alignas(BIG_PAGE) uint8_t g_pool[POOL_BYTES];
 alignas(PAGE) uint32_t g_directory[1024];
-alignas(PAGE) uint32_t g_tables[POOL_TABLES][1024];
+alignas(PAGE) uint32_t g_tables[MAX_TABLES][1024];
+uint32_t g_base = 0;        // the pool: [g_base, g_base + g_bytes), whole pages (place)
+size_t g_bytes = 0;
+uint32_t g_first_block = 0; // the 4 MiB blocks its tables cover: [g_first_block, + g_table_count)
+uint32_t g_table_count = 0;
 
 struct Region {
     const char* what;
@@ -30,30 +33,31 @@ int g_region_count = 0;
 Region g_transient[MAX_REGIONS];
 int g_transient_count = 0;
 size_t g_cursor = PAGE;               // the pool's first page is the first buffer's guard
-size_t g_top = POOL_BYTES - PAGE;     // and its last page the last transient buffer's
+size_t g_top = 0;                     // and its last page the last transient buffer's (place)
 bool g_enabled = false;
 bool g_tables_ready = false;  // buffers may be taken by constructors, before init()
 
-uint32_t pool_base() { return reinterpret_cast<uint32_t>(g_pool); }
+uint32_t pool_base() { return g_base; }
 
 uint32_t& entry(uint32_t address) {
-    const uint32_t page = (address - pool_base()) / PAGE;
+    const uint32_t page = (address - g_first_block * uint32_t(BIG_PAGE)) / PAGE;
     return g_tables[page / 1024][page % 1024];
 }
 
-// The page tables: every page of the pool present, but the first (the first buffer's guard).
+// The page tables: every page of the blocks the pool lies in present (identity), but the pool's
+// first (the first buffer's guard) and last (the last transient buffer's).
 void prepare_tables() {
     if (g_tables_ready) return;
     g_tables_ready = true;
-    const uint32_t base = pool_base();
-    for (uint32_t t = 0; t < POOL_TABLES; ++t)
-        for (uint32_t p = 0; p < 1024; ++p) g_tables[t][p] = (base + (t * 1024 + p) * PAGE) | PRESENT | WRITABLE;
-    g_tables[0][0] &= ~PRESENT;
-    g_tables[POOL_TABLES - 1][1023] &= ~PRESENT;
+    for (uint32_t t = 0; t < g_table_count; ++t)
+        for (uint32_t p = 0; p < 1024; ++p) g_tables[t][p] = ((g_first_block + t) * uint32_t(BIG_PAGE) + p * PAGE) | PRESENT | WRITABLE;
+    entry(g_base) &= ~PRESENT;
+    entry(g_base + uint32_t(g_bytes) - PAGE) &= ~PRESENT;
 }
 
 [[noreturn]] void full(const char* what, size_t bytes) {
     lib::Fmt m;
+    if (!g_bytes) panic("the guarded pool was never placed: a buffer was taken before kernel_start");
     m.s("the guarded pool is full: ").s(what).s(" needs ").u(uint32_t(bytes)).s(" bytes, ").u(uint32_t(g_top - g_cursor)).s(" left");
     panic(m.c_str());
 }
@@ -66,10 +70,25 @@ void set_present(uint32_t address, bool present) {
 
 }  // namespace
 
+void place(uint32_t start, uint32_t end) {
+    g_base = (start + PAGE - 1) & ~uint32_t(PAGE - 1);
+    end &= ~uint32_t(PAGE - 1);
+    g_bytes = end > g_base ? end - g_base : 0;
+    if (g_bytes > MAX_POOL_BYTES) g_bytes = MAX_POOL_BYTES;
+    g_first_block = g_base / uint32_t(BIG_PAGE);
+    g_table_count = (g_base + uint32_t(g_bytes) - 1) / uint32_t(BIG_PAGE) - g_first_block + 1;
+    g_cursor = PAGE;
+    g_top = g_bytes - PAGE;
+}
+
+uint32_t pool_start() { return g_base; }
+size_t pool_bytes() { return g_bytes; }
+size_t taken_bytes() { return g_cursor; }
+
 bool init(uint32_t cpuid_features_edx) {
     prepare_tables();
     for (uint32_t i = 0; i < 1024; ++i) g_directory[i] = (i * BIG_PAGE) | PRESENT | WRITABLE | BIG;
-    for (uint32_t t = 0; t < POOL_TABLES; ++t) g_directory[(pool_base() >> 22) + t] = reinterpret_cast<uint32_t>(g_tables[t]) | PRESENT | WRITABLE;
+    for (uint32_t t = 0; t < g_table_count; ++t) g_directory[g_first_block + t] = reinterpret_cast<uint32_t>(g_tables[t]) | PRESENT | WRITABLE;
     if (!((cpuid_features_edx >> 3) & 1)) return false;  // no PSE: no 4 MiB pages, no paging
     uint32_t cr4, cr0;
     asm volatile("mov %%cr4, %0" : "=r"(cr4));
@@ -109,11 +128,11 @@ uint8_t* take_transient(size_t bytes, const char* what, const char* name) {
 
 void release_transient() {
     g_transient_count = 0;
-    g_top = POOL_BYTES - PAGE;
+    g_top = g_bytes - PAGE;
 }
 
 bool find(uint32_t address, Hit* hit) {
-    if (address < pool_base() || address >= pool_base() + POOL_BYTES) return false;
+    if (address < pool_base() || address >= pool_base() + g_bytes) return false;
     const uint32_t page = address & ~uint32_t(PAGE - 1);
     const Region* const lists[2] = {g_regions, g_transient};
     const int counts[2] = {g_region_count, g_transient_count};

@@ -1,5 +1,6 @@
 // Paging with guard pages: the kernel identity-maps the whole 4 GiB (4 MiB pages) and keeps its
-// textures, RAM surfaces and scene buffers in a pool mapped with 4 KiB pages, where every buffer
+// textures, RAM surfaces and scene buffers in a pool of RAM the memory map reports (kernel_start
+// places it, kernel/platform/memory.h), mapped with 4 KiB pages, where every buffer
 // ends exactly where an unmapped page begins and has an unmapped page before its first page. A
 // mapper that reads past a texture or writes past a surface takes a page fault there, which the
 // exception handler reports with the buffer it hit (docs/platform.md, "Guard pages").
@@ -14,6 +15,13 @@ inline void* operator new(size_t, void* at) noexcept { return at; }
 namespace guard {
 
 constexpr size_t PAGE = 4096;
+constexpr size_t MAX_POOL_BYTES = 96u << 20;  // what the page tables cover: a larger stretch is cut
+
+// The pool: the whole pages of [start, end), at most MAX_POOL_BYTES; called once, before any take.
+void place(uint32_t start, uint32_t end);
+uint32_t pool_start();
+size_t pool_bytes();
+size_t taken_bytes();  // by the buffers kept for the boot, guards included
 
 // Turns paging on (CR4.PSE, CR3, CR0.PG). False, with paging left off and the pool still usable
 // without guards, on a CPU without 4 MiB pages (CPUID.1:EDX.PSE).

@@ -9,7 +9,7 @@ namespace current_screen {
 
 namespace {
 
-raster::Scene g_parsed;     // parsed into here first, so a bad upload leaves the current scene alone
+raster::Scene& g_parsed = *guard::take_object<raster::Scene>("scene being parsed");  // parsed into here first, so a bad upload leaves the current scene alone
 bool g_loaded = false;
 raster::Texture g_texture;
 
@@ -35,7 +35,7 @@ Buffers& buffers() { return g_buffers; }
 bool load(const char* text, size_t length, raster::ParseError* error) {
     if (!raster::parse_scene(text, length, &g_parsed, error)) return false;
     Buffers& b = buffers();
-    memcpy(b.scene, &g_parsed, sizeof g_parsed);
+    memcpy(b.scene, &g_parsed, sizeof(raster::Scene));
     const raster::Scene& sc = *b.scene;
     const size_t texels = size_t(sc.texture_width) * size_t(sc.texture_height);
     uint8_t* at = b.texels + TEXELS_BYTES - texels;  // its last texel against the guard page

@@ -19,7 +19,7 @@ uint8_t* const g_planes = guard::take(raster::SCREEN_PIXELS, "RAM surface (plana
 
 Canvas begin(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant) {
     Canvas c{};
-    c.t0 = timer::rdtsc();
+    c.t0 = timer::now();
     c.surface = surface;
     c.page = page;
     c.axis = raster::surface_axis(mapper, surface);
@@ -37,23 +37,23 @@ Canvas begin(const raster::Mapper& mapper, raster::Surface surface, int page, ra
         c.target = vga::page_target(page);
         break;
     }
-    c.t1 = timer::rdtsc();
+    c.t1 = timer::now();
     const raster::LoopFn loop = raster::mapper_loop(mapper, variant, c.target);
     c.used_asm = loop && loop == mapper.asm_loop;
     return c;
 }
 
 RenderResult finish(const Canvas& c, const raster::RenderStats& stats) {
-    const uint64_t t2 = timer::rdtsc();
+    const uint64_t t2 = timer::now();
     if (c.surface == raster::Surface::Linear) vga::blit_linear(g_linear, c.page);
     if (c.surface == raster::Surface::Planar) vga::blit_planar(g_planes, c.page);
-    const uint64_t t3 = timer::rdtsc();
+    const uint64_t t3 = timer::now();
     RenderResult r{};
     r.stats = stats;
     r.used_asm = c.used_asm;
-    r.ticks_clear = c.t1 - c.t0;
-    r.ticks_draw = t2 - c.t1;
-    r.ticks_blit = t3 - t2;
+    r.ticks_clear = timer::between(c.t0, c.t1);
+    r.ticks_draw = timer::between(c.t1, t2);
+    r.ticks_blit = timer::between(t2, t3);
     return r;
 }
 

@@ -71,7 +71,7 @@ raster::Watch Progress::watch() { return raster::Watch{keep_going, this, &idt::d
 bool Progress::keep_going(void* ctx, uint32_t done, uint32_t total) {
     if (line_arrived()) return false;
     auto* p = static_cast<Progress*>(ctx);
-    const uint64_t now = timer::rdtsc();
+    const uint64_t now = timer::now();
     if (p->interval && now >= p->next) {
         lib::JsonLine(serial::sink()).str("event", "progress").str("cmd", p->cmd).u32("polygons", done).u32("of", total).end();
         p->next = now + p->interval;
@@ -79,7 +79,7 @@ bool Progress::keep_going(void* ctx, uint32_t done, uint32_t total) {
     return true;
 }
 
-Progress progress(const char* cmd, const Context& ctx) { return Progress{cmd, ctx.tsc_hz, timer::rdtsc() + ctx.tsc_hz}; }
+Progress progress(const char* cmd, const Context&) { return Progress{cmd, timer::hz(), timer::now() + timer::hz()}; }
 
 void usage_error(const char* cmd) {
     const Command* c = find_command(StrView{cmd, lib::c_length(cmd)});

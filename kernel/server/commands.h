@@ -85,7 +85,7 @@ struct Progress {
     raster::Watch watch();
     static bool keep_going(void* ctx, uint32_t done, uint32_t total);
 };
-// A second's worth of ticks (tsc_hz: none where the CPU has no TSC, nor events then).
+// A second's worth of the clock's ticks (timer::hz).
 Progress progress(const char* cmd, const Context& ctx);
 
 // "usage: " and the usage of the command's row.

@@ -71,9 +71,11 @@ constexpr uint32_t DEFAULT_CASES = 2000, MAX_CASES = 1000000;
 constexpr uint32_t CHUNK_CASES = 1000;
 constexpr int MAX_CHECKED_LOOPS = 16;
 // Static: the loops' destinations and texels, over a megabyte, far beyond the 64 KiB kernel stack.
-alignas(4) uint8_t g_check_a[raster::CHECK_DST_BYTES];
-alignas(4) uint8_t g_check_b[raster::CHECK_DST_BYTES];
-uint8_t g_check_texels[raster::CHECK_TEXEL_BYTES];
+// (4-aligned: each ends on a page, and its size is a multiple of 4)
+uint8_t* const g_check_a = guard::take(raster::CHECK_DST_BYTES, "selftest destination (twin)");
+uint8_t* const g_check_b = guard::take(raster::CHECK_DST_BYTES, "selftest destination (NASM)");
+uint8_t* const g_check_texels = guard::take(raster::CHECK_TEXEL_BYTES, "selftest texels");
+static_assert(raster::CHECK_DST_BYTES % 4 == 0);
 
 }  // namespace
 
@@ -95,7 +97,7 @@ void cmd_selftest(Context&, const StrView* args, size_t nargs) {
     raster::LoopCheck results[MAX_CHECKED_LOOPS];
     int n = 0;
     bool all_equal = true;
-    uint64_t t0 = timer::rdtsc();
+    uint64_t t0 = timer::now();
     bool vga_checked = vga::mode() == vga::Mode::ModeX && !vga::framebuffer_in_use();  // (RAM pages: no VGA to program)
     const raster::Mapper* loops[MAX_CHECKED_LOOPS];
     int count = raster::checked_loops(loops, MAX_CHECKED_LOOPS);
@@ -122,7 +124,7 @@ void cmd_selftest(Context&, const StrView* args, size_t nargs) {
     lib::JsonLine r = reply::begin(all_equal);
     r.str("cmd", "selftest");
     if (!all_equal) r.str("error", "a NASM loop differs from its C++ twin");
-    r.u32("cases", cases).u64("ticks", timer::rdtsc() - t0).boolean("interrupted", stopped);
+    r.u32("cases", cases).u64("ticks", timer::since(t0)).boolean("interrupted", stopped);
     r.boolean("vga_loops_checked", vga_checked);  // those draw into page 2 of Mode X: 'mode modex' first
     r.begin_array("loops");
     for (int i = 0; i < n; ++i)
@@ -200,9 +202,9 @@ void cmd_fuzz(Context& ctx, const StrView* args, size_t nargs) {
     static FuzzBank bank;
     Progress p = progress("fuzz", ctx);
     const raster::Watch watch = p.watch();
-    const uint64_t t0 = timer::rdtsc();
+    const uint64_t t0 = timer::now();
     const raster::FuzzStats f = raster::fuzz_mapper(*mapper, seed, count, bank.textures, fuzz_surface, nullptr, raster::Variant::Asm, &watch);
-    const uint64_t ticks = timer::rdtsc() - t0;
+    const uint64_t ticks = timer::since(t0);
     lib::JsonLine r = reply::begin(true);
     r.str("cmd", "fuzz").str("mapper", mapper->name).u32("seed", seed).u32("polygons", f.tried).u32("polygons_asked", count);
     r.u32("drawn", f.by_status[0]).begin_object("refused");

@@ -6,6 +6,7 @@
 #include "kernel/lib/stats.h"
 #include "kernel/scene/scene_text.h"
 #include "kernel/present/current_screen.h"
+#include "kernel/platform/guard.h"
 #include "kernel/platform/idt.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
@@ -17,7 +18,7 @@ namespace {
 
 constexpr uint32_t MAX_PLAY_FRAMES = 100000;
 // Static: a frame's ticks for the median, 400 KB at the most, far beyond the 64 KiB kernel stack.
-uint32_t g_play_ticks[MAX_PLAY_FRAMES];
+uint32_t* const g_play_ticks = reinterpret_cast<uint32_t*>(guard::take(MAX_PLAY_FRAMES * sizeof(uint32_t), "play's frame times"));
 
 // bench: each frame drawn twice, once plainly (the totals) and once with the probe (setup and
 // inner loops; walking is the rest of the plain drawing time), then flipped.
@@ -150,7 +151,7 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     uint32_t frames;
     DrawArgs d;
     if (!parse_animation_args("play", args, nargs, MAX_PLAY_FRAMES, "", &frames, &d)) return;
-    uint64_t pixels = 0, total = 0, t_start = timer::rdtsc();
+    uint64_t pixels = 0, total = 0, t_start = timer::now();
     MapperTally tally;
     uint32_t done = 0;
     Progress p{"play", 0, 0};  // stops a long frame; the frame events are the progress
@@ -160,9 +161,9 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
         d.page = hidden_page();
         current_world::FrameResult f = current_world::render(n, *d.mapper, d.surface, d.page, d.variant, nullptr, &watch);
         if (f.render.stats.interrupted) break;  // cut short by the next line: neither shown nor counted
-        uint64_t t0 = timer::rdtsc();
+        uint64_t t0 = timer::now();
         bool retrace = vga::flip(d.page);
-        uint64_t flip_ticks = timer::rdtsc() - t0;
+        uint64_t flip_ticks = timer::since(t0);
         uint64_t ticks = frame_ticks(f);
         g_play_ticks[i] = clamp32(ticks);
         pixels += f.render.stats.pixels;
@@ -182,7 +183,7 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
             .boolean("retrace", retrace)
             .end();
     }
-    uint64_t wall = timer::rdtsc() - t_start;
+    uint64_t wall = timer::since(t_start);
     // `ticks` is the unclamped total; the summary's sum is of the clamped figures.
     lib::Summary s = lib::summarise_in_place(g_play_ticks, done);
     lib::JsonLine r = animation_reply("play", done, frames, d);

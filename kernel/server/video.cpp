@@ -2,6 +2,7 @@
 // palettes, flipping and reading back pages, and the Bochs VBE mode.
 #include "drivers/timer.h"
 #include "drivers/vga.h"
+#include "kernel/platform/isa.h"
 #include "kernel/present/patterns.h"
 #include "kernel/lib/encode.h"
 #include "kernel/scene/pattern.h"
@@ -38,7 +39,8 @@ void cmd_hello(Context& ctx, const StrView*, size_t) {
     for (int i = 0; i < cpu::FEATURE_COUNT; ++i)
         if (cpu::has(ctx.cpu, cpu::FEATURES[i])) r.item_str(cpu::FEATURES[i].name);
     r.end_array().end_object();
-    r.u64("tsc_hz", ctx.tsc_hz);
+    r.u64("tsc_hz", ctx.tsc_hz).str("cpu_class", cpu::class_name(ctx.cpu)).str("isa", isa::name(isa::in_use()));
+    r.begin_object("clock").str("name", timer::clock_name(timer::clock())).u64("hz", timer::hz()).u32("read_cost", timer::read_cost()).end_object();
     r.str("mode", vga::mode_name(vga::mode())).i32("page", vga::page_count() ? vga::shown_page() : -1);
     r.str("palette", raster::palette_name(ctx.palette)).str("cmdline", ctx.cmdline);
     r.end();
@@ -52,10 +54,10 @@ void cmd_mode(Context& ctx, const StrView* args, size_t) {
         unknown_name_error("mode", "mode", args[0], [](int i) { return vga::mode_name(MODE_SETTERS[i].mode); }, MODE_SETTER_COUNT);
         return;
     }
-    uint64_t t0 = timer::rdtsc();
+    uint64_t t0 = timer::now();
     setter->set();
     vga::load_palette(raster::palette(ctx.palette));
-    uint64_t ticks = timer::rdtsc() - t0;
+    uint64_t ticks = timer::since(t0);
     reply::begin(true)
         .str("cmd", "mode")
         .str("mode", vga::mode_name(vga::mode()))
@@ -75,9 +77,9 @@ void cmd_pattern(Context&, const StrView* args, size_t) {
     }
     int page;
     if (!parse_page("pattern", args[1], &page)) return;
-    uint64_t t0 = timer::rdtsc();
+    uint64_t t0 = timer::now();
     patterns::draw(p, page);
-    uint64_t ticks = timer::rdtsc() - t0;
+    uint64_t ticks = timer::since(t0);
     reply::begin(true).str("cmd", "pattern").str("pattern", raster::pattern_name(p)).u32("page", uint32_t(page)).u64("ticks", ticks).end();
 }
 

@@ -2,9 +2,11 @@
 #include "kernel/show/onscreen.h"
 
 #include "drivers/serial.h"
+#include "drivers/timer.h"
 #include "drivers/vga.h"
 #include "kernel/core/measured.h"
 #include "kernel/core/policy.h"
+#include "kernel/platform/isa.h"
 #include "kernel/present/file_table.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/json.h"
@@ -44,7 +46,8 @@ int g_part_count = 0;
 const char* scene_name(const Setup& s, int i) { return file_table::at(s.scenes[i]).name; }
 
 // per pixel, in tenths
-uint64_t tenths_per_pixel(uint64_t ticks, uint64_t pixels) { return pixels ? ticks * 10 / pixels : 0; }
+// (in the unit the pages show: TSC cycles, or ns on the PIT clock)
+uint64_t tenths_per_pixel(uint64_t ticks, uint64_t pixels) { return pixels ? timer::tenths_shown(ticks) / pixels : 0; }
 
 // a footprint error as the table shows it ("-": none measured)
 void put_error(lib::Fmt& f, double e) {
@@ -82,14 +85,15 @@ private:
 void build_csv(const Setup& s) {
     g_csv_length = 0;
     Csv c;
-    c.raw("modexlab-bench,1,");
+    c.raw("modexlab-bench,2,");
     c.s(s.cpu->has_cpuid ? s.cpu->vendor : "no CPUID");
     c.raw(",");
     c.u64(s.cpu->family), c.raw(","), c.u64(s.cpu->model), c.raw(","), c.u64(s.cpu->stepping), c.raw(",");
     c.s(s.cpu->brand);
     c.raw(",");
-    c.u64(s.tsc_hz), c.raw(","), c.u64(s.frames), c.raw("\n");
-    c.raw("scene,mapper,pixels,polygons,inner_tsc_ticks,frame_tsc_ticks,max_footprint_error\n");
+    c.s(timer::clock_name(timer::clock())), c.raw(","), c.u64(timer::hz()), c.raw(","), c.u64(s.tsc_hz), c.raw(",");
+    c.s(isa::name(isa::in_use())), c.raw(","), c.u64(s.frames), c.raw("\n");
+    c.raw("scene,mapper,pixels,polygons,inner_ticks,frame_ticks,max_footprint_error\n");
     for (int i = 0; i < g_row_count; ++i) {
         const Row& r = g_rows[i];
         c.s(scene_name(s, r.scene)), c.raw(","), c.s(raster::MAPPERS[r.mapper].name), c.raw(",");
@@ -129,7 +133,8 @@ void machine_page(const Setup& s, Page* p) {
     p->add("modexlab on-screen bench");
     p->add("");
     lib::Fmt a;
-    a.s("CPU    ").s(s.cpu->has_cpuid ? s.cpu->vendor : "no CPUID");
+    a.s("CPU    ").s(cpu::class_name(*s.cpu));
+    if (s.cpu->has_cpuid) a.s(", ").s(s.cpu->vendor);
     p->add(a.c_str());
     lib::Fmt b;
     b.s("       family ").u(s.cpu->family).s(" model ").u(s.cpu->model).s(" stepping ").u(s.cpu->stepping);
@@ -146,15 +151,18 @@ void machine_page(const Setup& s, Page* p) {
         p->add(c.c_str());
     }
     lib::Fmt d;
-    d.s("TSC    ");
-    if (s.tsc_hz) d.tenths(s.tsc_hz / 100000).s(" MHz, against the PIT");
-    else d.s("none: no timings");
+    d.s("clock  ");
+    if (timer::clock() == timer::Clock::Tsc) d.s("TSC ").tenths(s.tsc_hz / 100000).s(" MHz (vs PIT)");
+    else d.s("PIT 1.193 MHz (no TSC): ns");
     p->add(d.c_str());
+    lib::Fmt i;
+    i.s("code   built for the ").s(isa::in_use() == isa::Path::P6 ? "P6 (CMOV)" : "486");
+    p->add(i.c_str());
     lib::Fmt e;
     e.s("run    ").u(uint32_t(s.scene_count)).s(" scenes x ").u(uint32_t(raster::MAPPER_COUNT)).s(" mappers, ").u(s.frames).s(" frames");
     p->add(e.c_str());
     p->add("");
-    p->add("A page a scene: TSC cycles a pixel of");
+    p->add(timer::clock() == timer::Clock::Tsc ? "A page a scene: TSC cycles a pixel of" : "A page a scene: nanoseconds a pixel of");
     p->add("the inner loops and of the whole frame,");
     p->add("fastest first, and the footprint error");
     p->add("make bench measured on 8 frames (the");
@@ -322,6 +330,8 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
         j.str("event", "bench_done").u32("rows", uint32_t(g_row_count)).boolean("interrupted", stopped);
         j.begin_object("cpu").str("vendor", s.cpu->has_cpuid ? s.cpu->vendor : "no CPUID").u32("family", s.cpu->family);
         j.u32("model", s.cpu->model).u32("stepping", s.cpu->stepping).str("brand", s.cpu->brand).end_object();
+        j.str("cpu_class", cpu::class_name(*s.cpu)).str("isa", isa::name(isa::in_use()));
+        j.str("clock", timer::clock_name(timer::clock())).u64("clock_hz", timer::hz());
         j.u64("tsc_hz", s.tsc_hz).u32("csv_bytes", uint32_t(g_csv_length)).u32("qr_codes", uint32_t(g_part_count)).u32("pages", uint32_t(page_count(s))).end();
     }
     int k = 0;

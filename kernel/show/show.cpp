@@ -101,21 +101,21 @@ void compose_hud(Show& s, const current_world::FrameResult& r, uint64_t period) 
     set_line(s, b);
     lib::Fmt c;
     if (s.paused) c.s("paused");
-    else if (period > 0 && s.options.tsc_hz > 0) c.tenths(s.options.tsc_hz * 10 / period).s(" fps");
+    else if (period > 0) c.tenths(timer::hz() * 10 / period).s(" fps");
     else c.s("- fps");
     c.s(s.surface == raster::Surface::Vga ? ", VGA memory" : ", RAM + blit");
     set_line(s, c);
     const uint32_t pixels = r.render.stats.pixels;
     lib::Fmt d;
-    if (s.options.tsc_hz == 0) d.s("no TSC: no cycle counts");
-    else if (pixels == 0) d.s("no pixels drawn");
+    if (pixels == 0) d.s("no pixels drawn");
     else {
         const uint64_t all = r.ticks_geometry + r.render.ticks_clear + r.render.ticks_draw + r.render.ticks_blit;
-        d.s("cycles/px ");
-        d.tenths(r.render.ticks_draw * 10 / pixels);
+        d.s(timer::unit_shown()).s("/px ");
+        d.tenths(timer::tenths_shown(r.render.ticks_draw) / pixels);
         d.s(" drawing, ");
-        d.tenths(all * 10 / pixels);
+        d.tenths(timer::tenths_shown(all) / pixels);
         d.s(" all");
+        if (timer::clock() == timer::Clock::Pit) d.s(" (PIT)");
     }
     set_line(s, d);
     if (!s.mapper->is_auto || pixels == 0) return;
@@ -144,17 +144,17 @@ void draw_hud(Show& s, int page) {
 // animation going on (its period counts for the frames a second), not a redraw.
 void draw_frame(Show& s, int32_t n, bool running) {
     const int page = vga::shown_page() == 0 ? 1 : 0;
-    const uint64_t start = timer::rdtsc();
+    const uint64_t start = timer::now();
     const current_world::FrameResult r = current_world::render(n, *s.mapper, s.surface, page, raster::Variant::Asm);
     s.shown_frame = n;
     const uint64_t period = running && s.running_before ? start - s.last_start - s.last_hud_ticks : 0;
-    const uint64_t hud_start = timer::rdtsc();
+    const uint64_t hud_start = timer::now();
     s.hud_count = 0;
     if (s.hud) {
         compose_hud(s, r, period);
         draw_hud(s, page);
     }
-    s.last_hud_ticks = timer::rdtsc() - hud_start;
+    s.last_hud_ticks = timer::since(hud_start);
     s.last_start = start;
     s.running_before = running;
     vga::flip(page);

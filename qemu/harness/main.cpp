@@ -186,14 +186,16 @@ int run(Args& a) {
 
     json hello = s.ok("hello");
     const json& cpu = hello["cpu"];
-    std::printf("hello: modexlab %s on %s (family %d, model %d); TSC %.3f MHz; mode %s\n",
+    const std::string clock = hello["clock"]["name"] == "tsc" ? "TSC" : "PIT";
+    std::printf("hello: modexlab %s on %s (family %d, model %d: %s), the %s build; clock %s %.3f MHz; mode %s\n",
                 hello["version"].get<std::string>().c_str(), cpu["vendor"].get<std::string>().c_str(),
-                cpu["family"].get<int>(), cpu["model"].get<int>(), hello["tsc_hz"].get<double>() / 1e6,
+                cpu["family"].get<int>(), cpu["model"].get<int>(), hello["cpu_class"].get<std::string>().c_str(),
+                hello["isa"].get<std::string>().c_str(), clock.c_str(), hello["clock"]["hz"].get<double>() / 1e6,
                 hello["mode"].get<std::string>().c_str());
     std::printf("       features: %s\n", cpu["features"].dump().c_str());
 
     json mode = s.ok("mode modex");
-    std::printf("mode modex: %dx%d, %d pages, set in %llu TSC ticks\n", mode["width"].get<int>(), mode["height"].get<int>(),
+    std::printf("mode modex: %dx%d, %d pages, set in %llu ticks\n", mode["width"].get<int>(), mode["height"].get<int>(),
                 mode["pages"].get<int>(), mode["ticks"].get<unsigned long long>());
     const raster::Palette& palette = raster::palette(raster::PaletteId::Default);
 

@@ -89,8 +89,9 @@ std::string ExitInfo::describe() const {
 std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& serial_socket,
                                         const std::string& qmp_socket) {
     std::vector<std::string> a = {
-        // (OVMF keeps more of 128 MiB for itself than the kernel's 70 MiB at 16 MiB leave: 256 there)
-        "-machine", c.firmware == Firmware::Uefi32 ? "q35,smm=on,accel=tcg" : "pc,accel=tcg", "-m", c.firmware == Firmware::Bios ? "128" : "256",
+        // (UEFI: 256 MiB, OVMF keeping much of a small machine for itself)
+        "-machine", c.firmware == Firmware::Uefi32 ? "q35,smm=on,accel=tcg" : "pc,accel=tcg",
+        "-m", c.memory_mib ? std::to_string(c.memory_mib) : c.firmware == Firmware::Bios ? "128" : "256",
         "-vga", "std", "-no-reboot",
         "-device", "isa-debug-exit,iobase=0xf4,iosize=0x04",
         "-chardev", "socket,id=com1,path=" + serial_socket,
@@ -101,6 +102,7 @@ std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& 
     };
     if (!c.display) a.insert(a.end(), {"-display", "none"});
     if (c.icount) a.insert(a.end(), {"-icount", "shift=0,align=off,sleep=off"});
+    if (!c.cpu.empty()) a.insert(a.end(), {"-cpu", c.cpu});
     if (c.firmware == Firmware::Uefi64) a.insert(a.end(), {"-bios", OVMF64});
     if (c.firmware == Firmware::Uefi32)  // (the variable store copied: the firmware writes it)
         a.insert(a.end(), {"-global", "driver=cfi.pflash01,property=secure,value=on", "-drive",
@@ -131,7 +133,7 @@ std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& 
 
 std::string bochs_configuration(const QemuConfig& c, int serial_port) {
     return "# written by the modexlab harness (qemu/harness/process.cpp)\n"
-           "megs: 128\n"
+           "megs: " + std::to_string(c.memory_mib ? c.memory_mib : 128) + "\n" +
            "romimage: file=/usr/share/bochs/BIOS-bochs-latest\n"
            "vgaromimage: file=/usr/share/bochs/VGABIOS-lgpl-latest\n"
            "ata0-master: type=cdrom, path=\"" + c.image + "\", status=inserted\n"
@@ -141,7 +143,7 @@ std::string bochs_configuration(const QemuConfig& c, int serial_port) {
            "speaker: enabled=0\n"
            "sound: driver=dummy\n"
            "clock: sync=none, time0=local\n"
-           "cpu: count=1, ips=20000000, reset_on_triple_fault=0\n"
+           "cpu: count=1, ips=20000000, reset_on_triple_fault=0" + (c.cpu.empty() ? std::string() : ", model=" + c.cpu) + "\n"
            "log: " + c.run_dir + "/bochs.log\n"
            "panic: action=fatal\n"
            "error: action=report\n"

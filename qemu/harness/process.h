@@ -30,6 +30,8 @@ struct QemuConfig {
     std::vector<std::string> modules;  // -kernel only: Multiboot modules (-initrd), each "PATH" or "PATH NAME"
     bool display = false;    // a window (QEMU's default display) instead of none
     bool icount = false;     // -icount shift=0,align=off,sleep=off: rdtsc counts guest instructions
+    std::string cpu;         // -cpu MODEL (Bochs: cpu model=MODEL); empty: the emulator's default
+    int memory_mib = 0;      // -m (Bochs: megs); 0: 128 MiB (QEMU's UEFI: 256)
     std::string run_dir;     // serial.log (written as the harness reads) and qemu.log go here (Bochs: bochsrc, bochs.log, bochs.out)
     std::vector<std::string> extra_args;
 };

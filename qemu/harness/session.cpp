@@ -32,6 +32,8 @@ Session::Session(SessionOptions options) : options_(std::move(options)) {
     config.modules = options_.modules;
     config.display = options_.display;
     config.icount = options_.icount;
+    config.cpu = options_.cpu;
+    config.memory_mib = options_.memory_mib;
     config.run_dir = run_dir_;
     config.emulator = options_.emulator;
     config.firmware = options_.firmware;

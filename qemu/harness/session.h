@@ -32,6 +32,8 @@ struct SessionOptions {
     std::vector<std::string> modules;  // -kernel only: -initrd entries, each "PATH" or "PATH NAME"
     bool display = false;              // a QEMU window (for people watching)
     bool icount = false;
+    std::string cpu;                   // QEMU's -cpu model (486, pentium, ...); empty: its default, a P6
+    int memory_mib = 0;                // -m (Bochs: megs); 0: 128 MiB (QEMU's UEFI: 256)
     std::string name = "session";      // the run directory is build/runs/NAME
     std::chrono::milliseconds boot_timeout{60000};
     std::chrono::milliseconds command_timeout{30000};

@@ -144,6 +144,44 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
     return row;
 }
 
+// The 486's build of the kernel's C++ (booted isa=i486; the bench's QEMU CPU, a P6, runs the P6's
+// otherwise): every mapper's row and auto's at the scene's budget drawn again, the same pixels and
+// the same picture as the host's, their drawing's ticks kept in draw_i486.
+void bench_486_path(const SessionOptions& p6, std::vector<BenchScene>& scenes, int frames, std::vector<TradeRow>& rows) {
+    SessionOptions o = p6;
+    o.name = "bench-i486";
+    o.append += " isa=i486";
+    Session k(o);
+    const json hello = k.ok("hello");
+    if (hello.value("isa", std::string()) != "i486") throw HarnessError("the kernel booted isa=i486 runs the " + hello.value("isa", std::string("?")) + " build");
+    auto taken = [](const TradeRow& r) { return single_mapper(r) || r.mapper == "auto"; };
+    k.ok("mode modex");
+    size_t done = 0, total = 0;
+    for (const TradeRow& r : rows) total += taken(r);
+    for (BenchScene& s : scenes) {
+        load_in_kernel(k, s);
+        for (TradeRow& row : rows) {
+            if (row.scene != s.name || !taken(row)) continue;
+            const raster::Mapper& m = *raster::find_mapper({row.mapper.data(), row.mapper.size()});
+            std::fprintf(stderr, "[486 path %zu/%zu] %s %s ", ++done, total, s.name.c_str(), m.name);
+            json last;
+            const json r = k.ok("bench " + std::to_string(frames) + " " + m.name + " " + row.surface, [&](const json& e) { last = e; });
+            if (r["pixels"].get<uint64_t>() != row.pixels)
+                throw HarnessError(s.name + " " + m.name + ": the 486 path drew " + r["pixels"].dump() + " pixels, the P6 path " + std::to_string(row.pixels));
+            auto frame = world_frame(s.host, last["frame"].get<int32_t>());
+            const raster::Axis axis = row.walker == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
+            const IndexImage want = render_world_frame(s.host, *frame, m, axis);
+            const bool equal = k.screendump("bench-i486-" + s.name + "-" + m.name).rgb == screendump_of(want, s.host.world->palette).rgb;
+            row.kernel_equals_host = row.kernel_equals_host && equal;
+            row.draw_i486 = sum_of(r, "ticks_draw");
+            std::fprintf(stderr, "%.1f instructions/pixel drawing (P6 path %.1f)%s\n", row.per_pixel(row.draw_i486), row.draw_per_pixel(),
+                         equal ? "" : ", kernel DIFFERS from host");
+        }
+    }
+    k.ok("exit 0");
+    k.wait_exit();
+}
+
 // Frames per second in QEMU without icount: the emulator's cost of VGA memory against RAM and
 // blit, on this host. Returns a Markdown table.
 std::string wall_clock(std::vector<BenchScene>& scenes, const std::string& kernel, bool tty) {
@@ -289,10 +327,11 @@ int run(const Args& a) {
     k.ok("mode modex");
     std::vector<TradeRow> rows;
     const size_t total = scenes.size() * mappers.size();
+    size_t benched = 0;
     for (BenchScene& s : scenes) {
         load_in_kernel(k, s);
         for (const raster::Mapper* m : mappers) {
-            std::fprintf(stderr, "[%zu/%zu] %s %s ", rows.size() + 1, total, s.name.c_str(), m->name);
+            std::fprintf(stderr, "[%zu/%zu] %s %s ", ++benched, total, s.name.c_str(), m->name);
             TradeRow row = bench_one(k, s, *m, a.frames);
             if (row.pixels) std::fprintf(stderr, "%.1f instructions/pixel, mean texel error %.3f%s\n", row.frame_per_pixel(),
                                          row.accuracy.mean_texel_error, row.kernel_equals_host ? "" : ", kernel DIFFERS from host");
@@ -313,6 +352,7 @@ int run(const Args& a) {
     }
     k.ok("exit 0");
     k.wait_exit();
+    bench_486_path(o, scenes, a.frames, rows);
     mark_pareto(rows);
     std::fprintf(stderr, "host cycles: every mapper again, natively (32-bit, rdtsc)\n");
     std::string unmeasured;

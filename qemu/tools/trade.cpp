@@ -137,7 +137,8 @@ std::vector<std::string> csv_header() {
             "share_within_one[share]", "reference_pixels[pixels]", "gaps[pixels]", "overdraw[pixels]", "overlaps[pixels]",
             "index_differs[pixels]", "kernel_equals_host[bool]", "pareto[bool]", "max_bound[footprints]", "bound_exact_coverage[bool]",
             "drawn_by[mapper:polygons:pixels;...]", "compared[pixels]", "exact[pixels]", "within_one[pixels]", "enveloped[polygons]",
-            "budget_error[footprints]", "budget_exact[bool]", "budget_given[bool]"};
+            "budget_error[footprints]", "budget_exact[bool]", "budget_given[bool]", "draw_per_pixel_i486[instructions/pixel]",
+            "ticks_draw_i486[instructions]"};
 }
 
 void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
@@ -164,7 +165,8 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
             out << (i ? ";" : "") << std::get<0>(r.drawn_by[i]) << ":" << std::get<1>(r.drawn_by[i]) << ":" << std::get<2>(r.drawn_by[i]);
         out << "," << a.compared << "," << a.exact << "," << a.within_one << "," << r.enveloped << ","
             << (r.budget_error < 0 ? "any" : budget_text(r.budget_error)) << "," << (r.budget_exact ? "true" : "false") << ","
-            << (r.budget_given ? "true" : "false");
+            << (r.budget_given ? "true" : "false") << "," << (r.draw_i486 ? fixed(r.per_pixel(r.draw_i486), 3) : "") << ","
+            << (r.draw_i486 ? std::to_string(r.draw_i486) : "");
         out << "\n";
     }
 }
@@ -252,9 +254,35 @@ std::vector<TradeRow> read_trade(const std::string& path) {
         r.budget_error = text("budget_error") == "any" ? raster::ANY_ERROR : number("budget_error");
         r.budget_exact = flag("budget_exact"), r.budget_given = flag("budget_given");
         r.budget = budget_words(raster::Budget{r.budget_given, r.budget_error, r.budget_exact});
+        r.draw_i486 = text("ticks_draw_i486").empty() ? 0 : count("ticks_draw_i486");
         rows.push_back(std::move(r));
     }
     return rows;
+}
+
+std::string isa_table(const std::vector<TradeRow>& rows) {
+    struct Ratios {
+        std::vector<double> of;
+        double p6 = 0, i486 = 0;  // drawing ticks and pixels summed over the scenes
+        uint64_t pixels = 0;
+    };
+    std::vector<std::pair<std::string, Ratios>> by_mapper;  // in the rows' order
+    for (const TradeRow& r : rows) {
+        if (!r.draw_i486 || !r.draw) continue;
+        auto it = std::find_if(by_mapper.begin(), by_mapper.end(), [&](const auto& m) { return m.first == r.mapper; });
+        if (it == by_mapper.end()) it = by_mapper.insert(by_mapper.end(), {r.mapper, Ratios{}});
+        it->second.of.push_back(double(r.draw_i486) / double(r.draw));
+        it->second.p6 += double(r.draw), it->second.i486 += double(r.draw_i486), it->second.pixels += r.pixels;
+    }
+    if (by_mapper.empty()) return "";
+    std::string t = "| mapper | scenes | P6 build instr/px | 486 build instr/px | 486 / P6 | least | most |\n|---|--:|--:|--:|--:|--:|--:|\n";
+    for (const auto& [mapper, m] : by_mapper) {
+        const double px = double(m.pixels);
+        t += "| " + mapper + " | " + std::to_string(m.of.size()) + " | " + fixed(m.p6 / px, 1) + " | " + fixed(m.i486 / px, 1) + " | " +
+             fixed(m.i486 / m.p6, 3) + " | " + fixed(*std::min_element(m.of.begin(), m.of.end()), 3) + " | " +
+             fixed(*std::max_element(m.of.begin(), m.of.end()), 3) + " |\n";
+    }
+    return t;
 }
 
 namespace {
@@ -459,6 +487,13 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
 
     write_whole_scenes(out, rows);
     write_outer_loops(out, rows);
+    const std::string isa = isa_table(rows);
+    out << "\n## The 486's build beside the P6's\n\n"
+        << "The kernel's C++ is built twice, for the 486 and for the P6 (CMOV, FCOMI), and runs the P6's where CPUID reports CMOV "
+           "(docs/platform.md, \"The CPU\"). The bench runs the P6's (QEMU's default CPU), then boots again with `isa=i486` and draws "
+           "every single mapper's rows and auto's at each scene's budget with the 486's: drawing instructions a pixel over all the "
+           "scenes, their ratio, and the least and the most ratio of a scene. The pictures are the same.\n\n"
+        << (isa.empty() ? std::string("(not measured)\n") : isa);
 
     // the classics' published cycles beside our instruction counts, on the scene each drew most of
     out << "\n## The classics' published figures beside ours\n\n"

@@ -52,6 +52,9 @@ struct TradeRow {
     // below 0: not computed (auto's rows: every polygon proven within the budget by its choice)
     double max_bound = -1;
     bool bound_exact = false;
+    // The drawing's ticks with the 486's build of the kernel's C++ (booted isa=i486, docs/platform.md)
+    // on the same frames: every single mapper's row and auto's at the scene's budget; 0: not measured
+    uint64_t draw_i486 = 0;
 
     bool draws_everything() const { return rejected == 0 && pixels > 0; }
     double per_pixel(uint64_t t) const { return pixels ? double(t) / double(pixels) : 0.0; }
@@ -106,6 +109,10 @@ const TradeRow* fastest_within(const std::vector<TradeRow>& rows, const TradeRow
 std::string scene_table(const std::vector<TradeRow>& rows, const std::string& scene);
 std::string same_work_table(const std::vector<TradeRow>& rows, const std::string& scene);
 std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only);
+
+// The rows measured with the 486's build beside the P6's (draw_i486), a line a mapper: drawing
+// instructions a pixel of each over all the scenes, their ratio, and the least and most of a scene's.
+std::string isa_table(const std::vector<TradeRow>& rows);
 
 // build/report/trade.md: per scene, a table sorted by speed; the mappers that cannot draw it; the
 // classics' published figures beside ours.

@@ -51,12 +51,13 @@ std::string generated_block(const std::string& name, const std::vector<TradeRow>
     else if (name == "auto") s = auto_rows(rows, false);
     else if (name == "auto at scene budgets") s = auto_rows(rows, true);
     else if (name == "choices") s = choices_list(rows);
+    else if (name == "isa") s = isa_table(rows);
     else if (name.rfind("scene ", 0) == 0) {
         bool known = false;
         for (const TradeRow& r : rows) known = known || r.scene == scene_of("scene ");
         if (known) s = scene_table(rows, scene_of("scene "));
     } else if (name.rfind("same-work ", 0) == 0) s = same_work_table(rows, scene_of("same-work "));
-    else throw HarnessError("unknown generated block '" + name + "' (headline, scene S, same-work S, auto, auto at scene budgets, choices)");
+    else throw HarnessError("unknown generated block '" + name + "' (headline, scene S, same-work S, auto, auto at scene budgets, choices, isa)");
     if (s.empty()) throw HarnessError("the bench's rows cannot fill the block '" + name + "'");
     return s;
 }

@@ -3,7 +3,8 @@
 // and 3D frames drawn with several mappers and surfaces, each page read back over the serial line
 // and compared with the host's picture (mode 13h's whole, the others by their CRC-32); every NASM
 // loop against its twin, the VGA ones in Bochs's video memory. Bochs has no QMP: the pages come
-// back by `readback` alone.
+// back by `readback` alone. All of it twice: on Bochs's default CPU (a P6: the P6 build) and on its
+// Pentium model (a P5 without CMOV: the 486's build).
 #include "tests/system/system.h"
 
 #include "qemu/accuracy/measure.h"
@@ -18,8 +19,9 @@ void expect_page(Session& s, int page, const IndexImage& want, const std::string
     if (s.readback_crc(page) != crc32_of(want)) ADD_FAILURE() << what << ": " << compare(s.readback(page), want).summary();
 }
 
-SessionOptions bochs_options() {
+SessionOptions bochs_options(const std::string& cpu) {
     SessionOptions o = options_for_this_test();
+    o.cpu = cpu;
     o.emulator = Emulator::Bochs;
     o.medium = BootMedium::Cdrom;
     o.boot_timeout = std::chrono::seconds(180);
@@ -27,9 +29,13 @@ SessionOptions bochs_options() {
     return o;
 }
 
-TEST(Bochs, BootsTheIsoAndDrawsWhatQemuAndTheHostDraw) {
-    Session s(bochs_options());
+void boots_the_iso_and_draws(const std::string& cpu) {
+    Session s(bochs_options(cpu));
     const json& b = s.boot_line();
+    EXPECT_EQ(b["isa"], cpu == "pentium" ? "i486" : "p6") << b.dump();
+    if (cpu == "pentium") {
+        EXPECT_EQ(b["cpu_class"], "Pentium (P5)");
+    }
     EXPECT_EQ(b["boot"], "demo") << "GRUB's default entry";
     EXPECT_GT(b["modules"].get<int>(), 0) << "the demo scenes as Multiboot modules";
     EXPECT_TRUE(b["keyboard"]["irq"].get<bool>()) << b.dump();
@@ -80,5 +86,8 @@ TEST(Bochs, BootsTheIsoAndDrawsWhatQemuAndTheHostDraw) {
         page = (page + 1) % 3;
     }
 }
+
+TEST(Bochs, BootsTheIsoAndDrawsWhatQemuAndTheHostDraw) { boots_the_iso_and_draws(""); }
+TEST(Bochs, OnItsPentiumModelToo) { boots_the_iso_and_draws("pentium"); }
 
 }  // namespace

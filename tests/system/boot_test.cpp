@@ -15,9 +15,17 @@ void expect_hello(Session& s, const std::string& mode) {
     EXPECT_EQ(hello["version"], s.boot_line()["version"]);
     EXPECT_FALSE(hello["cpu"]["vendor"].get<std::string>().empty());
     auto features = hello["cpu"]["features"];
-    EXPECT_NE(std::find(features.begin(), features.end(), "tsc"), features.end()) << features;
+    const Machine m = machine();
+    EXPECT_EQ(std::find(features.begin(), features.end(), "tsc") != features.end(), m.has_tsc()) << features;
     EXPECT_NE(std::find(features.begin(), features.end(), "fpu"), features.end()) << features;
-    EXPECT_GT(hello["tsc_hz"].get<uint64_t>(), 1'000'000u);  // calibrated against the PIT
+    if (m.has_tsc()) {
+        EXPECT_GT(hello["tsc_hz"].get<uint64_t>(), 1'000'000u);  // calibrated against the PIT
+    } else {
+        EXPECT_EQ(hello["tsc_hz"], 0u);
+    }
+    EXPECT_EQ(hello["clock"]["name"], m.has_tsc() ? "tsc" : "pit");
+    EXPECT_EQ(hello["cpu_class"], m.cpu_class());
+    EXPECT_EQ(hello["isa"], m.isa());
     EXPECT_EQ(hello["mode"], mode);
 }
 

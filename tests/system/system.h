@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
@@ -18,13 +19,35 @@ namespace systest {
 
 using namespace harness;
 
-// Session options whose run directory (build/runs/...) is named after the current test.
+// The machine QEMU models for this run of the tests: its default (a P6), or the CPU tier's, named by
+// MODEXLAB_TEST_CPU (QEMU's -cpu: 486, pentium) and MODEXLAB_TEST_MEMORY_MIB (tests/run, make test).
+struct Machine {
+    std::string cpu;     // empty: QEMU's default
+    int memory_mib = 0;  // 0: the harness's default
+    bool has_tsc() const { return cpu != "486"; }
+    bool has_cmov() const { return cpu.empty(); }
+    std::string cpu_class() const { return cpu == "486" ? "486" : cpu == "pentium" ? "Pentium (P5)" : "P6 or later"; }
+    std::string isa() const { return has_cmov() ? "p6" : "i486"; }
+};
+inline Machine machine() {
+    Machine m;
+    if (const char* c = std::getenv("MODEXLAB_TEST_CPU")) m.cpu = c;
+    if (const char* mem = std::getenv("MODEXLAB_TEST_MEMORY_MIB")) m.memory_mib = std::atoi(mem);
+    return m;
+}
+
+// Session options whose run directory (build/runs/...) is named after the current test, on this
+// run's machine (the CPU tier's name added).
 inline SessionOptions options_for_this_test() {
     const testing::TestInfo* t = testing::UnitTest::GetInstance()->current_test_info();
     SessionOptions o;
     o.name = std::string(t->test_suite_name()) + "." + t->name();
     for (char& c : o.name)
         if (c == '/') c = '_';
+    const Machine m = machine();
+    o.cpu = m.cpu, o.memory_mib = m.memory_mib;
+    if (!m.cpu.empty()) o.name += ".cpu-" + m.cpu;
+    if (m.memory_mib) o.name += ".m" + std::to_string(m.memory_mib);
     return o;
 }
 

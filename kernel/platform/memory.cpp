@@ -1,0 +1,72 @@
+// The pool's RAM (memory.h).
+#include "kernel/platform/memory.h"
+
+namespace memory {
+
+namespace {
+
+constexpr uint64_t LOW = 0x100000, HIGH = 0x100000000ull;  // 1 MiB .. 4 GiB: below it BIOS and VGA, above it unmapped
+
+uint64_t string_end(uint32_t at) {
+    const char* s = reinterpret_cast<const char*>(uintptr_t(at));
+    uint64_t n = 0;
+    while (s[n]) ++n;
+    return uint64_t(at) + n + 1;
+}
+
+// The largest part of [lo, hi) clear of every kept range, into *best where it is larger.
+void consider(uint64_t lo, uint64_t hi, const Range* kept, int count, Range* best) {
+    if (lo < LOW) lo = LOW;
+    if (hi > HIGH) hi = HIGH;
+    while (lo < hi) {
+        bool inside = false;  // in a kept range: past it
+        for (int i = 0; i < count && !inside; ++i)
+            if (kept[i].start <= lo && lo < kept[i].end) lo = kept[i].end, inside = true;
+        if (inside) continue;
+        uint64_t end = hi;  // free up to the nearest kept range above
+        for (int i = 0; i < count; ++i)
+            if (kept[i].start > lo && kept[i].start < end) end = kept[i].start;
+        if (end - lo > best->bytes()) *best = Range{lo, end};
+        lo = end;
+    }
+}
+
+}  // namespace
+
+int kept(const multiboot::Info* info, uint64_t image_start, uint64_t image_end, Range* out) {
+    int n = 0;
+    auto add = [&](uint64_t start, uint64_t end) {
+        if (n < MAX_KEPT && end > start) out[n++] = Range{start, end};
+    };
+    add(image_start, image_end);
+    const uint64_t at = uintptr_t(info);
+    add(at, at + sizeof(multiboot::Info) + sizeof(multiboot::FramebufferInfo));
+    if (info->flags & multiboot::INFO_CMDLINE) add(info->cmdline, string_end(info->cmdline));
+    if (info->flags & multiboot::INFO_LOADER_NAME) add(info->boot_loader_name, string_end(info->boot_loader_name));
+    if (info->flags & multiboot::INFO_MEMORY_MAP) add(info->mmap_addr, uint64_t(info->mmap_addr) + info->mmap_length);
+    if (info->flags & multiboot::INFO_MODULES) {
+        const auto* mods = reinterpret_cast<const multiboot::Module*>(uintptr_t(info->mods_addr));
+        add(info->mods_addr, uint64_t(info->mods_addr) + uint64_t(info->mods_count) * sizeof(multiboot::Module));
+        for (uint32_t i = 0; i < info->mods_count; ++i) {
+            add(mods[i].mod_start, mods[i].mod_end);
+            if (mods[i].string) add(mods[i].string, string_end(mods[i].string));
+        }
+    }
+    return n;
+}
+
+Range largest_free(const multiboot::Info* info, const Range* kept, int count) {
+    Range best;
+    if (info->flags & multiboot::INFO_MEMORY_MAP) {
+        for (uint32_t off = 0; off + sizeof(multiboot::MemoryRegion) <= info->mmap_length;) {
+            const auto* r = reinterpret_cast<const multiboot::MemoryRegion*>(uintptr_t(info->mmap_addr) + off);
+            if (multiboot::usable(r->type)) consider(r->addr, r->addr + r->len, kept, count, &best);
+            off += r->size + 4;
+        }
+    } else if (info->flags & multiboot::INFO_MEMORY) {
+        consider(LOW, LOW + uint64_t(info->mem_upper) * 1024, kept, count, &best);
+    }
+    return best;
+}
+
+}  // namespace memory

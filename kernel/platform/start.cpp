@@ -1,0 +1,85 @@
+// kernel_start, from boot/entry.asm: COM1 up; the loader and the RAM checked, the pool placed in
+// the largest stretch of RAM the loader reports (memory.h), a machine without enough refused on
+// COM1 and on the screen; then the build of the C++ for this CPU (isa.h: the boot option isa=i486
+// keeps the 486's on a P6), its constructors, its kernel_main.
+#include <stdint.h>
+
+#include "drivers/serial.h"
+#include "kernel/lib/fmt.h"
+#include "kernel/platform/guard.h"
+#include "kernel/platform/isa.h"
+#include "kernel/platform/memory.h"
+#include "kernel/platform/multiboot.h"
+#include "kernel/platform/panic.h"
+
+extern "C" {
+using Constructor = void (*)();
+extern Constructor __i486_init_array_start[], __i486_init_array_end[];
+extern Constructor __p6_init_array_start[], __p6_init_array_end[];
+extern uint8_t __kernel_start[], __kernel_end[];
+[[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* info);
+[[noreturn]] void p6_kernel_main(uint32_t magic, const multiboot::Info* info) asm("p6.kernel_main");
+}
+
+namespace {
+
+// The pool the kernel needs at least: the buffers its constructors take (the 3D scene and its
+// frame, the texture set and the frame scratch, the screen-space scene's, the upload space, the
+// selftest's) and the largest demo scene's textures with their copies (docs/platform.md, "Memory").
+constexpr uint32_t MIN_POOL_BYTES = 48u << 20;
+
+// Whether the command line holds the word `word` (words end at blanks).
+bool has_word(const char* line, const char* word) {
+    for (const char* p = line; p && *p;) {
+        while (*p == ' ') ++p;
+        const char* w = word;
+        const char* q = p;
+        while (*w && *q == *w) ++q, ++w;
+        if (!*w && (*q == ' ' || *q == 0)) return true;
+        while (*p && *p != ' ') ++p;
+    }
+    return false;
+}
+
+uint32_t mib(uint64_t bytes) { return uint32_t(bytes >> 20); }
+
+void place_pool(const multiboot::Info* info) {
+    const uint64_t image_start = uintptr_t(__kernel_start), image_end = uintptr_t(__kernel_end);
+    const uint64_t missing = multiboot::first_not_ram(info, image_start, image_end);
+    if (missing < image_end) {
+        lib::Fmt m;
+        m.s("not enough memory: the kernel's image needs RAM from ").hex(uint32_t(image_start)).s(" to ").hex(uint32_t(image_end));
+        m.s(", the loader reports none at ").hex(uint32_t(missing));
+        panic(m.c_str());
+    }
+    memory::Range kept[memory::MAX_KEPT];
+    const int count = memory::kept(info, image_start, image_end, kept);
+    const memory::Range pool = memory::largest_free(info, kept, count);
+    if (pool.bytes() < MIN_POOL_BYTES) {
+        lib::Fmt m;
+        m.s("not enough memory: modexlab needs ").u(mib(MIN_POOL_BYTES)).s(" MiB of free RAM for its buffers beside its ");
+        m.u(mib(image_end - image_start) + 1).s(" MiB image; the largest stretch the loader reports is ").u(mib(pool.bytes()));
+        m.s(" MiB (").hex(uint32_t(pool.start)).s("..").hex(uint32_t(pool.end)).s(")");
+        panic(m.c_str());
+    }
+    guard::place(uint32_t(pool.start), uint32_t(pool.end));
+}
+
+}  // namespace
+
+extern "C" [[noreturn]] void kernel_start(uint32_t magic, const multiboot::Info* info) {
+    serial::init();
+    if (magic != multiboot::BOOTLOADER_MAGIC) {
+        lib::Fmt m;
+        m.s("bad multiboot magic ").hex(magic).s(" (expected ").hex(multiboot::BOOTLOADER_MAGIC).s("): not loaded by a Multiboot loader");
+        panic(m.c_str());
+    }
+    place_pool(info);
+    const char* cmdline = (info->flags & multiboot::INFO_CMDLINE) ? reinterpret_cast<const char*>(uintptr_t(info->cmdline)) : nullptr;
+    isa::use(has_word(cmdline, "isa=i486") ? isa::Path::I486 : isa::for_this_cpu());
+    const bool p6 = isa::in_use() == isa::Path::P6;
+    for (Constructor* c = p6 ? __p6_init_array_start : __i486_init_array_start; c < (p6 ? __p6_init_array_end : __i486_init_array_end); ++c)
+        (*c)();
+    if (p6) p6_kernel_main(magic, info);
+    kernel_main(magic, info);
+}

@@ -1,0 +1,42 @@
+// The machines of the era: the boot line names the CPU's class, the clock and the build of the C++
+// that runs, as the machine QEMU models has them (the CPU tier: tests/system/system.h, Machine),
+// and isa=i486 keeps the 486's build on a P6.
+#include "tests/system/system.h"
+
+namespace {
+
+using namespace systest;
+
+TEST(Cpu, TheBootLineNamesTheCpuTheClockAndTheBuild) {
+    const Machine m = machine();
+    Session s(options_for_this_test());
+    const json& boot = s.boot_line();
+    EXPECT_EQ(boot["cpu_class"], m.cpu_class());
+    EXPECT_EQ(boot["isa"], m.isa());
+    EXPECT_EQ(boot["cpu_isa"], m.isa());
+    EXPECT_EQ(boot["clock"], m.has_tsc() ? "tsc" : "pit");
+    if (!m.has_tsc()) {
+        EXPECT_EQ(boot["clock_hz"], 1193182u);
+        EXPECT_EQ(boot["tsc_hz"], 0u);
+    }
+    s.ok("mode modex");
+    s.ok("load cube.scene");
+    const json r = s.ok("frame 37 exact 0 linear");
+    EXPECT_GT(r["ticks"].get<uint64_t>(), 0u) << "the frame is timed by the machine's clock";
+    s.ok("exit 0");
+    s.wait_exit();
+}
+
+TEST(Cpu, Isa486KeepsThe486BuildOnAP6) {
+    const Machine m = machine();
+    if (!m.has_cmov()) GTEST_SKIP() << "this CPU runs the 486's build anyway";
+    SessionOptions o = options_for_this_test();
+    o.append += " isa=i486";
+    Session s(o);
+    EXPECT_EQ(s.boot_line()["isa"], "i486");
+    EXPECT_EQ(s.boot_line()["cpu_isa"], "p6");
+    EXPECT_TRUE(s.boot_line()["ignored_options"].empty()) << s.boot_line()["ignored_options"];
+    EXPECT_EQ(s.ok("hello")["isa"], "i486");
+}
+
+}  // namespace
