@@ -40,6 +40,9 @@ align 16
 stack_bottom:
     resb STACK_BYTES
 stack_top:
+fpu_status:     resw 1                  ; (word-aligned: stack_top is)
+global fpu_present
+fpu_present:    resb 1                  ; 1 where the probe found an FPU
 
 section .text
 global _start
@@ -76,13 +79,21 @@ _start:
     push ebx
 
     ; x87: CR0.EM off (no emulation), MP and NE on (native #MF reporting), then a clean FPU state
-    ; with 53-bit precision: double arithmetic then rounds exactly as the host's SSE2 does
+    ; with 53-bit precision: double arithmetic then rounds exactly as the host's SSE2 does. Whether
+    ; there is an FPU: FNINIT and FNSTSW (no-wait forms, safe without one) leave a status of 0 only
+    ; where there is one (fpu_present: kernel_start refuses a PC without)
     mov eax, cr0
     and eax, ~(1 << 2)
     or eax, (1 << 1) | (1 << 5)
     mov cr0, eax
     fninit
+    mov word [fpu_status], 0x5A5A
+    fnstsw [fpu_status]
+    cmp word [fpu_status], 0
+    jne .no_fpu
     fldcw [fpu_control]
+    mov byte [fpu_present], 1
+.no_fpu:
 
     ; the C++ built once's global constructors, in link order (kernel_start runs the others)
     mov esi, __init_array_start

@@ -1,9 +1,10 @@
-// kernel_start, from boot/entry.asm: COM1 up; the loader and the RAM checked, the pool placed in
-// the largest stretch of RAM the loader reports (memory.h), a machine without enough refused on
-// COM1 and on the screen; then the build of the C++ for this CPU (isa.h: the boot option isa=i486
-// keeps the 486's on a P6), its constructors, its kernel_main.
+// kernel_start, from boot/entry.asm: COM1 up; the loader, the FPU and the RAM checked (a PC
+// without enough refused on COM1 and on the screen), the pool placed in the largest stretch of RAM
+// the loader reports (memory.h); then the build of the C++ for this CPU (isa.h: the boot option
+// isa=i486 keeps the 486's on a P6), its constructors, its kernel_main.
 #include <stdint.h>
 
+#include "drivers/cpu.h"
 #include "drivers/serial.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/platform/guard.h"
@@ -17,6 +18,7 @@ using Constructor = void (*)();
 extern Constructor __i486_init_array_start[], __i486_init_array_end[];
 extern Constructor __p6_init_array_start[], __p6_init_array_end[];
 extern uint8_t __kernel_start[], __kernel_end[];
+extern uint8_t fpu_present;  // boot/entry.asm's probe
 [[noreturn]] void kernel_main(uint32_t magic, const multiboot::Info* info);
 [[noreturn]] void p6_kernel_main(uint32_t magic, const multiboot::Info* info) asm("p6.kernel_main");
 }
@@ -74,6 +76,12 @@ extern "C" [[noreturn]] void kernel_start(uint32_t magic, const multiboot::Info*
         m.s("bad multiboot magic ").hex(magic).s(" (expected ").hex(multiboot::BOOTLOADER_MAGIC).s("): not loaded by a Multiboot loader");
         panic(m.c_str());
     }
+    // every mapper's setup and spans, the geometry and the exact reference compute in doubles on
+    // the x87 (docs/platform.md, "The CPU"); CPUID's FPU flag counts too, where there is CPUID
+    const cpu::Info id = cpu::detect();
+    if (!fpu_present || (id.has_cpuid && !(id.features_edx & 1)))
+        panic("no FPU (a 486SX, or a 386 without a 387): modexlab's geometry, its exact reference and every mapper compute in "
+              "double precision on the x87, which this PC does not have");
     place_pool(info);
     const char* cmdline = (info->flags & multiboot::INFO_CMDLINE) ? reinterpret_cast<const char*>(uintptr_t(info->cmdline)) : nullptr;
     isa::use(has_word(cmdline, "isa=i486") ? isa::Path::I486 : isa::for_this_cpu());

@@ -1,6 +1,6 @@
 // The machines of the era: the boot line names the CPU's class, the clock and the build of the C++
 // that runs, as the machine QEMU models has them (the CPU tier: tests/system/system.h, Machine),
-// and isa=i486 keeps the 486's build on a P6.
+// and isa=i486 keeps the 486's build on a P6; a PC without an FPU is refused, saying why.
 #include "tests/system/system.h"
 
 namespace {
@@ -37,6 +37,19 @@ TEST(Cpu, Isa486KeepsThe486BuildOnAP6) {
     EXPECT_EQ(s.boot_line()["cpu_isa"], "p6");
     EXPECT_TRUE(s.boot_line()["ignored_options"].empty()) << s.boot_line()["ignored_options"];
     EXPECT_EQ(s.ok("hello")["isa"], "i486");
+}
+
+// A 486SX (QEMU's 486 without its FPU flag: TCG runs x87 code all the same, so the flag is what
+// says so here) is told why on COM1 before the kernel halts.
+TEST(Cpu, WithoutAnFpuItSaysWhyAndHalts) {
+    SessionOptions o = options_for_this_test();
+    o.cpu = "486,-fpu";
+    try {
+        Session s(o);
+        FAIL() << "booted without an FPU: " << s.boot_line().dump();
+    } catch (const HarnessError& e) {
+        EXPECT_NE(std::string(e.what()).find("no FPU (a 486SX, or a 386 without a 387)"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
