@@ -33,6 +33,7 @@ volatile uint32_t g_wraps = 0;  // channel 0's periods, counted by IRQ 0
 uint64_t g_last = 0;            // the PIT clock's last value (it never goes back)
 Clock g_clock = Clock::Tsc;
 uint64_t g_tsc_hz = 0;
+uint64_t g_cpu_hz = 0;
 uint32_t g_read_cost = 0;
 
 // Counts TSC ticks over a PIT one-shot of about 50 ms; 0 when the PIT never fired.
@@ -44,6 +45,17 @@ uint64_t calibrate_tsc_hz() {
         if (spins > (1u << 26)) return 0;
     uint64_t t1 = detail::rdtsc();
     return (t1 - t0) * PIT_HZ / CALIBRATION_COUNT;
+}
+
+// The 486's clock: 2^20 iterations of DEC and a taken JNZ (4 clocks each on a 486) timed by the
+// PIT clock; 0 when the PIT did not move.
+uint64_t measure_486_hz() {
+    constexpr uint32_t ITERATIONS = 1u << 20, CLOCKS_EACH = 4;
+    const uint64_t t0 = detail::pit_now();
+    uint32_t n = ITERATIONS;
+    asm volatile("1: decl %0\n\tjnz 1b" : "+r"(n));
+    const uint64_t ticks = detail::pit_now() - t0;
+    return ticks ? uint64_t(ITERATIONS) * CLOCKS_EACH * PIT_HZ / ticks : 0;
 }
 
 }  // namespace
@@ -78,7 +90,7 @@ uint64_t read_tsc() { return detail::rdtsc(); }
 
 Reader reader() { return g_clock == Clock::Tsc ? read_tsc : detail::pit_now; }
 
-void init(bool has_tsc) {
+void init(bool has_tsc, bool is_486) {
     g_tsc_hz = has_tsc ? calibrate_tsc_hz() : 0;
     detail::g_tsc = g_tsc_hz != 0;
     g_clock = detail::g_tsc ? Clock::Tsc : Clock::Pit;
@@ -89,6 +101,7 @@ void init(bool has_tsc) {
         pic::unmask(0);
         asm volatile("sti" : : : "memory");
     }
+    g_cpu_hz = g_clock == Clock::Tsc ? g_tsc_hz : is_486 ? measure_486_hz() : 0;
     // the least of a few runs of back-to-back reads (least: an interrupt only adds)
     uint64_t least = ~0ull;
     for (int run = 0; run < 4; ++run) {
@@ -104,10 +117,15 @@ Clock clock() { return g_clock; }
 const char* clock_name(Clock c) { return c == Clock::Tsc ? "tsc" : "pit"; }
 uint64_t hz() { return g_clock == Clock::Tsc ? g_tsc_hz : PIT_HZ; }
 uint64_t tsc_hz() { return g_tsc_hz; }
+uint64_t cpu_hz() { return g_cpu_hz; }
+const char* cpu_hz_from() { return !g_cpu_hz ? "" : g_clock == Clock::Tsc ? "tsc" : "486 loop"; }
 uint32_t read_cost() { return g_read_cost; }
-// (a PIT tick is 838.0953 ns: 8380.953 tenths)
-uint64_t tenths_shown(uint64_t ticks) { return g_clock == Clock::Tsc ? ticks * 10 : ticks * 8380953 / 1000; }
-const char* unit_shown() { return g_clock == Clock::Tsc ? "cycles" : "ns"; }
+// (a PIT tick is 838.0953 ns: 8380.953 tenths; in cycles, cpu_hz / PIT_HZ of them)
+uint64_t tenths_shown(uint64_t ticks) {
+    if (g_clock == Clock::Tsc) return ticks * 10;
+    return g_cpu_hz ? uint64_t(double(ticks) * 10.0 * double(g_cpu_hz) / PIT_HZ) : ticks * 8380953 / 1000;
+}
+const char* unit_shown() { return g_clock == Clock::Tsc || g_cpu_hz ? "cycles" : "ns"; }
 
 void pit_oneshot_start(uint16_t count) {
     uint8_t b = io::inb(PORT_B);

@@ -12,14 +12,20 @@ constexpr uint32_t PIT_HZ = 1193182;
 enum class Clock : uint8_t { Tsc, Pit };
 
 // Picks the clock (the TSC only where `has_tsc`), calibrates it and measures what one read of it
-// costs. The PIT clock unmasks IRQ 0 and turns interrupts on.
-void init(bool has_tsc);
+// costs. The PIT clock unmasks IRQ 0 and turns interrupts on; on a 486 (`is_486`) it measures the
+// CPU's clock too (cpu_hz).
+void init(bool has_tsc, bool is_486);
 Clock clock();
 const char* clock_name(Clock c);  // "tsc", "pit"
 uint64_t hz();                    // the clock's ticks a second (the TSC's measured rate, or PIT_HZ)
 uint64_t tsc_hz();                // the TSC's measured rate: the CPU clock where it has one; else 0
+// The CPU's clock where it is known: the TSC's rate, or on the PIT clock a 486's, measured by a loop
+// of DEC and a taken JNZ (1 + 3 clocks an iteration on a 486); 0 where neither applies.
+uint64_t cpu_hz();
+const char* cpu_hz_from();        // "tsc", "486 loop", "" (unknown)
 uint32_t read_cost();             // the ticks one read adds to an interval (the Zen timer's overhead)
-// Ticks in the unit figures are shown in, in tenths: TSC cycles, or nanoseconds on the PIT clock.
+// Ticks in the unit figures are shown in, in tenths: cycles where the CPU's clock is known (cpu_hz),
+// else nanoseconds.
 uint64_t tenths_shown(uint64_t ticks);
 const char* unit_shown();         // "cycles", "ns"
 

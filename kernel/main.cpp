@@ -97,7 +97,7 @@ extern "C" [[noreturn]] void kernel_main(uint32_t /*magic: kernel_start checked 
     BootOptions options = parse_options(ctx.cmdline);
     ctx.cpu = cpu::detect();
     const bool guard_pages = guard::init(ctx.cpu.features_edx);
-    timer::init(cpu::has_tsc(ctx.cpu) && !options.pit_clock);  // (the PIT clock turns interrupts on: IRQ 0 counts its wraps)
+    timer::init(cpu::has_tsc(ctx.cpu) && !options.pit_clock, !ctx.cpu.has_cpuid || ctx.cpu.family == 4);  // (the PIT clock turns interrupts on: IRQ 0 counts its wraps)
     ctx.tsc_hz = timer::tsc_hz();
     const keyboard::Status keys = keyboard::init();  // (interrupts on from here: IRQ 1 unmasked)
     serial::enable_wakeup();                         // (and IRQ 4, which the UART raises only while a reader waits)
@@ -125,6 +125,7 @@ extern "C" [[noreturn]] void kernel_main(uint32_t /*magic: kernel_start checked 
     boot.str("boot", options.action == BootAction::Demo ? "demo" : "serve").u32("interval_ms", options.interval_ms);
     boot.boolean("bochs_vbe_cleared", vbe_found).u64("tsc_hz", ctx.tsc_hz);
     boot.str("clock", timer::clock_name(timer::clock())).u64("clock_hz", timer::hz()).u32("clock_read_cost", timer::read_cost());
+    boot.u64("cpu_hz", timer::cpu_hz()).str("cpu_hz_from", timer::cpu_hz_from());
     boot.str("cpu_class", cpu::class_name(ctx.cpu)).str("isa", isa::name(isa::in_use())).str("cpu_isa", isa::name(isa::for_this_cpu()));
     boot.u32("files", uint32_t(file_table::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
     boot.u32("memory_kib", (info->flags & multiboot::INFO_MEMORY) ? info->mem_upper + 1024 : 0);

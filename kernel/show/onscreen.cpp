@@ -92,6 +92,7 @@ void build_csv(const Setup& s) {
     c.s(s.cpu->brand);
     c.raw(",");
     c.s(timer::clock_name(timer::clock())), c.raw(","), c.u64(timer::hz()), c.raw(","), c.u64(s.tsc_hz), c.raw(",");
+    c.u64(timer::cpu_hz()), c.raw(",");
     c.s(isa::name(isa::in_use())), c.raw(","), c.u64(s.frames), c.raw("\n");
     c.raw("scene,mapper,pixels,polygons,inner_ticks,frame_ticks,max_footprint_error\n");
     for (int i = 0; i < g_row_count; ++i) {
@@ -153,6 +154,7 @@ void machine_page(const Setup& s, Page* p) {
     lib::Fmt d;
     d.s("clock  ");
     if (timer::clock() == timer::Clock::Tsc) d.s("TSC ").tenths(s.tsc_hz / 100000).s(" MHz (vs PIT)");
+    else if (timer::cpu_hz()) d.s("PIT (no TSC), CPU ").tenths(timer::cpu_hz() / 100000).s(" MHz");
     else d.s("PIT 1.193 MHz (no TSC): ns");
     p->add(d.c_str());
     lib::Fmt i;
@@ -162,7 +164,9 @@ void machine_page(const Setup& s, Page* p) {
     e.s("run    ").u(uint32_t(s.scene_count)).s(" scenes x ").u(uint32_t(raster::MAPPER_COUNT)).s(" mappers, ").u(s.frames).s(" frames");
     p->add(e.c_str());
     p->add("");
-    p->add(timer::clock() == timer::Clock::Tsc ? "A page a scene: TSC cycles a pixel of" : "A page a scene: nanoseconds a pixel of");
+    p->add(timer::clock() == timer::Clock::Tsc ? "A page a scene: TSC cycles a pixel of"
+           : timer::cpu_hz()                   ? "A page a scene: cycles (PIT) a pixel of"
+                                               : "A page a scene: nanoseconds a pixel of");
     p->add("the inner loops and of the whole frame,");
     p->add("fastest first, and the footprint error");
     p->add("make bench measured on 8 frames (the");
@@ -331,7 +335,7 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
         j.begin_object("cpu").str("vendor", s.cpu->has_cpuid ? s.cpu->vendor : "no CPUID").u32("family", s.cpu->family);
         j.u32("model", s.cpu->model).u32("stepping", s.cpu->stepping).str("brand", s.cpu->brand).end_object();
         j.str("cpu_class", cpu::class_name(*s.cpu)).str("isa", isa::name(isa::in_use()));
-        j.str("clock", timer::clock_name(timer::clock())).u64("clock_hz", timer::hz());
+        j.str("clock", timer::clock_name(timer::clock())).u64("clock_hz", timer::hz()).u64("cpu_hz", timer::cpu_hz());
         j.u64("tsc_hz", s.tsc_hz).u32("csv_bytes", uint32_t(g_csv_length)).u32("qr_codes", uint32_t(g_part_count)).u32("pages", uint32_t(page_count(s))).end();
     }
     int k = 0;

@@ -39,6 +39,18 @@ TEST(Cpu, Isa486KeepsThe486BuildOnAP6) {
     EXPECT_EQ(s.ok("hello")["isa"], "i486");
 }
 
+// A 486 has no TSC: its clock is measured by a loop of known clocks against the PIT. Under icount
+// (one instruction a nanosecond) the loop's DEC and JNZ, 4 clocks on a 486, take 2 ns: 2 GHz.
+TEST(Cpu, A486sClockIsMeasuredAgainstThePit) {
+    SessionOptions o = options_for_this_test();
+    o.cpu = "486";
+    o.icount = true;
+    Session s(o);
+    EXPECT_EQ(s.boot_line()["clock"], "pit");
+    EXPECT_EQ(s.boot_line()["cpu_hz_from"], "486 loop");
+    EXPECT_NEAR(s.boot_line()["cpu_hz"].get<double>(), 2e9, 2e7) << s.boot_line().dump();
+}
+
 // A 486SX (QEMU's 486 without its FPU flag: TCG runs x87 code all the same, so the flag is what
 // says so here) is told why on COM1 before the kernel halts.
 TEST(Cpu, WithoutAnFpuItSaysWhyAndHalts) {
