@@ -5,7 +5,8 @@ namespace memory {
 
 namespace {
 
-constexpr uint64_t LOW = 0x100000, HIGH = 0x100000000ull;  // 1 MiB .. 4 GiB: below it BIOS and VGA, above it unmapped
+// 1 MiB .. the last page below 4 GiB: below it BIOS and VGA, above it what 32 bits cannot address
+constexpr uint64_t LOW = 0x100000, HIGH = 0xFFFFF000ull;
 
 uint64_t string_end(uint32_t at) {
     const char* s = reinterpret_cast<const char*>(uintptr_t(at));
