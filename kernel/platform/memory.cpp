@@ -48,10 +48,17 @@ int kept(const multiboot::Info* info, uint64_t image_start, uint64_t image_end, 
     if (info->flags & multiboot::INFO_MODULES) {
         const auto* mods = reinterpret_cast<const multiboot::Module*>(uintptr_t(info->mods_addr));
         add(info->mods_addr, uint64_t(info->mods_addr) + uint64_t(info->mods_count) * sizeof(multiboot::Module));
+        Range modules{~0ull, 0}, names{~0ull, 0};
+        auto widen = [](Range& r, uint64_t start, uint64_t end) {
+            if (start < r.start) r.start = start;
+            if (end > r.end) r.end = end;
+        };
         for (uint32_t i = 0; i < info->mods_count; ++i) {
-            add(mods[i].mod_start, mods[i].mod_end);
-            if (mods[i].string) add(mods[i].string, string_end(mods[i].string));
+            widen(modules, mods[i].mod_start, mods[i].mod_end);
+            if (mods[i].string) widen(names, mods[i].string, string_end(mods[i].string));
         }
+        add(modules.start, modules.end);
+        add(names.start, names.end);
     }
     return n;
 }

@@ -14,9 +14,10 @@ struct Range {
     uint64_t bytes() const { return end > start ? end - start : 0; }
 };
 
-constexpr int MAX_KEPT = 40;  // the image, the loader's structures and up to 32 modules
+constexpr int MAX_KEPT = 8;  // the image, five of the loader's structures, the modules, their names
 
-// What must stay, the kernel's image [image_start, image_end) first; returns the count.
+// What must stay, the kernel's image [image_start, image_end) first; returns the count. The modules
+// count as one range from the lowest start to the highest end, their names as another.
 int kept(const multiboot::Info* info, uint64_t image_start, uint64_t image_end, Range* out);
 // The largest stretch of RAM holding none of `kept`; empty when there is none.
 Range largest_free(const multiboot::Info* info, const Range* kept, int count);
