@@ -98,7 +98,6 @@ extern "C" [[noreturn]] void kernel_main(uint32_t /*magic: kernel_start checked 
     ctx.cpu = cpu::detect();
     const bool guard_pages = guard::init(ctx.cpu.features_edx);
     timer::init(cpu::has_tsc(ctx.cpu) && !options.pit_clock, !ctx.cpu.has_cpuid || ctx.cpu.family == 4);  // (the PIT clock turns interrupts on: IRQ 0 counts its wraps)
-    ctx.tsc_hz = timer::tsc_hz();
     const keyboard::Status keys = keyboard::init();  // (interrupts on from here: IRQ 1 unmasked)
     serial::enable_wakeup();                         // (and IRQ 4, which the UART raises only while a reader waits)
     // a UEFI loader's framebuffer (RGB, by the Multiboot header's video fields): drawn into, the VGA
@@ -123,10 +122,10 @@ extern "C" [[noreturn]] void kernel_main(uint32_t /*magic: kernel_start checked 
     lib::JsonLine boot(serial::sink());
     boot.str("event", "boot").str("version", MODEXLAB_VERSION).str("cmdline", ctx.cmdline);
     boot.str("boot", options.action == BootAction::Demo ? "demo" : "serve").u32("interval_ms", options.interval_ms);
-    boot.boolean("bochs_vbe_cleared", vbe_found).u64("tsc_hz", ctx.tsc_hz);
+    boot.boolean("bochs_vbe_cleared", vbe_found).u64("tsc_hz", timer::tsc_hz());
     boot.str("clock", timer::clock_name(timer::clock())).u64("clock_hz", timer::hz()).u32("clock_read_cost", timer::read_cost());
     boot.u64("cpu_hz", timer::cpu_hz()).str("cpu_hz_from", timer::cpu_hz_from());
-    boot.str("cpu_class", cpu::class_name(ctx.cpu)).str("isa", isa::name(isa::in_use())).str("cpu_isa", isa::name(isa::for_this_cpu()));
+    boot.str("cpu_class", cpu::class_name(ctx.cpu)).str("isa", isa::name(isa::in_use())).str("cpu_isa", isa::name(isa::for_cpu(ctx.cpu)));
     boot.u32("files", uint32_t(file_table::count())).u32("modules", modules).u32("modules_skipped", skipped_modules);
     boot.u32("memory_kib", (info->flags & multiboot::INFO_MEMORY) ? info->mem_upper + 1024 : 0);
     boot.begin_object("pool").hex32("start", guard::pool_start()).u32("kib", uint32_t(guard::pool_bytes() >> 10));
@@ -155,7 +154,7 @@ extern "C" [[noreturn]] void kernel_main(uint32_t /*magic: kernel_start checked 
         vga::load_palette(raster::palette(ctx.palette));
         show::Options o;
         o.interval_ms = options.interval_ms, o.patterns = options.patterns, o.scene = options.scene, o.mapper = options.mapper;
-        o.tsc_hz = ctx.tsc_hz, o.cpu = &ctx.cpu, o.bench_frames = options.bench_frames;
+        o.cpu = &ctx.cpu, o.bench_frames = options.bench_frames;
         show::run(o);
         vga::load_palette(raster::palette(ctx.palette));
     }

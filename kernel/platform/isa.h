@@ -5,13 +5,15 @@
 
 #include <stdint.h>
 
+#include "drivers/cpu.h"
+
 namespace isa {
 
 enum class Path : uint8_t { I486, P6 };
 
 Path in_use();
 void use(Path path);  // kernel_start's choice (kernel/platform/start.cpp)
-Path for_this_cpu();  // the P6 where the CPU has it, else the 486's
+Path for_cpu(const cpu::Info& info);  // the P6 where the CPU has its instructions, else the 486's
 const char* name(Path path);  // "i486", "p6"
 
 }  // namespace isa

@@ -7,6 +7,7 @@
 #include "drivers/cpu.h"
 #include "drivers/serial.h"
 #include "kernel/lib/fmt.h"
+#include "kernel/lib/words.h"
 #include "kernel/platform/guard.h"
 #include "kernel/platform/isa.h"
 #include "kernel/platform/memory.h"
@@ -30,16 +31,13 @@ namespace {
 // selftest's) and the largest demo scene's textures with their copies (docs/platform.md, "Memory").
 constexpr uint32_t MIN_POOL_BYTES = 48u << 20;
 
-// Whether the command line holds the word `word` (words end at blanks).
+// Whether the command line holds the word `word` (among its first 16, as kernel_main reads them).
 bool has_word(const char* line, const char* word) {
-    for (const char* p = line; p && *p;) {
-        while (*p == ' ') ++p;
-        const char* w = word;
-        const char* q = p;
-        while (*w && *q == *w) ++q, ++w;
-        if (!*w && (*q == ' ' || *q == 0)) return true;
-        while (*p && *p != ' ') ++p;
-    }
+    lib::StrView words[16];
+    size_t n = line ? lib::split_words(line, words, 16) : 0;
+    if (n > 16) n = 16;
+    for (size_t i = 0; i < n; ++i)
+        if (words[i].equals(word)) return true;
     return false;
 }
 
@@ -79,12 +77,12 @@ extern "C" [[noreturn]] void kernel_start(uint32_t magic, const multiboot::Info*
     // every mapper's setup and spans, the geometry and the exact reference compute in doubles on
     // the x87 (docs/platform.md, "The CPU"); CPUID's FPU flag counts too, where there is CPUID
     const cpu::Info id = cpu::detect();
-    if (!fpu_present || (id.has_cpuid && !(id.features_edx & 1)))
+    if (!fpu_present || cpu::denies_fpu(id))
         panic("no FPU (a 486SX, or a 386 without a 387): modexlab's geometry, its exact reference and every mapper compute in "
               "double precision on the x87, which this PC does not have");
     place_pool(info);
     const char* cmdline = (info->flags & multiboot::INFO_CMDLINE) ? reinterpret_cast<const char*>(uintptr_t(info->cmdline)) : nullptr;
-    isa::use(has_word(cmdline, "isa=i486") ? isa::Path::I486 : isa::for_this_cpu());
+    isa::use(has_word(cmdline, "isa=i486") ? isa::Path::I486 : isa::for_cpu(id));
     const bool p6 = isa::in_use() == isa::Path::P6;
     for (Constructor* c = p6 ? __p6_init_array_start : __i486_init_array_start; c < (p6 ? __p6_init_array_end : __i486_init_array_end); ++c)
         (*c)();

@@ -11,7 +11,6 @@ namespace server {
 struct Context {
     const char* cmdline = "";
     cpu::Info cpu;
-    uint64_t tsc_hz = 0;
     raster::PaletteId palette = raster::PaletteId::Default;
 };
 

@@ -39,7 +39,7 @@ void cmd_hello(Context& ctx, const StrView*, size_t) {
     for (int i = 0; i < cpu::FEATURE_COUNT; ++i)
         if (cpu::has(ctx.cpu, cpu::FEATURES[i])) r.item_str(cpu::FEATURES[i].name);
     r.end_array().end_object();
-    r.u64("tsc_hz", ctx.tsc_hz).str("cpu_class", cpu::class_name(ctx.cpu)).str("isa", isa::name(isa::in_use()));
+    r.u64("tsc_hz", timer::tsc_hz()).str("cpu_class", cpu::class_name(ctx.cpu)).str("isa", isa::name(isa::in_use()));
     r.begin_object("clock").str("name", timer::clock_name(timer::clock())).u64("hz", timer::hz()).u32("read_cost", timer::read_cost()).end_object();
     r.str("mode", vga::mode_name(vga::mode())).i32("page", vga::page_count() ? vga::shown_page() : -1);
     r.str("palette", raster::palette_name(ctx.palette)).str("cmdline", ctx.cmdline);

@@ -91,7 +91,7 @@ void build_csv(const Setup& s) {
     c.u64(s.cpu->family), c.raw(","), c.u64(s.cpu->model), c.raw(","), c.u64(s.cpu->stepping), c.raw(",");
     c.s(s.cpu->brand);
     c.raw(",");
-    c.s(timer::clock_name(timer::clock())), c.raw(","), c.u64(timer::hz()), c.raw(","), c.u64(s.tsc_hz), c.raw(",");
+    c.s(timer::clock_name(timer::clock())), c.raw(","), c.u64(timer::hz()), c.raw(","), c.u64(timer::tsc_hz()), c.raw(",");
     c.u64(timer::cpu_hz()), c.raw(",");
     c.s(isa::name(isa::in_use())), c.raw(","), c.u64(s.frames), c.raw("\n");
     c.raw("scene,mapper,pixels,polygons,inner_ticks,frame_ticks,max_footprint_error\n");
@@ -153,7 +153,7 @@ void machine_page(const Setup& s, Page* p) {
     }
     lib::Fmt d;
     d.s("clock  ");
-    if (timer::clock() == timer::Clock::Tsc) d.s("TSC ").tenths(s.tsc_hz / 100000).s(" MHz (vs PIT)");
+    if (timer::clock() == timer::Clock::Tsc) d.s("TSC ").tenths(timer::tsc_hz() / 100000).s(" MHz (vs PIT)");
     else if (timer::cpu_hz()) d.s("PIT (no TSC), CPU ").tenths(timer::cpu_hz() / 100000).s(" MHz");
     else d.s("PIT 1.193 MHz (no TSC): ns");
     p->add(d.c_str());
@@ -336,7 +336,7 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
         j.u32("model", s.cpu->model).u32("stepping", s.cpu->stepping).str("brand", s.cpu->brand).end_object();
         j.str("cpu_class", cpu::class_name(*s.cpu)).str("isa", isa::name(isa::in_use()));
         j.str("clock", timer::clock_name(timer::clock())).u64("clock_hz", timer::hz()).u64("cpu_hz", timer::cpu_hz());
-        j.u64("tsc_hz", s.tsc_hz).u32("csv_bytes", uint32_t(g_csv_length)).u32("qr_codes", uint32_t(g_part_count)).u32("pages", uint32_t(page_count(s))).end();
+        j.u64("tsc_hz", timer::tsc_hz()).u32("csv_bytes", uint32_t(g_csv_length)).u32("qr_codes", uint32_t(g_part_count)).u32("pages", uint32_t(page_count(s))).end();
     }
     int k = 0;
     show_page(s, k, colours);

@@ -21,7 +21,6 @@ struct Setup {
     int scene_count = 0;
     uint32_t frames = DEFAULT_FRAMES;  // a scene and mapper, spread evenly over its animation
     const cpu::Info* cpu = nullptr;
-    uint64_t tsc_hz = 0;
 };
 
 // The next key pressed (Key::None: none waiting).

@@ -200,7 +200,7 @@ lib::Key next_key(void* ctx) {
 // The on-screen bench over `scenes` (frames a row), then the show's scene again; false when a byte
 // on COM1 ended it.
 bool bench(Show& s, const int* scenes, int count, uint32_t frames) {
-    const onscreen::Setup setup{scenes, count, frames, s.options.cpu, s.options.tsc_hz};
+    const onscreen::Setup setup{scenes, count, frames, s.options.cpu};
     const bool on = onscreen::run(setup, next_key, &s);
     load_scene(s);
     s.running_before = false;

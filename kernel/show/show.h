@@ -17,7 +17,6 @@ struct Options {
     bool patterns = false;        // the test patterns, not the scenes
     lib::StrView scene;           // start with this scene file (and stay on it)
     lib::StrView mapper;          // draw with this mapper (default: auto)
-    uint64_t tsc_hz = 0;          // the TSC's rate (0: none), for the HUD's figures
     const cpu::Info* cpu = nullptr;  // for the on-screen bench's machine page
     uint32_t bench_frames = 0;    // run the on-screen bench first, this many frames a row (0: not)
 };
