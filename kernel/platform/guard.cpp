@@ -34,6 +34,7 @@ Region g_transient[MAX_REGIONS];
 int g_transient_count = 0;
 size_t g_cursor = PAGE;               // the pool's first page is the first buffer's guard
 size_t g_top = 0;                     // and its last page the last transient buffer's (place)
+uint32_t g_generation = 0;            // release_transient's calls
 bool g_enabled = false;
 bool g_tables_ready = false;  // buffers may be taken by constructors, before init()
 
@@ -104,29 +105,34 @@ bool enabled() { return g_enabled; }
 
 uint8_t* take(size_t bytes, const char* what, const char* name) {
     const size_t pages = (bytes + PAGE - 1) / PAGE;
-    if (bytes == 0 || g_region_count == MAX_REGIONS || (pages + 1) * PAGE > g_top - g_cursor) full(what, bytes);
+    if (bytes == 0 || g_region_count == MAX_REGIONS || footprint(bytes) > g_top - g_cursor) full(what, bytes);
     prepare_tables();
     const uint32_t first = pool_base() + uint32_t(g_cursor), end = first + uint32_t(pages * PAGE);
     for (uint32_t a = first; a < end; a += PAGE) set_present(a, true);
     set_present(end, false);  // the guard after it (and before the next)
     g_regions[g_region_count++] = Region{what, name, first, end - uint32_t(bytes), end};
-    g_cursor += (pages + 1) * PAGE;
+    g_cursor += footprint(bytes);
     return reinterpret_cast<uint8_t*>(end - bytes);
 }
 
 uint8_t* take_transient(size_t bytes, const char* what, const char* name) {
     const size_t pages = (bytes + PAGE - 1) / PAGE;
-    if (bytes == 0 || g_transient_count == MAX_REGIONS || (pages + 1) * PAGE > g_top - g_cursor) full(what, bytes);
+    if (bytes == 0 || g_transient_count == MAX_REGIONS || footprint(bytes) > g_top - g_cursor) full(what, bytes);
     prepare_tables();
     const uint32_t end = pool_base() + uint32_t(g_top), first = end - uint32_t(pages * PAGE);
     for (uint32_t a = first; a < end; a += PAGE) set_present(a, true);
     set_present(first - PAGE, false);  // the guard before it (and after the next)
     g_transient[g_transient_count++] = Region{what, name, first, end - uint32_t(bytes), end};
-    g_top -= (pages + 1) * PAGE;
+    g_top -= footprint(bytes);
     return reinterpret_cast<uint8_t*>(end - bytes);
 }
 
+size_t transient_room() { return g_top - g_cursor; }
+size_t room_after_release() { return g_bytes - PAGE - g_cursor; }
+uint32_t transient_generation() { return g_generation; }
+
 void release_transient() {
+    ++g_generation;
     g_transient_count = 0;
     g_top = g_bytes - PAGE;
 }

@@ -40,6 +40,16 @@ uint8_t* take(size_t bytes, const char* what, const char* name = nullptr);
 uint8_t* take_transient(size_t bytes, const char* what, const char* name = nullptr);
 void release_transient();
 
+// What a buffer of `bytes` takes of the pool: its whole pages and the guard page beside it.
+constexpr size_t footprint(size_t bytes) { return ((bytes + PAGE - 1) / PAGE + 1) * PAGE; }
+// The pool not taken, in footprint's terms: buffers whose footprints add up to at most this fit;
+// and what it is once the transient buffers are given back.
+size_t transient_room();
+size_t room_after_release();
+// Counts release_transient's calls: an owner of transient buffers keeps the count it took them
+// at, and knows them given back when the count has moved on.
+uint32_t transient_generation();
+
 // An object of type T in a buffer of its own (zeroed, constructed), kept for the boot.
 template <typename T>
 T* take_object(const char* what) {

@@ -8,53 +8,125 @@
 #include "kernel/platform/guard.h"
 #include "kernel/lib/mem.h"
 #include "kernel/lib/words.h"
+#include "kernel/scene/scene_text.h"
+#include "kernel/lib/fmt.h"
 
 namespace current_world {
 
 namespace {
 
-// The world and the frame the mappers draw from, between guard pages (guard.h); the texture set is
-// built here, then each texture and its copies go to buffers of their own in the pool (place_textures).
+// The world and the frame the mappers draw from. What is the same for every scene is kept for the
+// boot; what a scene's size decides (the world's parts, the frame's polygons, the scratch, each
+// texture and its copies) is taken at its load, each part a buffer of its own between guard pages
+// (guard.h, transient: given back when the next scene is loaded).
 raster::World& g_world = *guard::take_object<raster::World>("3D scene");
 raster::Frame& g_frame = *guard::take_object<raster::Frame>("frame");
 raster::TextureSet& g_textures = *guard::take_object<raster::TextureSet>("texture set");
 raster::FrameScratch& g_scratch = *guard::take_object<raster::FrameScratch>("frame scratch");
 bool g_loaded = false;
+uint32_t g_generation = 0;  // guard's transient generation its buffers belong to
 bool g_overridden = false;
 raster::Budget g_override;
 char g_name[raster::MAX_FILE_NAME];
 
-// Copies each texture of the world, and its bordered, aligned and doubled copies, to buffers of their own that
-// end against a guard page, and points the objects' textures at them (a texture's copies are shared
-// by the objects that use it). The last world's buffers are given back first (transient: the
-// buffers kept for the boot are never touched).
-void place_textures() {
-    guard::release_transient();
-    raster::Texture placed[raster::MAX_WORLD_TEXTURES] = {};
-    for (int32_t o = 0; o < g_world.object_count; ++o) {
-        const int32_t i = g_world.objects[o].texture;
-        raster::Texture& t = placed[i];
-        const raster::Texture& built = g_textures.objects[o];
-        if (!t.texels) {
-            const char* name = g_world.textures[i].name;
-            const size_t texels = size_t(built.width) * size_t(built.height), bordered = size_t(raster::bordered_bytes(built.width, built.height));
-            uint8_t* at = guard::take_transient(texels, "world texture", name);
-            memcpy(at, built.texels, texels);
-            t.texels = at;
-            if (built.bordered) {
-                at = guard::take_transient(bordered, "world texture (bordered copy)", name);
-                memcpy(at, built.bordered, bordered);
-                t.bordered = at;
-            }
-            if (built.aligned256) t.aligned256 = raster::make_aligned256(built, guard::take_transient(raster::ALIGNED256_BYTES, "world texture (aligned copy)", name));
-            if (raster::wants_doubled(built))  // (the set keeps none: built here only)
-                t.doubled = raster::make_doubled(built, guard::take_transient(size_t(raster::doubled_bytes(built.width, built.height)), "world texture (doubled copy)", name));
-        }
-        g_textures.objects[o].texels = t.texels;
-        g_textures.objects[o].bordered = t.bordered;
-        g_textures.objects[o].aligned256 = t.aligned256;
-        g_textures.objects[o].doubled = t.doubled;
+// `count` items of T (none: null), each part's name for fault reports.
+template <typename T>
+T* part(int32_t count, const char* what) {
+    return count > 0 ? reinterpret_cast<T*>(guard::take_transient(size_t(count) * sizeof(T), what)) : nullptr;
+}
+template <typename T>
+size_t part_bytes(int32_t count) {
+    return count > 0 ? guard::footprint(size_t(count) * sizeof(T)) : 0;
+}
+
+size_t world_bytes(const raster::WorldRoom& r) {
+    return part_bytes<uint8_t>(int32_t(r.texels)) + part_bytes<raster::Vec3>(r.positions) + part_bytes<raster::TexCoord>(r.uvs) +
+           part_bytes<raster::Face>(r.faces) + part_bytes<raster::Corner>(r.corners);
+}
+void take_world(const raster::WorldRoom& r) {
+    g_world.room = r;
+    g_world.texels = part<uint8_t>(int32_t(r.texels), "3D scene's texels (as parsed)");
+    g_world.positions = part<raster::Vec3>(r.positions, "3D scene's positions");
+    g_world.uvs = part<raster::TexCoord>(r.uvs, "3D scene's texture coordinates");
+    g_world.faces = part<raster::Face>(r.faces, "3D scene's faces");
+    g_world.corners = part<raster::Corner>(r.corners, "3D scene's face corners");
+}
+
+size_t frame_bytes(const raster::FrameRoom& r) {
+    using raster::FrameScratch;
+    return 3 * part_bytes<uint8_t>(r.polygons) + part_bytes<raster::Vertex>(r.vertices) + part_bytes<raster::ClipPoint>(r.positions) +
+           part_bytes<uint8_t>(r.positions) + 2 * part_bytes<raster::Fixed24_8>(r.positions) + part_bytes<FrameScratch::Entry>(r.polygons) +
+           4 * part_bytes<uint32_t>(r.polygons) + 2 * part_bytes<int32_t>(r.polygons);
+}
+void take_frame(const raster::FrameRoom& r) {
+    raster::Frame& f = g_frame;
+    f.room = r;
+    f.polygon_size = part<uint8_t>(r.polygons, "frame's polygon sizes");
+    f.polygon_object = part<uint8_t>(r.polygons, "frame's polygon objects");
+    f.polygon_whole = part<uint8_t>(r.polygons, "frame's polygon flags");
+    f.vertices = part<raster::Vertex>(r.vertices, "frame's vertices");
+    raster::FrameScratch& s = g_scratch;
+    s.room = r;
+    s.positions = part<raster::ClipPoint>(r.positions, "frame scratch (positions)");
+    s.outcodes = part<uint8_t>(r.positions, "frame scratch (outcodes)");
+    s.screen_x = part<raster::Fixed24_8>(r.positions, "frame scratch (x)");
+    s.screen_y = part<raster::Fixed24_8>(r.positions, "frame scratch (y)");
+    s.entries = part<raster::FrameScratch::Entry>(r.polygons, "frame scratch (faces)");
+    for (int k = 0; k < 2; ++k) {
+        s.key_lo[k] = part<uint32_t>(r.polygons, "frame scratch (sort keys)");
+        s.key_hi[k] = part<uint32_t>(r.polygons, "frame scratch (sort keys)");
+        s.order[k] = part<int32_t>(r.polygons, "frame scratch (sort order)");
     }
+}
+
+// Texture i of the world, repeated (its objects take their wraps).
+raster::Texture world_texture(int32_t i) {
+    const raster::WorldTexture& t = g_world.textures[i];
+    return raster::Texture{g_world.texels + t.offset, t.width, t.height, raster::Wrap::Repeat};
+}
+size_t textures_bytes() {
+    size_t n = 0;
+    for (int32_t i = 0; i < g_world.texture_count; ++i) {
+        const raster::Texture t = world_texture(i);
+        n += guard::footprint(size_t(t.width) * size_t(t.height)) + guard::footprint(size_t(raster::bordered_bytes(t.width, t.height)));
+        if (raster::wants_aligned256(t)) n += guard::footprint(raster::ALIGNED256_BYTES);
+        if (raster::wants_doubled(t)) n += guard::footprint(size_t(raster::doubled_bytes(t.width, t.height)));
+    }
+    return n;
+}
+
+// Each texture of the world in a buffer of its own, with its bordered, aligned and doubled copies
+// in theirs, each ending against a guard page; the objects' textures point at them (a texture's
+// copies are shared by the objects that use it).
+void place_textures() {
+    raster::Texture placed[raster::MAX_WORLD_TEXTURES] = {};
+    for (int32_t i = 0; i < g_world.texture_count; ++i) {
+        const raster::Texture t = world_texture(i);
+        const char* name = g_world.textures[i].name;
+        const size_t texels = size_t(t.width) * size_t(t.height);
+        uint8_t* at = guard::take_transient(texels, "world texture", name);
+        memcpy(at, t.texels, texels);
+        placed[i] = raster::Texture{at, t.width, t.height, raster::Wrap::Repeat};
+        uint8_t* bordered = guard::take_transient(size_t(raster::bordered_bytes(t.width, t.height)), "world texture (bordered copy)", name);
+        uint8_t* aligned = raster::wants_aligned256(t) ? guard::take_transient(raster::ALIGNED256_BYTES, "world texture (aligned copy)", name) : nullptr;
+        uint8_t* doubled = raster::wants_doubled(t)
+                               ? guard::take_transient(size_t(raster::doubled_bytes(t.width, t.height)), "world texture (doubled copy)", name)
+                               : nullptr;
+        raster::prepare_texture(&placed[i], bordered, aligned, doubled);
+    }
+    for (int32_t o = 0; o < g_world.object_count; ++o) {
+        raster::Texture t = placed[g_world.objects[o].texture];
+        t.wrap = g_world.objects[o].wrap;
+        g_textures.objects[o] = t;
+    }
+}
+
+// The error for a scene the pool has no room for: what it needs, what is free.
+bool no_room(raster::ParseError* error, const char* part, size_t need) {
+    lib::Fmt m;
+    m.s("not enough memory for this scene: ").s(part).s(" need ").u(uint32_t((need + 1023) >> 10)).s(" KiB, ");
+    m.u(uint32_t(guard::transient_room() >> 10)).s(" KiB free (docs/platform.md, Memory)");
+    return raster::scene_text::fail(error, 0, m.c_str());
 }
 
 // auto's candidate lists for the objects' textures at the budget in force, built before any frame
@@ -68,8 +140,17 @@ void prepare_choices() {
 bool load(const char* name, const uint8_t* text, size_t length, raster::ParseError* error) {
     g_loaded = false;
     g_overridden = false;
-    if (!raster::parse_world(reinterpret_cast<const char*>(text), length, file_table::resolver(), &g_world, error)) return false;
-    raster::build_texture_set(g_world, &g_textures);
+    guard::release_transient();
+    g_generation = guard::transient_generation();
+    const char* chars = reinterpret_cast<const char*>(text);
+    const raster::WorldRoom room = raster::world_room(chars, length, file_table::resolver());
+    if (world_bytes(room) > guard::transient_room()) return no_room(error, "its meshes and textures", world_bytes(room));
+    take_world(room);
+    if (!raster::parse_world(chars, length, file_table::resolver(), &g_world, error)) return false;
+    const raster::FrameRoom frame = raster::frame_room(g_world);
+    const size_t more = frame_bytes(frame) + textures_bytes();
+    if (more > guard::transient_room()) return no_room(error, "its frames and its textures' copies", world_bytes(room) + more);
+    take_frame(frame);
     place_textures();
     prepare_choices();
     lib::copy_c_string(g_name, sizeof g_name, name);
@@ -78,7 +159,7 @@ bool load(const char* name, const uint8_t* text, size_t length, raster::ParseErr
     return true;
 }
 
-bool loaded() { return g_loaded; }
+bool loaded() { return g_loaded && g_generation == guard::transient_generation(); }
 
 void set_budget(const raster::Budget* override) {
     g_overridden = override != nullptr;

@@ -29,7 +29,12 @@ constexpr uint32_t DISCARD_GAP_MS = 250;
 
 File g_files[MAX_FILES];
 int g_count = 0;
-uint8_t* const g_upload_space = guard::take(UPLOAD_SPACE, "upload space");
+size_t upload_space_for(size_t pool) {
+    const size_t quarter = pool / 4 & ~(guard::PAGE - 1);
+    return quarter < MOST_UPLOAD_SPACE ? quarter : MOST_UPLOAD_SPACE;
+}
+const size_t g_upload_bytes = upload_space_for(guard::pool_bytes());
+uint8_t* const g_upload_space = guard::take(g_upload_bytes, "upload space");
 size_t g_upload_used = 0;
 
 bool byte_waiting(void*) { return serial::byte_ready(); }
@@ -97,6 +102,8 @@ void init(const multiboot::Info* info, uint32_t* skipped) {
     }
 }
 
+size_t upload_space() { return g_upload_bytes; }
+
 int count() { return g_count; }
 const File& at(int i) { return g_files[i]; }
 
@@ -140,8 +147,8 @@ File* find_upload(lib::StrView name) {
 }  // namespace
 
 bool upload_fits(lib::StrView name, size_t length, lib::Fmt* error) {
-    if (length > UPLOAD_SPACE - g_upload_used) {
-        error->s("no room: ").u(uint32_t(UPLOAD_SPACE - g_upload_used)).s(" of ").u(uint32_t(UPLOAD_SPACE)).s(" upload bytes left in this boot");
+    if (length > g_upload_bytes - g_upload_used) {
+        error->s("no room: ").u(uint32_t(g_upload_bytes - g_upload_used)).s(" of ").u(uint32_t(g_upload_bytes)).s(" upload bytes left in this boot");
         return false;
     }
     const lib::StrView scene{SCENE_UPLOAD, lib::c_length(SCENE_UPLOAD)};

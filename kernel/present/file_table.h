@@ -20,7 +20,10 @@ constexpr int MAX_FILES = 96;
 // The name a `scene` upload is kept under; its place in the file table is kept for it (a full table
 // refuses new `file` uploads first).
 constexpr const char* SCENE_UPLOAD = "upload.scene";
-constexpr size_t UPLOAD_SPACE = 6 << 20;   // bytes for all uploads of a boot
+// Bytes for all uploads of a boot: a quarter of the pool, at most MOST_UPLOAD_SPACE (the rest
+// is the scenes' room).
+constexpr size_t MOST_UPLOAD_SPACE = 6 << 20;
+size_t upload_space();
 constexpr size_t MAX_UPLOAD = 4 << 20;     // one upload
 
 struct File {

@@ -243,7 +243,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         const Object& object = world.objects[o];
         const Mesh& mesh = world.meshes[object.mesh];
         f.stats.faces += uint32_t(mesh.face_count);
-        if (used + mesh.position_count > MAX_FRAME_POSITIONS) {
+        if (used + mesh.position_count > scratch->room.positions) {
             f.stats.overflow += uint32_t(mesh.face_count);
             f.envelope[o] = EnvelopeBound{};
             continue;
@@ -289,7 +289,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
                 ++f.stats.outside;
                 continue;
             }
-            if (entries == MAX_FRAME_POLYGONS) {
+            if (entries == scratch->room.polygons || entries == f.room.polygons) {
                 ++f.stats.overflow;
                 continue;
             }
@@ -320,7 +320,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             }
             ++f.stats.clipped;
         }
-        if (f.vertex_count + n > MAX_FRAME_VERTICES) {
+        if (f.vertex_count + n > f.room.vertices) {
             ++f.stats.overflow;
             continue;
         }
@@ -373,23 +373,16 @@ TriangleEnvelope object_envelope(const World& world, int32_t o, const Placement&
     return e;
 }
 
-void build_texture_set(const World& world, TextureSet* out) {
-    size_t bordered = 0, doubled = 0;
-    Texture prepared[MAX_WORLD_TEXTURES];
-    for (int32_t i = 0; i < world.texture_count; ++i) {
-        const WorldTexture& t = world.textures[i];
-        prepared[i] = Texture{world.texels + t.offset, t.width, t.height, Wrap::Repeat};
-        prepare_texture(&prepared[i], out->bordered + bordered, out->aligned[i], out->doubled ? out->doubled + doubled : nullptr);
-        bordered += size_t(bordered_bytes(t.width, t.height));
-        if (prepared[i].doubled) doubled += size_t(doubled_bytes(t.width, t.height));
-    }
+FrameRoom frame_room(const World& world) {
+    int64_t polygons = 0, vertices = 0, positions = 0;
     for (int32_t o = 0; o < world.object_count; ++o) {
-        const Texture& copies = prepared[world.objects[o].texture];
-        out->objects[o] = world.texture_of(o);
-        out->objects[o].bordered = copies.bordered;
-        out->objects[o].aligned256 = copies.aligned256;
-        out->objects[o].doubled = copies.doubled;
+        const Mesh& mesh = world.meshes[world.objects[o].mesh];
+        polygons += mesh.face_count, positions += mesh.position_count;
+        for (int32_t k = 0; k < mesh.face_count; ++k) vertices += world.faces[mesh.first_face + k].count + 6;
     }
+    const FrameRoom most = FrameRoom::limits();
+    auto at_most = [](int64_t n, int32_t limit) { return int32_t(n < limit ? n : limit); };
+    return FrameRoom{at_most(polygons, most.polygons), at_most(vertices, most.vertices), at_most(positions, most.positions)};
 }
 
 namespace {

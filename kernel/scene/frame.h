@@ -5,6 +5,7 @@
 #include <stdint.h>
 
 #include "kernel/core/envelope.h"
+#include "kernel/core/policy.h"
 #include "kernel/core/render.h"
 #include "kernel/scene/world.h"
 
@@ -29,25 +30,41 @@ struct FrameStats {
     uint32_t overflow = 0;      // dropped for lack of room (beyond the limits above)
 };
 
+// The room of a frame and of its scratch: polygons (each face of each object gives at most one)
+// and their corners (a face's corners and six more, one for each clip plane), and the positions of
+// all objects. The kernel sizes it to the world at hand (frame_room); the host's frames have the
+// limits above (HostFrame, HostFrameScratch).
+struct FrameRoom {
+    int32_t polygons = 0, vertices = 0, positions = 0;
+    static FrameRoom limits() { return FrameRoom{MAX_FRAME_POLYGONS, MAX_FRAME_VERTICES, MAX_FRAME_POSITIONS}; }
+};
+FrameRoom frame_room(const World& world);
+
 struct Frame {
     int32_t number = 0;
     int32_t polygon_count = 0, vertex_count = 0;
     int32_t object_count = 0;
     FrameStats stats;
     Budget budget;  // the world's: what auto draws to
-    uint8_t polygon_size[MAX_FRAME_POLYGONS];
-    uint8_t polygon_object[MAX_FRAME_POLYGONS];  // whose texture (and wrap) it takes
+    // per object: what its envelope proves on its uncut triangles (object_envelope), which auto
+    // takes as their proof (footprint NO_BOUND: none)
+    EnvelopeBound envelope[MAX_WORLD_OBJECTS];
+    // The polygons, room.polygons of them and room.vertices corners, where the owner puts them:
+    FrameRoom room;
+    uint8_t* polygon_size = nullptr;
+    uint8_t* polygon_object = nullptr;  // whose texture (and wrap) it takes
     // 1: a face inside every clip plane, as it is (not cut). Its corners are within setup's limits
     // (setup.h), so the drawing does not check them again (Input::InRange): w within [near, far]
     // (its outcode), which the parser keeps within [MIN_W, MAX_W]; |x| and |y| at most 32 w (the
     // guard band's planes; 32 w is exact), so on screen within 160 +- 5120 and 120 +- 3840 pixels;
     // u and v are vt times the texture's side, at most MAX_TEXCOORD x MAX_TEXTURE_SIZE = MAX_UV;
     // all finite (the parser's numbers are). A cut face's corners are interpolated: checked.
-    uint8_t polygon_whole[MAX_FRAME_POLYGONS];
-    // per object: what its envelope proves on its uncut triangles (object_envelope), which auto
-    // takes as their proof (footprint NO_BOUND: none)
-    EnvelopeBound envelope[MAX_WORLD_OBJECTS];
-    Vertex vertices[MAX_FRAME_VERTICES];
+    uint8_t* polygon_whole = nullptr;
+    Vertex* vertices = nullptr;
+
+    Frame() = default;
+    Frame(const Frame&) = delete;  // (a copy would share the polygons)
+    Frame& operator=(const Frame&) = delete;
 };
 
 // A point in clip space with its texture coordinates in texels. No default member initialisers:
@@ -65,20 +82,53 @@ struct ClipPoint {
 
 // Working memory for build_frame (large: kept apart so that it can be static in the kernel).
 struct FrameScratch {
-    ClipPoint positions[MAX_FRAME_POSITIONS];
-    uint8_t outcodes[MAX_FRAME_POSITIONS];  // bit k: outside clip plane k
-    Fixed24_8 screen_x[MAX_FRAME_POSITIONS], screen_y[MAX_FRAME_POSITIONS];  // projected, where the outcode is 0
     struct Entry {
         double depth;  // mean w of the face's corners (finite)
         int32_t object, face;  // face: its index in World::faces
         bool cut;      // some corner outside some plane: to be clipped
-    } entries[MAX_FRAME_POLYGONS];
-    // painter_order's two buffers: each entry's key (its depth's bits, in halves) and index
-    uint32_t key_lo[2][MAX_FRAME_POLYGONS], key_hi[2][MAX_FRAME_POLYGONS];
-    int32_t order[2][MAX_FRAME_POLYGONS];
+    };
     static constexpr int32_t DIGIT_COUNTS = 3 << 11;
     int32_t digit_count[DIGIT_COUNTS];  // the bucket sizes of its radix digits (three of 11 bits at most)
+    // room.positions positions and room.polygons entries, where the owner puts them:
+    FrameRoom room;
+    ClipPoint* positions = nullptr;
+    uint8_t* outcodes = nullptr;  // bit k: outside clip plane k
+    Fixed24_8 *screen_x = nullptr, *screen_y = nullptr;  // projected, where the outcode is 0
+    Entry* entries = nullptr;
+    // painter_order's two buffers: each entry's key (its depth's bits, in halves) and index
+    uint32_t *key_lo[2] = {}, *key_hi[2] = {};
+    int32_t* order[2] = {};
+
+    FrameScratch() = default;
+    FrameScratch(const FrameScratch&) = delete;
+    FrameScratch& operator=(const FrameScratch&) = delete;
 };
+
+#if __STDC_HOSTED__
+// A frame and a scratch with room up to the limits.
+struct HostFrame : Frame {
+    uint8_t size_pool[MAX_FRAME_POLYGONS], object_pool[MAX_FRAME_POLYGONS], whole_pool[MAX_FRAME_POLYGONS];
+    Vertex vertex_pool[MAX_FRAME_VERTICES];
+    HostFrame() {
+        room = FrameRoom::limits();
+        polygon_size = size_pool, polygon_object = object_pool, polygon_whole = whole_pool, vertices = vertex_pool;
+    }
+};
+struct HostFrameScratch : FrameScratch {
+    ClipPoint position_pool[MAX_FRAME_POSITIONS];
+    uint8_t outcode_pool[MAX_FRAME_POSITIONS];
+    Fixed24_8 x_pool[MAX_FRAME_POSITIONS], y_pool[MAX_FRAME_POSITIONS];
+    Entry entry_pool[MAX_FRAME_POLYGONS];
+    uint32_t key_pool[4][MAX_FRAME_POLYGONS];
+    int32_t order_pool[2][MAX_FRAME_POLYGONS];
+    HostFrameScratch() {
+        room = FrameRoom::limits();
+        positions = position_pool, outcodes = outcode_pool, screen_x = x_pool, screen_y = y_pool, entries = entry_pool;
+        key_lo[0] = key_pool[0], key_lo[1] = key_pool[1], key_hi[0] = key_pool[2], key_hi[1] = key_pool[3];
+        order[0] = order_pool[0], order[1] = order_pool[1];
+    }
+};
+#endif
 
 // The painter's order of scratch->entries[0..n): far before near (the larger depth first), equal
 // depths in the order they come in (build_frame makes them by object, then face: the same total
@@ -126,27 +176,43 @@ TriangleEnvelope object_envelope(const World& world, int32_t object, const Place
 int clip_polygon(const ClipVertex* in, int count, double near, double far, ClipVertex* out);
 
 // The textures as the mappers take them, one per object (its wrap), with the copies the classic
-// loops read (bordered; 64 KiB-aligned for 256 x 256 textures).
+// loops read (bordered; 64 KiB-aligned for 256 x 256 textures; doubled, for powers of two). Where
+// the copies are is the owner's: the host's set keeps them at its limits (HostTextureSet), the
+// kernel puts each texture's in buffers of their own (kernel/present/current_world.cpp).
 struct TextureSet {
     Texture objects[MAX_WORLD_OBJECTS];
-    static constexpr size_t BORDERED_BYTES = size_t(MAX_TEXEL_POOL) + 2 * MAX_WORLD_TEXTURES * 2 * (MAX_TEXTURE_SIZE + 2);
-    uint8_t bordered[BORDERED_BYTES];
-    uint8_t aligned[MAX_WORLD_TEXTURES][ALIGNED256_BYTES];
-    // The doubled copies' room (four times the texels and their borders, (2 W + 16)(2 H + 16) - 4 W H
-    // = 32 (W + H) + 256, at most 65792 bytes a texture), DOUBLED_BYTES at `doubled` where the caller
-    // gives it (HostTextureSet); null: none built (the kernel builds each where it places the
-    // textures, kernel/present/current_world.cpp, and keeps no second 16 MiB).
-    static constexpr size_t DOUBLED_BYTES = 4 * size_t(MAX_TEXEL_POOL) + MAX_WORLD_TEXTURES * size_t(doubled_bytes(MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE) - 4 * MAX_TEXTURE_SIZE * MAX_TEXTURE_SIZE);
-    uint8_t* doubled = nullptr;
 };
 #if __STDC_HOSTED__
-// The host's texture set, with the room for its doubled copies.
+// The host's texture set, with room for every copy of textures up to the world's limits: the
+// bordered copies, the aligned ones and the doubled ones (four times the texels and their borders,
+// (2 W + 16)(2 H + 16) - 4 W H = 32 (W + H) + 256, at most 65792 bytes a texture).
 struct HostTextureSet : TextureSet {
-    uint8_t pool[DOUBLED_BYTES];
-    HostTextureSet() { doubled = pool; }
+    static constexpr size_t BORDERED_BYTES = size_t(MAX_TEXEL_POOL) + 2 * MAX_WORLD_TEXTURES * 2 * (MAX_TEXTURE_SIZE + 2);
+    static constexpr size_t DOUBLED_BYTES = 4 * size_t(MAX_TEXEL_POOL) + MAX_WORLD_TEXTURES * size_t(doubled_bytes(MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE) - 4 * MAX_TEXTURE_SIZE * MAX_TEXTURE_SIZE);
+    uint8_t bordered[BORDERED_BYTES];
+    uint8_t aligned[MAX_WORLD_TEXTURES][ALIGNED256_BYTES];
+    uint8_t doubled[DOUBLED_BYTES];
 };
+// Every texture of the world with its copies, and each object's (its wrap).
+inline void build_texture_set(const World& world, HostTextureSet* out) {
+    size_t bordered = 0, doubled = 0;
+    Texture prepared[MAX_WORLD_TEXTURES];
+    for (int32_t i = 0; i < world.texture_count; ++i) {
+        const WorldTexture& t = world.textures[i];
+        prepared[i] = Texture{world.texels + t.offset, t.width, t.height, Wrap::Repeat};
+        prepare_texture(&prepared[i], out->bordered + bordered, out->aligned[i], out->doubled + doubled);
+        bordered += size_t(bordered_bytes(t.width, t.height));
+        if (prepared[i].doubled) doubled += size_t(doubled_bytes(t.width, t.height));
+    }
+    for (int32_t o = 0; o < world.object_count; ++o) {
+        const Texture& copies = prepared[world.objects[o].texture];
+        out->objects[o] = world.texture_of(o);
+        out->objects[o].bordered = copies.bordered;
+        out->objects[o].aligned256 = copies.aligned256;
+        out->objects[o].doubled = copies.doubled;
+    }
+}
 #endif
-void build_texture_set(const World& world, TextureSet* out);
 
 // Draws the frame's polygons in order into `target`; with a probe, times the phases (probe.h);
 // with a watch, it may stop early (core/render.h).

@@ -25,4 +25,8 @@ struct IndexedImage {
 // 1024 x 1024 or `capacity`, data that runs past the end of the file.
 bool decode_indexed_image(const uint8_t* data, size_t size, IndexedImage* out, uint8_t* pixels, size_t capacity, lib::Fmt* error);
 
+// The width and height a BMP or PCX file's header gives (a top-down BMP's height made positive),
+// each within 1..MAX_IMAGE_SIZE; false where there is no such header or a side is out of range.
+bool indexed_image_size(const uint8_t* data, size_t size, int32_t* width, int32_t* height);
+
 }  // namespace raster

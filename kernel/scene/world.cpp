@@ -99,6 +99,8 @@ void tile_in_place(uint8_t* texels, int32_t w, int32_t h, int32_t width, int32_t
     }
 }
 
+bool too_many_texels(Parser& p) { return p.fail(Fmt().s("textures too large together (at most ").u(p.world->room.texels).s(" texels)")); }
+
 // texture NAME KIND W H | texture NAME file PATH [tile W H]
 bool texture_line(Parser& p, const StrView* w, size_t n) {
     World& world = *p.world;
@@ -112,7 +114,7 @@ bool texture_line(Parser& p, const StrView* w, size_t n) {
     t = WorldTexture{};
     copy_name(t.name, sizeof t.name, w[1]);
     t.offset = world.texel_count;
-    const size_t room = size_t(MAX_TEXEL_POOL) - world.texel_count;
+    const size_t room = size_t(world.room.texels) - world.texel_count;
     Palette& source = p.sources[world.texture_count];
     if (w[2].equals("file")) {
         if (!check_file_name(p, w[3])) return false;
@@ -134,7 +136,7 @@ bool texture_line(Parser& p, const StrView* w, size_t n) {
             if (width % t.width != 0 || height % t.height != 0)
                 return p.fail(Fmt().s("texture '").s(w[1]).s("': tile ").u(uint32_t(width)).s(" x ").u(uint32_t(height))
                                   .s(" is not whole copies of its ").u(uint32_t(t.width)).s(" x ").u(uint32_t(t.height)).s(" image"));
-            if (size_t(width) * size_t(height) > room) return p.fail(Fmt().s("textures too large together (at most 4194304 texels)"));
+            if (size_t(width) * size_t(height) > room) return too_many_texels(p);
             tile_in_place(world.texels + t.offset, t.width, t.height, width, height);
             t.width = width, t.height = height;
         }
@@ -145,7 +147,7 @@ bool texture_line(Parser& p, const StrView* w, size_t n) {
             return p.fail(Fmt().s("unknown texture kind '").s(w[2]).s("' (checker, grid, numbered, xor, gradient, or file)"));
         if (!parse_int(w[3], 1, MAX_TEXTURE_SIZE, &t.width) || !parse_int(w[4], 1, MAX_TEXTURE_SIZE, &t.height))
             return p.fail(Fmt().s("texture size '").s(w[3]).s(" ").s(w[4]).s("' out of range: width and height 1..1024"));
-        if (size_t(t.width) * size_t(t.height) > room) return p.fail(Fmt().s("textures too large together (at most 4194304 texels)"));
+        if (size_t(t.width) * size_t(t.height) > room) return too_many_texels(p);
         generate_texture(t.kind, t.width, t.height, world.texels + t.offset);
         source = raster::palette(PaletteId::Default);
     }
@@ -160,8 +162,9 @@ bool face_line(Parser& p, const StrView* w, size_t n) {
     Mesh& m = world.meshes[world.mesh_count];
     size_t corners = n - 1;
     if (corners < 3 || corners > size_t(MAX_FACE_CORNERS)) return p.fail(Fmt().s("a face has 3 to 10 corners, each POSITION/TEXCOORD"));
-    if (world.face_count == MAX_WORLD_FACES) return p.fail(Fmt().s("too many faces (at most 32768)"));
-    if (world.corner_count + int32_t(corners) > MAX_WORLD_CORNERS) return p.fail(Fmt().s("too many face corners (at most 131072)"));
+    if (world.face_count == world.room.faces) return p.fail(Fmt().s("too many faces (at most ").u(uint32_t(world.room.faces)).s(")"));
+    if (world.corner_count + int32_t(corners) > world.room.corners)
+        return p.fail(Fmt().s("too many face corners (at most ").u(uint32_t(world.room.corners)).s(")"));
     for (size_t k = 0; k < corners; ++k) {
         StrView c = w[1 + k];
         size_t slash = 0;
@@ -184,14 +187,14 @@ bool mesh_line(Parser& p, const StrView* w, size_t n) {
     Mesh& m = world.meshes[world.mesh_count];
     if (w[0].equals("v")) {
         if (!usage(p, n, 4, "v X Y Z")) return false;
-        if (world.position_count == MAX_WORLD_POSITIONS) return p.fail(Fmt().s("too many positions (at most 32768)"));
+        if (world.position_count == world.room.positions) return p.fail(Fmt().s("too many positions (at most ").u(uint32_t(world.room.positions)).s(")"));
         if (!vec3(p, w + 1, "a position", &world.positions[world.position_count])) return false;
         ++world.position_count, ++m.position_count;
         return true;
     }
     if (w[0].equals("vt")) {
         if (!usage(p, n, 3, "vt U V (in texture sizes, v down)")) return false;
-        if (world.uv_count == MAX_WORLD_UVS) return p.fail(Fmt().s("too many texture coordinates (at most 32768)"));
+        if (world.uv_count == world.room.uvs) return p.fail(Fmt().s("too many texture coordinates (at most ").u(uint32_t(world.room.uvs)).s(")"));
         TexCoord& t = world.uvs[world.uv_count];
         if (!number(p, w[1], "u", -MAX_TEXCOORD, MAX_TEXCOORD, &t.u) || !number(p, w[2], "v", -MAX_TEXCOORD, MAX_TEXCOORD, &t.v)) return false;
         ++world.uv_count, ++m.uv_count;
@@ -474,6 +477,46 @@ bool parse_world(const char* text, size_t length, const FileResolver& files, Wor
         for (uint32_t k = 0; k < uint32_t(t.width) * uint32_t(t.height); ++k) texel[k] = map[texel[k]];
     }
     return true;
+}
+
+WorldRoom world_room(const char* text, size_t length, const FileResolver& files) {
+    WorldRoom need;
+    uint64_t texels = 0;
+    int64_t positions = 0, uvs = 0, faces = 0, corners = 0;
+    if (length <= MAX_WORLD_BYTES) {
+        scene_text::Lines lines(text, length);
+        char buf[scene_text::MAX_LINE + 1];
+        const char* bad = nullptr;
+        while (lines.next(buf, &bad)) {
+            StrView w[MAX_LINE_WORDS];
+            const size_t n = lib::split_words(buf, w, MAX_LINE_WORDS);
+            if (n == 0) continue;
+            if (w[0].equals("v")) ++positions;
+            else if (w[0].equals("vt")) ++uvs;
+            else if (w[0].equals("f")) ++faces, corners += int64_t(n > size_t(MAX_LINE_WORDS) ? MAX_LINE_WORDS : n) - 1;
+            else if (w[0].equals("texture") && n >= 5) {
+                int32_t width = 0, height = 0;  // as the parser reads them: a size out of range is refused there
+                const bool file = w[2].equals("file"), tiled = file && n == 7;
+                const StrView* size = tiled ? w + 5 : file ? nullptr : w + 3;
+                if (size) {
+                    if (!parse_int(size[0], 1, MAX_TEXTURE_SIZE, &width) || !parse_int(size[1], 1, MAX_TEXTURE_SIZE, &height)) width = height = 0;
+                }
+                texels += uint64_t(width) * uint64_t(height);
+            } else if (w[0].equals("texture") && n == 4 && w[2].equals("file")) {
+                const uint8_t* data = nullptr;
+                size_t bytes = 0;
+                int32_t width = 0, height = 0;
+                if (files.find && files.find(files.context, w[3], &data, &bytes) && indexed_image_size(data, bytes, &width, &height))
+                    texels += uint64_t(width) * uint64_t(height);
+            }
+        }
+    }
+    const WorldRoom most = WorldRoom::limits();
+    auto at_most = [](int64_t n, int32_t limit) { return int32_t(n < limit ? n : limit); };
+    need.texels = uint32_t(texels < most.texels ? texels : most.texels);
+    need.positions = at_most(positions, most.positions), need.uvs = at_most(uvs, most.uvs);
+    need.faces = at_most(faces, most.faces), need.corners = at_most(corners, most.corners);
+    return need;
 }
 
 }  // namespace raster

@@ -109,21 +109,25 @@ struct Camera {
     PathKey keys[MAX_PATH_KEYS];
 };
 
+// The room for a world's variable parts: the texels of all its textures, its positions, texture
+// coordinates, faces and their corners. The kernel sizes it to the scene at hand (world_room); the
+// host's worlds have the limits above (HostWorld).
+struct WorldRoom {
+    uint32_t texels = 0;
+    int32_t positions = 0, uvs = 0, faces = 0, corners = 0;
+    static WorldRoom limits() { return WorldRoom{uint32_t(MAX_TEXEL_POOL), MAX_WORLD_POSITIONS, MAX_WORLD_UVS, MAX_WORLD_FACES, MAX_WORLD_CORNERS}; }
+};
+
 struct World {
     int32_t texture_count = 0;
     WorldTexture textures[MAX_WORLD_TEXTURES];
     uint32_t texel_count = 0;  // used in `texels`
-    uint8_t texels[MAX_TEXEL_POOL];
     int32_t palette_texture = -1;  // the palette: the default one, or that image texture's
     Palette palette;               // remapped textures index it
 
     int32_t mesh_count = 0;
     Mesh meshes[MAX_WORLD_MESHES];
     int32_t position_count = 0, uv_count = 0, face_count = 0, corner_count = 0;
-    Vec3 positions[MAX_WORLD_POSITIONS];
-    TexCoord uvs[MAX_WORLD_UVS];
-    Face faces[MAX_WORLD_FACES];
-    Corner corners[MAX_WORLD_CORNERS];
 
     int32_t object_count = 0;
     Object objects[MAX_WORLD_OBJECTS];
@@ -131,12 +135,39 @@ struct World {
     Budget budget;  // its budget line, or the default
     int32_t frames = 150;  // the animation's length: the demo plays frames 0..frames-1 and loops
 
+    // The variable parts, `room` of each, where the owner puts them (the parser fills them).
+    WorldRoom room;
+    uint8_t* texels = nullptr;
+    Vec3* positions = nullptr;
+    TexCoord* uvs = nullptr;
+    Face* faces = nullptr;
+    Corner* corners = nullptr;
+
+    World() = default;
+    World(const World&) = delete;  // (a copy would share the parts)
+    World& operator=(const World&) = delete;
+
     // texture i as the mappers see it for object `o` (its wrap), without the derived copies
     Texture texture_of(int32_t object) const {
         const WorldTexture& t = textures[objects[object].texture];
         return Texture{texels + t.offset, t.width, t.height, objects[object].wrap};
     }
 };
+
+#if __STDC_HOSTED__
+// A world with room up to the limits.
+struct HostWorld : World {
+    uint8_t texel_pool[MAX_TEXEL_POOL];
+    Vec3 position_pool[MAX_WORLD_POSITIONS];
+    TexCoord uv_pool[MAX_WORLD_UVS];
+    Face face_pool[MAX_WORLD_FACES];
+    Corner corner_pool[MAX_WORLD_CORNERS];
+    HostWorld() {
+        room = WorldRoom::limits();
+        texels = texel_pool, positions = position_pool, uvs = uv_pool, faces = face_pool, corners = corner_pool;
+    }
+};
+#endif
 
 // Where the files a scene names come from. `find` returns false when there is no such file.
 struct FileResolver {
@@ -152,6 +183,12 @@ bool world_name_ok(lib::StrView name);
 // reading the texture files it names through `files`, remapping every texture to the scene's
 // palette. False with the first error (its line; 0 when it is about the whole file).
 bool parse_world(const char* text, size_t length, const FileResolver& files, World* world, ParseError* error);
+
+// The room parse_world needs for this text (each part at most its limit): its v, vt and f lines,
+// the corners on its f lines, and the texels of its texture lines (a file's size from its header,
+// through `files`). Exact for a scene that parses; a text that does not may get less than its
+// lines ask for, and fails to parse all the same.
+WorldRoom world_room(const char* text, size_t length, const FileResolver& files);
 
 // The scene's time at frame n, in seconds.
 inline double frame_time(int32_t frame) { return double(frame) / FRAMES_PER_SECOND; }

@@ -139,7 +139,7 @@ void cmd_files(Context&, const StrView*, size_t) {
         const file_table::File& f = file_table::at(i);
         r.begin_item_object().str("name", f.name).str("origin", file_table::origin_name(f.origin)).u32("bytes", uint32_t(f.size)).end_object();
     }
-    r.end_array().u64("upload_space_used", file_table::upload_space_used()).u64("upload_space", file_table::UPLOAD_SPACE).end();
+    r.end_array().u64("upload_space_used", file_table::upload_space_used()).u64("upload_space", file_table::upload_space()).end();
 }
 
 void cmd_load(Context&, const StrView* args, size_t) {

@@ -69,7 +69,7 @@ LoadedWorld parse_world_text(const std::string& text, const std::string& name, c
     };
     LoadedWorld w;
     w.name = name;
-    w.world = std::make_unique<World>();
+    w.world = std::make_unique<HostWorld>();
     ParseError e;
     if (!parse_world(text.data(), text.size(), r, w.world.get(), &e))
         throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message);
@@ -85,10 +85,10 @@ std::vector<std::string> world_search_path(const std::string& scene_path) {
 
 LoadedWorld load_world_file(const std::string& path) { return parse_world_text(read_whole_file(path), path, world_search_path(path)); }
 
-std::unique_ptr<Frame> world_frame(const LoadedWorld& w, int32_t n) {
-    auto frame = std::make_unique<Frame>();
+std::unique_ptr<HostFrame> world_frame(const LoadedWorld& w, int32_t n) {
+    auto frame = std::make_unique<HostFrame>();
     // build_frame's working memory, megabytes: one a thread, as the kernel keeps one
-    static thread_local std::unique_ptr<FrameScratch> scratch = std::make_unique<FrameScratch>();
+    static thread_local std::unique_ptr<HostFrameScratch> scratch = std::make_unique<HostFrameScratch>();
     build_frame(*w.world, n, frame.get(), scratch.get());
     return frame;
 }

@@ -63,7 +63,7 @@ std::unique_ptr<Picture> measure_mapper(const LoadedScene& s, const raster::Mapp
 // with the textures as the mappers take them.
 struct LoadedWorld {
     std::string name;
-    std::unique_ptr<raster::World> world;
+    std::unique_ptr<raster::HostWorld> world;
     std::unique_ptr<raster::HostTextureSet> textures;
 };
 
@@ -74,7 +74,7 @@ LoadedWorld load_world_file(const std::string& path);
 std::vector<std::string> world_search_path(const std::string& scene_path);
 
 // Frame n, as the kernel builds it.
-std::unique_ptr<raster::Frame> world_frame(const LoadedWorld& w, int32_t n);
+std::unique_ptr<raster::HostFrame> world_frame(const LoadedWorld& w, int32_t n);
 
 // The frame drawn with the mapper on a cleared surface (linear, or planes for mappers that write
 // planes), as a linear picture in the scene's palette indices.

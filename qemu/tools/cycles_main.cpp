@@ -75,10 +75,10 @@ int main(int argc, char** argv) {
     std::vector<std::string> scenes = split_commas(argv[1]), mapper_names = split_commas(argv[2]);
     int frames = std::atoi(argv[3]);
     if (frames < 1 || frames > 1000) fail("FRAMES takes 1..1000");
-    auto world = std::make_unique<World>();
+    auto world = std::make_unique<HostWorld>();
     auto textures = std::make_unique<HostTextureSet>();
-    auto frame = std::make_unique<Frame>();
-    auto scratch = std::make_unique<FrameScratch>();
+    auto frame = std::make_unique<HostFrame>();
+    auto scratch = std::make_unique<HostFrameScratch>();
     std::vector<uint8_t> surface(SCREEN_PIXELS);
     for (const std::string& path : scenes) {
         std::vector<uint8_t> text;

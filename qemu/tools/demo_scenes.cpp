@@ -470,7 +470,7 @@ std::string obj_to_mesh(const std::string& obj, const std::string& mesh_name, co
     // what the scene parser says of it, in a scene of its own (the mesh from its line 3): its rules
     // (a name's, a face's) are its alone; an error on a line of the mesh names the OBJ's line
     const std::string scene = "modexlab-scene 2\ntexture t checker 8 8\n" + out + "object o\nmesh " + mesh_name + "\ntexture t\nend\ncamera\nend\n";
-    auto world = std::make_unique<World>();
+    auto world = std::make_unique<HostWorld>();
     ParseError e;
     if (!parse_world(scene.data(), scene.size(), FileResolver{}, world.get(), &e)) {
         std::vector<int> obj_lines = {0};  // the mesh's lines in order: its header, v, vt, f

@@ -21,7 +21,7 @@ MODEXLAB_FUZZ_TARGET(obj) {
     // the mesh in a scene of its own, with a procedural texture
     const std::string scene = "modexlab-scene 2\ntexture t checker 8 8\n" + mesh +
                               "object o\nmesh m\ntexture t\nend\ncamera\nposition 0 0 5\ntarget 0 0 0\nend\n";
-    static auto world = std::make_unique<raster::World>();
+    static auto world = std::make_unique<raster::HostWorld>();
     raster::ParseError e;
     if (!raster::parse_world(scene.data(), scene.size(), raster::FileResolver{}, world.get(), &e))
         fuzz::fail("the converted mesh is refused: line " + std::to_string(e.line) + ": " + e.message);

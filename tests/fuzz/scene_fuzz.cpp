@@ -53,9 +53,9 @@ constexpr size_t GUARD_BYTES = 4096;
 
 // Frame `frame` of the world with the mapper, into a RAM surface between guard bytes.
 void draw(const World& world, int32_t frame, const Mapper& mapper) {
-    static auto scratch = std::make_unique<FrameScratch>();
+    static auto scratch = std::make_unique<HostFrameScratch>();
     static auto textures = std::make_unique<HostTextureSet>();
-    static auto out = std::make_unique<Frame>();
+    static auto out = std::make_unique<HostFrame>();
     build_frame(world, frame, out.get(), scratch.get());
     build_texture_set(world, textures.get());
     const Axis axis = home_axis(mapper);
@@ -72,7 +72,7 @@ void draw(const World& world, int32_t frame, const Mapper& mapper) {
 MODEXLAB_FUZZ_TARGET(scene) {
     static const Files files;
     static auto scene = std::make_unique<Scene>();
-    static auto world = std::make_unique<World>();
+    static auto world = std::make_unique<HostWorld>();
     const char* text = reinterpret_cast<const char*>(data);
     ParseError e;
     const int version = scene_version(text, size, &e);

@@ -46,7 +46,7 @@ MODEXLAB_FUZZ_TARGET(upload) {
     const char* text = reinterpret_cast<const char*>(bytes);
     raster::ParseError e;
     static auto screen = std::make_unique<raster::Scene>();
-    static auto world = std::make_unique<raster::World>();
+    static auto world = std::make_unique<raster::HostWorld>();
     const int version = raster::scene_version(text, h.length, &e);
     const bool ok = version == 1   ? raster::parse_scene(text, h.length, screen.get(), &e)
                     : version == 2 ? raster::parse_world(text, h.length, raster::FileResolver{}, world.get(), &e)

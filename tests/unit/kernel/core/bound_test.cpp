@@ -253,7 +253,7 @@ TEST(Bounds, NoBoundWhereQIsNotPositive) {
 TEST(Bounds, NoMapperExceedsItsBoundOnTheDemoScenes) {
     for (const DemoScene& d : demo_scenes()) {
         LoadedWorld w = load_world_file(std::string("scenes/") + d.name + ".scene");
-        std::vector<std::unique_ptr<Frame>> frames;  // the bench's: 8 spread over the animation
+        std::vector<std::unique_ptr<HostFrame>> frames;  // the bench's: 8 spread over the animation
         for (int f = 0; f < 8; f += SANITIZED_SHARE) frames.push_back(world_frame(w, int32_t(int64_t(f) * w.world->frames / 8)));
         for (int i = 0; i < MAPPER_COUNT; ++i) {
             const Mapper& m = MAPPERS[i];

@@ -368,7 +368,7 @@ TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
     const Mapper& a = auto_mapper();
     for (const DemoScene& d : demo_scenes()) {
         LoadedWorld w = load_world_file(std::string("scenes/") + d.name + ".scene");
-        std::vector<std::unique_ptr<Frame>> frames;  // the bench's
+        std::vector<std::unique_ptr<HostFrame>> frames;  // the bench's
         for (int f = 0; f < 8; f += SANITIZED_SHARE) frames.push_back(world_frame(w, int32_t(int64_t(f) * w.world->frames / 8)));
         for (const Budget& b : BUDGETS) {
             for (Axis axis : {Axis::Rows, Axis::Columns}) {

@@ -18,9 +18,9 @@ namespace {
 using namespace raster;
 
 struct Built {
-    std::unique_ptr<World> world = std::make_unique<World>();
-    std::unique_ptr<Frame> frame = std::make_unique<Frame>();
-    std::unique_ptr<FrameScratch> scratch = std::make_unique<FrameScratch>();
+    std::unique_ptr<HostWorld> world = std::make_unique<HostWorld>();
+    std::unique_ptr<HostFrame> frame = std::make_unique<HostFrame>();
+    std::unique_ptr<HostFrameScratch> scratch = std::make_unique<HostFrameScratch>();
 };
 
 std::unique_ptr<Built> build(const std::string& text, int32_t frame = 0) {
@@ -104,7 +104,7 @@ TEST(Frame, FarPolygonsComeFirst) {
 // random depths over wide and narrow ranges, many of them equal, negative ones, +0 and -0 (equal),
 // so that byte passes are both taken and skipped, and runs of one high word short and long.
 TEST(Frame, PainterOrderIsAStableSortFarFirst) {
-    auto scratch = std::make_unique<FrameScratch>();
+    auto scratch = std::make_unique<HostFrameScratch>();
     std::mt19937 rng(4711u);
     for (int round = 0; round < 200; ++round) {
         const int32_t n = round == 0 ? 0 : round == 1 ? 1 : int32_t(rng() % 3000);

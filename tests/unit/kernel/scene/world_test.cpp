@@ -34,7 +34,7 @@ struct Files {
 };
 
 struct Parsed {
-    std::unique_ptr<World> world = std::make_unique<World>();
+    std::unique_ptr<HostWorld> world = std::make_unique<HostWorld>();
     ParseError error;
     bool ok = false;
 };
@@ -312,7 +312,7 @@ TEST(World, FuzzedScenesNeverCrash) {
     std::mt19937 rng(9);
     const char alphabet[] = "0123456789 ./-\n#abcdefmnotv";
     int ok = 0, refused = 0;
-    auto world = std::make_unique<World>();
+    auto world = std::make_unique<HostWorld>();
     for (int trial = 0; trial < 3000; ++trial) {
         std::string t = good;
         int edits = 1 + int(rng() % 4);
