@@ -35,6 +35,11 @@ bool enabled();
 // before it, but within that page, is not caught). Panics when the pool is full.
 uint8_t* take(size_t bytes, const char* what, const char* name = nullptr);
 
+// Whether buffers whose footprints add up to `footprints` can still be taken (take or
+// take_transient); false, with `cmd`'s error reply naming `what` and the room, where they cannot.
+// For what a command takes at its first use and keeps: the scene loaded may have the room.
+bool room_for(size_t footprints, const char* cmd, const char* what);
+
 // A buffer kept only until release_transient(), taken from the other end of the pool (the 3D
 // scene's textures, made again on every load), guarded the same way.
 uint8_t* take_transient(size_t bytes, const char* what, const char* name = nullptr);
@@ -46,6 +51,7 @@ constexpr size_t footprint(size_t bytes) { return ((bytes + PAGE - 1) / PAGE + 1
 // and what it is once the transient buffers are given back.
 size_t transient_room();
 size_t room_after_release();
+size_t transient_taken();  // by the transient buffers, guards included
 // Counts release_transient's calls: an owner of transient buffers keeps the count it took them
 // at, and knows them given back when the count has moved on.
 uint32_t transient_generation();

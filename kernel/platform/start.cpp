@@ -26,10 +26,10 @@ extern uint8_t fpu_present;  // boot/entry.asm's probe
 
 namespace {
 
-// The pool the kernel needs at least: the buffers its constructors take (the 3D scene and its
-// frame, the texture set and the frame scratch, the screen-space scene's, the upload space, the
-// selftest's) and the largest demo scene's textures with their copies (docs/platform.md, "Memory").
-constexpr uint32_t MIN_POOL_BYTES = 48u << 20;
+// The pool the kernel needs at least: the buffers its constructors take (what every 3D scene and
+// screen-space scene has, the RAM surfaces, the upload space: a quarter of the pool) with room to
+// spare for a small scene (docs/platform.md, "Memory"); a scene's own buffers are taken at its load.
+constexpr uint32_t MIN_POOL_BYTES = 2u << 20;
 
 // Whether the command line holds the word `word` (among its first 16, as kernel_main reads them).
 bool has_word(const char* line, const char* word) {
@@ -41,7 +41,7 @@ bool has_word(const char* line, const char* word) {
     return false;
 }
 
-uint32_t mib(uint64_t bytes) { return uint32_t(bytes >> 20); }
+uint32_t kib(uint64_t bytes) { return uint32_t(bytes >> 10); }
 
 void place_pool(const multiboot::Info* info) {
     const uint64_t image_start = uintptr_t(__kernel_start), image_end = uintptr_t(__kernel_end);
@@ -57,9 +57,9 @@ void place_pool(const multiboot::Info* info) {
     const memory::Range pool = memory::largest_free(info, kept, count);
     if (pool.bytes() < MIN_POOL_BYTES) {
         lib::Fmt m;
-        m.s("not enough memory: modexlab needs ").u(mib(MIN_POOL_BYTES)).s(" MiB of free RAM for its buffers beside its ");
-        m.u(mib(image_end - image_start) + 1).s(" MiB image; the largest stretch the loader reports is ").u(mib(pool.bytes()));
-        m.s(" MiB (").hex(uint32_t(pool.start)).s("..").hex(uint32_t(pool.end)).s(")");
+        m.s("not enough memory: modexlab needs ").u(kib(MIN_POOL_BYTES)).s(" KiB of free RAM for its buffers beside its ");
+        m.u(kib(image_end - image_start)).s(" KiB image; the largest stretch the loader reports is ").u(kib(pool.bytes()));
+        m.s(" KiB (").hex(uint32_t(pool.start)).s("..").hex(uint32_t(pool.end)).s(")");
         panic(m.c_str());
     }
     guard::place(uint32_t(pool.start), uint32_t(pool.end));

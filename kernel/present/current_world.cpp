@@ -125,7 +125,7 @@ void place_textures() {
 bool no_room(raster::ParseError* error, const char* part, size_t need) {
     lib::Fmt m;
     m.s("not enough memory for this scene: ").s(part).s(" need ").u(uint32_t((need + 1023) >> 10)).s(" KiB, ");
-    m.u(uint32_t(guard::transient_room() >> 10)).s(" KiB free (docs/platform.md, Memory)");
+    m.u(uint32_t(guard::room_after_release() >> 10)).s(" KiB free (docs/platform.md, Memory)");
     return raster::scene_text::fail(error, 0, m.c_str());
 }
 

@@ -26,10 +26,16 @@ namespace {
 // fault's report names the buffer, the mapper and the polygon.
 void draw_out_of_bounds(bool short_texture) {
     constexpr int32_t SIDE = 64;
-    static uint8_t* const texels = guard::take(size_t(SIDE) * SIDE, "fault texture");
-    static uint8_t* const short_texels = guard::take(size_t(SIDE) * SIDE / 2, "fault texture (32 of its 64 rows)");
-    static uint8_t* const surface = guard::take(raster::SCREEN_PIXELS, "fault surface");
-    static uint8_t* const short_surface = guard::take(raster::SCREEN_PIXELS / 2, "fault surface (120 of its 240 rows)");
+    static uint8_t *texels = nullptr, *short_texels = nullptr, *surface = nullptr, *short_surface = nullptr;
+    if (!texels) {
+        const size_t need = guard::footprint(size_t(SIDE) * SIDE) + guard::footprint(size_t(SIDE) * SIDE / 2) +
+                            guard::footprint(raster::SCREEN_PIXELS) + guard::footprint(raster::SCREEN_PIXELS / 2);
+        if (!guard::room_for(need, "fault", "the fault's texture and surface")) return;
+        texels = guard::take(size_t(SIDE) * SIDE, "fault texture");
+        short_texels = guard::take(size_t(SIDE) * SIDE / 2, "fault texture (32 of its 64 rows)");
+        surface = guard::take(raster::SCREEN_PIXELS, "fault surface");
+        short_surface = guard::take(raster::SCREEN_PIXELS / 2, "fault surface (120 of its 240 rows)");
+    }
     const raster::Texture tex{short_texture ? short_texels : texels, SIDE, SIDE, raster::Wrap::Clamp};
     raster::Target target = raster::linear_target(short_texture ? surface : short_surface, raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT,
                                                   raster::SCREEN_WIDTH);
@@ -70,18 +76,28 @@ constexpr uint32_t DEFAULT_CASES = 2000, MAX_CASES = 1000000;
 // that a line stops even a long check within a fraction of a second.
 constexpr uint32_t CHUNK_CASES = 1000;
 constexpr int MAX_CHECKED_LOOPS = 16;
-// Static: the loops' destinations and texels, over a megabyte, far beyond the 64 KiB kernel stack.
-// (4-aligned: each ends on a page, and its size is a multiple of 4)
-uint8_t* const g_check_a = guard::take(raster::CHECK_DST_BYTES, "selftest destination (twin)");
-uint8_t* const g_check_b = guard::take(raster::CHECK_DST_BYTES, "selftest destination (NASM)");
-uint8_t* const g_check_texels = guard::take(raster::CHECK_TEXEL_BYTES, "selftest texels");
+// The loops' destinations and texels, over a megabyte, far beyond the 64 KiB kernel stack: taken
+// at the first selftest and kept. (4-aligned: each ends on a page, and its size is a multiple of 4)
+uint8_t *g_check_a = nullptr, *g_check_b = nullptr, *g_check_texels = nullptr;
+bool take_check_buffers() {
+    if (g_check_a) return true;
+    const size_t need = 2 * guard::footprint(raster::CHECK_DST_BYTES) + guard::footprint(raster::CHECK_TEXEL_BYTES);
+    if (!guard::room_for(need, "selftest", "the selftest's buffers")) return false;
+    g_check_a = guard::take(raster::CHECK_DST_BYTES, "selftest destination (twin)");
+    g_check_b = guard::take(raster::CHECK_DST_BYTES, "selftest destination (NASM)");
+    g_check_texels = guard::take(raster::CHECK_TEXEL_BYTES, "selftest texels");
+    return true;
+}
 static_assert(raster::CHECK_DST_BYTES % 4 == 0);
 
 }  // namespace
 
 void cmd_fault(Context&, const StrView* args, size_t nargs) {
     for (const Fault& f : FAULTS)
-        if (nargs == 0 || args[0].equals(f.name)) f.raise();
+        if (nargs == 0 || args[0].equals(f.name)) {
+            f.raise();  // (returns only where it could not: its error replied)
+            return;
+        }
     unknown_name_error("fault", "fault", args[0], [](int i) { return FAULTS[i].name; }, FAULT_COUNT);
 }
 
@@ -93,6 +109,7 @@ void cmd_selftest(Context&, const StrView* args, size_t nargs) {
         reply::error("selftest", m.c_str());
         return;
     }
+    if (!take_check_buffers()) return;
     raster::CheckBuffers buffers{g_check_a, g_check_b, raster::CHECK_DST_BYTES, g_check_texels};
     raster::LoopCheck results[MAX_CHECKED_LOOPS];
     int n = 0;
@@ -158,6 +175,18 @@ namespace {
 
 // fuzz's textures (kernel/core/fuzz.h), each copy between guard pages: made on the first `fuzz`.
 struct FuzzBank {
+    // what the bank and the surface take of the pool
+    static size_t footprints() {
+        size_t n = guard::footprint(sizeof(FuzzBank)) + guard::footprint(raster::SCREEN_PIXELS);
+        for (int i = 0; i < raster::FUZZ_TEXTURE_COUNT; ++i) {
+            const raster::FuzzTextureSize size = raster::fuzz_texture_size(i);
+            const raster::Texture t{nullptr, size.width, size.height, raster::fuzz_texture_wrap(i)};
+            n += guard::footprint(size_t(size.width) * size_t(size.height)) + guard::footprint(size_t(raster::bordered_bytes(size.width, size.height)));
+            if (raster::wants_aligned256(t)) n += guard::footprint(raster::ALIGNED256_BYTES);
+            if (raster::wants_doubled(t)) n += guard::footprint(size_t(raster::doubled_bytes(size.width, size.height)));
+        }
+        return n;
+    }
     raster::Texture textures[raster::FUZZ_TEXTURE_COUNT];
     char names[raster::FUZZ_TEXTURE_COUNT][24];
     FuzzBank() {
@@ -199,11 +228,16 @@ void cmd_fuzz(Context& ctx, const StrView* args, size_t nargs) {
         unknown_name_error("fuzz", "mapper", args[1], [](int i) { return raster::MAPPERS[i].name; }, raster::MAPPER_COUNT);
         return;
     }
-    static FuzzBank bank;
+    static FuzzBank* bank = nullptr;
+    if (!bank) {
+        if (!guard::room_for(FuzzBank::footprints(), "fuzz", "fuzz's textures")) return;
+        bank = guard::take_object<FuzzBank>("fuzz's texture bank");
+        fuzz_surface(nullptr, false);
+    }
     Progress p = progress("fuzz", ctx);
     const raster::Watch watch = p.watch();
     const uint64_t t0 = timer::now();
-    const raster::FuzzStats f = raster::fuzz_mapper(*mapper, seed, count, bank.textures, fuzz_surface, nullptr, raster::Variant::Asm, &watch);
+    const raster::FuzzStats f = raster::fuzz_mapper(*mapper, seed, count, bank->textures, fuzz_surface, nullptr, raster::Variant::Asm, &watch);
     const uint64_t ticks = timer::since(t0);
     lib::JsonLine r = reply::begin(true);
     r.str("cmd", "fuzz").str("mapper", mapper->name).u32("seed", seed).u32("polygons", f.tried).u32("polygons_asked", count);

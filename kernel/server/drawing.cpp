@@ -18,7 +18,7 @@ namespace {
 
 constexpr uint32_t MAX_PLAY_FRAMES = 100000;
 // Static: a frame's ticks for the median, 400 KB at the most, far beyond the 64 KiB kernel stack.
-uint32_t* const g_play_ticks = reinterpret_cast<uint32_t*>(guard::take(MAX_PLAY_FRAMES * sizeof(uint32_t), "play's frame times"));
+uint32_t* g_play_ticks = nullptr;  // taken at the first play and kept
 
 // bench: each frame drawn twice, once plainly (the totals) and once with the probe (setup and
 // inner loops; walking is the rest of the plain drawing time), then flipped.
@@ -151,6 +151,10 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     uint32_t frames;
     DrawArgs d;
     if (!parse_animation_args("play", args, nargs, MAX_PLAY_FRAMES, "", &frames, &d)) return;
+    if (!g_play_ticks) {
+        if (!guard::room_for(guard::footprint(MAX_PLAY_FRAMES * sizeof(uint32_t)), "play", "play's frame times")) return;
+        g_play_ticks = reinterpret_cast<uint32_t*>(guard::take(MAX_PLAY_FRAMES * sizeof(uint32_t), "play's frame times"));
+    }
     uint64_t pixels = 0, total = 0, t_start = timer::now();
     MapperTally tally;
     uint32_t done = 0;

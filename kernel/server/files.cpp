@@ -6,6 +6,7 @@
 #include "kernel/present/current_screen.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
+#include "kernel/platform/guard.h"
 #include "kernel/present/current_world.h"
 
 namespace server {
@@ -66,6 +67,8 @@ void load_and_reply(const char* cmd, const file_table::File& f) {
     r.str("cmd", cmd).str("name", f.name).str("origin", file_table::origin_name(f.origin)).u32("bytes", uint32_t(f.size));
     if (version == 1) describe_screen_scene(r);
     else describe_world(r);
+    // what its buffers take of the pool, and what is left
+    r.u32("memory_kib", uint32_t(guard::transient_taken() >> 10)).u32("free_kib", uint32_t(guard::transient_room() >> 10));
     r.end();
 }
 

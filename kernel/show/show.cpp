@@ -64,18 +64,35 @@ struct Show {
     bool running_before = false;
     char hud_text[HUD_LINES][HUD_CHARS + 1] = {};
     int hud_count = 0;
+    char skipped[HUD_CHARS + 1] = {};  // the HUD's note of the last scene skipped, until the show moves on
     bool served = false;  // a byte on COM1 ended the on-screen bench: the show gives way
 };
 
 const file_table::File& scene_file(const Show& s) { return file_table::at(s.scenes[s.scene]); }
 
+// Loads the current scene; one that cannot be (too large for this machine's memory, a bad
+// module) is skipped, said on COM1 (a scene_skipped event with the reason) and in the HUD.
 bool load_scene(Show& s) {
     const file_table::File& f = scene_file(s);
     raster::ParseError e;
     s.loaded = current_world::load(f.name, f.data, f.size, &e);
     if (s.loaded) s.colours = raster::text_colours(current_world::world().palette);
     s.next_frame = 0;
+    if (!s.loaded) {
+        lib::JsonLine j(serial::sink());
+        j.str("event", "scene_skipped").str("scene", f.name).str("error", e.message).u32("line", uint32_t(e.line)).end();
+        lib::Fmt note;  // (the HUD's line is short: COM1 has the whole reason)
+        const bool memory = lib::StrView{e.message, lib::c_length(e.message)}.starts_with("not enough memory");
+        note.s("skipped ").s(f.name).s(memory ? ": no memory" : ": error");
+        lib::copy_c_string(s.skipped, sizeof s.skipped, note.c_str());
+    }
     return s.loaded;
+}
+// The current scene or, where it is skipped, the next that loads; false when none does.
+bool load_some_scene(Show& s) {
+    for (int tries = 0; tries < s.scene_count; ++tries, s.scene = (s.scene + 1) % s.scene_count)
+        if (load_scene(s)) return true;
+    return false;
 }
 
 void set_line(Show& s, const lib::Fmt& f) {
@@ -89,6 +106,7 @@ void compose_hud(Show& s, const current_world::FrameResult& r, uint64_t period) 
     lib::Fmt a;
     a.s(current_world::name()).s("  frame ").u(uint32_t(s.shown_frame)).s("/").u(uint32_t(current_world::world().frames));
     set_line(s, a);
+    if (s.skipped[0]) set_line(s, lib::Fmt().s(s.skipped));
     lib::Fmt b;
     b.s(s.mapper->name);
     if (s.mapper->is_auto) {
@@ -276,8 +294,7 @@ bool keys(Show& s) {
 
 void play(Show& s) {
     s.loaded = false;
-    for (int tries = 0; tries < s.scene_count && !load_scene(s); ++tries) s.scene = (s.scene + 1) % s.scene_count;  // a bad module: on
-    if (!s.loaded) return;
+    if (!load_some_scene(s)) return;
     for (;;) {
         if (!keys(s)) return;
         if (s.paused || s.help || !s.loaded) continue;
@@ -287,7 +304,8 @@ void play(Show& s) {
         if (s.pinned) continue;
         s.scene = (s.scene + 1) % s.scene_count;  // the animation played: on to the next scene
         s.running_before = false;
-        load_scene(s);
+        s.skipped[0] = 0;  // (a note made now stays while the scene after the skip plays)
+        if (!load_some_scene(s)) return;
     }
 }
 

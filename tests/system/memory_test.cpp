@@ -1,11 +1,89 @@
 // The kernel's memory: its image is small and loaded at 1 MiB, its buffers come from the largest
-// stretch of RAM the loader reports (the pool), and a machine with too little is told so, with
-// what it needs and what it has, on COM1 (and the screen) before the kernel halts.
+// stretch of RAM the loader reports (the pool), a scene's own buffers are taken at its load, sized
+// to it: a scene that does not fit is refused saying what it needs and what is free, the show skips
+// it saying so, and a machine with too little at all is told so, with what it needs and what it
+// has, on COM1 (and the screen) before the kernel halts.
 #include "tests/system/system.h"
+
+#include <map>
+
+#include "qemu/accuracy/measure.h"
+#include "qemu/tools/demo_scenes.h"
 
 namespace {
 
 using namespace systest;
+
+// What each demo scene's buffers take (the load reply's memory_kib), on a machine with room for all.
+std::map<std::string, uint32_t> demo_scene_needs() {
+    SessionOptions o = options_for_this_test();
+    o.memory_mib = 64, o.name += ".needs";
+    Session s(o);
+    std::map<std::string, uint32_t> need;
+    for (const DemoScene& d : demo_scenes()) need[d.name] = s.ok(std::string("load ") + d.name + ".scene")["memory_kib"].get<uint32_t>();
+    return need;
+}
+
+// The room for a scene's buffers after the boot: the pool less what the boot took and its last guard.
+uint32_t scene_room_kib(const json& boot) {
+    const json& pool = boot["pool"];
+    return pool["kib"].get<uint32_t>() - pool["taken_kib"].get<uint32_t>() - 4;
+}
+
+TEST(Memory, In16MiBEveryDemoSceneThatFitsPlaysAsOnTheHostAndTheOthersAreRefusedSayingWhy) {
+    const std::map<std::string, uint32_t> need = demo_scene_needs();
+    SessionOptions o = options_for_this_test();
+    o.memory_mib = 16;
+    Session s(o);
+    const uint32_t room = scene_room_kib(s.boot_line());
+    s.ok("mode modex");
+    int played = 0;
+    for (const DemoScene& d : demo_scenes()) {
+        SCOPED_TRACE(d.name);
+        const uint32_t kib = need.at(d.name);
+        const json r = s.command(std::string("load ") + d.name + ".scene");
+        if (kib > room) {
+            ASSERT_FALSE(r["ok"].get<bool>()) << r.dump();
+            const std::string error = r["error"];
+            EXPECT_NE(error.find("not enough memory for this scene"), std::string::npos) << error;
+            EXPECT_NE(error.find("need " + std::to_string(kib) + " KiB, " + std::to_string(room) + " KiB free"), std::string::npos) << error;
+            continue;
+        }
+        ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
+        EXPECT_EQ(r["memory_kib"], kib) << "sized to the scene, the same on every machine";
+        LoadedWorld host = load_world_file("scenes/" + std::string(d.name) + ".scene");
+        const json f = s.ok("frame 37 auto 1 linear");
+        auto frame = world_frame(host, 37);
+        const raster::Axis axis = f["walker"] == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
+        const IndexImage want = render_world_frame(host, *frame, *raster::find_mapper("auto"), axis);
+        EXPECT_EQ(s.readback_crc(1), crc32_of(want));
+        ++played;
+    }
+    std::printf("16 MiB: %d of %zu demo scenes play, %u KiB for a scene's buffers\n", played, demo_scenes().size(), room);
+    EXPECT_GT(played, 0);
+}
+
+TEST(Memory, In8MiBTheKernelServesAndItsShowSkipsTheScenesThatDoNotFitSayingWhy) {
+    const std::map<std::string, uint32_t> need = demo_scene_needs();
+    SessionOptions o = options_for_this_test();
+    o.memory_mib = 8;
+    o.append = "boot=demo";
+    Session s(o);
+    const uint32_t room = scene_room_kib(s.boot_line());
+    std::vector<json> skipped = {s.wait_event("scene_skipped")};
+    const json hello = s.ok("hello", [&](const json& e) { skipped.push_back(e); });  // (the show may skip more first)
+    EXPECT_EQ(hello["cmd"], "hello") << "the show gives way to a command";
+    for (const json& e : skipped) {
+        ASSERT_EQ(e["event"], "scene_skipped") << e.dump();
+        const std::string scene = e["scene"], name = scene.substr(0, scene.size() - 6), error = e["error"];
+        EXPECT_GT(need.at(name), room) << scene << " was skipped";
+        EXPECT_NE(error.find("not enough memory for this scene"), std::string::npos) << error;
+    }
+    for (const auto& [n, kib] : need) {
+        SCOPED_TRACE(n);
+        EXPECT_EQ(s.command("load " + n + ".scene")["ok"].get<bool>(), kib <= room);
+    }
+}
 
 TEST(Memory, ThePoolIsTheLargestStretchOfRamAboveTheImage) {
     SessionOptions o = options_for_this_test();
@@ -22,14 +100,22 @@ TEST(Memory, ThePoolIsTheLargestStretchOfRamAboveTheImage) {
 
 TEST(Memory, TooLittleIsRefusedWithWhatItNeedsAndWhatItHas) {
     SessionOptions o = options_for_this_test();
-    o.memory_mib = 32;
+    o.memory_mib = 6;
     try {
         Session s(o);
-        FAIL() << "booted in 32 MiB: " << s.boot_line().dump();
+        FAIL() << "booted in 6 MiB: " << s.boot_line().dump();
     } catch (const HarnessError& e) {
         const std::string what = e.what();
-        EXPECT_NE(what.find("not enough memory: modexlab needs 48 MiB of free RAM for its buffers"), std::string::npos) << what;
-        EXPECT_NE(what.find("the largest stretch the loader reports is 26 MiB"), std::string::npos) << what;
+        EXPECT_NE(what.find("not enough memory: modexlab needs 2048 KiB of free RAM for its buffers beside its "), std::string::npos) << what;
+        // the stretch it names, in KiB, below 6 MiB and above the image
+        const size_t at = what.find("the largest stretch the loader reports is ");
+        ASSERT_NE(at, std::string::npos) << what;
+        unsigned kib = 0, start = 0, end = 0;
+        ASSERT_EQ(std::sscanf(what.c_str() + at, "the largest stretch the loader reports is %u KiB (0x%x..0x%x)", &kib, &start, &end), 3) << what;
+        EXPECT_EQ(kib, (end - start) >> 10);
+        EXPECT_LT(kib, 2048u);
+        EXPECT_GE(start, kernel_symbol("__kernel_end"));
+        EXPECT_LE(end, 6u << 20);
     }
 }
 
