@@ -530,7 +530,7 @@ soak: deps
 CPU_TIER_TESTS := Boot.KernelByMultiboot:Boot.IsoAsCdrom:Cpu.*:Video.EveryPatternInEveryPageMatchesTheHostRendering:$\
 	Scenes3d.EveryBuiltInSceneEqualsTheHostAtFixedFrames:Render.KernelPicturesEqualTheHostsForEveryMapperOnEveryScene:$\
 	Mappers.TheKernelSelftestComparesEveryNasmLoopWithItsTwin:Bench.FiguresAddUpAndEqualTheHostsCounts:Clock.*
-CPU_TIER := $(foreach cpu,486 pentium,MODEXLAB_TEST_CPU=$(cpu),MODEXLAB_TEST_MEMORY_MIB=64@$(TESTS)::$(CPU_TIER_TESTS))
+CPU_TIER := $(foreach cpu,486 pentium,MODEXLAB_TEST_CPU=$(cpu),MODEXLAB_TEST_MEMORY_MIB=16@$(TESTS)::$(CPU_TIER_TESTS))
 
 test: deps
 	@$(MAKE) -s -j$(NPROC) all host fixtures

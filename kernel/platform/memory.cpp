@@ -1,6 +1,8 @@
 // The pool's RAM (memory.h).
 #include "kernel/platform/memory.h"
 
+#include "kernel/lib/mem.h"
+
 namespace memory {
 
 namespace {
@@ -34,7 +36,7 @@ void consider(uint64_t lo, uint64_t hi, const Range* kept, int count, Range* bes
 
 }  // namespace
 
-int kept(const multiboot::Info* info, uint64_t image_start, uint64_t image_end, Range* out) {
+int kept(const multiboot::Info* info, uint64_t image_start, uint64_t image_end, Range* out, bool modules_kept) {
     int n = 0;
     auto add = [&](uint64_t start, uint64_t end) {
         if (n < MAX_KEPT && end > start) out[n++] = Range{start, end};
@@ -54,8 +56,18 @@ int kept(const multiboot::Info* info, uint64_t image_start, uint64_t image_end, 
             if (end > r.end) r.end = end;
         };
         for (uint32_t i = 0; i < info->mods_count; ++i) {
+            const uint64_t name_end = mods[i].string ? string_end(mods[i].string) : 0;
+            if (!modules_kept) {
+                if (mods[i].string) add(mods[i].string, name_end);
+                continue;
+            }
+            if (i < uint32_t(MODULES_APART)) {
+                add(mods[i].mod_start, mods[i].mod_end);
+                if (mods[i].string) add(mods[i].string, name_end);
+                continue;
+            }
             widen(modules, mods[i].mod_start, mods[i].mod_end);
-            if (mods[i].string) widen(names, mods[i].string, string_end(mods[i].string));
+            if (mods[i].string) widen(names, mods[i].string, name_end);
         }
         add(modules.start, modules.end);
         add(names.start, names.end);
@@ -75,6 +87,45 @@ Range largest_free(const multiboot::Info* info, const Range* kept, int count) {
         consider(LOW, LOW + uint64_t(info->mem_upper) * 1024, kept, count, &best);
     }
     return best;
+}
+
+Range gather_modules(const multiboot::Info* info, Range pool) {
+    if (!(info->flags & multiboot::INFO_MODULES)) return pool;
+    auto* mods = reinterpret_cast<multiboot::Module*>(uintptr_t(info->mods_addr));
+    constexpr uint64_t PAGE = 4096;
+    uint64_t below = pool.end & ~(PAGE - 1);  // the modules moved so far lie in [below, pool.end)
+    for (uint32_t i = 0; i < info->mods_count; ++i) {
+        const uint64_t start = mods[i].mod_start, end = mods[i].mod_end;
+        if (end > pool.start && start < pool.end && (start < pool.start || end > pool.end)) return Range{};
+        if (start >= pool.start && end <= pool.end) below -= (end - start + PAGE - 1) & ~(PAGE - 1);
+    }
+    if (below <= pool.start) return Range{};
+    // The highest first, each to just below the last one moved: up, or where it is, never down (so
+    // over nothing still to move); checked for every module before any moves.
+    auto walk = [&](bool move) {
+        uint64_t top = pool.end & ~(PAGE - 1), done_below = ~0ull;
+        for (;;) {
+            int next = -1;
+            for (uint32_t i = 0; i < info->mods_count; ++i) {
+                const uint64_t start = mods[i].mod_start;
+                if (start >= pool.start && mods[i].mod_end <= pool.end && start < done_below && (next < 0 || start > mods[next].mod_start))
+                    next = int(i);
+            }
+            if (next < 0) return true;
+            multiboot::Module& m = mods[next];
+            const uint64_t size = m.mod_end - m.mod_start, to = (top - size) & ~(PAGE - 1);
+            if (to < m.mod_start) return false;
+            done_below = m.mod_start;
+            if (move) {
+                memmove(reinterpret_cast<void*>(uintptr_t(to)), reinterpret_cast<const void*>(uintptr_t(m.mod_start)), size_t(size));
+                m.mod_start = uint32_t(to), m.mod_end = uint32_t(to + size);
+            }
+            top = to;
+        }
+    };
+    if (!walk(false)) return Range{};
+    walk(true);
+    return Range{pool.start, below};
 }
 
 }  // namespace memory

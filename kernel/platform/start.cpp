@@ -52,9 +52,14 @@ void place_pool(const multiboot::Info* info) {
         m.s(", the loader reports none at ").hex(uint32_t(missing));
         panic(m.c_str());
     }
+    // the largest stretch with the modules gathered at its top; where they cannot be, around them
     memory::Range kept[memory::MAX_KEPT];
-    const int count = memory::kept(info, image_start, image_end, kept);
-    const memory::Range pool = memory::largest_free(info, kept, count);
+    int count = memory::kept(info, image_start, image_end, kept, false);
+    memory::Range pool = memory::gather_modules(info, memory::largest_free(info, kept, count));
+    if (!pool.bytes()) {
+        count = memory::kept(info, image_start, image_end, kept);
+        pool = memory::largest_free(info, kept, count);
+    }
     if (pool.bytes() < MIN_POOL_BYTES) {
         lib::Fmt m;
         m.s("not enough memory: modexlab needs ").u(kib(MIN_POOL_BYTES)).s(" KiB of free RAM for its buffers beside its ");

@@ -1,7 +1,9 @@
 // The current 3D scene and its frames.
 #include "kernel/present/current_world.h"
 
+#include "drivers/serial.h"
 #include "drivers/timer.h"
+#include "kernel/lib/json.h"
 #include "drivers/vga.h"
 #include "kernel/present/file_table.h"
 #include "kernel/core/choice.h"
@@ -25,6 +27,7 @@ raster::TextureSet& g_textures = *guard::take_object<raster::TextureSet>("textur
 raster::FrameScratch& g_scratch = *guard::take_object<raster::FrameScratch>("frame scratch");
 bool g_loaded = false;
 uint32_t g_generation = 0;  // guard's transient generation its buffers belong to
+bool g_doubled = true;      // its textures have their doubled copies (else left out: memory)
 bool g_overridden = false;
 raster::Budget g_override;
 char g_name[raster::MAX_FILE_NAME];
@@ -84,21 +87,22 @@ raster::Texture world_texture(int32_t i) {
     const raster::WorldTexture& t = g_world.textures[i];
     return raster::Texture{g_world.texels + t.offset, t.width, t.height, raster::Wrap::Repeat};
 }
-size_t textures_bytes() {
+size_t textures_bytes(bool doubled) {
     size_t n = 0;
     for (int32_t i = 0; i < g_world.texture_count; ++i) {
         const raster::Texture t = world_texture(i);
         n += guard::footprint(size_t(t.width) * size_t(t.height)) + guard::footprint(size_t(raster::bordered_bytes(t.width, t.height)));
         if (raster::wants_aligned256(t)) n += guard::footprint(raster::ALIGNED256_BYTES);
-        if (raster::wants_doubled(t)) n += guard::footprint(size_t(raster::doubled_bytes(t.width, t.height)));
+        if (doubled && raster::wants_doubled(t)) n += guard::footprint(size_t(raster::doubled_bytes(t.width, t.height)));
     }
     return n;
 }
 
 // Each texture of the world in a buffer of its own, with its bordered, aligned and doubled copies
 // in theirs, each ending against a guard page; the objects' textures point at them (a texture's
-// copies are shared by the objects that use it).
-void place_textures() {
+// copies are shared by the objects that use it). Without `doubled`, no doubled copies: fast-table
+// then refuses the textures that would have one, and the other fast loops those above 256.
+void place_textures(bool doubled) {
     raster::Texture placed[raster::MAX_WORLD_TEXTURES] = {};
     for (int32_t i = 0; i < g_world.texture_count; ++i) {
         const raster::Texture t = world_texture(i);
@@ -109,10 +113,10 @@ void place_textures() {
         placed[i] = raster::Texture{at, t.width, t.height, raster::Wrap::Repeat};
         uint8_t* bordered = guard::take_transient(size_t(raster::bordered_bytes(t.width, t.height)), "world texture (bordered copy)", name);
         uint8_t* aligned = raster::wants_aligned256(t) ? guard::take_transient(raster::ALIGNED256_BYTES, "world texture (aligned copy)", name) : nullptr;
-        uint8_t* doubled = raster::wants_doubled(t)
-                               ? guard::take_transient(size_t(raster::doubled_bytes(t.width, t.height)), "world texture (doubled copy)", name)
-                               : nullptr;
-        raster::prepare_texture(&placed[i], bordered, aligned, doubled);
+        uint8_t* twice = doubled && raster::wants_doubled(t)
+                             ? guard::take_transient(size_t(raster::doubled_bytes(t.width, t.height)), "world texture (doubled copy)", name)
+                             : nullptr;
+        raster::prepare_texture(&placed[i], bordered, aligned, twice);
     }
     for (int32_t o = 0; o < g_world.object_count; ++o) {
         raster::Texture t = placed[g_world.objects[o].texture];
@@ -147,11 +151,14 @@ bool load(const char* name, const uint8_t* text, size_t length, raster::ParseErr
     if (world_bytes(room) > guard::transient_room()) return no_room(error, "its meshes and textures", world_bytes(room));
     take_world(room);
     if (!raster::parse_world(chars, length, file_table::resolver(), &g_world, error)) return false;
+    // the frame and every copy of every texture; where they do not fit, the doubled copies left out
+    // (the largest: four times the texels) before the scene is refused
     const raster::FrameRoom frame = raster::frame_room(g_world);
-    const size_t more = frame_bytes(frame) + textures_bytes();
-    if (more > guard::transient_room()) return no_room(error, "its frames and its textures' copies", world_bytes(room) + more);
+    const size_t all = frame_bytes(frame) + textures_bytes(true), fewer = frame_bytes(frame) + textures_bytes(false);
+    if (fewer > guard::transient_room()) return no_room(error, "its frames and its textures' copies", world_bytes(room) + all);
+    g_doubled = all <= guard::transient_room();
     take_frame(frame);
-    place_textures();
+    place_textures(g_doubled);
     prepare_choices();
     lib::copy_c_string(g_name, sizeof g_name, name);
     g_loaded = true;
@@ -160,6 +167,12 @@ bool load(const char* name, const uint8_t* text, size_t length, raster::ParseErr
 }
 
 bool loaded() { return g_loaded && g_generation == guard::transient_generation(); }
+
+bool doubled_copies() { return g_doubled; }
+
+void say_skipped(const char* name, const raster::ParseError& error) {
+    lib::JsonLine(serial::sink()).str("event", "scene_skipped").str("scene", name).str("error", error.message).u32("line", uint32_t(error.line)).end();
+}
 
 void set_budget(const raster::Budget* override) {
     g_overridden = override != nullptr;

@@ -15,6 +15,12 @@ namespace current_world {
 // is loaded (the parser works in place) and `error` says why.
 bool load(const char* name, const uint8_t* text, size_t length, raster::ParseError* error);
 bool loaded();
+// Whether the scene's textures have their doubled copies: false where the memory left had no room
+// for them (docs/platform.md, "Memory").
+bool doubled_copies();
+// The scene_skipped event on COM1: a scene the show or the on-screen bench passes over, and why
+// (load's error).
+void say_skipped(const char* name, const raster::ParseError& error);
 const raster::World& world();
 const char* name();
 

@@ -193,14 +193,15 @@ struct HostTextureSet : TextureSet {
     uint8_t aligned[MAX_WORLD_TEXTURES][ALIGNED256_BYTES];
     uint8_t doubled[DOUBLED_BYTES];
 };
-// Every texture of the world with its copies, and each object's (its wrap).
-inline void build_texture_set(const World& world, HostTextureSet* out) {
+// Every texture of the world with its copies (`doubled` false: without the doubled ones, as the
+// kernel leaves them out where memory is short), and each object's (its wrap).
+inline void build_texture_set(const World& world, HostTextureSet* out, bool doubled_copies = true) {
     size_t bordered = 0, doubled = 0;
     Texture prepared[MAX_WORLD_TEXTURES];
     for (int32_t i = 0; i < world.texture_count; ++i) {
         const WorldTexture& t = world.textures[i];
         prepared[i] = Texture{world.texels + t.offset, t.width, t.height, Wrap::Repeat};
-        prepare_texture(&prepared[i], out->bordered + bordered, out->aligned[i], out->doubled + doubled);
+        prepare_texture(&prepared[i], out->bordered + bordered, out->aligned[i], doubled_copies ? out->doubled + doubled : nullptr);
         bordered += size_t(bordered_bytes(t.width, t.height));
         if (prepared[i].doubled) doubled += size_t(doubled_bytes(t.width, t.height));
     }

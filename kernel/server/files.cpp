@@ -51,6 +51,7 @@ void describe_world(lib::JsonLine& r) {
         .u32("frames", uint32_t(w.frames))
         .str("palette", w.palette_texture >= 0 ? w.textures[w.palette_texture].name : "default");
     write_budget(r, "budget", w.budget);
+    r.boolean("doubled_copies", current_world::doubled_copies());
 }
 
 // Loads a scene file of either version as the current scene of its kind.

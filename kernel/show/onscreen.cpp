@@ -294,7 +294,10 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
     for (int i = 0; i < scenes && !stopped; ++i) {
         const file_table::File& f = file_table::at(s.scenes[i]);
         raster::ParseError pe;
-        if (!current_world::load(f.name, f.data, f.size, &pe)) continue;
+        if (!current_world::load(f.name, f.data, f.size, &pe)) {  // (too large for the memory left, a bad module)
+            current_world::say_skipped(f.name, pe);
+            continue;
+        }
         colours = raster::text_colours(current_world::world().palette);
         for (int m = 0; m < raster::MAPPER_COUNT && !stopped; ++m) {
             const raster::Mapper& mapper = raster::MAPPERS[m];

@@ -79,8 +79,7 @@ bool load_scene(Show& s) {
     if (s.loaded) s.colours = raster::text_colours(current_world::world().palette);
     s.next_frame = 0;
     if (!s.loaded) {
-        lib::JsonLine j(serial::sink());
-        j.str("event", "scene_skipped").str("scene", f.name).str("error", e.message).u32("line", uint32_t(e.line)).end();
+        current_world::say_skipped(f.name, e);
         lib::Fmt note;  // (the HUD's line is short: COM1 has the whole reason)
         const bool memory = lib::StrView{e.message, lib::c_length(e.message)}.starts_with("not enough memory");
         note.s("skipped ").s(f.name).s(memory ? ": no memory" : ": error");

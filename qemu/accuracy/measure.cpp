@@ -78,6 +78,8 @@ LoadedWorld parse_world_text(const std::string& text, const std::string& name, c
     return w;
 }
 
+void leave_out_doubled_copies(LoadedWorld& w) { build_texture_set(*w.world, w.textures.get(), false); }
+
 std::vector<std::string> world_search_path(const std::string& scene_path) {
     std::string dir = std::filesystem::path(scene_path).parent_path().string();
     return {dir.empty() ? "." : dir, std::string(MODEXLAB_BUILD_DIR) + "/scenes"};

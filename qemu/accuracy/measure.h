@@ -71,6 +71,8 @@ struct LoadedWorld {
 LoadedWorld parse_world_text(const std::string& text, const std::string& name, const std::vector<std::string>& search);
 // The file's own directory first, then <build>/scenes (the files made at build time).
 LoadedWorld load_world_file(const std::string& path);
+// The textures without their doubled copies, as the kernel has them where memory is short.
+void leave_out_doubled_copies(LoadedWorld& w);
 std::vector<std::string> world_search_path(const std::string& scene_path);
 
 // Frame n, as the kernel builds it.

@@ -30,37 +30,32 @@ uint32_t scene_room_kib(const json& boot) {
     return pool["kib"].get<uint32_t>() - pool["taken_kib"].get<uint32_t>() - 4;
 }
 
-TEST(Memory, In16MiBEveryDemoSceneThatFitsPlaysAsOnTheHostAndTheOthersAreRefusedSayingWhy) {
+TEST(Memory, In16MiBEveryDemoScenePlaysAsOnTheHostSomeWithoutTheirDoubledCopies) {
     const std::map<std::string, uint32_t> need = demo_scene_needs();
     SessionOptions o = options_for_this_test();
     o.memory_mib = 16;
     Session s(o);
     const uint32_t room = scene_room_kib(s.boot_line());
     s.ok("mode modex");
-    int played = 0;
     for (const DemoScene& d : demo_scenes()) {
         SCOPED_TRACE(d.name);
         const uint32_t kib = need.at(d.name);
         const json r = s.command(std::string("load ") + d.name + ".scene");
-        if (kib > room) {
-            ASSERT_FALSE(r["ok"].get<bool>()) << r.dump();
-            const std::string error = r["error"];
-            EXPECT_NE(error.find("not enough memory for this scene"), std::string::npos) << error;
-            EXPECT_NE(error.find("need " + std::to_string(kib) + " KiB, " + std::to_string(room) + " KiB free"), std::string::npos) << error;
-            continue;
-        }
         ASSERT_TRUE(r["ok"].get<bool>()) << r.dump();
-        EXPECT_EQ(r["memory_kib"], kib) << "sized to the scene, the same on every machine";
+        // sized to the scene, the same on every machine; where it all does not fit, less: without
+        // the doubled copies
+        EXPECT_EQ(r["doubled_copies"].get<bool>(), kib <= room) << r.dump();
+        if (kib <= room) EXPECT_EQ(r["memory_kib"], kib);
+        else EXPECT_LE(r["memory_kib"].get<uint32_t>(), room);
         LoadedWorld host = load_world_file("scenes/" + std::string(d.name) + ".scene");
+        match_kernel_copies(host, r);
         const json f = s.ok("frame 37 auto 1 linear");
         auto frame = world_frame(host, 37);
         const raster::Axis axis = f["walker"] == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
         const IndexImage want = render_world_frame(host, *frame, *raster::find_mapper("auto"), axis);
         EXPECT_EQ(s.readback_crc(1), crc32_of(want));
-        ++played;
     }
-    std::printf("16 MiB: %d of %zu demo scenes play, %u KiB for a scene's buffers\n", played, demo_scenes().size(), room);
-    EXPECT_GT(played, 0);
+    std::printf("16 MiB: %u KiB for a scene's buffers\n", room);
 }
 
 TEST(Memory, In8MiBTheKernelServesAndItsShowSkipsTheScenesThatDoNotFitSayingWhy) {
@@ -79,10 +74,16 @@ TEST(Memory, In8MiBTheKernelServesAndItsShowSkipsTheScenesThatDoNotFitSayingWhy)
         EXPECT_GT(need.at(name), room) << scene << " was skipped";
         EXPECT_NE(error.find("not enough memory for this scene"), std::string::npos) << error;
     }
+    int loaded = 0;
     for (const auto& [n, kib] : need) {
         SCOPED_TRACE(n);
-        EXPECT_EQ(s.command("load " + n + ".scene")["ok"].get<bool>(), kib <= room);
+        const json r = s.command("load " + n + ".scene");
+        if (kib <= room) EXPECT_TRUE(r["ok"].get<bool>() && r["doubled_copies"].get<bool>()) << r.dump();
+        else if (r["ok"]) EXPECT_TRUE(!r["doubled_copies"].get<bool>() && r["memory_kib"].get<uint32_t>() <= room) << r.dump();
+        else EXPECT_NE(r["error"].get<std::string>().find("not enough memory for this scene"), std::string::npos) << r.dump();
+        loaded += r["ok"].get<bool>();
     }
+    std::printf("8 MiB: %d of %zu demo scenes load, %u KiB for a scene's buffers\n", loaded, need.size(), room);
 }
 
 TEST(Memory, ThePoolIsTheLargestStretchOfRamAboveTheImage) {
@@ -96,6 +97,25 @@ TEST(Memory, ThePoolIsTheLargestStretchOfRamAboveTheImage) {
     EXPECT_EQ(pool["kib"], 96u << 10) << "128 MiB leave more than the page tables cover";
     EXPECT_GT(pool["taken_kib"].get<uint32_t>(), 0u);
     EXPECT_LT(pool["taken_kib"].get<uint32_t>(), pool["kib"].get<uint32_t>());
+}
+
+// GRUB scatters its modules megabytes apart: the kernel gathers them at the top of the largest
+// stretch, so that the pool is the RAM above the image less the modules, and the modules still read.
+TEST(Memory, GrubsModulesAreGatheredAboveThePool) {
+    SessionOptions o = options_for_this_test();
+    o.medium = BootMedium::Cdrom, o.memory_mib = 16;
+    Session s(o);
+    const json& boot = s.boot_line();
+    ASSERT_EQ(boot["modules"], int(demo_scenes().size()) + 5);
+    const json& pool = boot["pool"];
+    const uint32_t start = uint32_t(std::stoul(pool["start"].get<std::string>(), nullptr, 16)), image_end = kernel_symbol("__kernel_end");
+    EXPECT_LT(start, image_end + (64u << 10)) << "right above the image (the loader's structures aside)";
+    // 16 MiB less QEMU's top 128 KiB, the image's end and the modules (some 350 KiB)
+    EXPECT_GT(pool["kib"].get<uint32_t>(), (((16u << 20) - (128u << 10) - image_end) >> 10) - 512);
+    const json load = s.ok("load freedoom.scene");
+    EXPECT_EQ(load["origin"], "module");
+    EXPECT_EQ(load["palette"], "floor") << "its texture files, modules too, read";
+    EXPECT_EQ(s.ok("frame 0 exact 0")["pixels"], 76800);
 }
 
 TEST(Memory, TooLittleIsRefusedWithWhatItNeedsAndWhatItHas) {

@@ -108,6 +108,12 @@ inline void expect_screendump(Session& s, const IndexImage& want, const raster::
     expect_screendump_rgb(s, screendump_of(want, palette), stem);
 }
 
+// The host's world with the copies the kernel's load reply says it has (`doubled_copies` false:
+// left out, short of memory), so that both draw alike.
+inline void match_kernel_copies(LoadedWorld& host, const json& load_reply) {
+    if (!load_reply.value("doubled_copies", true)) leave_out_doubled_copies(host);
+}
+
 // The screen as the show should have it after a key: the frame the event names, drawn on the host
 // with the event's mapper, surface and budget, and the HUD's lines over it.
 inline IndexImage show_screen(const json& e) {

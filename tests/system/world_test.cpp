@@ -54,6 +54,7 @@ TEST(Scenes3d, EveryBuiltInSceneEqualsTheHostAtFixedFrames) {
         SCOPED_TRACE(d.name);
         LoadedWorld host = load_world_file(scene_path(d.name));
         json load = s.ok(std::string("load ") + d.name + ".scene");
+        match_kernel_copies(host, load);
         EXPECT_EQ(load["origin"], "builtin");
         EXPECT_EQ(load["version"], 2);
         EXPECT_EQ(load["faces"], host.world->face_count);
