@@ -66,8 +66,14 @@ TEST(Memory, In8MiBTheKernelServesAndItsShowSkipsTheScenesThatDoNotFitSayingWhy)
     Session s(o);
     const uint32_t room = scene_room_kib(s.boot_line());
     std::vector<json> skipped = {s.wait_event("scene_skipped")};
-    const json hello = s.ok("hello", [&](const json& e) { skipped.push_back(e); });  // (the show may skip more first)
+    s.send_key("s");  // a frame, paused: its key event gives the HUD's lines
+    json key;
+    const json hello = s.ok("hello", [&](const json& e) { (e["event"] == "key" ? key : skipped.emplace_back()) = e; });  // (the show may skip more first)
     EXPECT_EQ(hello["cmd"], "hello") << "the show gives way to a command";
+    ASSERT_TRUE(key.is_object()) << "the key's event";
+    const std::string last = skipped.back()["scene"];
+    EXPECT_NE(std::find(key["hud"].begin(), key["hud"].end(), "skipped " + last + ": no memory"), key["hud"].end())
+        << "the HUD says which scene the show skipped last: " << key.dump();
     for (const json& e : skipped) {
         ASSERT_EQ(e["event"], "scene_skipped") << e.dump();
         const std::string scene = e["scene"], name = scene.substr(0, scene.size() - 6), error = e["error"];
