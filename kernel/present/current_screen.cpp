@@ -3,6 +3,7 @@
 
 #include "kernel/core/choice.h"
 #include "kernel/platform/guard.h"
+#include "kernel/present/parts.h"
 #include "kernel/lib/fmt.h"
 #include "kernel/lib/mem.h"
 #include "kernel/scene/scene_text.h"
@@ -17,24 +18,29 @@ uint32_t g_generation = 0;  // guard's transient generation its buffers belong t
 raster::Scene* g_scene = nullptr;
 raster::Texture g_texture;
 
-// What the mappers read and write, each in a buffer of its own between guard pages (guard.h),
-// sized to the scene and taken at its load (transient: the 3D scene's load gives them back): the
-// scene's vertices, its texture and the texture's copies.
-size_t buffers_bytes(const raster::Texture& t) {
-    size_t n = guard::footprint(sizeof(raster::Scene)) + guard::footprint(size_t(t.width) * size_t(t.height)) +
-               guard::footprint(size_t(raster::bordered_bytes(t.width, t.height)));
-    if (raster::wants_aligned256(t)) n += guard::footprint(raster::ALIGNED256_BYTES);
-    if (raster::wants_doubled(t)) n += guard::footprint(size_t(raster::doubled_bytes(t.width, t.height)));
-    return n;
+// What the mappers read and write, each in a buffer of its own between guard pages, sized to the
+// scene and taken at its load (parts.h; transient: the 3D scene's load gives them back): the scene's
+// vertices, its texture and the texture's copies. Returns what they take of the pool.
+size_t scene_parts(const raster::Scene& parsed, bool take) {
+    static constexpr present::TextureNames NAMES{"screen-space texture", "screen-space texture (bordered copy)",
+                                                 "screen-space texture (aligned copy)", "screen-space texture (doubled copy)"};
+    present::Parts p{take};
+    raster::Scene* scene = p.of<raster::Scene>(1, "screen-space scene");
+    const raster::Texture t = present::texture_parts(p, raster::Texture{nullptr, parsed.texture_width, parsed.texture_height, parsed.wrap}, true,
+                                                     NAMES, nullptr, &parsed.texture_kind);
+    if (take) {
+        memcpy(scene, &parsed, sizeof(raster::Scene));
+        g_scene = scene;
+        g_texture = t;
+    }
+    return p.bytes;
 }
 
 }  // namespace
 
 bool load(const char* text, size_t length, raster::ParseError* error) {
     if (!raster::parse_scene(text, length, &g_parsed, error)) return false;
-    const raster::Scene& parsed = g_parsed;
-    raster::Texture t{nullptr, parsed.texture_width, parsed.texture_height, parsed.wrap};
-    const size_t need = buffers_bytes(t);
+    const size_t need = scene_parts(g_parsed, false);
     if (need > guard::room_after_release()) {
         lib::Fmt m;
         m.s("not enough memory for this scene: its vertices and texture need ").u(uint32_t(need >> 10)).s(" KiB, ");
@@ -43,19 +49,7 @@ bool load(const char* text, size_t length, raster::ParseError* error) {
     }
     guard::release_transient();
     g_generation = guard::transient_generation();
-    g_scene = reinterpret_cast<raster::Scene*>(guard::take_transient(sizeof(raster::Scene), "screen-space scene"));
-    memcpy(g_scene, &parsed, sizeof(raster::Scene));
-    const size_t texels = size_t(t.width) * size_t(t.height);
-    uint8_t* at = guard::take_transient(texels, "screen-space texture");
-    raster::generate_texture(parsed.texture_kind, t.width, t.height, at);
-    t.texels = at;
-    uint8_t* bordered = guard::take_transient(size_t(raster::bordered_bytes(t.width, t.height)), "screen-space texture (bordered copy)");
-    uint8_t* aligned = raster::wants_aligned256(t) ? guard::take_transient(raster::ALIGNED256_BYTES, "screen-space texture (aligned copy)") : nullptr;
-    uint8_t* doubled = raster::wants_doubled(t)
-                           ? guard::take_transient(size_t(raster::doubled_bytes(t.width, t.height)), "screen-space texture (doubled copy)")
-                           : nullptr;
-    raster::prepare_texture(&t, bordered, aligned, doubled);
-    g_texture = t;
+    scene_parts(g_parsed, true);
     raster::prepare_choice(raster::DEFAULT_BUDGET, g_texture);  // auto's candidates, before any render
     g_loaded = true;
     return true;

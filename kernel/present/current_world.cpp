@@ -6,6 +6,7 @@
 #include "kernel/lib/json.h"
 #include "drivers/vga.h"
 #include "kernel/present/file_table.h"
+#include "kernel/present/parts.h"
 #include "kernel/core/choice.h"
 #include "kernel/platform/guard.h"
 #include "kernel/lib/mem.h"
@@ -32,97 +33,70 @@ bool g_overridden = false;
 raster::Budget g_override;
 char g_name[raster::MAX_FILE_NAME];
 
-// `count` items of T (none: null), each part's name for fault reports.
-template <typename T>
-T* part(int32_t count, const char* what) {
-    return count > 0 ? reinterpret_cast<T*>(guard::take_transient(size_t(count) * sizeof(T), what)) : nullptr;
-}
-template <typename T>
-size_t part_bytes(int32_t count) {
-    return count > 0 ? guard::footprint(size_t(count) * sizeof(T)) : 0;
-}
+using present::Parts;
 
-size_t world_bytes(const raster::WorldRoom& r) {
-    return part_bytes<uint8_t>(int32_t(r.texels)) + part_bytes<raster::Vec3>(r.positions) + part_bytes<raster::TexCoord>(r.uvs) +
-           part_bytes<raster::Face>(r.faces) + part_bytes<raster::Corner>(r.corners);
-}
-void take_world(const raster::WorldRoom& r) {
-    g_world.room = r;
-    g_world.texels = part<uint8_t>(int32_t(r.texels), "3D scene's texels (as parsed)");
-    g_world.positions = part<raster::Vec3>(r.positions, "3D scene's positions");
-    g_world.uvs = part<raster::TexCoord>(r.uvs, "3D scene's texture coordinates");
-    g_world.faces = part<raster::Face>(r.faces, "3D scene's faces");
-    g_world.corners = part<raster::Corner>(r.corners, "3D scene's face corners");
-}
-
-size_t frame_bytes(const raster::FrameRoom& r) {
-    using raster::FrameScratch;
-    return 3 * part_bytes<uint8_t>(r.polygons) + part_bytes<raster::Vertex>(r.vertices) + part_bytes<raster::ClipPoint>(r.positions) +
-           part_bytes<uint8_t>(r.positions) + 2 * part_bytes<raster::Fixed24_8>(r.positions) + part_bytes<FrameScratch::Entry>(r.polygons) +
-           4 * part_bytes<uint32_t>(r.polygons) + 2 * part_bytes<int32_t>(r.polygons);
-}
-void take_frame(const raster::FrameRoom& r) {
-    raster::Frame& f = g_frame;
-    f.room = r;
-    f.polygon_size = part<uint8_t>(r.polygons, "frame's polygon sizes");
-    f.polygon_object = part<uint8_t>(r.polygons, "frame's polygon objects");
-    f.polygon_whole = part<uint8_t>(r.polygons, "frame's polygon flags");
-    f.vertices = part<raster::Vertex>(r.vertices, "frame's vertices");
-    raster::FrameScratch& s = g_scratch;
-    s.room = r;
-    s.positions = part<raster::ClipPoint>(r.positions, "frame scratch (positions)");
-    s.outcodes = part<uint8_t>(r.positions, "frame scratch (outcodes)");
-    s.screen_x = part<raster::Fixed24_8>(r.positions, "frame scratch (x)");
-    s.screen_y = part<raster::Fixed24_8>(r.positions, "frame scratch (y)");
-    s.entries = part<raster::FrameScratch::Entry>(r.polygons, "frame scratch (faces)");
-    for (int k = 0; k < 2; ++k) {
-        s.key_lo[k] = part<uint32_t>(r.polygons, "frame scratch (sort keys)");
-        s.key_hi[k] = part<uint32_t>(r.polygons, "frame scratch (sort keys)");
-        s.order[k] = part<int32_t>(r.polygons, "frame scratch (sort order)");
+// The world's parts, as world_room counts them.
+size_t world_parts(const raster::WorldRoom& r, bool take) {
+    Parts p{take};
+    uint8_t* texels = p.of<uint8_t>(int32_t(r.texels), "3D scene's texels (as parsed)");
+    raster::Vec3* positions = p.of<raster::Vec3>(r.positions, "3D scene's positions");
+    raster::TexCoord* uvs = p.of<raster::TexCoord>(r.uvs, "3D scene's texture coordinates");
+    raster::Face* faces = p.of<raster::Face>(r.faces, "3D scene's faces");
+    raster::Corner* corners = p.of<raster::Corner>(r.corners, "3D scene's face corners");
+    if (take) {
+        raster::World& w = g_world;
+        w.room = r;
+        w.texels = texels, w.positions = positions, w.uvs = uvs, w.faces = faces, w.corners = corners;
     }
+    return p.bytes;
 }
 
-// Texture i of the world, repeated (its objects take their wraps).
-raster::Texture world_texture(int32_t i) {
-    const raster::WorldTexture& t = g_world.textures[i];
-    return raster::Texture{g_world.texels + t.offset, t.width, t.height, raster::Wrap::Repeat};
-}
-size_t textures_bytes(bool doubled) {
-    size_t n = 0;
-    for (int32_t i = 0; i < g_world.texture_count; ++i) {
-        const raster::Texture t = world_texture(i);
-        n += guard::footprint(size_t(t.width) * size_t(t.height)) + guard::footprint(size_t(raster::bordered_bytes(t.width, t.height)));
-        if (raster::wants_aligned256(t)) n += guard::footprint(raster::ALIGNED256_BYTES);
-        if (doubled && raster::wants_doubled(t)) n += guard::footprint(size_t(raster::doubled_bytes(t.width, t.height)));
+// The frame's polygons and the frame scratch, as frame_room counts them.
+size_t frame_parts(const raster::FrameRoom& r, bool take) {
+    Parts p{take};
+    uint8_t* polygon[3];  // sizes, objects, flags
+    for (uint8_t*& at : polygon) at = p.of<uint8_t>(r.polygons, "frame's polygons");
+    raster::Vertex* vertices = p.of<raster::Vertex>(r.vertices, "frame's vertices");
+    raster::ClipPoint* positions = p.of<raster::ClipPoint>(r.positions, "frame scratch (positions)");
+    uint8_t* outcodes = p.of<uint8_t>(r.positions, "frame scratch (outcodes)");
+    raster::Fixed24_8* screen_x = p.of<raster::Fixed24_8>(r.positions, "frame scratch (x)");
+    raster::Fixed24_8* screen_y = p.of<raster::Fixed24_8>(r.positions, "frame scratch (y)");
+    raster::FrameScratch::Entry* entries = p.of<raster::FrameScratch::Entry>(r.polygons, "frame scratch (faces)");
+    uint32_t* keys[4];
+    int32_t* order[2];
+    for (uint32_t*& at : keys) at = p.of<uint32_t>(r.polygons, "frame scratch (sort keys)");
+    for (int32_t*& at : order) at = p.of<int32_t>(r.polygons, "frame scratch (sort order)");
+    if (take) {
+        raster::Frame& f = g_frame;
+        f.room = r;
+        f.polygon_size = polygon[0], f.polygon_object = polygon[1], f.polygon_whole = polygon[2], f.vertices = vertices;
+        raster::FrameScratch& h = g_scratch;
+        h.room = r;
+        h.positions = positions, h.outcodes = outcodes, h.screen_x = screen_x, h.screen_y = screen_y, h.entries = entries;
+        for (int k = 0; k < 2; ++k) h.key_lo[k] = keys[k], h.key_hi[k] = keys[2 + k], h.order[k] = order[k];
     }
-    return n;
+    return p.bytes;
 }
 
 // Each texture of the world in a buffer of its own, with its bordered, aligned and doubled copies
 // in theirs, each ending against a guard page; the objects' textures point at them (a texture's
 // copies are shared by the objects that use it). Without `doubled`, no doubled copies: fast-table
 // then refuses the textures that would have one, and the other fast loops those above 256.
-void place_textures(bool doubled) {
+size_t texture_parts(bool doubled, bool take) {
+    static constexpr present::TextureNames NAMES{"world texture", "world texture (bordered copy)", "world texture (aligned copy)",
+                                                 "world texture (doubled copy)"};
+    Parts p{take};
     raster::Texture placed[raster::MAX_WORLD_TEXTURES] = {};
     for (int32_t i = 0; i < g_world.texture_count; ++i) {
-        const raster::Texture t = world_texture(i);
-        const char* name = g_world.textures[i].name;
-        const size_t texels = size_t(t.width) * size_t(t.height);
-        uint8_t* at = guard::take_transient(texels, "world texture", name);
-        memcpy(at, t.texels, texels);
-        placed[i] = raster::Texture{at, t.width, t.height, raster::Wrap::Repeat};
-        uint8_t* bordered = guard::take_transient(size_t(raster::bordered_bytes(t.width, t.height)), "world texture (bordered copy)", name);
-        uint8_t* aligned = raster::wants_aligned256(t) ? guard::take_transient(raster::ALIGNED256_BYTES, "world texture (aligned copy)", name) : nullptr;
-        uint8_t* twice = doubled && raster::wants_doubled(t)
-                             ? guard::take_transient(size_t(raster::doubled_bytes(t.width, t.height)), "world texture (doubled copy)", name)
-                             : nullptr;
-        raster::prepare_texture(&placed[i], bordered, aligned, twice);
+        const raster::WorldTexture& w = g_world.textures[i];
+        placed[i] = present::texture_parts(p, raster::Texture{g_world.texels + w.offset, w.width, w.height, raster::Wrap::Repeat}, doubled, NAMES, w.name);
     }
-    for (int32_t o = 0; o < g_world.object_count; ++o) {
+    for (int32_t o = 0; take && o < g_world.object_count; ++o) {
         raster::Texture t = placed[g_world.objects[o].texture];
         t.wrap = g_world.objects[o].wrap;
         g_textures.objects[o] = t;
     }
+    return p.bytes;
 }
 
 // The error for a scene the pool has no room for: what it needs, what is free.
@@ -148,17 +122,18 @@ bool load(const char* name, const uint8_t* text, size_t length, raster::ParseErr
     g_generation = guard::transient_generation();
     const char* chars = reinterpret_cast<const char*>(text);
     const raster::WorldRoom room = raster::world_room(chars, length, file_table::resolver());
-    if (world_bytes(room) > guard::transient_room()) return no_room(error, "its meshes and textures", world_bytes(room));
-    take_world(room);
+    const size_t world = world_parts(room, false);
+    if (world > guard::transient_room()) return no_room(error, "its meshes and textures", world);
+    world_parts(room, true);
     if (!raster::parse_world(chars, length, file_table::resolver(), &g_world, error)) return false;
     // the frame and every copy of every texture; where they do not fit, the doubled copies left out
     // (the largest: four times the texels) before the scene is refused
     const raster::FrameRoom frame = raster::frame_room(g_world);
-    const size_t all = frame_bytes(frame) + textures_bytes(true), fewer = frame_bytes(frame) + textures_bytes(false);
-    if (fewer > guard::transient_room()) return no_room(error, "its frames and its textures' copies", world_bytes(room) + all);
+    const size_t all = frame_parts(frame, false) + texture_parts(true, false), fewer = frame_parts(frame, false) + texture_parts(false, false);
+    if (fewer > guard::transient_room()) return no_room(error, "its frames and its textures' copies", world + all);
     g_doubled = all <= guard::transient_room();
-    take_frame(frame);
-    place_textures(g_doubled);
+    frame_parts(frame, true);
+    texture_parts(g_doubled, true);
     prepare_choices();
     lib::copy_c_string(g_name, sizeof g_name, name);
     g_loaded = true;
