@@ -30,7 +30,7 @@ uint32_t scene_room_kib(const json& boot) {
     return pool["kib"].get<uint32_t>() - pool["taken_kib"].get<uint32_t>() - 4;
 }
 
-TEST(Memory, In16MiBEveryDemoScenePlaysAsOnTheHostSomeWithoutTheirDoubledCopies) {
+TEST(Memory, In16MiBEveryDemoScenePlaysAndBenchesAsOnTheHostSomeWithoutTheirDoubledCopies) {
     const std::map<std::string, uint32_t> need = demo_scene_needs();
     SessionOptions o = options_for_this_test();
     o.memory_mib = 16;
@@ -54,6 +54,16 @@ TEST(Memory, In16MiBEveryDemoScenePlaysAsOnTheHostSomeWithoutTheirDoubledCopies)
         const raster::Axis axis = f["walker"] == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
         const IndexImage want = render_world_frame(host, *frame, *raster::find_mapper("auto"), axis);
         EXPECT_EQ(s.readback_crc(1), crc32_of(want));
+        // and the bench's frames (as make bench draws them), every pixel the host draws
+        std::vector<json> frames;
+        const json bench = s.ok("bench 2 auto linear", [&](const json& e) { frames.push_back(e); });
+        ASSERT_EQ(frames.size(), 2u) << bench.dump();
+        for (const json& b : frames) {
+            auto bf = world_frame(host, b["frame"].get<int32_t>());
+            raster::RenderStats stats;
+            render_world_frame(host, *bf, *raster::find_mapper("auto"), raster::Axis::Rows, &stats);
+            EXPECT_EQ(b["pixels"], stats.pixels) << b.dump();
+        }
     }
     std::printf("16 MiB: %u KiB for a scene's buffers\n", room);
 }
