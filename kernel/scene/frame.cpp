@@ -221,6 +221,24 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
     Frame& f = *out;
     f.number = frame_number;
     f.polygon_count = f.vertex_count = 0;
+    // The parts, each through a pointer of its own (a byte stored through one may alias any other
+    // memory, the structs' pointers too: kept in locals, they are not read again after it)
+    const Vec3* const world_positions = world.positions;
+    const TexCoord* const uvs = world.uvs;
+    const Face* const faces = world.faces;
+    const Corner* const world_corners = world.corners;
+    ClipPoint* const positions = scratch->positions;  // (by `at` below: base + the world's index)
+    uint8_t* const codes = scratch->outcodes;
+    Fixed24_8* const screen_x = scratch->screen_x;
+    Fixed24_8* const screen_y = scratch->screen_y;
+    FrameScratch::Entry* const entry_list = scratch->entries;
+    uint8_t* const polygon_size = f.polygon_size;
+    uint8_t* const polygon_object = f.polygon_object;
+    uint8_t* const polygon_whole = f.polygon_whole;
+    Vertex* const vertices = f.vertices;
+    const int32_t position_room = scratch->room.positions, polygon_room = scratch->room.polygons < f.room.polygons ? scratch->room.polygons : f.room.polygons;
+    const int32_t vertex_room = f.room.vertices;
+    int32_t polygon_count = 0, vertex_count = 0;
     f.stats = FrameStats{};
     f.budget = world.budget;
     f.object_count = world.object_count;
@@ -243,7 +261,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         const Object& object = world.objects[o];
         const Mesh& mesh = world.meshes[object.mesh];
         f.stats.faces += uint32_t(mesh.face_count);
-        if (used + mesh.position_count > scratch->room.positions) {
+        if (used + mesh.position_count > position_room) {
             f.stats.overflow += uint32_t(mesh.face_count);
             f.envelope[o] = EnvelopeBound{};
             continue;
@@ -254,13 +272,11 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         const int32_t base = used - mesh.first_position;
         const WorldTexture& texture = world.textures[object.texture];
         bases[o] = base, sizes[o][0] = texture.width, sizes[o][1] = texture.height;
-        ClipPoint* positions = scratch->positions;  // (by `at` below: base + the world's index)
-        uint8_t* codes = scratch->outcodes;
-        __builtin_memset(scratch->outcodes + used, UNSEEN, size_t(mesh.position_count));
+        __builtin_memset(codes + used, UNSEEN, size_t(mesh.position_count));
         used += mesh.position_count;
         double nearest = far;  // the least w of a position inside every plane (the corners of uncut faces)
         for (int32_t k = 0; k < mesh.face_count; ++k) {
-            const Face& face = world.faces[mesh.first_face + k];
+            const Face& face = faces[mesh.first_face + k];
             if (cull && !(dot(face.normal, eye) > face.offset)) {
                 ++f.stats.culled;
                 continue;
@@ -268,16 +284,16 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             uint8_t all = 0x3F, any = 0;  // planes every corner is outside; planes some corner is
             double depth = 0;
             for (int32_t i = 0; i < face.count; ++i) {
-                const int32_t position = world.corners[face.first_corner + i].position, at = base + position;
+                const int32_t position = world_corners[face.first_corner + i].position, at = base + position;
                 if (codes[at] == UNSEEN) {
-                    const ClipPoint p = view.clip(place.apply(world.positions[position]));
+                    const ClipPoint p = view.clip(place.apply(world_positions[position]));
                     positions[at] = p;
                     codes[at] = outcode(p, near, far);
                     // projected once here rather than at every corner that shares it (faces inside
                     // every plane take their corners from here; a clipped face's corners are
                     // projected below)
                     if (codes[at] == 0) {
-                        project(p, &scratch->screen_x[at], &scratch->screen_y[at]);
+                        project(p, &screen_x[at], &screen_y[at]);
                         nearest = p.w < nearest ? p.w : nearest;
                     }
                 }
@@ -289,19 +305,19 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
                 ++f.stats.outside;
                 continue;
             }
-            if (entries == scratch->room.polygons || entries == f.room.polygons) {
+            if (entries == polygon_room) {
                 ++f.stats.overflow;
                 continue;
             }
-            scratch->entries[entries++] = FrameScratch::Entry{depth / face.count, o, mesh.first_face + k, any != 0};
+            entry_list[entries++] = FrameScratch::Entry{depth / face.count, o, mesh.first_face + k, any != 0};
         }
         f.envelope[o] = envelope_bound(object_envelope(world, o, place, view, nearest));
     }
     const int32_t* order = painter_order(scratch, entries);
 
     for (int32_t e = 0; e < entries; ++e) {
-        const FrameScratch::Entry& entry = scratch->entries[order[e]];
-        const Face& face = world.faces[entry.face];
+        const FrameScratch::Entry& entry = entry_list[order[e]];
+        const Face& face = faces[entry.face];
         const int32_t base = bases[entry.object];
         const double width = sizes[entry.object][0], height = sizes[entry.object][1];
         int n = face.count;
@@ -309,9 +325,9 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         if (entry.cut) {  // (a face inside every plane is its own clipped polygon)
             ClipVertex c[MAX_FACE_CORNERS];
             for (int32_t i = 0; i < n; ++i) {
-                const Corner& corner = world.corners[face.first_corner + i];
-                const ClipPoint& p = scratch->positions[base + corner.position];
-                c[i] = ClipVertex{p.x, p.y, p.w, world.uvs[corner.uv].u * width, world.uvs[corner.uv].v * height};
+                const Corner& corner = world_corners[face.first_corner + i];
+                const ClipPoint& p = positions[base + corner.position];
+                c[i] = ClipVertex{p.x, p.y, p.w, uvs[corner.uv].u * width, uvs[corner.uv].v * height};
             }
             n = clip_polygon(c, face.count, near, far, clipped);
             if (n < 3) {
@@ -320,11 +336,11 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             }
             ++f.stats.clipped;
         }
-        if (f.vertex_count + n > f.room.vertices) {
+        if (vertex_count + n > vertex_room) {
             ++f.stats.overflow;
             continue;
         }
-        Vertex* corners = f.vertices + f.vertex_count;
+        Vertex* corners = vertices + vertex_count;
         if (entry.cut) {
             for (int i = 0; i < n; ++i) {
                 const ClipVertex& p = clipped[i];
@@ -332,25 +348,24 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
                 project(p, &corners[i].x, &corners[i].y);
             }
         } else {  // its corners as projected above
-            const Corner* corner = world.corners + face.first_corner;
-            const Fixed24_8 *screen_x = scratch->screen_x, *screen_y = scratch->screen_y;
-            const ClipPoint* positions = scratch->positions;
+            const Corner* corner = world_corners + face.first_corner;
             for (int i = 0; i < n; ++i) {
                 const int32_t at = base + corner[i].position;
-                const TexCoord& uv = world.uvs[corner[i].uv];
+                const TexCoord& uv = uvs[corner[i].uv];
                 Vertex& v = corners[i];
                 v.x = screen_x[at], v.y = screen_y[at];
                 v.w = positions[at].w;
                 v.u = uv.u * width, v.v = uv.v * height;
             }
         }
-        f.polygon_size[f.polygon_count] = uint8_t(n);
-        f.polygon_object[f.polygon_count] = uint8_t(entry.object);
-        f.polygon_whole[f.polygon_count] = uint8_t(entry.cut ? 0 : 1);
-        ++f.polygon_count;
-        f.vertex_count += n;
+        polygon_size[polygon_count] = uint8_t(n);
+        polygon_object[polygon_count] = uint8_t(entry.object);
+        polygon_whole[polygon_count] = uint8_t(entry.cut ? 0 : 1);
+        ++polygon_count;
+        vertex_count += n;
         ++f.stats.polygons;
     }
+    f.polygon_count = polygon_count, f.vertex_count = vertex_count;
 }
 
 TriangleEnvelope object_envelope(const World& world, int32_t o, const Placement& place, const View& view, double nearest) {
@@ -399,11 +414,13 @@ const Mapper* timed_unchosen(const AutoPlan& plan, const Vertex* vertices, int c
 template <typename Draw>
 [[gnu::always_inline]] inline void each_polygon(const Frame& frame, const Mapper& mapper, const Watch* watch, RenderStats* stats, Draw&& draw) {
     const Vertex* v = frame.vertices;
-    for (int32_t i = 0; i < frame.polygon_count; ++i) {
-        if (watch && watch->stops(uint32_t(i), uint32_t(frame.polygon_count), stats)) break;
+    const uint8_t *const sizes = frame.polygon_size, *const objects = frame.polygon_object, *const whole = frame.polygon_whole;
+    const int32_t count = frame.polygon_count;
+    for (int32_t i = 0; i < count; ++i) {
+        if (watch && watch->stops(uint32_t(i), uint32_t(count), stats)) break;
         if (watch) watch->drawing(mapper, uint32_t(i));
-        const int n = frame.polygon_size[i];
-        draw(v, n, int(frame.polygon_object[i]), frame.polygon_whole[i] ? Input::InRange : Input::Any);
+        const int n = sizes[i];
+        draw(v, n, int(objects[i]), whole[i] ? Input::InRange : Input::Any);
         v += n;
     }
 }
