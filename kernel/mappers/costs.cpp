@@ -5,37 +5,37 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1028.2f, 349.02f, 40.326f}, // 11 scenes
-    {"exact", 1008.0f, 321.42f, 64.301f}, // 11 scenes
-    {"persp-subdiv-4", 1008.0f, 321.80f, 91.373f}, // 11 scenes
-    {"persp-subdiv-8", 1008.0f, 376.53f, 59.512f}, // 11 scenes
-    {"persp-subdiv-16", 1008.0f, 415.55f, 43.451f}, // 11 scenes
-    {"persp-subdiv-32", 1008.0f, 435.98f, 35.598f}, // 11 scenes
-    {"constant-depth", 1008.0f, 452.37f, 29.795f}, // 11 scenes
-    {"persp-adaptive-0.5", 1008.0f, 908.78f, 290.039f}, // 11 scenes
-    {"persp-adaptive-1", 1008.0f, 999.84f, 51.761f}, // 11 scenes
-    {"persp-adaptive-2", 1008.0f, 1016.99f, 44.497f}, // 11 scenes
-    {"persp-adaptive-4", 1008.0f, 1029.78f, 40.031f}, // 11 scenes
-    {"fast-affine", 1045.9f, 108.98f, 5.140f}, // 11 scenes
-    {"fast-table", 1300.7f, 99.02f, 2.071f}, // 11 scenes
-    {"fast-columns", 1117.4f, 177.44f, 4.970f}, // 11 scenes
-    {"fast-table-columns", 1372.6f, 248.19f, 2.829f}, // 11 scenes
-    {"fast-subdiv-8", 1008.0f, 299.27f, 14.037f}, // 11 scenes
-    {"fast-subdiv-16", 1008.0f, 309.55f, 9.929f}, // 11 scenes
-    {"fast-subdiv-32", 1008.0f, 314.65f, 7.942f}, // 11 scenes
-    {"fast-constant-depth", 1008.0f, 319.22f, 6.303f}, // 11 scenes
-    {"fast-adaptive-1", 1008.0f, 342.11f, 9.594f}, // 11 scenes
-    {"fast-adaptive-2", 1008.0f, 345.86f, 8.112f}, // 11 scenes
-    {"fast-oriented-1", 1128.2f, 359.12f, 7.780f}, // 11 scenes
-    {"xsharp-dda", 1509.3f, 376.41f, 37.426f}, // 10 scenes
-    {"xsharp-row-out", 1509.3f, 511.68f, 18.937f}, // 10 scenes
-    {"xsharp-column", 1513.0f, 484.35f, 12.609f}, // 10 scenes
-    {"hecker-steptable", 5321.9f, 0.00f, 613.872f}, // 10 scenes
-    {"fatmap-256", 1720.9f, 162.20f, 13.650f}, // 8 scenes
-    {"fatmap-256-16", 1720.9f, 167.20f, 12.650f}, // 8 scenes
-    {"fatmap-lut", 2337.7f, 165.68f, 10.056f}, // 7 scenes
-    {"quake-subdiv16", 1494.9f, 301.85f, 13.884f}, // 10 scenes
-    {"quake-subdiv8", 1494.9f, 286.50f, 20.237f}, // 10 scenes
+    {"affine", 1028.2f, 348.36f, 40.340f}, // 11 scenes
+    {"exact", 1008.0f, 320.76f, 64.314f}, // 11 scenes
+    {"persp-subdiv-4", 1008.0f, 321.13f, 91.386f}, // 11 scenes
+    {"persp-subdiv-8", 1008.0f, 375.87f, 59.525f}, // 11 scenes
+    {"persp-subdiv-16", 1008.0f, 414.88f, 43.464f}, // 11 scenes
+    {"persp-subdiv-32", 1008.0f, 435.32f, 35.612f}, // 11 scenes
+    {"constant-depth", 1008.0f, 451.70f, 29.808f}, // 11 scenes
+    {"persp-adaptive-0.5", 1008.0f, 908.12f, 290.052f}, // 11 scenes
+    {"persp-adaptive-1", 1008.0f, 999.18f, 51.775f}, // 11 scenes
+    {"persp-adaptive-2", 1008.0f, 1016.33f, 44.511f}, // 11 scenes
+    {"persp-adaptive-4", 1008.0f, 1029.12f, 40.044f}, // 11 scenes
+    {"fast-affine", 1041.9f, 109.01f, 5.140f}, // 11 scenes
+    {"fast-table", 1296.7f, 99.04f, 2.071f}, // 11 scenes
+    {"fast-columns", 1113.4f, 177.47f, 4.970f}, // 11 scenes
+    {"fast-table-columns", 1368.6f, 248.22f, 2.829f}, // 11 scenes
+    {"fast-subdiv-8", 1008.0f, 298.60f, 14.051f}, // 11 scenes
+    {"fast-subdiv-16", 1008.0f, 308.89f, 9.943f}, // 11 scenes
+    {"fast-subdiv-32", 1008.0f, 313.99f, 7.956f}, // 11 scenes
+    {"fast-constant-depth", 1008.0f, 318.56f, 6.316f}, // 11 scenes
+    {"fast-adaptive-1", 1008.0f, 341.45f, 9.607f}, // 11 scenes
+    {"fast-adaptive-2", 1008.0f, 345.20f, 8.126f}, // 11 scenes
+    {"fast-oriented-1", 1124.2f, 359.15f, 7.780f}, // 11 scenes
+    {"xsharp-dda", 1505.3f, 376.43f, 37.424f}, // 10 scenes
+    {"xsharp-row-out", 1505.3f, 511.69f, 18.935f}, // 10 scenes
+    {"xsharp-column", 1509.0f, 484.37f, 12.607f}, // 10 scenes
+    {"hecker-steptable", 5317.9f, 0.00f, 613.872f}, // 10 scenes
+    {"fatmap-256", 1717.2f, 162.21f, 13.650f}, // 8 scenes
+    {"fatmap-256-16", 1717.2f, 167.21f, 12.650f}, // 8 scenes
+    {"fatmap-lut", 2334.0f, 165.69f, 10.055f}, // 7 scenes
+    {"quake-subdiv16", 1490.9f, 301.88f, 13.883f}, // 10 scenes
+    {"quake-subdiv8", 1490.9f, 286.54f, 20.235f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
