@@ -41,6 +41,7 @@ DEPS_BUILD := \
 	g++:g++ \
 	/usr/include/nlohmann/json.hpp:nlohmann-json3-dev \
 	/usr/include/png.h:libpng-dev \
+	/usr/include/capstone/capstone.h:libcapstone-dev \
 	i686-linux-gnu-g++:g++-i686-linux-gnu \
 	/usr/share/games/doom/freedoom1.wad:freedoom
 DEPS_RUN := $(DEPS_BUILD) qemu-system-i386:qemu-system-x86
@@ -128,7 +129,7 @@ HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
 TEST_CXX := $(wildcard tests/*.cpp tests/unit/*.cpp tests/unit/*/*/*.cpp tests/system/*.cpp)
 
 HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -I. -MMD -MP -DMODEXLAB_BUILD_DIR='"$(abspath $(BUILD))"'
-HLDLIBS := -lpng -lpthread
+HLDLIBS := -lpng -lpthread -lcapstone
 
 # 32-bit static host programs: the NASM loops against their C++ twins (tests/asm), with GoogleTest
 # built from Debian's sources for i686
@@ -156,6 +157,8 @@ SCENE_TOOL := $(HBUILD)/modexlab-scene
 BENCH := $(HBUILD)/modexlab-bench
 GALLERY := $(HBUILD)/modexlab-gallery
 EXTREMES := $(HBUILD)/modexlab-extremes
+# the cycle-timing model's static analyser (qemu/timing, docs/cycles.md)
+TIMING := $(HBUILD)/modexlab-timing
 TESTS := $(HBUILD)/modexlab-tests
 # the unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer
 SBUILD := $(BUILD)/host-san
@@ -187,7 +190,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(EXTREMES) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(RUN32) $(FUZZ_REPLAY)
+host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(EXTREMES) $(TIMING) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(RUN32) $(FUZZ_REPLAY)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 # $(call install,FILE:PACKAGE ...): installs the packages whose file or command is missing.

@@ -1,0 +1,163 @@
+// The static analyser (analyse.h).
+#include "qemu/timing/analyse.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <stdexcept>
+
+namespace timing {
+
+namespace {
+
+constexpr int MOST_DATA_BRANCHES = 8;
+constexpr int WARM_UP = 3;  // iterations before the one measured: the 486 looks back two cycles
+
+struct Body {
+    const std::vector<Insn>& insns;
+    std::vector<int> target;       // each branch's target index (size: falls off the end)
+    std::vector<int> data_branch;  // -1, or the branch's number among the data-dependent ones
+    bool loop_branch = false;
+};
+
+Body shape(const std::vector<Insn>& insns) {
+    if (insns.empty()) throw std::runtime_error("an empty loop body");
+    Body b{insns, std::vector<int>(insns.size(), -1), std::vector<int>(insns.size(), -1)};
+    const uint32_t top = insns.front().address, end = insns.back().address + insns.back().size;
+    int count = 0;
+    for (size_t i = 0; i < insns.size(); ++i) {
+        const Insn& in = insns[i];
+        if (in.kind != Kind::Jcc && in.kind != Kind::Jmp) continue;
+        const bool last = i + 1 == insns.size();
+        if (last && in.target == top) {
+            b.loop_branch = true;
+            b.target[i] = 0;
+            continue;
+        }
+        if (in.target < top || in.target > end) throw std::runtime_error("'" + in.text + "' leaves the loop body");
+        int t = int(insns.size());
+        for (size_t k = 0; k < insns.size(); ++k)
+            if (insns[k].address == in.target) t = int(k);
+        if (t == int(insns.size()) && in.target != end) throw std::runtime_error("'" + in.text + "' jumps into an instruction");
+        b.target[i] = t;
+        if (in.kind == Kind::Jcc) b.data_branch[i] = count++;
+    }
+    if (count > MOST_DATA_BRANCHES) throw std::runtime_error("more than 8 data-dependent branches in one loop body");
+    return b;
+}
+
+// One iteration on a path (bit k: data-dependent branch k taken); its lines where `lines`.
+long iterate(const Body& b, I486& cpu, unsigned path, std::vector<Line>* lines) {
+    const long start = cpu.now();
+    for (size_t i = 0; i < b.insns.size();) {
+        const Insn& in = b.insns[i];
+        const bool loop = b.loop_branch && i + 1 == b.insns.size();
+        const bool taken = in.kind == Kind::Jmp || loop || (b.data_branch[i] >= 0 && ((path >> b.data_branch[i]) & 1));
+        const Step s = cpu.run(in, taken);
+        if (lines) (*lines)[i] = Line{in.text, s.start, s.clocks, s.stalls};
+        if (loop) break;
+        i = taken ? size_t(b.target[i]) : i + 1;
+    }
+    return cpu.now() - start;
+}
+
+// The cycles of an iteration on path `cur` after iterations on path `prev`.
+long measure(const Body& b, Mode mode, unsigned prev, unsigned cur, std::vector<Line>* lines) {
+    I486 cpu(mode);
+    for (int k = 0; k < WARM_UP; ++k) iterate(b, cpu, prev, nullptr);
+    return iterate(b, cpu, cur, lines);
+}
+
+}  // namespace
+
+std::string BranchPolicy::name() const {
+    switch (kind) {
+    case Taken: return "taken";
+    case NotTaken: return "not-taken";
+    case Alternate: return "alternate";
+    case Share: {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%g", share);
+        return buf;
+    }
+    }
+    return "?";
+}
+
+Report analyse(const std::vector<Insn>& insns, Cpu cpu, Mode mode, const BranchPolicy& branch) {
+    if (cpu != Cpu::I486) throw std::runtime_error("the Pentium model is not built yet: --cpu 486");
+    const Body b = shape(insns);
+    Report r;
+    r.loop_branch = b.loop_branch;
+    for (int d : b.data_branch) r.data_branches += d >= 0;
+    const unsigned all = (1u << r.data_branches) - 1;
+    r.lines.assign(insns.size(), Line{});
+    for (size_t i = 0; i < insns.size(); ++i) r.lines[i].text = insns[i].text;
+    switch (branch.kind) {
+    case BranchPolicy::Taken: r.cycles_per_iteration = double(measure(b, mode, all, all, &r.lines)); break;
+    case BranchPolicy::NotTaken: r.cycles_per_iteration = double(measure(b, mode, 0, 0, &r.lines)); break;
+    case BranchPolicy::Alternate:
+        r.cycles_per_iteration = (double(measure(b, mode, 0, all, &r.lines)) + double(measure(b, mode, all, 0, nullptr))) / 2;
+        break;
+    case BranchPolicy::Share: {
+        // each path's probability, every branch taken with probability `share` on its own
+        const double p = branch.share;
+        auto chance = [&](unsigned path) {
+            double c = 1;
+            for (int k = 0; k < r.data_branches; ++k) c *= (path >> k) & 1 ? p : 1 - p;
+            return c;
+        };
+        double expected = 0;
+        for (unsigned prev = 0; prev <= all; ++prev)
+            for (unsigned cur = 0; cur <= all; ++cur) {
+                const double c = chance(prev) * chance(cur);
+                if (c > 0) expected += c * double(measure(b, mode, prev, cur, nullptr));
+            }
+        measure(b, mode, all, all, &r.lines);
+        r.cycles_per_iteration = expected;
+        break;
+    }
+    }
+    return r;
+}
+
+namespace {
+std::string number(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", std::round(x * 1000) / 1000);
+    return buf;
+}
+}  // namespace
+
+std::string diagram(const Report& r, int pixels) {
+    std::ostringstream o;
+    const long first = r.lines.empty() ? 0 : r.lines.front().cycle;
+    for (const Line& l : r.lines) {
+        char head[64];
+        if (l.cycle < 0) std::snprintf(head, sizeof head, "%6s %-3s", "-", "");
+        else std::snprintf(head, sizeof head, "%6ld %-3d", l.cycle - first + 1, l.clocks);
+        o << head << ' ' << l.text;
+        for (size_t k = 0; k < l.stalls.size(); ++k) o << (k ? ", " : "    ; ") << l.stalls[k];
+        o << '\n';
+    }
+    o << "cycles per iteration: " << number(r.cycles_per_iteration) << '\n';
+    if (pixels > 1) o << "cycles per pixel: " << number(r.cycles_per_iteration / pixels) << '\n';
+    return o.str();
+}
+
+std::string json(const Report& r, int pixels, const std::string& cpu, const std::string& branch) {
+    nlohmann::json j;
+    j["cpu"] = cpu, j["branch"] = branch, j["pixels"] = pixels;
+    j["cycles_per_iteration"] = r.cycles_per_iteration;
+    j["cycles_per_pixel"] = r.cycles_per_iteration / pixels;
+    j["data_branches"] = r.data_branches;
+    j["loop_branch"] = r.loop_branch;
+    const long first = r.lines.empty() ? 0 : r.lines.front().cycle;
+    for (const Line& l : r.lines)
+        j["lines"].push_back({{"text", l.text}, {"cycle", l.cycle < 0 ? -1 : l.cycle - first + 1}, {"clocks", l.clocks}, {"stalls", l.stalls}});
+    return j.dump();
+}
+
+}  // namespace timing

@@ -1,0 +1,159 @@
+// The i486 model (i486.h). Sources, by the abbreviations of docs/cycles.md: BB12, BB13, BB19, BB21,
+// BB45, BB58 (Abrash's Black Book, chapters 12, 13, 19, 21, 45, 58); i486 (Intel's i486 manual's
+// table as MAME's cycles.h carries it, for what the Black Book does not give).
+#include "qemu/timing/i486.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace timing {
+
+namespace {
+
+std::string family_name(Family f, Mode mode) {
+    static const char* const NAMES[] = {"-", "eax", "ebx", "ecx", "edx", "esi", "edi", "ebp", "esp"};
+    const std::string name = NAMES[size_t(f)];
+    return mode == Mode::Real16 && f != Family::None ? name.substr(1) : name;
+}
+
+bool is_byte(RegPart p) { return p.bytes == 1 || p.bytes == 2; }
+
+bool among(const std::string& m, std::initializer_list<const char*> names) {
+    for (const char* n : names)
+        if (m == n) return true;
+    return false;
+}
+
+// The registers the instruction addresses memory through: its base and index; the stack pointer of
+// PUSH, POP, CALL and RET counts only after an explicit write of it (BB12, "Stack Addressing"),
+// which the caller checks.
+std::vector<Family> address_registers(const Insn& in) {
+    std::vector<Family> out;
+    if (!in.mem.present) return out;
+    if (in.mem.base != Family::None) out.push_back(in.mem.base);
+    if (in.mem.index != Family::None) out.push_back(in.mem.index);
+    return out;
+}
+
+bool addresses_32(const Insn& in, Mode mode) { return (mode == Mode::Protected32) != in.addrsize_prefix; }
+
+}  // namespace
+
+int I486::base_clocks(const Insn& in, bool taken, Mode mode) {
+    const std::string& m = in.mnemonic;
+    const bool mem = in.mem.present && !in.mem.stack;
+    const bool mem_dest = mem && in.mem.write, mem_src = mem && !in.mem.write;
+    if (m == "mov" || m == "nop" || m == "lea" || m == "bswap") return 1;                               // BB12, BB13
+    if (among(m, {"add", "sub", "adc", "sbb", "and", "or", "xor"})) return mem_dest ? 3 : mem_src ? 2 : 1;  // BB13, BB28
+    if (m == "cmp" || m == "test") return mem ? 2 : 1;                                                   // BB16
+    if (among(m, {"inc", "dec", "neg", "not"})) return mem_dest ? 3 : 1;                                 // BB12; i486 (memory)
+    if (among(m, {"shl", "sal", "shr", "sar", "rol", "ror"})) {
+        // by an immediate count (C0/C1) 2, by 1 (D0/D1) 3 (BB13: "Go figure"; BB58 counts ROL AL,1
+        // as 2, docs/cycles.md says why the model keeps 3); by CL (D2/D3) 3 (i486); memory 4 (i486)
+        if (mem) return 4;
+        return in.opcode == 0xC0 || in.opcode == 0xC1 ? 2 : 3;
+    }
+    if (m == "rcl" || m == "rcr") return in.opcode == 0xD0 || in.opcode == 0xD1 ? 3 : 8;  // BB9 (Intel: 8 to 30 multibit: its least)
+    if (m == "push") return mem ? 4 : 1;  // BB13
+    if (m == "pop") return mem ? 6 : 1;   // BB13 (the manual's 4 for a register is wrong: BB13)
+    if (m == "xchg") return mem ? 9 : 3;  // BB19 (measured, with memory); i486 (registers)
+    if (among(m, {"movzx", "movsx", "cbw", "cwde", "cwd", "cdq"}) || m.rfind("set", 0) == 0) return 3;  // i486
+    if (m == "xlatb" || m == "xlat") return 4;  // BB12
+    if (m.rfind("stos", 0) == 0 || m.rfind("lods", 0) == 0) return 5;  // BB12 (STOSB); i486 (LODS)
+    if (m.rfind("movs", 0) == 0 && m != "movsx") return 7;             // i486
+    if (m == "mul" || m == "imul") return 13;  // BB45 (MUL 13 to 42: its least); i486 (IMUL r, r/m)
+    if (m == "div" || m == "idiv") {
+        const int bytes = in.operand_bytes;
+        const bool s = m == "idiv";
+        return bytes == 1 ? (s ? 19 : 16) : bytes == 2 ? (s ? 27 : 24) : (s ? 43 : 40);  // i486
+    }
+    if (in.kind == Kind::Jcc && in.loop) return taken ? 7 : 6;  // BB7: LOOP is DEC/JNZ + 3; i486: 6 not taken
+    if (in.kind == Kind::Jcc) return taken ? 3 : 1;             // BB19
+    if (in.kind == Kind::Jmp || in.kind == Kind::Call) return 3;  // i486
+    if (in.kind == Kind::Ret) return 5;                           // BB12 (POP + RET = 6)
+    if (in.kind == Kind::Out) return mode == Mode::Real16 ? 16 : 10;  // BB45, BB58: real mode 16; full I/O privilege 10
+    if (in.kind == Kind::In) return 14;                               // i486 (real mode)
+    throw std::runtime_error("no 486 timing for '" + in.text + "' (docs/cycles.md lists what the model knows)");
+}
+
+Step I486::run(const Insn& in, bool taken) {
+    Step s;
+    s.start = now_;
+    long start = now_;
+    const std::vector<Family> address = address_registers(in);
+    const bool addressing = in.mem.present && !in.mem.stack;
+
+    // AGI: a register written in the cycle before is used to address memory: 1 lost (Intel's rule,
+    // BB12; BB12 measured 2, and 1 more two cycles later, in real mode on early 486s, which the
+    // published counts of BB58 do not take: docs/cycles.md, "Where the sources disagree")
+    int agi = 0;
+    Family agi_on = Family::None;
+    std::vector<Family> checked = address;
+    if (in.mem.stack) checked.push_back(Family::SP);
+    for (Family f : checked) {
+        const long d = start - last_write_[size_t(f)];
+        const int lost = d == 1 ? 1 : 0;
+        if (lost > agi) agi = lost, agi_on = f;
+    }
+    if (agi) {
+        start += agi;
+        s.stalls.push_back(std::string("AGI on ") + family_name(agi_on, mode_) + " +" + std::to_string(agi));
+    }
+    // a byte register written exactly two cycles before an instruction that addresses memory, by any
+    // register (BB12, rule 4; twice where two byte writes fall there in turn)
+    for (int k = 0; addressing && k < 2; ++k)
+        if (last_byte_dest_ == start - 2 || byte_dest_before_ == start - 2) {
+            ++start;
+            s.stalls.push_back("byte register two cycles before an address +1");
+        }
+    // a byte of a register written in the cycle before, then the register read whole (BB12, rule 3)
+    for (RegPart r : in.reads) {
+        const size_t f = size_t(r.family);
+        if (std::find(address.begin(), address.end(), r.family) != address.end()) continue;  // (the AGI's)
+        if (last_byte_write_[f] == start - 1 && (r.bytes & ~last_byte_bytes_[f])) {
+            ++start;
+            s.stalls.push_back(std::string("byte then whole of ") + family_name(r.family, mode_) + " +1");
+            break;
+        }
+    }
+
+    int clocks = base_clocks(in, taken, mode_);
+    // prefixes: a cycle each, but one decodes while an AGI waits or the instruction before runs on
+    // (BB13, BB19: "prefix cycles can overlap with previous multicycle instructions, or AGIs")
+    const int prefixes = int(in.opsize_prefix) + int(in.addrsize_prefix) + int(in.segment_prefix);
+    const int hidden = std::min(prefixes, agi + std::max(0, last_clocks_ - 1));
+    if (prefixes > hidden) {
+        clocks += prefixes - hidden;
+        s.stalls.push_back("prefix +" + std::to_string(prefixes - hidden));
+    }
+    if (in.lock_prefix) {
+        clocks += 5;  // BB19 (measured)
+        s.stalls.push_back("lock +5");
+    }
+    if (in.has_imm && in.mem.has_disp) {  // BB21
+        ++clocks;
+        s.stalls.push_back("immediate and displacement +1");
+    }
+    // indexed addressing: two registers in 16-bit addressing, an index (two registers, or a scale)
+    // in 32-bit addressing; ESP as a base is free (BB12, BB13)
+    if (addressing && (addresses_32(in, mode_) ? in.mem.index != Family::None : in.mem.base != Family::None && in.mem.index != Family::None)) {
+        ++clocks;
+        s.stalls.push_back("index register +1");
+    }
+
+    const long end = start + clocks - 1;
+    for (RegPart w : in.writes) {
+        if (w.family == Family::SP && !in.writes_sp_explicitly) continue;  // PUSH, POP, CALL, RET: implicit (BB12)
+        const size_t f = size_t(w.family);
+        last_write_[f] = end;
+        if (is_byte(w)) last_byte_write_[f] = end, last_byte_bytes_[f] = w.bytes;
+    }
+    if (std::any_of(in.writes.begin(), in.writes.end(), is_byte)) byte_dest_before_ = last_byte_dest_, last_byte_dest_ = end;
+    s.clocks = int(end - s.start + 1);
+    now_ = end + 1;
+    last_clocks_ = clocks;
+    return s;
+}
+
+}  // namespace timing

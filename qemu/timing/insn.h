@@ -1,0 +1,67 @@
+// A decoded x86 instruction as the timing models see it (docs/cycles.md): what it reads and writes
+// (registers by their bytes, flags, memory), how it addresses memory, its prefixes and its kind.
+// Model-independent: decode.h fills it from Capstone.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace timing {
+
+// A general register as a family (EAX, EBX, ...) and the bytes of it an access touches: bit 0 the
+// low byte (AL), bit 1 the next (AH), bits 2-3 the upper half. ESP and EBP have no byte parts.
+enum class Family : uint8_t { None, A, B, C, D, SI, DI, BP, SP, Count };
+struct RegPart {
+    Family family = Family::None;
+    uint8_t bytes = 0;  // 1: low byte, 2: high byte, 3: the word, 15: the dword
+};
+
+enum class Kind : uint8_t {
+    Plain,   // runs straight on
+    Jcc,     // a conditional branch (LOOP and JCXZ too: `loop`)
+    Jmp,     // an unconditional jump
+    Call,
+    Ret,
+    Out,     // OUT to a port
+    In,
+    String,  // STOS, MOVS, LODS, SCAS, CMPS (rep: `rep`)
+    Fpu,     // x87
+};
+
+struct Memory {
+    bool present = false;
+    bool read = false, write = false;
+    Family base = Family::None, index = Family::None;
+    int scale = 1;
+    bool has_disp = false;  // a displacement field in the encoding (even a zero one)
+    int32_t disp = 0;
+    int size = 0;           // bytes accessed
+    bool stack = false;     // an implicit stack access (PUSH, POP, CALL, RET)
+};
+
+struct Insn {
+    uint32_t address = 0;
+    uint8_t size = 0;         // bytes
+    std::string text;         // "mov bl, byte ptr [esi]"
+    std::string mnemonic;     // "mov"
+    unsigned id = 0;          // Capstone's instruction id
+    Kind kind = Kind::Plain;
+    bool loop = false;        // LOOP/LOOPcc/JCXZ/JECXZ: a Jcc that reads (E)CX
+    uint32_t target = 0;      // a branch's target
+    bool has_imm = false;     // an immediate operand
+    int operand_bytes = 0;    // the size of its largest register or memory operand
+    // prefixes in the encoding
+    bool opsize_prefix = false, addrsize_prefix = false, segment_prefix = false, rep_prefix = false, lock_prefix = false;
+    bool two_byte_opcode = false;  // 0Fh
+    uint8_t opcode = 0;            // the (first) opcode byte, after 0Fh
+    std::vector<RegPart> reads, writes;  // general registers, explicit and implicit (the address's among reads)
+    bool reads_flags = false, writes_flags = false;
+    bool writes_sp_explicitly = false;  // ESP as an explicit destination (not PUSH/POP's implicit change)
+    Memory mem;
+};
+
+// Whether two parts of registers overlap.
+inline bool overlaps(RegPart a, RegPart b) { return a.family == b.family && a.family != Family::None && (a.bytes & b.bytes); }
+
+}  // namespace timing

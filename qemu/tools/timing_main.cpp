@@ -1,0 +1,56 @@
+// modexlab-timing: the cycles a loop body takes on a 486 (the Pentium next), by the timing model
+// (qemu/timing, docs/cycles.md), from a NASM listing.
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "qemu/lib/command_line.h"
+#include "qemu/timing/analyse.h"
+#include "qemu/timing/listing.h"
+
+namespace {
+
+using namespace harness;
+
+const char* USAGE =
+    "usage: modexlab-timing --cpu 486|pentium [--branch taken|not-taken|alternate|P] [--pixels N] [--json] FILE.asm\n"
+    "  FILE.asm: a NASM listing (bits 16: real mode; bits 32: protected mode), its code one iteration of a loop\n"
+    "  prints each instruction's cycle, clocks and stalls, then 'cycles per iteration: X'\n"
+    "  --branch: how its data-dependent branches go (P: each taken with probability P, 0..1; default taken)\n"
+    "  --pixels: the pixels an iteration draws (default: the listing's '; pixels:' line, or 1)\n";
+
+timing::BranchPolicy branch_policy(const std::string& s) {
+    timing::BranchPolicy b;
+    if (s.empty() || s == "taken") return b;
+    if (s == "not-taken") return b.kind = timing::BranchPolicy::NotTaken, b;
+    if (s == "alternate") return b.kind = timing::BranchPolicy::Alternate, b;
+    char* end = nullptr;
+    const double p = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || *end || !(p >= 0 && p <= 1)) throw UsageError("--branch takes taken, not-taken, alternate or a share 0..1");
+    b.kind = timing::BranchPolicy::Share, b.share = p;
+    return b;
+}
+
+int timing_tool(const std::vector<std::string>& words) {
+    const CommandLine c = parse_command_line(words, {"--cpu", "--branch", "--pixels"}, {"--json"});
+    if (c.help()) return show_usage(USAGE);
+    if (c.positionals().size() != 1) throw UsageError("one listing, please");
+    const timing::Cpu cpu = c.choice<timing::Cpu>("--cpu", {{"486", timing::Cpu::I486}, {"pentium", timing::Cpu::Pentium}}, timing::Cpu::I486);
+    if (!c.has("--cpu")) throw UsageError("--cpu is needed: 486 or pentium");
+    const timing::BranchPolicy branch = branch_policy(c.text("--branch"));
+    const timing::Listing l = timing::read_listing(c.positionals()[0]);
+    int pixels = l.header.count("pixels") ? std::atoi(l.header.at("pixels").c_str()) : 1;
+    pixels = c.integer("--pixels", 1, 1 << 20, pixels < 1 ? 1 : pixels);
+    const timing::Mode mode = l.bits == 16 ? timing::Mode::Real16 : timing::Mode::Protected32;
+    const timing::Report r = timing::analyse(l.insns, cpu, mode, branch);
+    if (c.has("--json")) std::printf("%s\n", timing::json(r, pixels, c.text("--cpu"), branch.name()).c_str());
+    else std::fputs(timing::diagram(r, pixels).c_str(), stdout);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return run_cli("modexlab-timing", USAGE, [&] { return timing_tool(std::vector<std::string>(argv + 1, argv + argc)); });
+}
