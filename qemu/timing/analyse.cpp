@@ -8,6 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "qemu/timing/p5.h"
+
 namespace timing {
 
 namespace {
@@ -70,6 +72,70 @@ long measure(const Body& b, Mode mode, unsigned prev, unsigned cur, std::vector<
     return iterate(b, cpu, cur, lines);
 }
 
+// The Pentium: a stream of iterations, each on its path, run at once (an instruction pairs with the
+// next, across iterations too); the cycles of iterations [first, last) per iteration, and the
+// lines of iteration `first`.
+struct Stream {
+    std::vector<Executed> insns;
+    std::vector<size_t> body_index;  // each one's index in the body
+    std::vector<size_t> starts;      // where each iteration starts in `insns`
+};
+
+void append(const Body& b, unsigned path, Stream* s) {
+    s->starts.push_back(s->insns.size());
+    for (size_t i = 0; i < b.insns.size();) {
+        const Insn& in = b.insns[i];
+        const bool loop = b.loop_branch && i + 1 == b.insns.size();
+        const bool taken = in.kind == Kind::Jmp || loop || (b.data_branch[i] >= 0 && ((path >> b.data_branch[i]) & 1));
+        s->insns.push_back(Executed{&in, taken});
+        s->body_index.push_back(i);
+        if (loop) break;
+        i = taken ? size_t(b.target[i]) : i + 1;
+    }
+}
+
+double run_p5(const Body& b, const std::vector<unsigned>& paths, size_t first, size_t last, std::vector<Line>* lines) {
+    Stream s;
+    for (unsigned p : paths) append(b, p, &s);
+    s.starts.push_back(s.insns.size());
+    const std::vector<P5Issue> issues = P5().run(s.insns);
+    auto cycle_at = [&](size_t k) { return k < issues.size() ? issues[k].cycle : issues.back().cycle + issues.back().clocks; };
+    if (lines)
+        for (size_t k = s.starts[first]; k < s.starts[first + 1]; ++k) {
+            const P5Issue& is = issues[k];
+            Line& l = (*lines)[s.body_index[k]];
+            l.cycle = is.cycle, l.clocks = is.clocks, l.stalls = is.stalls, l.pipe = is.pipe;
+        }
+    return double(cycle_at(s.starts[last]) - cycle_at(s.starts[first])) / double(last - first);
+}
+
+// The Pentium's figure: its branch target buffer learns, so a steady state is many iterations on
+// (a share: paths drawn by a fixed generator, the same figure every run).
+double pentium(const Body& b, const BranchPolicy& branch, unsigned all, int data_branches, std::vector<Line>* lines) {
+    constexpr size_t WARM = 8, SHARED = 4096;
+    std::vector<unsigned> paths;
+    switch (branch.kind) {
+    case BranchPolicy::Taken: paths.assign(WARM + 2, all); return run_p5(b, paths, WARM, WARM + 1, lines);
+    case BranchPolicy::NotTaken: paths.assign(WARM + 2, 0); return run_p5(b, paths, WARM, WARM + 1, lines);
+    case BranchPolicy::Alternate:
+        for (size_t k = 0; k < WARM + 3; ++k) paths.push_back(k % 2 ? 0 : all);
+        return run_p5(b, paths, WARM, WARM + 2, lines);
+    case BranchPolicy::Share: {
+        uint32_t x = 12345;
+        for (size_t k = 0; k < WARM + SHARED + 1; ++k) {
+            unsigned p = 0;
+            for (int d = 0; d < data_branches; ++d) {
+                x = x * 1664525u + 1013904223u;
+                if (double(x >> 8) / double(1u << 24) < branch.share) p |= 1u << d;
+            }
+            paths.push_back(k == WARM ? all : p);
+        }
+        return run_p5(b, paths, WARM, WARM + SHARED, lines);
+    }
+    }
+    return 0;
+}
+
 }  // namespace
 
 std::string BranchPolicy::name() const {
@@ -87,7 +153,6 @@ std::string BranchPolicy::name() const {
 }
 
 Report analyse(const std::vector<Insn>& insns, Cpu cpu, Mode mode, const BranchPolicy& branch) {
-    if (cpu != Cpu::I486) throw std::runtime_error("the Pentium model is not built yet: --cpu 486");
     const Body b = shape(insns);
     Report r;
     r.loop_branch = b.loop_branch;
@@ -95,6 +160,10 @@ Report analyse(const std::vector<Insn>& insns, Cpu cpu, Mode mode, const BranchP
     const unsigned all = (1u << r.data_branches) - 1;
     r.lines.assign(insns.size(), Line{});
     for (size_t i = 0; i < insns.size(); ++i) r.lines[i].text = insns[i].text;
+    if (cpu == Cpu::Pentium) {
+        r.cycles_per_iteration = pentium(b, branch, all, r.data_branches, &r.lines);
+        return r;
+    }
     switch (branch.kind) {
     case BranchPolicy::Taken: r.cycles_per_iteration = double(measure(b, mode, all, all, &r.lines)); break;
     case BranchPolicy::NotTaken: r.cycles_per_iteration = double(measure(b, mode, 0, 0, &r.lines)); break;
@@ -137,6 +206,7 @@ std::string diagram(const Report& r, int pixels) {
     for (const Line& l : r.lines) {
         char head[64];
         if (l.cycle < 0) std::snprintf(head, sizeof head, "%6s %-3s", "-", "");
+        else if (l.pipe) std::snprintf(head, sizeof head, "%6ld %c %-3d", l.cycle - first + 1, l.pipe, l.clocks);
         else std::snprintf(head, sizeof head, "%6ld %-3d", l.cycle - first + 1, l.clocks);
         o << head << ' ' << l.text;
         for (size_t k = 0; k < l.stalls.size(); ++k) o << (k ? ", " : "    ; ") << l.stalls[k];
@@ -155,8 +225,11 @@ std::string json(const Report& r, int pixels, const std::string& cpu, const std:
     j["data_branches"] = r.data_branches;
     j["loop_branch"] = r.loop_branch;
     const long first = r.lines.empty() ? 0 : r.lines.front().cycle;
-    for (const Line& l : r.lines)
-        j["lines"].push_back({{"text", l.text}, {"cycle", l.cycle < 0 ? -1 : l.cycle - first + 1}, {"clocks", l.clocks}, {"stalls", l.stalls}});
+    for (const Line& l : r.lines) {
+        nlohmann::json line = {{"text", l.text}, {"cycle", l.cycle < 0 ? -1 : l.cycle - first + 1}, {"clocks", l.clocks}, {"stalls", l.stalls}};
+        if (l.pipe) line["pipe"] = std::string(1, l.pipe);
+        j["lines"].push_back(line);
+    }
     return j.dump();
 }
 

@@ -28,6 +28,7 @@ struct Line {
     long cycle = -1;
     int clocks = 0;
     std::vector<std::string> stalls;
+    char pipe = 0;  // the Pentium's: 'U' or 'V'
 };
 
 struct Report {

@@ -1,4 +1,4 @@
-// modexlab-timing: the cycles a loop body takes on a 486 (the Pentium next), by the timing model
+// modexlab-timing: the cycles a loop body takes on a 486 or a P5 Pentium, by the timing model
 // (qemu/timing, docs/cycles.md), from a NASM listing.
 #include <cstdio>
 #include <cstdlib>
@@ -16,7 +16,7 @@ using namespace harness;
 const char* USAGE =
     "usage: modexlab-timing --cpu 486|pentium [--branch taken|not-taken|alternate|P] [--pixels N] [--json] FILE.asm\n"
     "  FILE.asm: a NASM listing (bits 16: real mode; bits 32: protected mode), its code one iteration of a loop\n"
-    "  prints each instruction's cycle, clocks and stalls, then 'cycles per iteration: X'\n"
+    "  prints each instruction's cycle (and pipe, on the Pentium), clocks and stalls, then 'cycles per iteration: X'\n"
     "  --branch: how its data-dependent branches go (P: each taken with probability P, 0..1; default taken)\n"
     "  --pixels: the pixels an iteration draws (default: the listing's '; pixels:' line, or 1)\n";
 
