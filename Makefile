@@ -186,7 +186,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures usb run bench test-bochs test-cpu report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean
+.PHONY: all iso kernel host fixtures usb run bench test-bochs test-cpu report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean listing
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
@@ -455,6 +455,12 @@ bench report:
 		$(BENCH) --refresh-docs docs/data/trade.csv; \
 		if [ -f $(BUILD)/report/trade-corridor.png ]; then cp $(BUILD)/report/trade-corridor.png docs/img/trade-corridor.png; fi)
 	$(GALLERY_RUN)
+
+# `make listing MAPPER=NAME CPU=486|pentium`: a registered mapper's NASM inner loop through the
+# timing model, a line an instruction (docs/cycles.md)
+listing: $(KERNEL) $(TIMING)
+	@test -n "$(MAPPER)" || { echo "usage: make listing MAPPER=NAME [CPU=486|pentium] (a mapper with a NASM loop: docs/cycles.md)"; exit 2; }
+	@$(TIMING) --cpu $(or $(CPU),486) --mapper "$(MAPPER)"
 
 # `make gallery`: a page a demo scene in build/gallery, every mapper's frame beside its footprint-error
 # map, fastest first (speeds from build/report when make bench made one; docs/bench.md, "The gallery").

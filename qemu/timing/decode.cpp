@@ -146,13 +146,14 @@ Insn convert(csh h, const cs_insn& c) {
 
 }  // namespace
 
-std::vector<Insn> decode(const uint8_t* bytes, size_t size, int bits, uint32_t address) {
+std::vector<Insn> decode(const uint8_t* bytes, size_t size, int bits, uint32_t address, bool stop_at_bad) {
     Handle handle(bits);
     std::vector<Insn> out;
     size_t offset = 0;
     while (offset < size) {
         cs_insn* c = nullptr;
         const size_t n = cs_disasm(handle.h, bytes + offset, size - offset, address + offset, 1, &c);
+        if (n != 1 && stop_at_bad) break;
         if (n != 1) throw DecodeError("byte " + std::to_string(offset) + ": no x86 instruction decodes here");
         std::unique_ptr<cs_insn, void (*)(cs_insn*)> own(c, [](cs_insn* p) { cs_free(p, 1); });
         out.push_back(convert(handle.h, *c));

@@ -16,7 +16,8 @@ struct DecodeError : std::runtime_error {
 };
 
 // Every instruction of `bytes`, the first at `address`; `bits` 16 or 32. Throws DecodeError at a
-// byte sequence that is no instruction (its offset named).
-std::vector<Insn> decode(const uint8_t* bytes, size_t size, int bits, uint32_t address = 0);
+// byte sequence that is no instruction (its offset named); with `stop_at_bad`, returns the ones
+// before it instead (code followed by data).
+std::vector<Insn> decode(const uint8_t* bytes, size_t size, int bits, uint32_t address = 0, bool stop_at_bad = false);
 
 }  // namespace timing

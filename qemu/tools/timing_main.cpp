@@ -15,7 +15,11 @@ using namespace harness;
 
 const char* USAGE =
     "usage: modexlab-timing --cpu 486|pentium [--branch taken|not-taken|alternate|P] [--pixels N] [--json] FILE.asm\n"
+    "       modexlab-timing --cpu 486|pentium [...] --mapper NAME [--objects DIR]\n"
+    "       modexlab-timing --cpu 486|pentium [...] --object FILE.o --function SYMBOL\n"
     "  FILE.asm: a NASM listing (bits 16: real mode; bits 32: protected mode), its code one iteration of a loop\n"
+    "  --mapper: a registered mapper's NASM inner loop, from the kernel's objects (DIR: build/kernel/asm), run\n"
+    "    from the repository's root; --object/--function: the first loop of SYMBOL in an object (32-bit)\n"
     "  prints each instruction's cycle (and pipe, on the Pentium), clocks and stalls, then 'cycles per iteration: X'\n"
     "  --branch: how its data-dependent branches go (P: each taken with probability P, 0..1; default taken)\n"
     "  --pixels: the pixels an iteration draws (default: the listing's '; pixels:' line, or 1)\n";
@@ -33,13 +37,17 @@ timing::BranchPolicy branch_policy(const std::string& s) {
 }
 
 int timing_tool(const std::vector<std::string>& words) {
-    const CommandLine c = parse_command_line(words, {"--cpu", "--branch", "--pixels"}, {"--json"});
+    const CommandLine c = parse_command_line(words, {"--cpu", "--branch", "--pixels", "--mapper", "--objects", "--object", "--function"}, {"--json"});
     if (c.help()) return show_usage(USAGE);
-    if (c.positionals().size() != 1) throw UsageError("one listing, please");
+    const int sources = int(c.positionals().size()) + int(c.has("--mapper")) + int(c.has("--object"));
+    if (sources != 1) throw UsageError("one listing, --mapper or --object, please");
+    if (c.has("--object") != c.has("--function")) throw UsageError("--object and --function go together");
     const timing::Cpu cpu = c.choice<timing::Cpu>("--cpu", {{"486", timing::Cpu::I486}, {"pentium", timing::Cpu::Pentium}}, timing::Cpu::I486);
     if (!c.has("--cpu")) throw UsageError("--cpu is needed: 486 or pentium");
     const timing::BranchPolicy branch = branch_policy(c.text("--branch"));
-    const timing::Listing l = timing::read_listing(c.positionals()[0]);
+    const timing::Listing l = c.has("--mapper") ? timing::read_mapper_loop(c.text("--mapper"), c.text("--objects", "build/kernel/asm"))
+                              : c.has("--object") ? timing::read_object_loop(c.text("--object"), c.text("--function"))
+                                                  : timing::read_listing(c.positionals()[0]);
     int pixels = l.header.count("pixels") ? std::atoi(l.header.at("pixels").c_str()) : 1;
     pixels = c.integer("--pixels", 1, 1 << 20, pixels < 1 ? 1 : pixels);
     const timing::Mode mode = l.bits == 16 ? timing::Mode::Real16 : timing::Mode::Protected32;

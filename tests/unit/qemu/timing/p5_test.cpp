@@ -121,3 +121,37 @@ INSTANTIATE_TEST_SUITE_P(
                                 "two-bit counter about half the time, 3 cycles each"}));
 
 }  // namespace
+
+namespace {
+
+// Our loops faithful to a published one take what it takes: each registered mapper's NASM inner
+// loop, straight from the kernel's object, against its listing, on both CPUs (make listing).
+struct Faithful {
+    const char* mapper;
+    const char* listing;
+};
+
+class FaithfulLoops : public ::testing::TestWithParam<Faithful> {};
+
+TEST_P(FaithfulLoops, TakeWhatThePublishedLoopTakes) {
+    const Faithful& f = GetParam();
+    const Listing ours = read_mapper_loop(f.mapper, "build/kernel/asm");
+    const Listing theirs = read_listing(std::string("tests/timing/listings/") + f.listing);
+    for (Cpu cpu : {Cpu::I486, Cpu::Pentium}) {
+        const Report a = analyse(ours.insns, cpu, Mode::Protected32, BranchPolicy{});
+        const Report b = analyse(theirs.insns, cpu, Mode::Protected32, BranchPolicy{});
+        EXPECT_EQ(a.cycles_per_iteration, b.cycles_per_iteration) << f.mapper << " against " << f.listing << (cpu == Cpu::I486 ? " (486)" : " (Pentium)")
+                                                                   << "\nours:\n" << diagram(a, 1) << "theirs:\n" << diagram(b, 1);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Fatmap, FaithfulLoops,
+                         ::testing::Values(Faithful{"fatmap-256", "fatmap-combined.asm"}, Faithful{"fatmap-256-16", "fatmap2-simmons.asm"},
+                                           Faithful{"fatmap-lut", "fatmap-lut.asm"}));
+
+TEST(FaithfulLoops, AMapperWithoutANasmLoopIsSaidSo) {
+    EXPECT_THROW(read_mapper_loop("affine", "build/kernel/asm"), std::runtime_error);
+    EXPECT_THROW(read_mapper_loop("nosuch", "build/kernel/asm"), std::runtime_error);
+}
+
+}  // namespace
