@@ -3,7 +3,6 @@
 #include "kernel/platform/guard.h"
 
 #include "kernel/platform/panic.h"
-#include "kernel/server/reply.h"
 
 namespace guard {
 
@@ -130,14 +129,6 @@ uint8_t* take_transient(size_t bytes, const char* what, const char* name) {
 
 size_t transient_room() { return g_top - g_cursor; }
 
-bool room_for(size_t footprints, const char* cmd, const char* what) {
-    if (footprints <= g_top - g_cursor) return true;
-    lib::Fmt m;
-    m.s("not enough memory for ").s(what).s(": ").u(uint32_t((footprints + 1023) >> 10)).s(" KiB needed, ");
-    m.u(uint32_t((g_top - g_cursor) >> 10)).s(" KiB free (load a smaller scene first; docs/platform.md, Memory)");
-    reply::error(cmd, m.c_str());
-    return false;
-}
 size_t room_after_release() { return g_bytes - PAGE - g_cursor; }
 size_t transient_taken() { return g_bytes - PAGE - g_top; }
 uint32_t transient_generation() { return g_generation; }

@@ -35,11 +35,6 @@ bool enabled();
 // before it, but within that page, is not caught). Panics when the pool is full.
 uint8_t* take(size_t bytes, const char* what, const char* name = nullptr);
 
-// Whether buffers whose footprints add up to `footprints` can still be taken (take or
-// take_transient); false, with `cmd`'s error reply naming `what` and the room, where they cannot.
-// For what a command takes at its first use and keeps: the scene loaded may have the room.
-bool room_for(size_t footprints, const char* cmd, const char* what);
-
 // A buffer kept only until release_transient(), taken from the other end of the pool (the 3D
 // scene's textures, made again on every load), guarded the same way.
 uint8_t* take_transient(size_t bytes, const char* what, const char* name = nullptr);

@@ -30,7 +30,7 @@ void draw_out_of_bounds(bool short_texture) {
     if (!texels) {
         const size_t need = guard::footprint(size_t(SIDE) * SIDE) + guard::footprint(size_t(SIDE) * SIDE / 2) +
                             guard::footprint(raster::SCREEN_PIXELS) + guard::footprint(raster::SCREEN_PIXELS / 2);
-        if (!guard::room_for(need, "fault", "the fault's texture and surface")) return;
+        if (!reply::room_for(need, "fault", "the fault's texture and surface")) return;
         texels = guard::take(size_t(SIDE) * SIDE, "fault texture");
         short_texels = guard::take(size_t(SIDE) * SIDE / 2, "fault texture (32 of its 64 rows)");
         surface = guard::take(raster::SCREEN_PIXELS, "fault surface");
@@ -82,7 +82,7 @@ uint8_t *g_check_a = nullptr, *g_check_b = nullptr, *g_check_texels = nullptr;
 bool take_check_buffers() {
     if (g_check_a) return true;
     const size_t need = 2 * guard::footprint(raster::CHECK_DST_BYTES) + guard::footprint(raster::CHECK_TEXEL_BYTES);
-    if (!guard::room_for(need, "selftest", "the selftest's buffers")) return false;
+    if (!reply::room_for(need, "selftest", "the selftest's buffers")) return false;
     g_check_a = guard::take(raster::CHECK_DST_BYTES, "selftest destination (twin)");
     g_check_b = guard::take(raster::CHECK_DST_BYTES, "selftest destination (NASM)");
     g_check_texels = guard::take(raster::CHECK_TEXEL_BYTES, "selftest texels");
@@ -230,7 +230,7 @@ void cmd_fuzz(Context& ctx, const StrView* args, size_t nargs) {
     }
     static FuzzBank* bank = nullptr;
     if (!bank) {
-        if (!guard::room_for(FuzzBank::footprints(), "fuzz", "fuzz's textures")) return;
+        if (!reply::room_for(FuzzBank::footprints(), "fuzz", "fuzz's textures")) return;
         bank = guard::take_object<FuzzBank>("fuzz's texture bank");
         fuzz_surface(nullptr, false);
     }

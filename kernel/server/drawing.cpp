@@ -152,7 +152,7 @@ void cmd_play(Context&, const StrView* args, size_t nargs) {
     DrawArgs d;
     if (!parse_animation_args("play", args, nargs, MAX_PLAY_FRAMES, "", &frames, &d)) return;
     if (!g_play_ticks) {
-        if (!guard::room_for(guard::footprint(MAX_PLAY_FRAMES * sizeof(uint32_t)), "play", "play's frame times")) return;
+        if (!reply::room_for(guard::footprint(MAX_PLAY_FRAMES * sizeof(uint32_t)), "play", "play's frame times")) return;
         g_play_ticks = reinterpret_cast<uint32_t*>(guard::take(MAX_PLAY_FRAMES * sizeof(uint32_t), "play's frame times"));
     }
     uint64_t pixels = 0, total = 0, t_start = timer::now();

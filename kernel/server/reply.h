@@ -11,4 +11,9 @@ lib::JsonLine begin(bool ok);
 // A complete error reply for command `cmd`.
 void error(const char* cmd, const char* message);
 
+// Whether pool buffers whose footprints add up to `footprints` can still be taken
+// (kernel/platform/guard.h); false, with `cmd`'s error reply naming `what` and the room, where
+// they cannot. For what a command takes at its first use and keeps: the scene loaded may have the room.
+bool room_for(size_t footprints, const char* cmd, const char* what);
+
 }  // namespace reply

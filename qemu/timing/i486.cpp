@@ -11,9 +11,9 @@ namespace timing {
 
 namespace {
 
-std::string family_name(Family f, Mode mode) {
-    static const char* const NAMES[] = {"-", "eax", "ebx", "ecx", "edx", "esi", "edi", "ebp", "esp"};
-    const std::string name = NAMES[size_t(f)];
+// (in real mode, the 16-bit name)
+std::string register_name(Family f, Mode mode) {
+    const std::string name = family_name(f);
     return mode == Mode::Real16 && f != Family::None ? name.substr(1) : name;
 }
 
@@ -98,7 +98,7 @@ Step I486::run(const Insn& in, bool taken) {
     }
     if (agi) {
         start += agi;
-        s.stalls.push_back(std::string("AGI on ") + family_name(agi_on, mode_) + " +" + std::to_string(agi));
+        s.stalls.push_back(std::string("AGI on ") + register_name(agi_on, mode_) + " +" + std::to_string(agi));
     }
     // a byte register written exactly two cycles before an instruction that addresses memory, by any
     // register (BB12, rule 4; twice where two byte writes fall there in turn)
@@ -113,7 +113,7 @@ Step I486::run(const Insn& in, bool taken) {
         if (std::find(address.begin(), address.end(), r.family) != address.end()) continue;  // (the AGI's)
         if (last_byte_write_[f] == start - 1 && (r.bytes & ~last_byte_bytes_[f])) {
             ++start;
-            s.stalls.push_back(std::string("byte then whole of ") + family_name(r.family, mode_) + " +1");
+            s.stalls.push_back(std::string("byte then whole of ") + register_name(r.family, mode_) + " +1");
             break;
         }
     }

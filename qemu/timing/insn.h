@@ -61,6 +61,12 @@ struct Insn {
     Memory mem;
 };
 
+// The family's 32-bit name ("esi").
+inline const char* family_name(Family f) {
+    static const char* const NAMES[] = {"-", "eax", "ebx", "ecx", "edx", "esi", "edi", "ebp", "esp"};
+    return NAMES[size_t(f)];
+}
+
 // Whether two parts of registers overlap.
 inline bool overlaps(RegPart a, RegPart b) { return a.family == b.family && a.family != Family::None && (a.bytes & b.bytes); }
 

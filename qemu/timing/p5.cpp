@@ -43,11 +43,6 @@ std::vector<RegPart> counted_reads(const Insn& in) {
     return out;
 }
 
-const char* family_name(Family f) {
-    static const char* const NAMES[] = {"-", "eax", "ebx", "ecx", "edx", "esi", "edi", "ebp", "esp"};
-    return NAMES[size_t(f)];
-}
-
 }  // namespace
 
 Pairing P5::pairing(const Insn& in) {
