@@ -89,7 +89,7 @@ Range largest_free(const multiboot::Info* info, const Range* kept, int count) {
     return best;
 }
 
-Range gather_modules(const multiboot::Info* info, Range pool) {
+Range gather_modules(const multiboot::Info* info, Range pool, bool move) {
     if (!(info->flags & multiboot::INFO_MODULES)) return pool;
     auto* mods = reinterpret_cast<multiboot::Module*>(uintptr_t(info->mods_addr));
     constexpr uint64_t PAGE = 4096;
@@ -102,7 +102,7 @@ Range gather_modules(const multiboot::Info* info, Range pool) {
     if (below <= pool.start) return Range{};
     // The highest first, each to just below the last one moved: up, or where it is, never down (so
     // over nothing still to move); checked for every module before any moves.
-    auto walk = [&](bool move) {
+    auto walk = [&](bool moving) {
         uint64_t top = pool.end & ~(PAGE - 1), done_below = ~0ull;
         for (;;) {
             int next = -1;
@@ -116,7 +116,7 @@ Range gather_modules(const multiboot::Info* info, Range pool) {
             const uint64_t size = m.mod_end - m.mod_start, to = (top - size) & ~(PAGE - 1);
             if (to < m.mod_start) return false;
             done_below = m.mod_start;
-            if (move) {
+            if (moving) {
                 memmove(reinterpret_cast<void*>(uintptr_t(to)), reinterpret_cast<const void*>(uintptr_t(m.mod_start)), size_t(size));
                 m.mod_start = uint32_t(to), m.mod_end = uint32_t(to + size);
             }
@@ -124,7 +124,7 @@ Range gather_modules(const multiboot::Info* info, Range pool) {
         }
     };
     if (!walk(false)) return Range{};
-    walk(true);
+    if (move) walk(true);
     return Range{pool.start, below};
 }
 

@@ -29,8 +29,9 @@ Range largest_free(const multiboot::Info* info, const Range* kept, int count);
 
 // Moves the modules lying in `pool` (a stretch that holds none of what stays but them) to its top,
 // each at a page boundary, and updates the module list; returns the pool below them. Empty, with
-// nothing moved, where a module lies partly in it. (A loader may scatter its modules: GRUB puts some
-// megabytes apart, and the largest stretch between them is then far smaller than the RAM left.)
-Range gather_modules(const multiboot::Info* info, Range pool);
+// nothing moved, where a module lies partly in it. Without `move`, only what it would return.
+// (A loader may scatter its modules: GRUB puts some megabytes apart, and the largest stretch
+// between them is then far smaller than the RAM left.)
+Range gather_modules(const multiboot::Info* info, Range pool, bool move);
 
 }  // namespace memory

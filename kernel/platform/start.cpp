@@ -52,14 +52,12 @@ void place_pool(const multiboot::Info* info) {
         m.s(", the loader reports none at ").hex(uint32_t(missing));
         panic(m.c_str());
     }
-    // the largest stretch with the modules gathered at its top; where they cannot be, around them
+    // the largest stretch around the modules, or, where it is larger, the largest with the modules
+    // in it gathered at its top
     memory::Range kept[memory::MAX_KEPT];
-    int count = memory::kept(info, image_start, image_end, kept, false);
-    memory::Range pool = memory::gather_modules(info, memory::largest_free(info, kept, count));
-    if (!pool.bytes()) {
-        count = memory::kept(info, image_start, image_end, kept);
-        pool = memory::largest_free(info, kept, count);
-    }
+    memory::Range pool = memory::largest_free(info, kept, memory::kept(info, image_start, image_end, kept));
+    const memory::Range with_modules = memory::largest_free(info, kept, memory::kept(info, image_start, image_end, kept, false));
+    if (memory::gather_modules(info, with_modules, false).bytes() > pool.bytes()) pool = memory::gather_modules(info, with_modules, true);
     if (pool.bytes() < MIN_POOL_BYTES) {
         lib::Fmt m;
         m.s("not enough memory: modexlab needs ").u(kib(MIN_POOL_BYTES)).s(" KiB of free RAM for its buffers beside its ");
