@@ -161,7 +161,8 @@ bool indexed_image_size(const uint8_t* data, size_t size, int32_t* width, int32_
     int64_t w = 0, h = 0;
     if (size >= 2 && data[0] == 'B' && data[1] == 'M' && r.has(0, 26)) {
         const bool os2 = r.u32(14) == 12;
-        w = os2 ? r.u16(18) : int32_t(r.u32(18)), h = os2 ? r.u16(20) : int32_t(r.u32(22));
+        w = os2 ? int64_t(r.u16(18)) : int64_t(int32_t(r.u32(18)));
+        h = os2 ? int64_t(r.u16(20)) : int64_t(int32_t(r.u32(22)));  // (negative: a top-down BMP)
         if (h < 0) h = -h;
     } else if (size >= 1 && data[0] == 0x0A && r.has(0, 12)) {
         w = int64_t(r.u16(8)) - r.u16(4) + 1, h = int64_t(r.u16(10)) - r.u16(6) + 1;

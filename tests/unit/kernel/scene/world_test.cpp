@@ -386,3 +386,45 @@ TEST(Math3d, RotationsTurnCounterClockwiseAboutTheirAxis) {
 }
 
 }  // namespace
+
+namespace {
+
+// world_room counts what parse_world then takes: exactly, for a scene that parses, every part (its
+// v, vt, f lines, corners, and the texels of procedural, file and tiled textures, BMP and PCX).
+TEST(World, TheRoomCountedIsWhatTheParserTakes) {
+    Files files;
+    files.files["a.bmp"] = texfiles::encode_bmp(texfiles::random_picture(16, 8, 1), texfiles::BmpKind::Plain);
+    files.files["b.pcx"] = texfiles::encode_pcx(texfiles::random_picture(12, 6, 2));
+    files.files["c.bmp"] = texfiles::encode_bmp(texfiles::random_picture(4, 10, 3), texfiles::BmpKind::TopDown);
+    files.files["d.bmp"] = texfiles::encode_bmp(texfiles::random_picture(6, 2, 4), texfiles::BmpKind::Os2);
+    const std::string text = "modexlab-scene 2\ntexture t checker 64 32\ntexture f file a.bmp\ntexture g file b.pcx\n"
+                             "texture h file a.bmp tile 32 16\ntexture c file c.bmp\ntexture d file d.bmp\n" +
+                             QUAD_MESH +
+                             "mesh tri\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nf 3/3 2/2 1/1\nend\n"
+                             "object a\nmesh quad\ntexture t\nend\nobject b\nmesh tri\ntexture h\nend\n" +
+                             CAMERA;
+    const Parsed p = parse(text, files);
+    ASSERT_TRUE(p.ok) << p.error.message;
+    const WorldRoom r = world_room(text.data(), text.size(), files.resolver());
+    EXPECT_EQ(r.texels, p.world->texel_count);
+    EXPECT_EQ(r.texels, uint32_t(64 * 32 + 16 * 8 + 12 * 6 + 32 * 16 + 4 * 10 + 6 * 2));
+    EXPECT_EQ(r.positions, p.world->position_count);
+    EXPECT_EQ(r.uvs, p.world->uv_count);
+    EXPECT_EQ(r.faces, p.world->face_count);
+    EXPECT_EQ(r.corners, p.world->corner_count);
+
+    // and a world in just that room parses the same
+    HostWorld exact;
+    exact.room = r;
+    ParseError e;
+    ASSERT_TRUE(parse_world(text.data(), text.size(), files.resolver(), &exact, &e)) << e.message;
+    EXPECT_EQ(exact.texel_count, p.world->texel_count);
+    // one position less: refused, with the room as the limit
+    WorldRoom less = r;
+    --less.positions;
+    exact.room = less;
+    EXPECT_FALSE(parse_world(text.data(), text.size(), files.resolver(), &exact, &e));
+    EXPECT_NE(std::string(e.message).find("too many positions (at most " + std::to_string(less.positions) + ")"), std::string::npos) << e.message;
+}
+
+}  // namespace
