@@ -99,10 +99,11 @@ std::vector<P5Issue> P5::run(const std::vector<Executed>& stream) {
         }
         it->second = std::clamp(it->second + (taken ? 1 : -1), 0, 3);
     };
-    // the cycle its address registers are ready in (written two cycles before, BB21)
+    // the cycle its address registers are ready in (written two cycles before, BB21); PUSH and POP
+    // address through ESP, which counts only as written explicitly (`written` keeps no other)
     auto ready = [&](const Insn& in, Family* on) {
         long r = -1000;
-        if (!mem_operand(in) && !(in.mem.stack && in.writes_sp_explicitly)) return r;
+        if (!in.mem.present) return r;
         for (Family f : {in.mem.base, in.mem.index})
             if (f != Family::None && written[size_t(f)] + 2 > r) r = written[size_t(f)] + 2, *on = f;
         return r;
@@ -166,7 +167,7 @@ std::vector<P5Issue> P5::run(const std::vector<Executed>& stream) {
             }
             iv.cycle = start, iv.pipe = 'V', iv.clocks = cycles;
         }
-        iu.cycle = start, iu.pipe = 'U', iu.clocks = int(start - now) + cycles;
+        iu.cycle = start, iu.pipe = 'U', iu.clocks = cycles;
         const long end = start + cycles - 1;
         for (size_t k = i; k < i + (pair ? 2 : 1); ++k)
             for (RegPart w : counted_writes(*stream[k].insn)) written[size_t(w.family)] = end;

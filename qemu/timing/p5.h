@@ -20,9 +20,9 @@ enum class Pairing { UV, PU, PV, NP };
 
 // One instruction of a run as the P5 issued it.
 struct P5Issue {
-    long cycle = 0;   // the cycle it started in (from 0)
+    long cycle = 0;   // the cycle it issued in (from 0), after its stalls (named in `stalls`)
     char pipe = 'U';
-    int clocks = 0;   // its pair's clocks with it (lockstep), stalls included
+    int clocks = 0;   // its pair's clocks (lockstep), a bank conflict's or a misprediction's included
     std::vector<std::string> stalls;
 };
 

@@ -155,3 +155,15 @@ TEST(FaithfulLoops, AMapperWithoutANasmLoopIsSaidSo) {
 }
 
 }  // namespace
+
+namespace {
+
+// Chapter 21: PUSH and POP change ESP without an AGI on the next stack access, but an explicit
+// write of ESP (sub esp,8) stalls a PUSH that follows it.
+TEST(TimingP5, TheStackPointersAgi) {
+    EXPECT_EQ(cycles(asm32("push eax\npush ebx\npush ecx\npush edx\n")), 2);
+    EXPECT_EQ(cycles(asm32("sub esp,8\nnop\npush eax\n")), 3) << "written in cycle 1: the push waits for cycle 3";
+    EXPECT_EQ(cycles(asm32("mov esp,ebp\nnop\nnop\nnop\npush eax\n")), 3) << "two cycles on: none";
+}
+
+}  // namespace
