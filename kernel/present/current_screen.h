@@ -12,8 +12,9 @@
 
 namespace current_screen {
 
-// Parses a version 1 scene text and makes it the current one (its texture generated). On failure
-// the previous scene stays and `error` says why (parser errors carry a line).
+// Parses a version 1 scene text and makes it the current one (its texture generated), its buffers
+// sized to it (the 3D scene's given back first: it is then not loaded). On failure the previous
+// scene stays and `error` says why (parser errors carry a line; a lack of memory line 0).
 bool load(const char* text, size_t length, raster::ParseError* error);
 
 bool loaded();

@@ -11,8 +11,10 @@
 namespace current_world {
 
 // Parses a version 2 scene text (its texture files found in the file table) and makes it the
-// current one; loads its palette into the DAC when a graphics mode is on. On failure no 3D scene
-// is loaded (the parser works in place) and `error` says why.
+// current one; loads its palette into the DAC when a graphics mode is on. Its buffers are taken
+// sized to it (the screen-space scene's given back first: it is then not loaded); where they do
+// not all fit, without the textures' doubled copies (doubled_copies()). On failure no 3D scene is
+// loaded (the parser works in place) and `error` says why, a lack of memory included.
 bool load(const char* name, const uint8_t* text, size_t length, raster::ParseError* error);
 bool loaded();
 // Whether the scene's textures have their doubled copies: false where the memory left had no room
