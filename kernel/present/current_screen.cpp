@@ -24,7 +24,7 @@ raster::Texture g_texture;
 size_t scene_parts(const raster::Scene& parsed, bool take) {
     static constexpr present::TextureNames NAMES{"screen-space texture", "screen-space texture (bordered copy)",
                                                  "screen-space texture (aligned copy)", "screen-space texture (doubled copy)"};
-    present::Parts p{take};
+    present::Parts p{take ? present::Take::Transient : present::Take::Count};
     raster::Scene* scene = p.of<raster::Scene>(1, "screen-space scene");
     const raster::Texture t = present::texture_parts(p, raster::Texture{nullptr, parsed.texture_width, parsed.texture_height, parsed.wrap}, true,
                                                      NAMES, nullptr, &parsed.texture_kind);
@@ -41,12 +41,7 @@ size_t scene_parts(const raster::Scene& parsed, bool take) {
 bool load(const char* text, size_t length, raster::ParseError* error) {
     if (!raster::parse_scene(text, length, &g_parsed, error)) return false;
     const size_t need = scene_parts(g_parsed, false);
-    if (need > guard::room_after_release()) {
-        lib::Fmt m;
-        m.s("not enough memory for this scene: its vertices and texture need ").u(uint32_t(need >> 10)).s(" KiB, ");
-        m.u(uint32_t(guard::room_after_release() >> 10)).s(" KiB free (docs/platform.md, Memory)");
-        return raster::scene_text::fail(error, 0, m.c_str());
-    }
+    if (need > guard::room_after_release()) return present::no_room(error, "its vertices and texture", need);
     guard::release_transient();
     g_generation = guard::transient_generation();
     scene_parts(g_parsed, true);

@@ -37,7 +37,7 @@ using present::Parts;
 
 // The world's parts, as world_room counts them.
 size_t world_parts(const raster::WorldRoom& r, bool take) {
-    Parts p{take};
+    Parts p{take ? present::Take::Transient : present::Take::Count};
     uint8_t* texels = p.of<uint8_t>(int32_t(r.texels), "3D scene's texels (as parsed)");
     raster::Vec3* positions = p.of<raster::Vec3>(r.positions, "3D scene's positions");
     raster::TexCoord* uvs = p.of<raster::TexCoord>(r.uvs, "3D scene's texture coordinates");
@@ -53,7 +53,7 @@ size_t world_parts(const raster::WorldRoom& r, bool take) {
 
 // The frame's polygons and the frame scratch, as frame_room counts them.
 size_t frame_parts(const raster::FrameRoom& r, bool take) {
-    Parts p{take};
+    Parts p{take ? present::Take::Transient : present::Take::Count};
     uint8_t* polygon[3];  // sizes, objects, flags
     for (uint8_t*& at : polygon) at = p.of<uint8_t>(r.polygons, "frame's polygons");
     raster::Vertex* vertices = p.of<raster::Vertex>(r.vertices, "frame's vertices");
@@ -85,7 +85,7 @@ size_t frame_parts(const raster::FrameRoom& r, bool take) {
 size_t texture_parts(bool doubled, bool take) {
     static constexpr present::TextureNames NAMES{"world texture", "world texture (bordered copy)", "world texture (aligned copy)",
                                                  "world texture (doubled copy)"};
-    Parts p{take};
+    Parts p{take ? present::Take::Transient : present::Take::Count};
     raster::Texture placed[raster::MAX_WORLD_TEXTURES] = {};
     for (int32_t i = 0; i < g_world.texture_count; ++i) {
         const raster::WorldTexture& w = g_world.textures[i];
@@ -97,14 +97,6 @@ size_t texture_parts(bool doubled, bool take) {
         g_textures.objects[o] = t;
     }
     return p.bytes;
-}
-
-// The error for a scene the pool has no room for: what it needs, what is free.
-bool no_room(raster::ParseError* error, const char* part, size_t need) {
-    lib::Fmt m;
-    m.s("not enough memory for this scene: ").s(part).s(" need ").u(uint32_t((need + 1023) >> 10)).s(" KiB, ");
-    m.u(uint32_t(guard::room_after_release() >> 10)).s(" KiB free (docs/platform.md, Memory)");
-    return raster::scene_text::fail(error, 0, m.c_str());
 }
 
 // auto's candidate lists for the objects' textures at the budget in force, built before any frame
@@ -123,14 +115,14 @@ bool load(const char* name, const uint8_t* text, size_t length, raster::ParseErr
     const char* chars = reinterpret_cast<const char*>(text);
     const raster::WorldRoom room = raster::world_room(chars, length, file_table::resolver());
     const size_t world = world_parts(room, false);
-    if (world > guard::transient_room()) return no_room(error, "its meshes and textures", world);
+    if (world > guard::transient_room()) return present::no_room(error, "its meshes and textures", world);
     world_parts(room, true);
     if (!raster::parse_world(chars, length, file_table::resolver(), &g_world, error)) return false;
     // the frame and every copy of every texture; where they do not fit, the doubled copies left out
     // (the largest: four times the texels) before the scene is refused
     const raster::FrameRoom frame = raster::frame_room(g_world);
     const size_t all = frame_parts(frame, false) + texture_parts(true, false), fewer = frame_parts(frame, false) + texture_parts(false, false);
-    if (fewer > guard::transient_room()) return no_room(error, "its frames and its textures' copies", world + all);
+    if (fewer > guard::transient_room()) return present::no_room(error, "its frames and its textures' copies", world + all);
     g_doubled = all <= guard::transient_room();
     frame_parts(frame, true);
     texture_parts(g_doubled, true);

@@ -1,5 +1,6 @@
-// A scene's buffers, each between guard pages (kernel/platform/guard.h): taken (transient), or, in
-// a dry run, only counted (what they would take of the pool), by one list, so that the two agree.
+// Buffers each between guard pages (kernel/platform/guard.h), listed once: taken, transient (a
+// scene's, given back at the next load) or kept for the boot (a command's, from its first use on),
+// or, in a dry run, only counted (what they would take of the pool), so that the two agree.
 #pragma once
 
 #include <stddef.h>
@@ -7,16 +8,21 @@
 
 #include "kernel/core/policy.h"
 #include "kernel/core/texture.h"
+#include "kernel/lib/fmt.h"
 #include "kernel/platform/guard.h"
+#include "kernel/scene/scene_text.h"
 
 namespace present {
 
+enum class Take : uint8_t { Count, Transient, Kept };
+
 struct Parts {
-    bool take;
+    Take how;
     size_t bytes = 0;  // their footprints so far
+    bool taking() const { return how != Take::Count; }
     uint8_t* bytes_for(size_t n, const char* what, const char* name = nullptr) {
         bytes += guard::footprint(n);
-        return take ? guard::take_transient(n, what, name) : nullptr;
+        return how == Take::Transient ? guard::take_transient(n, what, name) : how == Take::Kept ? guard::take(n, what, name) : nullptr;
     }
     template <typename T>
     T* of(int32_t count, const char* what) {  // count items of T (none: null)
@@ -40,12 +46,21 @@ inline raster::Texture texture_parts(Parts& p, const raster::Texture& t, bool do
     uint8_t* bordered = p.bytes_for(size_t(raster::bordered_bytes(t.width, t.height)), names.bordered, name);
     uint8_t* aligned = raster::wants_aligned256(t) ? p.bytes_for(raster::ALIGNED256_BYTES, names.aligned, name) : nullptr;
     uint8_t* twice = doubled && raster::wants_doubled(t) ? p.bytes_for(size_t(raster::doubled_bytes(t.width, t.height)), names.doubled, name) : nullptr;
-    if (!p.take) return t;
+    if (!p.taking()) return t;
     if (kind) raster::generate_texture(*kind, t.width, t.height, at);
     else __builtin_memcpy(at, t.texels, texels);
     raster::Texture placed{at, t.width, t.height, t.wrap};
     raster::prepare_texture(&placed, bordered, aligned, twice);
     return placed;
+}
+
+// A scene the pool has no room for: `error` says what its `part` needs and what is free (after the
+// transient buffers are given back); false.
+inline bool no_room(raster::ParseError* error, const char* part, size_t need) {
+    lib::Fmt m;
+    m.s("not enough memory for this scene: ").s(part).s(" need ").u(uint32_t((need + 1023) >> 10)).s(" KiB, ");
+    m.u(uint32_t(guard::room_after_release() >> 10)).s(" KiB free (docs/platform.md, Memory)");
+    return raster::scene_text::fail(error, 0, m.c_str());
 }
 
 }  // namespace present

@@ -9,6 +9,7 @@
 #include "kernel/core/render.h"
 #include "kernel/core/selftest.h"
 #include "kernel/platform/guard.h"
+#include "kernel/present/parts.h"
 #include "kernel/platform/idt.h"
 #include "kernel/lib/words.h"
 #include "kernel/server/commands.h"
@@ -173,41 +174,34 @@ void cmd_exit(Context&, const StrView* args, size_t) {
 
 namespace {
 
-// fuzz's textures (kernel/core/fuzz.h), each copy between guard pages: made on the first `fuzz`.
+// fuzz's textures (kernel/core/fuzz.h), each with its copies between guard pages: made on the
+// first `fuzz` and kept.
 struct FuzzBank {
-    // what the bank and the surface take of the pool
-    static size_t footprints() {
-        size_t n = guard::footprint(sizeof(FuzzBank)) + guard::footprint(raster::SCREEN_PIXELS);
-        for (int i = 0; i < raster::FUZZ_TEXTURE_COUNT; ++i) {
-            const raster::FuzzTextureSize size = raster::fuzz_texture_size(i);
-            const raster::Texture t{nullptr, size.width, size.height, raster::fuzz_texture_wrap(i)};
-            n += guard::footprint(size_t(size.width) * size_t(size.height)) + guard::footprint(size_t(raster::bordered_bytes(size.width, size.height)));
-            if (raster::wants_aligned256(t)) n += guard::footprint(raster::ALIGNED256_BYTES);
-            if (raster::wants_doubled(t)) n += guard::footprint(size_t(raster::doubled_bytes(size.width, size.height)));
-        }
-        return n;
-    }
     raster::Texture textures[raster::FUZZ_TEXTURE_COUNT];
     char names[raster::FUZZ_TEXTURE_COUNT][24];
-    FuzzBank() {
-        for (int i = 0; i < raster::FUZZ_TEXTURE_COUNT; ++i) {
-            const raster::FuzzTextureSize size = raster::fuzz_texture_size(i);
-            const raster::Wrap wrap = raster::fuzz_texture_wrap(i);
+};
+
+// The bank's textures made into `bank` (kept), or, where it is null, what they take of the pool.
+size_t fuzz_textures(FuzzBank* bank) {
+    static constexpr present::TextureNames NAMES{"fuzz texture", "fuzz texture (bordered copy)", "fuzz texture (aligned copy)",
+                                                 "fuzz texture (doubled copy)"};
+    static constexpr raster::TextureKind XOR = raster::TextureKind::Xor;
+    present::Parts p{bank ? present::Take::Kept : present::Take::Count};
+    for (int i = 0; i < raster::FUZZ_TEXTURE_COUNT; ++i) {
+        const raster::FuzzTextureSize size = raster::fuzz_texture_size(i);
+        const raster::Wrap wrap = raster::fuzz_texture_wrap(i);
+        const char* name = nullptr;
+        if (bank) {
             lib::Fmt n;
             n.u(uint32_t(size.width)).s(" x ").u(uint32_t(size.height)).s(" ").s(raster::wrap_name(wrap));
-            lib::copy_c_string(names[i], sizeof names[i], n.c_str());
-            uint8_t* texels = guard::take(size_t(size.width) * size_t(size.height), "fuzz texture", names[i]);
-            raster::generate_texture(raster::TextureKind::Xor, size.width, size.height, texels);
-            textures[i] = raster::Texture{texels, size.width, size.height, wrap};
-            uint8_t* bordered = guard::take(size_t(raster::bordered_bytes(size.width, size.height)), "fuzz texture (bordered copy)", names[i]);
-            uint8_t* aligned = raster::wants_aligned256(textures[i]) ? guard::take(raster::ALIGNED256_BYTES, "fuzz texture (aligned copy)", names[i]) : nullptr;
-            uint8_t* doubled = raster::wants_doubled(textures[i])
-                                   ? guard::take(size_t(raster::doubled_bytes(size.width, size.height)), "fuzz texture (doubled copy)", names[i])
-                                   : nullptr;
-            raster::prepare_texture(&textures[i], bordered, aligned, doubled);
+            lib::copy_c_string(bank->names[i], sizeof bank->names[i], n.c_str());
+            name = bank->names[i];
         }
+        const raster::Texture t = present::texture_parts(p, raster::Texture{nullptr, size.width, size.height, wrap}, true, NAMES, name, &XOR);
+        if (bank) bank->textures[i] = t;
     }
-};
+    return p.bytes;
+}
 
 uint8_t* fuzz_surface(void*, bool) {
     static uint8_t* const surface = guard::take(raster::SCREEN_PIXELS, "fuzz surface");
@@ -230,8 +224,10 @@ void cmd_fuzz(Context& ctx, const StrView* args, size_t nargs) {
     }
     static FuzzBank* bank = nullptr;
     if (!bank) {
-        if (!reply::room_for(FuzzBank::footprints(), "fuzz", "fuzz's textures")) return;
+        const size_t need = guard::footprint(sizeof(FuzzBank)) + fuzz_textures(nullptr) + guard::footprint(raster::SCREEN_PIXELS);
+        if (!reply::room_for(need, "fuzz", "fuzz's textures")) return;
         bank = guard::take_object<FuzzBank>("fuzz's texture bank");
+        fuzz_textures(bank);
         fuzz_surface(nullptr, false);
     }
     Progress p = progress("fuzz", ctx);

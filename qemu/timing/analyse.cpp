@@ -50,35 +50,13 @@ Body shape(const std::vector<Insn>& insns) {
     return b;
 }
 
-// One iteration on a path (bit k: data-dependent branch k taken); its lines where `lines`.
-long iterate(const Body& b, I486& cpu, unsigned path, std::vector<Line>* lines) {
-    const long start = cpu.now();
-    for (size_t i = 0; i < b.insns.size();) {
-        const Insn& in = b.insns[i];
-        const bool loop = b.loop_branch && i + 1 == b.insns.size();
-        const bool taken = in.kind == Kind::Jmp || loop || (b.data_branch[i] >= 0 && ((path >> b.data_branch[i]) & 1));
-        const Step s = cpu.run(in, taken);
-        if (lines) (*lines)[i] = Line{in.text, s.start, s.clocks, s.stalls};
-        if (loop) break;
-        i = taken ? size_t(b.target[i]) : i + 1;
-    }
-    return cpu.now() - start;
-}
-
-// The cycles of an iteration on path `cur` after iterations on path `prev`.
-long measure(const Body& b, Mode mode, unsigned prev, unsigned cur, std::vector<Line>* lines) {
-    I486 cpu(mode);
-    for (int k = 0; k < WARM_UP; ++k) iterate(b, cpu, prev, nullptr);
-    return iterate(b, cpu, cur, lines);
-}
-
-// The Pentium: a stream of iterations, each on its path, run at once (an instruction pairs with the
-// next, across iterations too); the cycles of iterations [first, last) per iteration, and the
-// lines of iteration `first`.
+// The instructions an iteration runs on a path (bit k: data-dependent branch k taken), and
+// whether each goes to its target, appended to a stream: each one's index in the body kept, and
+// where each iteration starts.
 struct Stream {
     std::vector<Executed> insns;
-    std::vector<size_t> body_index;  // each one's index in the body
-    std::vector<size_t> starts;      // where each iteration starts in `insns`
+    std::vector<size_t> body_index;
+    std::vector<size_t> starts;
 };
 
 void append(const Body& b, unsigned path, Stream* s) {
@@ -94,6 +72,28 @@ void append(const Body& b, unsigned path, Stream* s) {
     }
 }
 
+// The 486: one iteration on a path; its lines where `lines`.
+long iterate(const Body& b, I486& cpu, unsigned path, std::vector<Line>* lines) {
+    Stream s;
+    append(b, path, &s);
+    const long start = cpu.now();
+    for (size_t k = 0; k < s.insns.size(); ++k) {
+        const Step st = cpu.run(*s.insns[k].insn, s.insns[k].taken);
+        if (lines) (*lines)[s.body_index[k]] = Line{s.insns[k].insn->text, st.start, st.clocks, st.stalls};
+    }
+    return cpu.now() - start;
+}
+
+// The cycles of an iteration on path `cur` after iterations on path `prev`.
+long measure(const Body& b, Mode mode, unsigned prev, unsigned cur, std::vector<Line>* lines) {
+    I486 cpu(mode);
+    for (int k = 0; k < WARM_UP; ++k) iterate(b, cpu, prev, nullptr);
+    return iterate(b, cpu, cur, lines);
+}
+
+// The Pentium: a stream of iterations, each on its path, run at once (an instruction pairs with the
+// next, across iterations too); the cycles of iterations [first, last) per iteration, and the
+// lines of iteration `first`.
 double run_p5(const Body& b, const std::vector<unsigned>& paths, size_t first, size_t last, std::vector<Line>* lines) {
     Stream s;
     for (unsigned p : paths) append(b, p, &s);

@@ -19,12 +19,6 @@ std::string register_name(Family f, Mode mode) {
 
 bool is_byte(RegPart p) { return p.bytes == 1 || p.bytes == 2; }
 
-bool among(const std::string& m, std::initializer_list<const char*> names) {
-    for (const char* n : names)
-        if (m == n) return true;
-    return false;
-}
-
 // The registers the instruction addresses memory through: its base and index; the stack pointer of
 // PUSH, POP, CALL and RET counts only after an explicit write of it (BB12, "Stack Addressing"),
 // which the caller checks.

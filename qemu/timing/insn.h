@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,13 @@ struct Insn {
 inline const char* family_name(Family f) {
     static const char* const NAMES[] = {"-", "eax", "ebx", "ecx", "edx", "esi", "edi", "ebp", "esp"};
     return NAMES[size_t(f)];
+}
+
+// Whether a mnemonic is one of `names` (the models' tables).
+inline bool among(const std::string& mnemonic, std::initializer_list<const char*> names) {
+    for (const char* n : names)
+        if (mnemonic == n) return true;
+    return false;
 }
 
 // Whether two parts of registers overlap.

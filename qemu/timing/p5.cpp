@@ -10,12 +10,6 @@ namespace timing {
 
 namespace {
 
-bool among(const std::string& m, std::initializer_list<const char*> names) {
-    for (const char* n : names)
-        if (m == n) return true;
-    return false;
-}
-
 bool mem_operand(const Insn& in) { return in.mem.present && !in.mem.stack; }
 bool accesses_memory(const Insn& in) { return mem_operand(in) && in.mnemonic != "lea"; }
 bool mem_dest(const Insn& in) { return accesses_memory(in) && in.mem.write; }
