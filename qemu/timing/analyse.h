@@ -36,11 +36,19 @@ struct Report {
     double cycles_per_iteration = 0;
     int data_branches = 0;          // data-dependent branches in the body
     bool loop_branch = false;       // the body ends with its jump back to the top
+    int exits = 0;                  // conditional jumps out of the body: not taken while the loop runs
+};
+
+struct Options {
+    int precision = 64;  // the x87's precision control in force (24, 53, 64 bits): the Pentium's FDIV
+    // straight-line code run once from an idle machine, its figure the cycles until the last
+    // instruction completes (a result's latency included), not a loop's steady state
+    bool once = false;
 };
 
 // Throws std::runtime_error for an instruction the model has no timing for, or a body it cannot
-// run (empty; a branch out of it; more than 8 data-dependent branches).
-Report analyse(const std::vector<Insn>& body, Cpu cpu, Mode mode, const BranchPolicy& branch);
+// run (empty; a JMP out of it; more than 16 data-dependent branches).
+Report analyse(const std::vector<Insn>& body, Cpu cpu, Mode mode, const BranchPolicy& branch, const Options& options = {});
 
 // The diagram (a line an instruction: its cycle, clocks, stalls) and its last lines: "cycles per
 // iteration: X" and, for pixels > 1, "cycles per pixel: X / pixels".

@@ -60,6 +60,74 @@ bool has_displacement(const cs_x86& x, bool moffs) {
     return x.addr_size == 2 ? rm == 6 : rm == 5 || (rm == 4 && (x.sib & 7) == 5);
 }
 
+// The x87's view of the instruction at `b` (Fpu.op None where it is no x87 instruction), from its
+// escape byte (D8h-DFh) and ModR/M: the Intel manuals' opcode map.
+Fpu x87(const uint8_t* b, size_t n) {
+    size_t k = 0;
+    while (k < n && (b[k] == 0x66 || b[k] == 0x67 || b[k] == 0x26 || b[k] == 0x2E || b[k] == 0x36 || b[k] == 0x3E || b[k] == 0x64 ||
+                     b[k] == 0x65 || b[k] == 0xF0 || b[k] == 0xF2 || b[k] == 0xF3))
+        ++k;
+    Fpu f;
+    if (k < n && b[k] == 0x9B) {
+        if (k + 1 == n || b[k + 1] < 0xD8 || b[k + 1] > 0xDF) return f.op = FpOp::Wait, f;
+        ++k;  // FSTCW, FSTSW, FINIT, ...: WAIT and the no-wait form as one
+    }
+    if (k + 1 >= n || b[k] < 0xD8 || b[k] > 0xDF) return f;
+    const uint8_t esc = b[k], modrm = b[k + 1];
+    const int reg = (modrm >> 3) & 7, i = modrm & 7;
+    static const FpOp ARITH[8] = {FpOp::Add, FpOp::Mul, FpOp::Compare, FpOp::Compare, FpOp::Add, FpOp::Add, FpOp::Div, FpOp::Div};
+    static const FpOp INT_ARITH[8] = {FpOp::IntAdd, FpOp::IntMul, FpOp::Compare, FpOp::Compare, FpOp::IntAdd, FpOp::IntAdd, FpOp::IntDiv, FpOp::IntDiv};
+    auto set = [&](FpOp op, uint8_t reads, int dest, bool push, int pops) {
+        f.op = op, f.reads = reads, f.dest = int8_t(dest), f.push = push, f.pops = uint8_t(pops);
+        return f;
+    };
+    if ((modrm >> 6) != 3) {  // a memory operand
+        switch (esc) {
+        case 0xD8: case 0xDC: return set(ARITH[reg], 1, reg == 2 || reg == 3 ? -1 : 0, false, reg == 3);
+        case 0xDA: case 0xDE: return set(INT_ARITH[reg], 1, reg == 2 || reg == 3 ? -1 : 0, false, reg == 3);
+        case 0xD9: {
+            static const FpOp D9[8] = {FpOp::Load, FpOp::Other, FpOp::Store, FpOp::Store, FpOp::Other, FpOp::LoadControl, FpOp::Other, FpOp::StoreControl};
+            return set(D9[reg], reg == 2 || reg == 3, reg == 0 ? 0 : -1, reg == 0, reg == 3);
+        }
+        case 0xDB: {
+            static const FpOp DB[8] = {FpOp::LoadInt, FpOp::Other, FpOp::StoreInt, FpOp::StoreInt, FpOp::Other, FpOp::LoadExtended, FpOp::Other, FpOp::StoreExtended};
+            return set(DB[reg], reg == 2 || reg == 3 || reg == 7, reg == 0 || reg == 5 ? 0 : -1, reg == 0 || reg == 5, reg == 3 || reg == 7);
+        }
+        case 0xDD: {
+            static const FpOp DD[8] = {FpOp::Load, FpOp::Other, FpOp::Store, FpOp::Store, FpOp::Other, FpOp::Other, FpOp::Other, FpOp::StoreStatus};
+            return set(DD[reg], reg == 2 || reg == 3, reg == 0 ? 0 : -1, reg == 0, reg == 3);
+        }
+        default: {  // DF
+            static const FpOp DF[8] = {FpOp::LoadInt, FpOp::Other, FpOp::StoreInt, FpOp::StoreInt, FpOp::Other, FpOp::LoadInt, FpOp::Other, FpOp::StoreInt};
+            return set(DF[reg], reg == 2 || reg == 3 || reg == 7, reg == 0 || reg == 5 ? 0 : -1, reg == 0 || reg == 5, reg == 3 || reg == 7);
+        }
+        }
+    }
+    const uint8_t both = uint8_t(1 | (1u << i));
+    switch (esc) {
+    case 0xD8: return set(ARITH[reg], both, reg == 2 || reg == 3 ? -1 : 0, false, reg == 3);  // st0 = st0 op st(i)
+    case 0xDC: return set(ARITH[reg], both, reg == 2 || reg == 3 ? -1 : i, false, reg == 3);  // st(i) = st(i) op st0
+    case 0xDE:
+        if (reg == 3 && i == 1) return set(FpOp::Compare, 3, -1, false, 2);  // FCOMPP
+        return set(ARITH[reg], both, reg == 2 || reg == 3 ? -1 : i, false, 1);
+    case 0xD9:
+        if (reg == 0) return set(FpOp::Load, uint8_t(1u << i), 0, true, 0);
+        if (reg == 1) return set(FpOp::Exchange, both, -1, false, 0);
+        if (modrm == 0xE0 || modrm == 0xE1) return set(FpOp::Unary, 1, 0, false, 0);
+        if (modrm == 0xE4) return set(FpOp::Compare, 1, -1, false, 0);
+        if (modrm >= 0xE8 && modrm <= 0xEE) return set(FpOp::LoadConst, 0, 0, true, 0);
+        if (modrm == 0xFA) return set(FpOp::Sqrt, 1, 0, false, 0);
+        return set(FpOp::Other, 0, -1, false, 0);
+    case 0xDA: return modrm == 0xE9 ? set(FpOp::Compare, 3, -1, false, 2) : set(FpOp::Other, 0, -1, false, 0);
+    case 0xDD:
+        if (reg == 2 || reg == 3) return set(FpOp::Store, 1, i, false, reg == 3);
+        if (reg == 4 || reg == 5) return set(FpOp::Compare, both, -1, false, reg == 5);
+        return set(FpOp::Other, 0, -1, false, 0);
+    case 0xDF: return modrm == 0xE0 ? set(FpOp::StoreStatus, 0, -1, false, 0) : set(FpOp::Other, 0, -1, false, 0);
+    default: return set(FpOp::Other, 0, -1, false, 0);  // DB: FNINIT, FNCLEX, FCMOV, FCOMI
+    }
+}
+
 struct Handle {
     csh h = 0;
     explicit Handle(int bits) {
@@ -132,8 +200,14 @@ Insn convert(csh h, const cs_insn& c) {
         in.kind = Kind::In;
     } else if (is_string(c.id)) {
         in.kind = Kind::String;
-    } else if (cs_insn_group(h, &c, X86_GRP_FPU)) {
+    }
+    in.fpu = x87(c.bytes, c.size);
+    if (in.fpu.op != FpOp::None) {
         in.kind = Kind::Fpu;
+        // (Capstone marks a store's memory operand read)
+        const bool store = in.fpu.op == FpOp::Store || in.fpu.op == FpOp::StoreExtended || in.fpu.op == FpOp::StoreInt ||
+                           in.fpu.op == FpOp::StoreControl || in.fpu.op == FpOp::StoreStatus;
+        if (in.mem.present) in.mem.read = !store, in.mem.write = store;
     }
     const bool stack = c.id == X86_INS_PUSH || c.id == X86_INS_POP || in.kind == Kind::Call || in.kind == Kind::Ret;
     if (stack && !in.mem.present) {

@@ -1,6 +1,7 @@
 // The i486 model (i486.h). Sources, by the abbreviations of docs/cycles.md: BB12, BB13, BB19, BB21,
 // BB45, BB58 (Abrash's Black Book, chapters 12, 13, 19, 21, 45, 58); i486 (Intel's i486 manual's
-// table as MAME's cycles.h carries it, for what the Black Book does not give).
+// table as MAME's cycles.h carries it, and its x87 rows, concurrent clocks included, as 86Box's
+// x87 timings carry them, for what the Black Book does not give).
 #include "qemu/timing/i486.h"
 
 #include <algorithm>
@@ -53,6 +54,8 @@ int I486::base_clocks(const Insn& in, bool taken, Mode mode) {
     if (m == "pop") return mem ? 6 : 1;   // BB13 (the manual's 4 for a register is wrong: BB13)
     if (m == "xchg") return mem ? 9 : 3;  // BB19 (measured, with memory); i486 (registers)
     if (among(m, {"movzx", "movsx", "cbw", "cwde", "cwd", "cdq"}) || m.rfind("set", 0) == 0) return 3;  // i486
+    if (m == "sahf") return 2;                  // i486
+    if (m == "lahf") return 3;                  // i486
     if (m == "xlatb" || m == "xlat") return 4;  // BB12
     if (m.rfind("stos", 0) == 0 || m.rfind("lods", 0) == 0) return 5;  // BB12 (STOSB); i486 (LODS)
     if (m.rfind("movs", 0) == 0 && m != "movsx") return 7;             // i486
@@ -69,6 +72,35 @@ int I486::base_clocks(const Insn& in, bool taken, Mode mode) {
     if (in.kind == Kind::Out) return mode == Mode::Real16 ? 16 : 10;  // BB45, BB58: real mode 16; full I/O privilege 10
     if (in.kind == Kind::In) return 14;                               // i486 (real mode)
     throw std::runtime_error("no 486 timing for '" + in.text + "' (docs/cycles.md lists what the model knows)");
+}
+
+FpClocks I486::fpu_clocks(const Insn& in) {
+    // i486 (the manual's table: its least where it gives a range), "concurrent" its own column
+    const int bytes = in.mem.present ? in.mem.size : 0;
+    switch (in.fpu.op) {
+    case FpOp::Load: return {bytes ? 3 : 4, 0};
+    case FpOp::LoadExtended: return {6, 0};
+    case FpOp::LoadInt: return {bytes == 2 ? 13 : bytes == 4 ? 9 : 10, 0};
+    case FpOp::LoadConst: return {in.mnemonic == "fld1" || in.mnemonic == "fldz" ? 4 : 8, 0};
+    case FpOp::Store: return {bytes == 8 ? 8 : bytes ? 7 : 3, 0};
+    case FpOp::StoreExtended: return {6, 0};
+    case FpOp::StoreInt: return {bytes == 4 ? 28 : 29, 0};
+    case FpOp::Add: return {8, 7};
+    case FpOp::Mul: return bytes == 4 ? FpClocks{11, 8} : bytes == 8 ? FpClocks{14, 11} : FpClocks{16, 13};
+    case FpOp::Div: return {73, 70};
+    case FpOp::IntAdd: return {bytes == 2 ? 20 : 19, 7};
+    case FpOp::IntMul: return {bytes == 2 ? 23 : 22, 8};
+    case FpOp::IntDiv: return {bytes == 2 ? 85 : 84, 70};
+    case FpOp::Compare: return {in.fpu.pops == 2 ? 5 : 4, 0};
+    case FpOp::Exchange: return {4, 0};
+    case FpOp::Unary: return {in.mnemonic == "fchs" ? 6 : 3, 0};
+    case FpOp::Sqrt: return {83, 70};
+    case FpOp::LoadControl: return {4, 0};
+    case FpOp::StoreControl: return {3, 0};
+    case FpOp::StoreStatus: return {3, 0};
+    case FpOp::Wait: return {1, 0};
+    default: throw std::runtime_error("no 486 timing for '" + in.text + "' (docs/cycles.md lists what the model knows)");
+    }
 }
 
 Step I486::run(const Insn& in, bool taken) {
@@ -112,7 +144,15 @@ Step I486::run(const Insn& in, bool taken) {
         }
     }
 
-    int clocks = base_clocks(in, taken, mode_);
+    // the x87 takes one instruction at a time: the next waits for it; the integer unit runs on
+    // beside it for its concurrent clocks (i486)
+    const bool fpu = in.kind == Kind::Fpu;
+    const FpClocks fc = fpu ? fpu_clocks(in) : FpClocks{};
+    if (fpu && fpu_free_ > start) {
+        s.stalls.push_back("x87 busy +" + std::to_string(fpu_free_ - start));
+        start = fpu_free_;
+    }
+    int clocks = fpu ? fc.clocks - fc.concurrent : base_clocks(in, taken, mode_);
     // prefixes: a cycle each, but one decodes while an AGI waits or the instruction before runs on
     // (BB13, BB19: "prefix cycles can overlap with previous multicycle instructions, or AGIs")
     const int prefixes = int(in.opsize_prefix) + int(in.addrsize_prefix) + int(in.segment_prefix);
@@ -137,6 +177,8 @@ Step I486::run(const Insn& in, bool taken) {
     }
 
     const long end = start + clocks - 1;
+    s.done = end;
+    if (fpu) fpu_free_ = start + clocks + fc.concurrent, s.done = fpu_free_ - 1;
     for (RegPart w : in.writes) {
         if (w.family == Family::SP && !in.writes_sp_explicitly) continue;  // PUSH, POP, CALL, RET: implicit (BB12)
         const size_t f = size_t(w.family);

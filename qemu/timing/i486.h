@@ -23,6 +23,14 @@ struct Step {
     long start = 0;
     int clocks = 0;
     std::vector<std::string> stalls;
+    long done = 0;  // the cycle it completes in: an x87 instruction's result later than `clocks` says
+};
+
+// An x87 instruction's clocks on the 486, and how many of them the integer unit may run on beside
+// it (the manual's "concurrent execution").
+struct FpClocks {
+    int clocks = 0;
+    int concurrent = 0;
 };
 
 class I486 {
@@ -35,11 +43,13 @@ public:
 
     // The instruction's own clocks, penalties aside (docs/cycles.md's table, with each row's source).
     static int base_clocks(const Insn& in, bool taken, Mode mode);
+    static FpClocks fpu_clocks(const Insn& in);
 
 private:
     static constexpr long NEVER = -1000;
     Mode mode_;
     long now_ = 0;
+    long fpu_free_ = 0;         // the cycle the x87 takes its next instruction in
     int last_clocks_ = 1;       // the instruction before's clocks (a prefix decodes under its extra ones)
     // per register family: the last cycle of the instruction that last wrote it, and of the last
     // that wrote one of its bytes alone (AL, AH, ...)

@@ -41,6 +41,41 @@ struct Memory {
     bool stack = false;     // an implicit stack access (PUSH, POP, CALL, RET)
 };
 
+// What an x87 instruction does, by its encoding (D8h-DFh, 9Bh): its class for the timing tables, the
+// stack registers it reads and writes, counted from the top before it runs, and what it pushes and pops.
+enum class FpOp : uint8_t {
+    None,
+    Load,          // FLD m32/m64/st(i): a push
+    LoadExtended,  // FLD m80
+    LoadInt,       // FILD
+    LoadConst,     // FLD1, FLDZ, FLDPI, ...
+    Store,         // FST, FSTP m32/m64/st(i)
+    StoreExtended, // FSTP m80
+    StoreInt,      // FIST, FISTP
+    Add,           // FADD, FSUB, FSUBR (and their P forms)
+    Mul,           // FMUL, FMULP
+    Div,           // FDIV, FDIVR (and P)
+    IntAdd,        // FIADD, FISUB, FISUBR
+    IntMul,        // FIMUL
+    IntDiv,        // FIDIV, FIDIVR
+    Compare,       // FCOM, FCOMP, FCOMPP, FUCOM.., FTST, FICOM
+    Exchange,      // FXCH
+    Unary,         // FCHS, FABS
+    Sqrt,          // FSQRT
+    LoadControl,   // FLDCW
+    StoreControl,  // FNSTCW
+    StoreStatus,   // FNSTSW
+    Wait,          // WAIT
+    Other,         // the rest (transcendentals, FNINIT, FRNDINT, ...): the models name it and stop
+};
+struct Fpu {
+    FpOp op = FpOp::None;
+    uint8_t reads = 0;   // bit i: st(i) read
+    int8_t dest = -1;    // the st(i) written (the new top where `push`)
+    bool push = false;
+    uint8_t pops = 0;    // popped after the result is written
+};
+
 struct Insn {
     uint32_t address = 0;
     uint8_t size = 0;         // bytes
@@ -60,6 +95,7 @@ struct Insn {
     bool reads_flags = false, writes_flags = false;
     bool writes_sp_explicitly = false;  // ESP as an explicit destination (not PUSH/POP's implicit change)
     Memory mem;
+    Fpu fpu;  // Kind::Fpu
 };
 
 // The family's 32-bit name ("esi").

@@ -148,6 +148,9 @@ Listing read_mapper_loop(const std::string& mapper, const std::string& object_di
         if (source.find("global " + function + "\n") == std::string::npos) continue;
         Listing l = read_object_loop(object_dir + "/" + entry.path().filename().string() + ".o", function);
         l.header["mapper"] = mapper;
+        // the x87 precision its loop runs under, where its source states one (`; precision: 24`)
+        if (const size_t p = source.find("\n; precision: "); p != std::string::npos)
+            l.header["precision"] = source.substr(p + 14, source.find('\n', p + 1) - p - 14);
         return l;
     }
     throw std::runtime_error("no asm/*.asm declares '" + function + "' global");

@@ -28,7 +28,8 @@ Listing read_object_loop(const std::string& object, const std::string& function)
 
 // The registered mapper's NASM loop: its `TWIN_AND_ASM(NAME)` row in kernel/mappers/registry.cpp,
 // NAME_asm in the asm/*.asm that declares it global, its object in `object_dir` (paths from the
-// repository's root). Throws for a mapper without a NASM loop.
+// repository's root), with the header `precision` where the source has a `; precision: N` line.
+// Throws for a mapper without a NASM loop.
 Listing read_mapper_loop(const std::string& mapper, const std::string& object_dir);
 
 }  // namespace timing

@@ -1,9 +1,11 @@
-// The P5 model (p5.h). Sources, by the abbreviations of docs/cycles.md: BB19, BB20, BB21 (Abrash's
-// Black Book: the Pentium's pipes, Tables 20.1 and 20.2, register contention, AGIs, prefixes);
-// FM (Byggmastar's fatmap.txt and fatmap2.txt, for what the Black Book leaves out).
+// The P5 model (p5.h). Sources, by the abbreviations of docs/cycles.md: BB19, BB20, BB21, BB63
+// (Abrash's Black Book: the Pentium's pipes, Tables 20.1 and 20.2, register contention, AGIs,
+// prefixes, the x87); FM (Byggmastar's fatmap.txt and fatmap2.txt); P5 (Intel's Pentium table);
+// AF (Agner Fog's Pentium tables) and AP-500 (Intel's application note), for the rest of the x87.
 #include "qemu/timing/p5.h"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 namespace timing {
@@ -16,10 +18,12 @@ bool mem_dest(const Insn& in) { return accesses_memory(in) && in.mem.write; }
 // An immediate and a displacement in one instruction: it cannot pair (BB20's Tables, BB21)
 bool disp_and_imm(const Insn& in) { return in.has_imm && in.mem.has_disp && mem_operand(in); }
 // prefix bytes that run alone in U, a cycle each: 66h, 67h, segment, LOCK, REP, and 0Fh but on a
-// conditional jump (BB19, BB20)
+// conditional jump (BB19, BB20) and on the instructions whose figure is Intel's table's, which counts
+// it (P5: IMUL r,r/m, MOVZX, MOVSX, SETcc)
 int prefix_cycles(const Insn& in) {
+    const bool counted = among(in.mnemonic, {"imul", "movzx", "movsx"}) || in.mnemonic.rfind("set", 0) == 0;
     return int(in.opsize_prefix) + int(in.addrsize_prefix) + int(in.segment_prefix) + int(in.lock_prefix) + int(in.rep_prefix) +
-           int(in.two_byte_opcode && in.kind != Kind::Jcc);
+           int(in.two_byte_opcode && in.kind != Kind::Jcc && !counted);
 }
 
 // The registers it writes that count for contention and AGIs: ESP changed by PUSH, POP, CALL and
@@ -37,7 +41,66 @@ std::vector<RegPart> counted_reads(const Insn& in) {
     return out;
 }
 
+// The x87's stack as the P5 sees it: per register, counted from the top, the cycle its value can be
+// used in, and whether arithmetic made it (a store of it waits a cycle more: BB63). FXCH renames.
+struct FpStack {
+    std::array<long, 8> ready;
+    std::array<bool, 8> arith{};
+    FpStack() { ready.fill(-1000); }
+    void push() {
+        std::rotate(ready.rbegin(), ready.rbegin() + 1, ready.rend()), std::rotate(arith.rbegin(), arith.rbegin() + 1, arith.rend());
+        ready[0] = -1000, arith[0] = false;
+    }
+    void pop(int n) {
+        for (int k = 0; k < n; ++k) {
+            std::rotate(ready.begin(), ready.begin() + 1, ready.end()), std::rotate(arith.begin(), arith.begin() + 1, arith.end());
+            ready[7] = -1000, arith[7] = false;
+        }
+    }
+};
+
+bool arithmetic(FpOp op) {
+    return op == FpOp::Add || op == FpOp::Mul || op == FpOp::Div || op == FpOp::IntAdd || op == FpOp::IntMul || op == FpOp::IntDiv || op == FpOp::Sqrt;
+}
+// the FP instructions FXCH pairs with, in V (BB63; AP-500)
+bool pairs_with_fxch(const Insn& in) {
+    const FpOp op = in.fpu.op;
+    return op == FpOp::Load || op == FpOp::Add || op == FpOp::Mul || op == FpOp::Div || op == FpOp::Compare || op == FpOp::Unary;
+}
+
 }  // namespace
+
+FpCycles P5::fpu_cycles(const Insn& in, int precision) {
+    // BB63 where it gives the figure; AF (Agner Fog's Pentium tables) for the rest
+    const int by_precision = precision <= 24 ? 0 : precision <= 53 ? 1 : 2;
+    const bool mem = in.mem.present;
+    switch (in.fpu.op) {
+    case FpOp::Load: return {1, 1, 1};
+    case FpOp::LoadExtended: return {3, 3, 3};
+    case FpOp::LoadInt: return {1, 3, 1};
+    case FpOp::LoadConst: return {2, 2, 2};
+    case FpOp::Store: return mem ? FpCycles{2, 2, 2} : FpCycles{1, 1, 1};
+    case FpOp::StoreExtended: return {3, 3, 3};
+    case FpOp::StoreInt: return {6, 6, 6};
+    case FpOp::Add: case FpOp::Mul: return {1, 3, 1};
+    case FpOp::Div: {
+        static constexpr int DIVIDE[3] = {19, 33, 39};
+        return {1, DIVIDE[by_precision], DIVIDE[by_precision]};
+    }
+    case FpOp::IntAdd: case FpOp::IntMul: return {4, 6, 4};
+    case FpOp::IntDiv: {
+        static constexpr int DIVIDE[3] = {22, 36, 42};
+        return {4, DIVIDE[by_precision], DIVIDE[by_precision]};
+    }
+    case FpOp::Compare: case FpOp::Unary: case FpOp::Wait: return {1, 1, 1};
+    case FpOp::Exchange: return {1, 0, 1};
+    case FpOp::Sqrt: return {1, 70, 70};
+    case FpOp::LoadControl: return {7, 7, 7};
+    case FpOp::StoreControl: return {2, 2, 2};
+    case FpOp::StoreStatus: return {6, 6, 6};
+    default: throw std::runtime_error("no Pentium timing for '" + in.text + "' (docs/cycles.md lists what the model knows)");
+    }
+}
 
 Pairing P5::pairing(const Insn& in) {
     const std::string& m = in.mnemonic;
@@ -60,7 +123,7 @@ Pairing P5::pairing(const Insn& in) {
     return Pairing::NP;
 }
 
-int P5::clocks(const Insn& in) {
+int P5::clocks(const Insn& in, Mode mode) {
     const std::string& m = in.mnemonic;
     const bool mem = accesses_memory(in), dest = mem_dest(in);
     if (among(m, {"mov", "lea", "nop", "neg", "not"})) return 1;  // BB20; FM (NEG: "non pairable, 1 tick")
@@ -71,6 +134,15 @@ int P5::clocks(const Insn& in) {
     if (m == "pop" && !mem) return 1;                                                            // BB20
     if (among(m, {"shl", "sal", "shr", "sar", "rol", "ror"}) && !mem) return in.opcode == 0xD2 || in.opcode == 0xD3 ? 4 : 1;  // BB20
     if ((m == "rcl" || m == "rcr") && !mem && (in.opcode == 0xD0 || in.opcode == 0xD1)) return 1;                         // BB20
+    // P5 (Intel's Pentium table)
+    if (among(m, {"sahf", "lahf", "cdq", "cwd"})) return 2;
+    if (among(m, {"cbw", "cwde", "movzx", "movsx"}) || m.rfind("set", 0) == 0) return 3;
+    // on the FPU's multiplier, unpairable
+    if (m == "mul" || m == "imul") return in.operand_bytes == 4 ? 10 : 11;
+    if (m == "div") return in.operand_bytes == 1 ? 17 : in.operand_bytes == 2 ? 25 : 41;
+    if (m == "idiv") return in.operand_bytes == 1 ? 22 : in.operand_bytes == 2 ? 30 : 46;
+    if (in.kind == Kind::Out) return mode == Mode::Real16 ? 12 : 9;  // P5: real mode; CPL at or below IOPL
+    if (in.kind == Kind::In) return mode == Mode::Real16 ? 7 : 4;
     if (in.kind == Kind::Jcc && !in.loop) return 1;  // predicted (BB19)
     if (in.kind == Kind::Jmp || in.kind == Kind::Call) return 1;
     throw std::runtime_error("no Pentium timing for '" + in.text + "' (docs/cycles.md lists what the model knows)");
@@ -103,13 +175,61 @@ std::vector<P5Issue> P5::run(const std::vector<Executed>& stream) {
         return r;
     };
     auto branch_clocks = [&](const Insn& in, bool taken, char pipe, std::vector<std::string>* stalls) {
-        if (in.kind != Kind::Jcc && in.kind != Kind::Jmp && in.kind != Kind::Call) return clocks(in);
+        if (in.kind != Kind::Jcc && in.kind != Kind::Jmp && in.kind != Kind::Call) return clocks(in, mode_);
         const bool right = in.kind == Kind::Jcc ? predicted(in) == taken : btb.count(in.address) > 0;
         learn(in, taken || in.kind != Kind::Jcc);
         if (right) return 1;
         const int c = in.kind != Kind::Jcc ? 3 : pipe == 'U' ? 4 : 5;  // BB19, BB21
         stalls->push_back("mispredicted +" + std::to_string(c - 1));
         return c;
+    };
+
+    // the x87: its stack, when it takes its next instruction, its next FMUL (every other cycle,
+    // BB63), and the end of a divide (the next FP instruction or IMUL waits for it: BB63)
+    FpStack st;
+    long fp_next = -1000, fmul_next = -1000, divide_done = -1000, status_ready = -1000;
+    // the cycle the x87 lets `in` issue in, and why it waits (its stall's name)
+    auto x87_ready = [&](const Insn& in, std::string* why) {
+        long r = -1000;
+        auto wait = [&](long t, const std::string& name) {
+            if (t > r) r = t, *why = name;
+        };
+        if (in.kind != Kind::Fpu) {
+            if (in.mnemonic == "imul" || in.mnemonic == "mul") wait(divide_done, "the FDIV");
+            return r;
+        }
+        const FpOp op = in.fpu.op;
+        wait(fp_next, divide_done == fp_next ? "the FDIV" : "the x87");
+        if (op == FpOp::Mul) wait(fmul_next, "an FMUL every other cycle");
+        if (op == FpOp::StoreStatus) wait(status_ready, "the compare");
+        if (op != FpOp::Exchange)
+            for (int k = 0; k < 8; ++k)
+                if ((in.fpu.reads >> k) & 1) {
+                    const bool store = op == FpOp::Store || op == FpOp::StoreInt || op == FpOp::StoreExtended;
+                    wait(st.ready[size_t(k)] + (store && st.arith[size_t(k)] ? 1 : 0), "st(" + std::to_string(k) + ")");
+                }
+        if (op == FpOp::Wait)
+            for (long t : st.ready) wait(t, "the x87");
+        return r;
+    };
+    // `in` issued at `start`: its result's cycle, the x87's state after it
+    auto x87_issue = [&](const Insn& in, long start) {
+        const FpCycles c = fpu_cycles(in, precision_);
+        const FpOp op = in.fpu.op;
+        if (op == FpOp::Exchange) {
+            const int k = std::countr_zero(unsigned(in.fpu.reads & 0xFE));
+            if (k < 8) std::swap(st.ready[0], st.ready[size_t(k)]), std::swap(st.arith[0], st.arith[size_t(k)]);
+            return start;
+        }
+        const long result = start + c.latency;
+        if (in.fpu.push) st.push();
+        if (in.fpu.dest >= 0) st.ready[size_t(in.fpu.dest)] = result, st.arith[size_t(in.fpu.dest)] = arithmetic(op);
+        st.pop(in.fpu.pops);
+        fp_next = start + c.next;
+        if (op == FpOp::Mul) fmul_next = start + 2;
+        if (op == FpOp::Div || op == FpOp::IntDiv || op == FpOp::Sqrt) divide_done = start + c.latency;
+        if (op == FpOp::Compare) status_ready = result;
+        return result - 1;
     };
 
     long now = 0;
@@ -119,17 +239,24 @@ std::vector<P5Issue> P5::run(const std::vector<Executed>& stream) {
         Family agi_on = Family::None;
         const long agi_ready = ready(u, &agi_on);
         const int prefixes = prefix_cycles(u);
+        std::string fp_why;
+        const long fp_wait = std::max<long>(0, x87_ready(u, &fp_why) - now);
         const long wait = std::max<long>(0, agi_ready - now);
-        const long start = now + std::max<long>(wait, prefixes);  // (a prefix decodes while an AGI waits: BB19)
-        if (wait) iu.stalls.push_back(std::string("AGI on ") + family_name(agi_on) + " +" + std::to_string(wait));
-        if (prefixes > wait) iu.stalls.push_back("prefix +" + std::to_string(prefixes - wait));
+        const long start = now + std::max({wait, long(prefixes), fp_wait});  // (a prefix decodes while an AGI waits: BB19)
+        if (fp_wait > wait) iu.stalls.push_back("waits for " + fp_why + " +" + std::to_string(fp_wait));
+        else if (wait) iu.stalls.push_back(std::string("AGI on ") + family_name(agi_on) + " +" + std::to_string(wait));
+        if (prefixes > std::max(wait, fp_wait)) iu.stalls.push_back("prefix +" + std::to_string(prefixes - std::max(wait, fp_wait)));
 
         // the next pairs with it in V: both pairable their ways, no prefix on the second, neither
         // writing what the other reads or writes but the flags a branch reads and two flag writers
         // (BB20, BB21)
         bool pair = false;
-        std::string why_not;
-        if (i + 1 < stream.size()) {
+        const bool fp = u.kind == Kind::Fpu;
+        if (fp) {
+            // an FP instruction pairs only with an FXCH after it (BB63)
+            pair = i + 1 < stream.size() && stream[i + 1].insn->kind == Kind::Fpu && stream[i + 1].insn->fpu.op == FpOp::Exchange && pairs_with_fxch(u) &&
+                   prefix_cycles(*stream[i + 1].insn) == 0;
+        } else if (i + 1 < stream.size()) {
             const Insn& v = *stream[i + 1].insn;
             const Pairing pu = pairing(u), pv = pairing(v);
             Family v_on = Family::None;
@@ -145,8 +272,21 @@ std::vector<P5Issue> P5::run(const std::vector<Executed>& stream) {
             pair = (pu == Pairing::UV || pu == Pairing::PU) && (pv == Pairing::UV || pv == Pairing::PV) && prefix_cycles(v) == 0 && !contention &&
                    ready(v, &v_on) <= start;
         }
-        int cu = branch_clocks(u, stream[i].taken, 'U', &iu.stalls), cycles = cu;
-        if (pair) {
+        int cu = fp ? fpu_cycles(u, precision_).issue : branch_clocks(u, stream[i].taken, 'U', &iu.stalls), cycles = cu;
+        long fp_done = -1000;
+        if (fp) {
+            fp_done = x87_issue(u, start);
+            if (pair) x87_issue(*stream[i + 1].insn, start);
+        }
+        if (pair && fp) {
+            P5Issue& iv = out[i + 1];
+            // an FXCH paired but not followed by an FP instruction costs a cycle (AP-500; AF)
+            if (i + 2 < stream.size() && stream[i + 2].insn->kind != Kind::Fpu) {
+                ++cycles;
+                iv.stalls.push_back("an integer instruction after FXCH +1");
+            }
+            iv.cycle = start, iv.pipe = 'V', iv.clocks = cycles, iv.done = start;
+        } else if (pair) {
             const Insn& v = *stream[i + 1].insn;
             P5Issue& iv = out[i + 1];
             const int cv = branch_clocks(v, stream[i + 1].taken, 'V', &iv.stalls);
@@ -159,9 +299,9 @@ std::vector<P5Issue> P5::run(const std::vector<Executed>& stream) {
                 ++cycles;
                 iv.stalls.push_back("bank conflict +1");
             }
-            iv.cycle = start, iv.pipe = 'V', iv.clocks = cycles;
+            iv.cycle = start, iv.pipe = 'V', iv.clocks = cycles, iv.done = start + cycles - 1;
         }
-        iu.cycle = start, iu.pipe = 'U', iu.clocks = cycles;
+        iu.cycle = start, iu.pipe = 'U', iu.clocks = cycles, iu.done = std::max(start + cycles - 1, fp_done);
         const long end = start + cycles - 1;
         for (size_t k = i; k < i + (pair ? 2 : 1); ++k)
             for (RegPart w : counted_writes(*stream[k].insn)) written[size_t(w.family)] = end;

@@ -14,7 +14,7 @@ namespace {
 using namespace harness;
 
 const char* USAGE =
-    "usage: modexlab-timing --cpu 486|pentium [--branch taken|not-taken|alternate|P] [--pixels N] [--json] FILE.asm\n"
+    "usage: modexlab-timing --cpu 486|pentium [--branch taken|not-taken|alternate|P] [--pixels N] [--precision 24|53|64] [--once] [--json] FILE.asm\n"
     "       modexlab-timing --cpu 486|pentium [...] --mapper NAME [--objects DIR]\n"
     "       modexlab-timing --cpu 486|pentium [...] --object FILE.o --function SYMBOL\n"
     "  FILE.asm: a NASM listing (bits 16: real mode; bits 32: protected mode), its code one iteration of a loop\n"
@@ -22,7 +22,11 @@ const char* USAGE =
     "    from the repository's root; --object/--function: the first loop of SYMBOL in an object (32-bit)\n"
     "  prints each instruction's cycle (and pipe, on the Pentium), clocks and stalls, then 'cycles per iteration: X'\n"
     "  --branch: how its data-dependent branches go (P: each taken with probability P, 0..1; default taken)\n"
-    "  --pixels: the pixels an iteration draws (default: the listing's '; pixels:' line, or 1)\n";
+    "  --pixels: the pixels an iteration draws (default: the listing's '; pixels:' line, or 1)\n"
+    "  --precision: the x87's precision control, which the Pentium's FDIV time follows (default: the listing's\n"
+    "    '; precision:' line; else 53 for the kernel's objects, as it boots, and 64 for a listing, as FNINIT leaves it)\n"
+    "  --once: straight-line code run once from an idle machine, to its last result (default: the listing's\n"
+    "    '; run: once' line); otherwise the code is a loop's body and the figure its steady state\n";
 
 timing::BranchPolicy branch_policy(const std::string& s) {
     timing::BranchPolicy b;
@@ -37,7 +41,8 @@ timing::BranchPolicy branch_policy(const std::string& s) {
 }
 
 int timing_tool(const std::vector<std::string>& words) {
-    const CommandLine c = parse_command_line(words, {"--cpu", "--branch", "--pixels", "--mapper", "--objects", "--object", "--function"}, {"--json"});
+    const CommandLine c = parse_command_line(words, {"--cpu", "--branch", "--pixels", "--precision", "--mapper", "--objects", "--object", "--function"},
+                                            {"--json", "--once"});
     if (c.help()) return show_usage(USAGE);
     const int sources = int(c.positionals().size()) + int(c.has("--mapper")) + int(c.has("--object"));
     if (sources != 1) throw UsageError("one listing, --mapper or --object, please");
@@ -51,7 +56,13 @@ int timing_tool(const std::vector<std::string>& words) {
     int pixels = l.header.count("pixels") ? std::atoi(l.header.at("pixels").c_str()) : 1;
     pixels = c.integer("--pixels", 1, 1 << 20, pixels < 1 ? 1 : pixels);
     const timing::Mode mode = l.bits == 16 ? timing::Mode::Real16 : timing::Mode::Protected32;
-    const timing::Report r = timing::analyse(l.insns, cpu, mode, branch);
+    timing::Options o;
+    const bool kernel = c.has("--mapper") || c.has("--object");
+    o.precision = l.header.count("precision") ? std::atoi(l.header.at("precision").c_str()) : kernel ? 53 : 64;
+    o.precision = c.has("--precision") ? c.choice<int>("--precision", {{"24", 24}, {"53", 53}, {"64", 64}}, 64) : o.precision;
+    if (o.precision != 24 && o.precision != 53 && o.precision != 64) throw UsageError(l.path + ": '; precision:' takes 24, 53 or 64");
+    o.once = c.has("--once") || (l.header.count("run") && l.header.at("run") == "once");
+    const timing::Report r = timing::analyse(l.insns, cpu, mode, branch, o);
     if (c.has("--json")) std::printf("%s\n", timing::json(r, pixels, c.text("--cpu"), branch.name()).c_str());
     else std::fputs(timing::diagram(r, pixels).c_str(), stdout);
     return 0;

@@ -47,6 +47,40 @@ TEST(TimingDecode, ReadsPrefixesAddressesAndRegisterBytes) {
     EXPECT_TRUE(j[1].mem.stack && j[1].mem.write && j[1].mem.base == Family::SP);
 }
 
+// The x87 by its encoding: each instruction's class, the stack registers it reads and writes
+// (counted from the top before it runs), what it pushes and pops, and a store's memory written.
+TEST(TimingDecode, ReadsTheX87ByItsEncoding) {
+    // fld dword [eax]; faddp st2,st0; fxch st3; fstp qword [ebx]; fdivr st0,st1; fcompp; fistp dword [esp+8]; fnstsw ax; fld1
+    const std::vector<Insn> in = code({0xD9, 0x00, 0xDE, 0xC2, 0xD9, 0xCB, 0xDD, 0x1B, 0xD8, 0xF9, 0xDE, 0xD9, 0xDB, 0x5C, 0x24, 0x08, 0xDF, 0xE0,
+                                       0xD9, 0xE8},
+                                      32);
+    ASSERT_EQ(in.size(), 9u);
+    for (const Insn& i : in) EXPECT_EQ(i.kind, Kind::Fpu) << i.text;
+    EXPECT_EQ(in[0].fpu.op, FpOp::Load);
+    EXPECT_TRUE(in[0].fpu.push && in[0].fpu.dest == 0 && in[0].mem.read && !in[0].mem.write);
+    EXPECT_EQ(in[1].fpu.op, FpOp::Add);
+    EXPECT_EQ(in[1].fpu.reads, 0b101);
+    EXPECT_EQ(in[1].fpu.dest, 2);
+    EXPECT_EQ(in[1].fpu.pops, 1);
+    EXPECT_EQ(in[2].fpu.op, FpOp::Exchange);
+    EXPECT_EQ(in[2].fpu.reads, 0b1001);
+    EXPECT_EQ(in[3].fpu.op, FpOp::Store);
+    EXPECT_TRUE(in[3].mem.write && !in[3].mem.read) << "a store writes its memory";
+    EXPECT_EQ(in[3].fpu.pops, 1);
+    EXPECT_EQ(in[4].fpu.op, FpOp::Div);
+    EXPECT_EQ(in[4].fpu.dest, 0);
+    EXPECT_EQ(in[5].fpu.op, FpOp::Compare);
+    EXPECT_EQ(in[5].fpu.pops, 2);
+    EXPECT_EQ(in[6].fpu.op, FpOp::StoreInt);
+    EXPECT_TRUE(in[6].mem.write && in[6].mem.base == Family::SP);
+    EXPECT_EQ(in[7].fpu.op, FpOp::StoreStatus);
+    ASSERT_EQ(in[7].writes.size(), 1u);
+    EXPECT_EQ(in[7].writes[0].family, Family::A);
+    EXPECT_EQ(in[8].fpu.op, FpOp::LoadConst);
+    EXPECT_TRUE(in[8].fpu.push);
+    EXPECT_EQ(code({0x0F, 0xAF, 0xC3}, 32)[0].fpu.op, FpOp::None) << "imul eax,ebx";
+}
+
 TEST(TimingDecode, RefusesBytesThatAreNoInstruction) { EXPECT_THROW(code({0x90, 0xFE, 0xF8}, 32), DecodeError) << "FE /7"; }
 
 // Black Book chapter 12, rule 2, as Intel documents it: a register written by one instruction and
@@ -103,8 +137,25 @@ TEST(Timing486, OutAndBranches) {
     EXPECT_EQ(cpu.run(jz[0], false).clocks, 1);
 }
 
+// The 486's x87 is not pipelined: an FP instruction waits for the one before; integer work runs
+// beside it for its concurrent clocks (FDIV 73, 70 of them concurrent; FMUL 16, 13). FXCH costs 4.
+TEST(Timing486, RunsIntegerWorkBesideTheX87) {
+    const std::vector<Insn> in = code({0xD8, 0xF1, 0x40, 0x43, 0xD8, 0xC2}, 32);  // fdiv st0,st1; inc eax; inc ebx; fadd st0,st2
+    I486 cpu(Mode::Protected32);
+    EXPECT_EQ(cpu.run(in[0], false).start, 0);
+    EXPECT_EQ(cpu.run(in[1], false).start, 3) << "the divide's 3 clocks of its own";
+    EXPECT_EQ(cpu.run(in[2], false).start, 4);
+    const Step fadd = cpu.run(in[3], false);
+    ASSERT_EQ(fadd.stalls.size(), 1u);
+    EXPECT_EQ(fadd.stalls[0], "x87 busy +68") << "the FADD waits for the divide, from cycle 5 to 73";
+    EXPECT_EQ(fadd.done, 80) << "then its 8 clocks";
+    EXPECT_EQ(cycles(code({0xD9, 0xC9}, 32), Mode::Protected32), 4) << "fxch st1";
+    EXPECT_EQ(cycles(code({0xD8, 0xC9, 0x40}, 32), Mode::Protected32), 4) << "fmul st0,st1; inc eax: 3 + 1";
+}
+
 TEST(Timing486, RefusesWhatItHasNoTimingFor) {
-    EXPECT_THROW(cycles(code({0xD9, 0xC0}, 32), Mode::Protected32), std::runtime_error) << "fld st0: the x87 is not modelled yet";
+    EXPECT_THROW(cycles(code({0xD9, 0xFE}, 32), Mode::Protected32), std::runtime_error) << "fsin: no kernel loop runs it";
+    EXPECT_THROW(cycles(code({0x0F, 0xA2}, 32), Mode::Protected32), std::runtime_error) << "cpuid";
 }
 
 // The calibration: each of chapter 58's listings against its published 486 figure. A residual is
