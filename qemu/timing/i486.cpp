@@ -124,14 +124,14 @@ Step I486::run(const Insn& in, bool taken) {
     }
     if (agi) {
         start += agi;
-        s.stalls.push_back(std::string("AGI on ") + register_name(agi_on, mode_) + " +" + std::to_string(agi));
+        if (explain_) s.stalls.push_back(std::string("AGI on ") + register_name(agi_on, mode_) + " +" + std::to_string(agi));
     }
     // a byte register written exactly two cycles before an instruction that addresses memory, by any
     // register (BB12, rule 4; twice where two byte writes fall there in turn)
     for (int k = 0; addressing && k < 2; ++k)
         if (last_byte_dest_ == start - 2 || byte_dest_before_ == start - 2) {
             ++start;
-            s.stalls.push_back("byte register two cycles before an address +1");
+            if (explain_) s.stalls.push_back("byte register two cycles before an address +1");
         }
     // a byte of a register written in the cycle before, then the register read whole (BB12, rule 3)
     for (RegPart r : in.reads) {
@@ -139,7 +139,7 @@ Step I486::run(const Insn& in, bool taken) {
         if (std::find(address.begin(), address.end(), r.family) != address.end()) continue;  // (the AGI's)
         if (last_byte_write_[f] == start - 1 && (r.bytes & ~last_byte_bytes_[f])) {
             ++start;
-            s.stalls.push_back(std::string("byte then whole of ") + register_name(r.family, mode_) + " +1");
+            if (explain_) s.stalls.push_back(std::string("byte then whole of ") + register_name(r.family, mode_) + " +1");
             break;
         }
     }
@@ -149,7 +149,7 @@ Step I486::run(const Insn& in, bool taken) {
     const bool fpu = in.kind == Kind::Fpu;
     const FpClocks fc = fpu ? fpu_clocks(in) : FpClocks{};
     if (fpu && fpu_free_ > start) {
-        s.stalls.push_back("x87 busy +" + std::to_string(fpu_free_ - start));
+        if (explain_) s.stalls.push_back("x87 busy +" + std::to_string(fpu_free_ - start));
         start = fpu_free_;
     }
     int clocks = fpu ? fc.clocks - fc.concurrent : base_clocks(in, taken, mode_);
@@ -159,21 +159,21 @@ Step I486::run(const Insn& in, bool taken) {
     const int hidden = std::min(prefixes, agi + std::max(0, last_clocks_ - 1));
     if (prefixes > hidden) {
         clocks += prefixes - hidden;
-        s.stalls.push_back("prefix +" + std::to_string(prefixes - hidden));
+        if (explain_) s.stalls.push_back("prefix +" + std::to_string(prefixes - hidden));
     }
     if (in.lock_prefix) {
         clocks += 5;  // BB19 (measured)
-        s.stalls.push_back("lock +5");
+        if (explain_) s.stalls.push_back("lock +5");
     }
     if (in.has_imm && in.mem.has_disp) {  // BB21
         ++clocks;
-        s.stalls.push_back("immediate and displacement +1");
+        if (explain_) s.stalls.push_back("immediate and displacement +1");
     }
     // indexed addressing: two registers in 16-bit addressing, an index (two registers, or a scale)
     // in 32-bit addressing; ESP as a base is free (BB12, BB13)
     if (addressing && (addresses_32(in, mode_) ? in.mem.index != Family::None : in.mem.base != Family::None && in.mem.index != Family::None)) {
         ++clocks;
-        s.stalls.push_back("index register +1");
+        if (explain_) s.stalls.push_back("index register +1");
     }
 
     const long end = start + clocks - 1;

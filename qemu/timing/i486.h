@@ -40,6 +40,7 @@ public:
     // Runs `in` (`taken`: the branch it is goes to its target) and returns what it cost.
     Step run(const Insn& in, bool taken);
     long now() const { return now_; }  // the cycle the next instruction may start in
+    void explain(bool on) { explain_ = on; }  // name the stalls (the default), or only count them
 
     // The instruction's own clocks, penalties aside (docs/cycles.md's table, with each row's source).
     static int base_clocks(const Insn& in, bool taken, Mode mode);
@@ -48,6 +49,7 @@ public:
 private:
     static constexpr long NEVER = -1000;
     Mode mode_;
+    bool explain_ = true;
     long now_ = 0;
     long fpu_free_ = 0;         // the cycle the x87 takes its next instruction in
     int last_clocks_ = 1;       // the instruction before's clocks (a prefix decodes under its extra ones)

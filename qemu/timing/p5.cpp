@@ -26,39 +26,6 @@ int prefix_cycles(const Insn& in) {
            int(in.two_byte_opcode && in.kind != Kind::Jcc && !counted);
 }
 
-// The registers it writes that count for contention and AGIs: ESP changed by PUSH, POP, CALL and
-// RET only implicitly does not (BB21, "Exceptions to Register Contention").
-std::vector<RegPart> counted_writes(const Insn& in) {
-    std::vector<RegPart> out;
-    for (RegPart w : in.writes)
-        if (w.family != Family::SP || in.writes_sp_explicitly) out.push_back(w);
-    return out;
-}
-std::vector<RegPart> counted_reads(const Insn& in) {
-    std::vector<RegPart> out;
-    for (RegPart r : in.reads)
-        if (r.family != Family::SP || !in.mem.stack) out.push_back(r);
-    return out;
-}
-
-// The x87's stack as the P5 sees it: per register, counted from the top, the cycle its value can be
-// used in, and whether arithmetic made it (a store of it waits a cycle more: BB63). FXCH renames.
-struct FpStack {
-    std::array<long, 8> ready;
-    std::array<bool, 8> arith{};
-    FpStack() { ready.fill(-1000); }
-    void push() {
-        std::rotate(ready.rbegin(), ready.rbegin() + 1, ready.rend()), std::rotate(arith.rbegin(), arith.rbegin() + 1, arith.rend());
-        ready[0] = -1000, arith[0] = false;
-    }
-    void pop(int n) {
-        for (int k = 0; k < n; ++k) {
-            std::rotate(ready.begin(), ready.begin() + 1, ready.end()), std::rotate(arith.begin(), arith.begin() + 1, arith.end());
-            ready[7] = -1000, arith[7] = false;
-        }
-    }
-};
-
 bool arithmetic(FpOp op) {
     return op == FpOp::Add || op == FpOp::Mul || op == FpOp::Div || op == FpOp::IntAdd || op == FpOp::IntMul || op == FpOp::IntDiv || op == FpOp::Sqrt;
 }
@@ -69,6 +36,18 @@ bool pairs_with_fxch(const Insn& in) {
 }
 
 }  // namespace
+
+void FpStack::push() {
+    std::rotate(ready.rbegin(), ready.rbegin() + 1, ready.rend()), std::rotate(arith.rbegin(), arith.rbegin() + 1, arith.rend());
+    ready[0] = -1000, arith[0] = false;
+}
+
+void FpStack::pop(int n) {
+    for (int k = 0; k < n; ++k) {
+        std::rotate(ready.begin(), ready.begin() + 1, ready.end()), std::rotate(arith.begin(), arith.begin() + 1, arith.end());
+        ready[7] = -1000, arith[7] = false;
+    }
+}
 
 FpCycles P5::fpu_cycles(const Insn& in, int precision) {
     // BB63 where it gives the figure; AF (Agner Fog's Pentium tables) for the rest
@@ -148,166 +127,177 @@ int P5::clocks(const Insn& in, Mode mode) {
     throw std::runtime_error("no Pentium timing for '" + in.text + "' (docs/cycles.md lists what the model knows)");
 }
 
-std::vector<P5Issue> P5::run(const std::vector<Executed>& stream) {
-    std::vector<P5Issue> out(stream.size());
-    std::array<long, size_t(Family::Count)> written;  // the cycle a write of each family ended in
-    written.fill(-1000);
-    std::map<uint32_t, int> btb;  // a branch's two-bit counter: taken predicted from 2 up
-    auto predicted = [&](const Insn& in) {
-        const auto it = btb.find(in.address);
-        return it != btb.end() && it->second >= 2;  // (not in the buffer: not taken)
-    };
-    auto learn = [&](const Insn& in, bool taken) {
-        const auto it = btb.find(in.address);
-        if (it == btb.end()) {
-            if (taken) btb[in.address] = 3;  // enters taken
-            return;
-        }
-        it->second = std::clamp(it->second + (taken ? 1 : -1), 0, 3);
-    };
-    // the cycle its address registers are ready in (written two cycles before, BB21); PUSH and POP
-    // address through ESP, which counts only as written explicitly (`written` keeps no other)
-    auto ready = [&](const Insn& in, Family* on) {
-        long r = -1000;
-        if (!in.mem.present) return r;
-        for (Family f : {in.mem.base, in.mem.index})
-            if (f != Family::None && written[size_t(f)] + 2 > r) r = written[size_t(f)] + 2, *on = f;
-        return r;
-    };
-    auto branch_clocks = [&](const Insn& in, bool taken, char pipe, std::vector<std::string>* stalls) {
-        if (in.kind != Kind::Jcc && in.kind != Kind::Jmp && in.kind != Kind::Call) return clocks(in, mode_);
-        const bool right = in.kind == Kind::Jcc ? predicted(in) == taken : btb.count(in.address) > 0;
-        learn(in, taken || in.kind != Kind::Jcc);
-        if (right) return 1;
-        const int c = in.kind != Kind::Jcc ? 3 : pipe == 'U' ? 4 : 5;  // BB19, BB21
-        stalls->push_back("mispredicted +" + std::to_string(c - 1));
-        return c;
-    };
+bool P5::predicted(const Insn& in) const {
+    const auto it = btb_.find(in.address);
+    return it != btb_.end() && it->second >= 2;  // (not in the buffer: not taken)
+}
 
-    // the x87: its stack, when it takes its next instruction, its next FMUL (every other cycle,
-    // BB63), and the end of a divide (the next FP instruction or IMUL waits for it: BB63)
-    FpStack st;
-    long fp_next = -1000, fmul_next = -1000, divide_done = -1000, status_ready = -1000;
-    // the cycle the x87 lets `in` issue in, and why it waits (its stall's name)
-    auto x87_ready = [&](const Insn& in, std::string* why) {
-        long r = -1000;
-        auto wait = [&](long t, const std::string& name) {
-            if (t > r) r = t, *why = name;
-        };
-        if (in.kind != Kind::Fpu) {
-            if (in.mnemonic == "imul" || in.mnemonic == "mul") wait(divide_done, "the FDIV");
-            return r;
-        }
+void P5::learn(const Insn& in, bool taken) {
+    const auto it = btb_.find(in.address);
+    if (it == btb_.end()) {
+        if (taken) btb_[in.address] = 3;  // enters taken
+        return;
+    }
+    it->second = std::clamp(it->second + (taken ? 1 : -1), 0, 3);
+}
+
+// the cycle its address registers are ready in (written two cycles before, BB21); PUSH and POP
+// address through ESP, which counts only as written explicitly (`written_` keeps no other)
+long P5::address_ready(const Insn& in, Family* on) const {
+    long r = -1000;
+    if (!in.mem.present) return r;
+    for (Family f : {in.mem.base, in.mem.index})
+        if (f != Family::None && written_[size_t(f)] + 2 > r) r = written_[size_t(f)] + 2, *on = f;
+    return r;
+}
+
+int P5::branch_clocks(const Insn& in, bool taken, char pipe, P5Issue* issue) {
+    if (in.kind != Kind::Jcc && in.kind != Kind::Jmp && in.kind != Kind::Call) return clocks(in, mode_);
+    const bool right = in.kind == Kind::Jcc ? predicted(in) == taken : btb_.count(in.address) > 0;
+    learn(in, taken || in.kind != Kind::Jcc);
+    if (right) return 1;
+    const int c = in.kind != Kind::Jcc ? 3 : pipe == 'U' ? 4 : 5;  // BB19, BB21
+    stall(issue, "mispredicted", c - 1);
+    return c;
+}
+
+void P5::stall(P5Issue* issue, const char* what, long cycles) const {
+    if (explain_) issue->stalls.push_back(std::string(what) + " +" + std::to_string(cycles));
+}
+
+// The cycle the x87 lets `in` issue in, and what it waits for: the FPU's next issue, an FMUL's
+// every other cycle, a divide (the next FP instruction or IMUL waits for it: BB63), its operands.
+long P5::x87_ready(const Insn& in, std::string* why) const {
+    long r = -1000;
+    const char* name = "";
+    int reg = -1;
+    auto wait = [&](long t, const char* what, int k) {
+        if (t > r) r = t, name = what, reg = k;
+    };
+    if (in.kind != Kind::Fpu) {
+        if (in.mnemonic == "imul" || in.mnemonic == "mul") wait(divide_done_, "the FDIV", -1);
+    } else {
         const FpOp op = in.fpu.op;
-        wait(fp_next, divide_done == fp_next ? "the FDIV" : "the x87");
-        if (op == FpOp::Mul) wait(fmul_next, "an FMUL every other cycle");
-        if (op == FpOp::StoreStatus) wait(status_ready, "the compare");
+        wait(fp_next_, divide_done_ == fp_next_ ? "the FDIV" : "the x87", -1);
+        if (op == FpOp::Mul) wait(fmul_next_, "an FMUL every other cycle", -1);
+        if (op == FpOp::StoreStatus) wait(status_ready_, "the compare", -1);
+        const bool store = op == FpOp::Store || op == FpOp::StoreInt || op == FpOp::StoreExtended;
         if (op != FpOp::Exchange)
             for (int k = 0; k < 8; ++k)
-                if ((in.fpu.reads >> k) & 1) {
-                    const bool store = op == FpOp::Store || op == FpOp::StoreInt || op == FpOp::StoreExtended;
-                    wait(st.ready[size_t(k)] + (store && st.arith[size_t(k)] ? 1 : 0), "st(" + std::to_string(k) + ")");
-                }
+                if ((in.fpu.reads >> k) & 1) wait(st_.ready[size_t(k)] + (store && st_.arith[size_t(k)] ? 1 : 0), "st", k);
         if (op == FpOp::Wait)
-            for (long t : st.ready) wait(t, "the x87");
-        return r;
-    };
-    // `in` issued at `start`: its result's cycle, the x87's state after it
-    auto x87_issue = [&](const Insn& in, long start) {
-        const FpCycles c = fpu_cycles(in, precision_);
-        const FpOp op = in.fpu.op;
-        if (op == FpOp::Exchange) {
-            const int k = std::countr_zero(unsigned(in.fpu.reads & 0xFE));
-            if (k < 8) std::swap(st.ready[0], st.ready[size_t(k)]), std::swap(st.arith[0], st.arith[size_t(k)]);
-            return start;
-        }
-        const long result = start + c.latency;
-        if (in.fpu.push) st.push();
-        if (in.fpu.dest >= 0) st.ready[size_t(in.fpu.dest)] = result, st.arith[size_t(in.fpu.dest)] = arithmetic(op);
-        st.pop(in.fpu.pops);
-        fp_next = start + c.next;
-        if (op == FpOp::Mul) fmul_next = start + 2;
-        if (op == FpOp::Div || op == FpOp::IntDiv || op == FpOp::Sqrt) divide_done = start + c.latency;
-        if (op == FpOp::Compare) status_ready = result;
-        return result - 1;
-    };
-
-    long now = 0;
-    for (size_t i = 0; i < stream.size();) {
-        const Insn& u = *stream[i].insn;
-        P5Issue& iu = out[i];
-        Family agi_on = Family::None;
-        const long agi_ready = ready(u, &agi_on);
-        const int prefixes = prefix_cycles(u);
-        std::string fp_why;
-        const long fp_wait = std::max<long>(0, x87_ready(u, &fp_why) - now);
-        const long wait = std::max<long>(0, agi_ready - now);
-        const long start = now + std::max({wait, long(prefixes), fp_wait});  // (a prefix decodes while an AGI waits: BB19)
-        if (fp_wait > wait) iu.stalls.push_back("waits for " + fp_why + " +" + std::to_string(fp_wait));
-        else if (wait) iu.stalls.push_back(std::string("AGI on ") + family_name(agi_on) + " +" + std::to_string(wait));
-        if (prefixes > std::max(wait, fp_wait)) iu.stalls.push_back("prefix +" + std::to_string(prefixes - std::max(wait, fp_wait)));
-
-        // the next pairs with it in V: both pairable their ways, no prefix on the second, neither
-        // writing what the other reads or writes but the flags a branch reads and two flag writers
-        // (BB20, BB21)
-        bool pair = false;
-        const bool fp = u.kind == Kind::Fpu;
-        if (fp) {
-            // an FP instruction pairs only with an FXCH after it (BB63)
-            pair = i + 1 < stream.size() && stream[i + 1].insn->kind == Kind::Fpu && stream[i + 1].insn->fpu.op == FpOp::Exchange && pairs_with_fxch(u) &&
-                   prefix_cycles(*stream[i + 1].insn) == 0;
-        } else if (i + 1 < stream.size()) {
-            const Insn& v = *stream[i + 1].insn;
-            const Pairing pu = pairing(u), pv = pairing(v);
-            Family v_on = Family::None;
-            const bool contention = [&] {
-                for (RegPart w : counted_writes(u)) {
-                    for (RegPart r : counted_reads(v))
-                        if (r.family == w.family) return true;
-                    for (RegPart x : counted_writes(v))
-                        if (x.family == w.family) return true;
-                }
-                return u.writes_flags && v.reads_flags && v.kind != Kind::Jcc;
-            }();
-            pair = (pu == Pairing::UV || pu == Pairing::PU) && (pv == Pairing::UV || pv == Pairing::PV) && prefix_cycles(v) == 0 && !contention &&
-                   ready(v, &v_on) <= start;
-        }
-        int cu = fp ? fpu_cycles(u, precision_).issue : branch_clocks(u, stream[i].taken, 'U', &iu.stalls), cycles = cu;
-        long fp_done = -1000;
-        if (fp) {
-            fp_done = x87_issue(u, start);
-            if (pair) x87_issue(*stream[i + 1].insn, start);
-        }
-        if (pair && fp) {
-            P5Issue& iv = out[i + 1];
-            // an FXCH paired but not followed by an FP instruction costs a cycle (AP-500; AF)
-            if (i + 2 < stream.size() && stream[i + 2].insn->kind != Kind::Fpu) {
-                ++cycles;
-                iv.stalls.push_back("an integer instruction after FXCH +1");
-            }
-            iv.cycle = start, iv.pipe = 'V', iv.clocks = cycles, iv.done = start;
-        } else if (pair) {
-            const Insn& v = *stream[i + 1].insn;
-            P5Issue& iv = out[i + 1];
-            const int cv = branch_clocks(v, stream[i + 1].taken, 'V', &iv.stalls);
-            // lockstep; two memory-destination instructions overlap a cycle only (BB20)
-            cycles = mem_dest(u) && mem_dest(v) ? cu + cv - 1 : std::max(cu, cv);
-            // the same bank of the data cache (address bits 2-4) where the code tells: the same
-            // registers, displacements in the same dword of the 32 bytes (BB20)
-            if (accesses_memory(u) && accesses_memory(v) && u.mem.base == v.mem.base && u.mem.index == v.mem.index && u.mem.scale == v.mem.scale &&
-                ((u.mem.disp >> 2) & 7) == ((v.mem.disp >> 2) & 7)) {
-                ++cycles;
-                iv.stalls.push_back("bank conflict +1");
-            }
-            iv.cycle = start, iv.pipe = 'V', iv.clocks = cycles, iv.done = start + cycles - 1;
-        }
-        iu.cycle = start, iu.pipe = 'U', iu.clocks = cycles, iu.done = std::max(start + cycles - 1, fp_done);
-        const long end = start + cycles - 1;
-        for (size_t k = i; k < i + (pair ? 2 : 1); ++k)
-            for (RegPart w : counted_writes(*stream[k].insn)) written[size_t(w.family)] = end;
-        now = start + cycles;
-        i += pair ? 2 : 1;
+            for (long t : st_.ready) wait(t, "the x87", -1);
     }
+    if (explain_ && r > -1000) *why = reg >= 0 ? "st(" + std::to_string(reg) + ")" : name;
+    return r;
+}
+
+// `in` issued at `start`: the x87's state after it; the last cycle of its result
+long P5::x87_issue(const Insn& in, long start) {
+    const FpCycles c = fpu_cycles(in, precision_);
+    const FpOp op = in.fpu.op;
+    if (op == FpOp::Exchange) {
+        const int k = std::countr_zero(unsigned(in.fpu.reads & 0xFE));
+        if (k < 8) std::swap(st_.ready[0], st_.ready[size_t(k)]), std::swap(st_.arith[0], st_.arith[size_t(k)]);
+        return start;
+    }
+    const long result = start + c.latency;
+    if (in.fpu.push) st_.push();
+    if (in.fpu.dest >= 0) st_.ready[size_t(in.fpu.dest)] = result, st_.arith[size_t(in.fpu.dest)] = arithmetic(op);
+    st_.pop(in.fpu.pops);
+    fp_next_ = start + c.next;
+    if (op == FpOp::Mul) fmul_next_ = start + 2;
+    if (op == FpOp::Div || op == FpOp::IntDiv || op == FpOp::Sqrt) divide_done_ = start + c.latency;
+    if (op == FpOp::Compare) status_ready_ = result;
+    return result - 1;
+}
+
+int P5::issue(const Executed* window, size_t n, P5Issue* out) {
+    const Insn& u = *window[0].insn;
+    P5Issue& iu = out[0];
+    iu = P5Issue{};
+    Family agi_on = Family::None;
+    const long agi_ready = address_ready(u, &agi_on);
+    const int prefixes = prefix_cycles(u);
+    std::string fp_why;
+    const long fp_wait = std::max<long>(0, x87_ready(u, &fp_why) - now_);
+    const long wait = std::max<long>(0, agi_ready - now_);
+    const long start = now_ + std::max({wait, long(prefixes), fp_wait});  // (a prefix decodes while an AGI waits: BB19)
+    if (explain_) {
+        if (fp_wait > wait) stall(&iu, ("waits for " + fp_why).c_str(), fp_wait);
+        else if (wait) stall(&iu, (std::string("AGI on ") + family_name(agi_on)).c_str(), wait);
+        if (prefixes > std::max(wait, fp_wait)) stall(&iu, "prefix", prefixes - std::max(wait, fp_wait));
+    }
+
+    // the next pairs with it in V: both pairable their ways, no prefix on the second, neither
+    // writing what the other reads or writes but the flags a branch reads and two flag writers
+    // (BB20, BB21); ESP changed by PUSH, POP, CALL and RET only implicitly does not count (BB21);
+    // an FP instruction pairs only with an FXCH after it (BB63)
+    bool pair = false;
+    const bool fp = u.kind == Kind::Fpu;
+    if (fp) {
+        pair = n > 1 && window[1].insn->kind == Kind::Fpu && window[1].insn->fpu.op == FpOp::Exchange && pairs_with_fxch(u) &&
+               prefix_cycles(*window[1].insn) == 0;
+    } else if (n > 1) {
+        const Insn& v = *window[1].insn;
+        const Pairing pu = pairing(u), pv = pairing(v);
+        Family v_on = Family::None;
+        const bool contention = [&] {
+            for (RegPart w : u.writes) {
+                if (w.family == Family::SP && !u.writes_sp_explicitly) continue;
+                for (RegPart r : v.reads)
+                    if (r.family == w.family && (r.family != Family::SP || !v.mem.stack)) return true;
+                for (RegPart x : v.writes)
+                    if (x.family == w.family && (x.family != Family::SP || v.writes_sp_explicitly)) return true;
+            }
+            return u.writes_flags && v.reads_flags && v.kind != Kind::Jcc;
+        }();
+        pair = (pu == Pairing::UV || pu == Pairing::PU) && (pv == Pairing::UV || pv == Pairing::PV) && prefix_cycles(v) == 0 && !contention &&
+               address_ready(v, &v_on) <= start;
+    }
+    int cu = fp ? fpu_cycles(u, precision_).issue : branch_clocks(u, window[0].taken, 'U', &iu), cycles = cu;
+    long fp_done = -1000;
+    if (fp) {
+        fp_done = x87_issue(u, start);
+        if (pair) x87_issue(*window[1].insn, start);
+    }
+    if (pair && fp) {
+        P5Issue& iv = out[1];
+        iv = P5Issue{};
+        // an FXCH paired but not followed by an FP instruction costs a cycle (AP-500; AF)
+        if (n > 2 && window[2].insn->kind != Kind::Fpu) {
+            ++cycles;
+            stall(&iv, "an integer instruction after FXCH", 1);
+        }
+        iv.cycle = start, iv.pipe = 'V', iv.clocks = cycles, iv.done = start;
+    } else if (pair) {
+        const Insn& v = *window[1].insn;
+        P5Issue& iv = out[1];
+        iv = P5Issue{};
+        const int cv = branch_clocks(v, window[1].taken, 'V', &iv);
+        // lockstep; two memory-destination instructions overlap a cycle only (BB20)
+        cycles = mem_dest(u) && mem_dest(v) ? cu + cv - 1 : std::max(cu, cv);
+        // the same bank of the data cache (address bits 2-4) where the code tells: the same
+        // registers, displacements in the same dword of the 32 bytes (BB20)
+        if (accesses_memory(u) && accesses_memory(v) && u.mem.base == v.mem.base && u.mem.index == v.mem.index && u.mem.scale == v.mem.scale &&
+            ((u.mem.disp >> 2) & 7) == ((v.mem.disp >> 2) & 7)) {
+            ++cycles;
+            stall(&iv, "bank conflict", 1);
+        }
+        iv.cycle = start, iv.pipe = 'V', iv.clocks = cycles, iv.done = start + cycles - 1;
+    }
+    iu.cycle = start, iu.pipe = 'U', iu.clocks = cycles, iu.done = std::max(start + cycles - 1, fp_done);
+    const long end = start + cycles - 1;
+    for (size_t k = 0; k < (pair ? 2u : 1u); ++k)
+        for (RegPart w : window[k].insn->writes)
+            if (w.family != Family::SP || window[k].insn->writes_sp_explicitly) written_[size_t(w.family)] = end;
+    now_ = start + cycles;
+    return pair ? 2 : 1;
+}
+
+std::vector<P5Issue> P5::run(const std::vector<Executed>& stream) {
+    std::vector<P5Issue> out(stream.size());
+    for (size_t i = 0; i < stream.size();) i += size_t(issue(&stream[i], std::min<size_t>(3, stream.size() - i), &out[i]));
     return out;
 }
 

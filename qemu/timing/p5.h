@@ -44,6 +44,16 @@ struct FpCycles {
     int next = 1;
 };
 
+// The x87's stack as the P5 sees it: per register, counted from the top, the cycle its value can be
+// used in, and whether arithmetic made it (a store of it waits a cycle more: BB63). FXCH renames.
+struct FpStack {
+    std::array<long, 8> ready;
+    std::array<bool, 8> arith{};
+    FpStack() { ready.fill(-1000); }
+    void push();
+    void pop(int n);
+};
+
 class P5 {
 public:
     // precision: the x87's precision control in force (24, 53 or 64 bits), which FDIV's time follows;
@@ -54,13 +64,42 @@ public:
     // instruction's issue.
     std::vector<P5Issue> run(const std::vector<Executed>& stream);
 
+    // A stream a piece at a time: issues window[0] (and window[1] where it pairs with it in V),
+    // `n` (1 to 3) instructions being known from there on; returns how many issued, their issues in
+    // `out`. run() is this over its stream.
+    int issue(const Executed* window, size_t n, P5Issue* out);
+    long now() const { return now_; }  // the cycle the next instruction may issue in
+    void explain(bool on) { explain_ = on; }  // name the stalls (the default), or only count them
+
     static Pairing pairing(const Insn& in);
     static int clocks(const Insn& in, Mode mode);  // in the U pipe, alone; docs/cycles.md's table
     static FpCycles fpu_cycles(const Insn& in, int precision);
 
 private:
+    bool predicted(const Insn& in) const;
+    void learn(const Insn& in, bool taken);
+    long address_ready(const Insn& in, Family* on) const;
+    int branch_clocks(const Insn& in, bool taken, char pipe, P5Issue* issue);
+    long x87_ready(const Insn& in, std::string* why) const;
+    long x87_issue(const Insn& in, long start);
+    void stall(P5Issue* issue, const char* what, long cycles) const;
+
     int precision_;
     Mode mode_;
+    bool explain_ = true;
+    long now_ = 0;
+    std::array<long, size_t(Family::Count)> written_ = filled(-1000);  // the cycle a write of each family ended in
+    std::map<uint32_t, int> btb_;  // a branch's two-bit counter: taken predicted from 2 up
+    // the x87: its stack, when it takes its next instruction, its next FMUL, the end of a divide,
+    // and the compare FNSTSW waits for
+    FpStack st_;
+    long fp_next_ = -1000, fmul_next_ = -1000, divide_done_ = -1000, status_ready_ = -1000;
+
+    static std::array<long, size_t(Family::Count)> filled(long v) {
+        std::array<long, size_t(Family::Count)> a;
+        a.fill(v);
+        return a;
+    }
 };
 
 }  // namespace timing
