@@ -157,8 +157,11 @@ SCENE_TOOL := $(HBUILD)/modexlab-scene
 BENCH := $(HBUILD)/modexlab-bench
 GALLERY := $(HBUILD)/modexlab-gallery
 EXTREMES := $(HBUILD)/modexlab-extremes
-# the cycle-timing model's static analyser (qemu/timing, docs/cycles.md)
+# the cycle-timing model's static analyser (qemu/timing, docs/cycles.md), and the model as a QEMU
+# plugin for whole frames (qemu/plugin), its objects built position-independent
 TIMING := $(HBUILD)/modexlab-timing
+TIMING_PLUGIN := $(HBUILD)/libmodexlab-timing.so
+TIMING_PLUGIN_CXX := qemu/plugin/plugin_main.cpp $(wildcard qemu/timing/*.cpp)
 TESTS := $(HBUILD)/modexlab-tests
 # the unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer
 SBUILD := $(BUILD)/host-san
@@ -190,7 +193,7 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(EXTREMES) $(TIMING) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(RUN32) $(FUZZ_REPLAY)
+host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(EXTREMES) $(TIMING) $(TIMING_PLUGIN) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(RUN32) $(FUZZ_REPLAY)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 # $(call install,FILE:PACKAGE ...): installs the packages whose file or command is missing.
@@ -329,6 +332,15 @@ $(HBUILD)/%.cpp.o: %.cpp | deps
 	@mkdir -p $(@D)
 	$(call say,CXX,$<)
 	$(Q)$(HCXX) $(HCXXFLAGS) -c $< -o $@
+
+$(HBUILD)/pic/%.cpp.o: %.cpp | deps
+	@mkdir -p $(@D)
+	$(call say,CXX-PIC,$<)
+	$(Q)$(HCXX) $(HCXXFLAGS) -fPIC -c $< -o $@
+
+$(TIMING_PLUGIN): $(TIMING_PLUGIN_CXX:%=$(HBUILD)/pic/%.o)
+	$(call say,LINK,$@)
+	$(Q)$(HCXX) -shared -o $@ $^ -lcapstone
 
 # The tests' heavy headers parsed once: tests/pch.h precompiled, and taken first by every test
 # object (-include; -Winvalid-pch says when one does not fit the flags). The tests' own code at

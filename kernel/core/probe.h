@@ -18,6 +18,10 @@ struct Probe {
     uint64_t ticks[int(Phase::Count)] = {};
     uint32_t laps[int(Phase::Count)] = {};
     uint64_t lap_cost = 0;  // ticks one lap adds to the interval it closes (calibrate)
+    // Where the timing model's QEMU plugin watches the laps, or none: a lap writes the byte of its
+    // phase, start() the byte after the phases; calibrate's probe the same five bytes on.
+    volatile uint8_t* marks = nullptr;
+    static constexpr int MARKS = int(Phase::Count) + 1;
 
     // Charges the time since the last lap to `phase`.
     void lap(Phase phase) {
@@ -25,13 +29,18 @@ struct Probe {
         ticks[int(phase)] += now - last;
         ++laps[int(phase)];
         last = now;
+        if (marks) marks[int(phase)] = 1;
     }
-    void start() { last = clock(); }
+    void start() {
+        last = clock();
+        if (marks) marks[int(Phase::Count)] = 1;
+    }
     // The cost of a lap: the least interval between two back-to-back laps (least: an interrupt
     // or a cache miss only ever adds). Exact under QEMU's icount, where ticks are instructions.
     void calibrate() {
         Probe p;
         p.clock = clock;
+        p.marks = marks ? marks + MARKS : nullptr;
         p.start();
         uint64_t best = ~uint64_t(0);
         for (int i = 0; i < 64; ++i) {

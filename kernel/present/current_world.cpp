@@ -8,6 +8,7 @@
 #include "kernel/present/file_table.h"
 #include "kernel/present/parts.h"
 #include "kernel/core/choice.h"
+#include "kernel/platform/cycle_marks.h"
 #include "kernel/platform/guard.h"
 #include "kernel/lib/mem.h"
 #include "kernel/lib/words.h"
@@ -172,6 +173,7 @@ const char* const BENCH_FIELD_NAMES[B_FIELDS] = {"ticks",      "ticks_geometry",
 raster::Probe bench_probe() {
     raster::Probe p;
     p.clock = timer::reader();
+    p.marks = modexlab_cycle_marks;
     p.calibrate();
     return p;
 }
@@ -181,7 +183,9 @@ BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper,
     BenchFrame b{};
     b.frame = int32_t(uint64_t(i) * uint32_t(g_world.frames) / count);
     b.page = vga::shown_page() == 0 ? 1 : 0;
+    cycle_marks::mark(cycle_marks::FrameStart);
     const FrameResult f = render(b.frame, mapper, surface, b.page, variant, nullptr, watch);
+    cycle_marks::mark(cycle_marks::FrameEnd);
     raster::Probe timed = probe;
     b.cut = f.render.stats.interrupted || render(b.frame, mapper, surface, b.page, variant, &timed, watch).render.stats.interrupted;
     if (b.cut) return b;

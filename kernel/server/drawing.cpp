@@ -6,6 +6,7 @@
 #include "kernel/lib/stats.h"
 #include "kernel/scene/scene_text.h"
 #include "kernel/present/current_screen.h"
+#include "kernel/platform/cycle_marks.h"
 #include "kernel/platform/guard.h"
 #include "kernel/platform/idt.h"
 #include "kernel/server/commands.h"
@@ -225,6 +226,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
         tally.add(r);
         used_asm = b.used_asm;
     }
+    cycle_marks::mark(cycle_marks::RowEnd);
     lib::JsonLine r = animation_reply("bench", done, frames, d);
     r.str("loop", used_asm ? "asm" : "twin").u64("lap_cost", probe.lap_cost);
     r.u64("polygons", polygons).u64("rejected", rejected).u64("spans", spans).u64("pixels", pixels);

@@ -30,6 +30,8 @@ const char* USAGE =
     "BOOT:  --kernel ELF [--append OPTIONS] [--module PATH[=NAME]]... | --iso ISO [--usb]\n"
     "                     (default: build/kernel/modexlab.elf; a module's name is its path unless given)\n"
     "       --icount      count guest instructions (rdtsc = instructions executed)\n"
+    "       --cpu MODEL   QEMU's -cpu (486, pentium, ...)\n"
+    "       --plugin SPEC QEMU's -plugin (the timing model: docs/cycles.md, \"Whole frames\")\n"
     "run:   boots, says hello, sets Mode X; draws, shows and screenshots every test pattern; then\n"
     "       plays every demo scene (or NAME) for N frames (default 90: three seconds of its\n"
     "       animation) with the mapper (default persp-subdiv-16), page-flipped, and screenshots the\n"
@@ -61,7 +63,7 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     if (a.verb == "-h" || a.verb == "--help") return std::nullopt;
     if (a.verb != "run" && a.verb != "exec") throw UsageError("unknown verb '" + a.verb + "'");
     const bool run = a.verb == "run";
-    std::vector<std::string_view> with_value = {"--kernel", "--iso", "--append", "--module"}, flags = {"--usb", "--icount"};
+    std::vector<std::string_view> with_value = {"--kernel", "--iso", "--append", "--module", "--cpu", "--plugin"}, flags = {"--usb", "--icount"};
     if (run) {
         with_value.insert(with_value.end(), {"--out", "--scene", "--mapper", "--frames"});
         flags.push_back("--display");
@@ -80,6 +82,8 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     if (a.session.medium == BootMedium::Usb && a.session.image.empty()) a.session.image = build_dir() + "/modexlab.iso";
     a.session.append = args.text("--append");
     a.session.icount = args.has("--icount");
+    a.session.cpu = args.text("--cpu");
+    a.session.plugin = args.text("--plugin");
     for (const std::string& m : args.texts("--module")) {
         size_t eq = m.find('=');
         a.session.modules.push_back(eq == std::string::npos ? m : m.substr(0, eq) + " " + m.substr(eq + 1));

@@ -34,6 +34,7 @@ Session::Session(SessionOptions options) : options_(std::move(options)) {
     config.icount = options_.icount;
     config.cpu = options_.cpu;
     config.memory_mib = options_.memory_mib;
+    if (!options_.plugin.empty()) config.extra_args = {"-plugin", options_.plugin};
     config.run_dir = run_dir_;
     config.emulator = options_.emulator;
     config.firmware = options_.firmware;

@@ -34,6 +34,7 @@ struct SessionOptions {
     bool icount = false;
     std::string cpu;                   // QEMU's -cpu model (486, pentium, ...); empty: its default, a P6
     int memory_mib = 0;                // -m (Bochs: megs); 0: 128 MiB (QEMU's UEFI: 256)
+    std::string plugin;                // QEMU's -plugin SPEC (the timing model's: docs/cycles.md); empty: none
     std::string name = "session";      // the run directory is build/runs/NAME
     std::chrono::milliseconds boot_timeout{60000};
     std::chrono::milliseconds command_timeout{30000};

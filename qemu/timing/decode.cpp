@@ -142,7 +142,9 @@ Insn convert(csh h, const cs_insn& c) {
     Insn in;
     in.address = uint32_t(c.address), in.size = uint8_t(c.size), in.id = c.id;
     in.mnemonic = c.mnemonic;
-    in.text = in.mnemonic + (c.op_str[0] ? std::string(" ") + c.op_str : std::string());
+    // (Capstone writes REP, REPNE and LOCK into the mnemonic; the prefix flags below carry them)
+    if (const size_t space = in.mnemonic.find(' '); space != std::string::npos) in.mnemonic = in.mnemonic.substr(space + 1);
+    in.text = std::string(c.mnemonic) + (c.op_str[0] ? std::string(" ") + c.op_str : std::string());
     in.opsize_prefix = x.prefix[2] == X86_PREFIX_OPSIZE, in.addrsize_prefix = x.prefix[3] == X86_PREFIX_ADDRSIZE;
     in.segment_prefix = x.prefix[1] != 0;
     in.rep_prefix = x.prefix[0] == X86_PREFIX_REP || x.prefix[0] == X86_PREFIX_REPNE;
@@ -221,7 +223,9 @@ Insn convert(csh h, const cs_insn& c) {
 }  // namespace
 
 std::vector<Insn> decode(const uint8_t* bytes, size_t size, int bits, uint32_t address, bool stop_at_bad) {
-    Handle handle(bits);
+    // (a handle each mode, opened once a thread: a whole run decodes each block it translates)
+    thread_local Handle handle32(32), handle16(16);
+    Handle& handle = bits == 16 ? handle16 : handle32;
     std::vector<Insn> out;
     size_t offset = 0;
     while (offset < size) {

@@ -57,8 +57,26 @@ int I486::base_clocks(const Insn& in, bool taken, Mode mode) {
     if (m == "sahf") return 2;                  // i486
     if (m == "lahf") return 3;                  // i486
     if (m == "xlatb" || m == "xlat") return 4;  // BB12
-    if (m.rfind("stos", 0) == 0 || m.rfind("lods", 0) == 0) return 5;  // BB12 (STOSB); i486 (LODS)
-    if (m.rfind("movs", 0) == 0 && m != "movsx") return 7;             // i486
+    // a string instruction; with REP, each repetition runs as an instruction of its own (as QEMU
+    // executes it): REP STOS 4 a repetition, REP MOVS 3 (i486: 7+4n, 12+3n)
+    if (m.rfind("stos", 0) == 0) return in.rep_prefix ? 4 : 5;  // BB12 (STOSB)
+    if (m.rfind("lods", 0) == 0) return 5;                        // i486
+    if (m.rfind("movs", 0) == 0 && m != "movsx") return in.rep_prefix ? 3 : 7;  // i486
+    // i486, the rest a compiled program runs
+    if (m == "leave") return 5;
+    if (among(m, {"cld", "std", "clc", "stc", "cmc"})) return 2;
+    if (m == "cli" || m == "sti") return 5;
+    if (m == "pushfd" || m == "pushf") return 4;
+    if (m == "popfd" || m == "popf") return 9;
+    if (m == "pushal" || m == "pushad") return 11;
+    if (m == "popal" || m == "popad") return 9;
+    if (m == "bt") return mem ? 8 : 3;
+    if (among(m, {"bts", "btr", "btc"})) return mem ? 13 : 6;
+    if (m == "bsf" || m == "bsr") return 6;  // (6 to 42: its least)
+    if (m == "shld" || m == "shrd") return mem ? 4 : 2;
+    if (m == "iretd" || m == "iret") return 15;
+    if (m == "hlt") return 4;
+    if (m == UNMODELLED) return 1;
     if (m == "mul" || m == "imul") return 13;  // BB45 (MUL 13 to 42: its least); i486 (IMUL r, r/m)
     if (m == "div" || m == "idiv") {
         const int bytes = in.operand_bytes;
@@ -101,6 +119,24 @@ FpClocks I486::fpu_clocks(const Insn& in) {
     case FpOp::Wait: return {1, 0};
     default: throw std::runtime_error("no 486 timing for '" + in.text + "' (docs/cycles.md lists what the model knows)");
     }
+}
+
+// The instruction's entries in the tables, worked out once for this mode (insn.h, Memo); where
+// the tables have none, they throw here.
+const Memo& I486::facts(const Insn& in) const {
+    const uint32_t key = 0x4860000u + uint32_t(mode_);
+    Memo& m = in.memo;
+    if (m.key == key) return m;
+    Memo fresh;
+    if (in.kind == Kind::Fpu) {
+        const FpClocks c = fpu_clocks(in);
+        fresh.clocks = int16_t(c.clocks), fresh.fp_concurrent = int16_t(c.concurrent);
+    } else {
+        fresh.clocks = int16_t(base_clocks(in, true, mode_)), fresh.clocks_not_taken = int16_t(base_clocks(in, false, mode_));
+    }
+    fresh.key = key;
+    m = fresh;
+    return m;
 }
 
 Step I486::run(const Insn& in, bool taken) {
@@ -147,12 +183,13 @@ Step I486::run(const Insn& in, bool taken) {
     // the x87 takes one instruction at a time: the next waits for it; the integer unit runs on
     // beside it for its concurrent clocks (i486)
     const bool fpu = in.kind == Kind::Fpu;
-    const FpClocks fc = fpu ? fpu_clocks(in) : FpClocks{};
+    const Memo& m = facts(in);
+    const FpClocks fc = fpu ? FpClocks{m.clocks, m.fp_concurrent} : FpClocks{};
     if (fpu && fpu_free_ > start) {
         if (explain_) s.stalls.push_back("x87 busy +" + std::to_string(fpu_free_ - start));
         start = fpu_free_;
     }
-    int clocks = fpu ? fc.clocks - fc.concurrent : base_clocks(in, taken, mode_);
+    int clocks = fpu ? fc.clocks - fc.concurrent : taken ? m.clocks : m.clocks_not_taken;
     // prefixes: a cycle each, but one decodes while an AGI waits or the instruction before runs on
     // (BB13, BB19: "prefix cycles can overlap with previous multicycle instructions, or AGIs")
     const int prefixes = int(in.opsize_prefix) + int(in.addrsize_prefix) + int(in.segment_prefix);

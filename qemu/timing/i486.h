@@ -47,6 +47,8 @@ public:
     static FpClocks fpu_clocks(const Insn& in);
 
 private:
+    const Memo& facts(const Insn& in) const;
+
     static constexpr long NEVER = -1000;
     Mode mode_;
     bool explain_ = true;

@@ -76,6 +76,17 @@ struct Fpu {
     uint8_t pops = 0;    // popped after the result is written
 };
 
+// A model's table entries for an instruction, worked out once and kept with it for a stream that
+// runs it again (a whole run's hot path, machine.h): `key` names the model and its settings that
+// filled it, 0 none. Each model reads only what it filled.
+struct Memo {
+    uint32_t key = 0;
+    int16_t clocks = 0, clocks_not_taken = 0;  // -1: the model has no timing for it
+    int8_t pairing = 0, prefix = 0;
+    bool memory = false, memory_dest = false, multiplier = false;
+    int16_t fp_issue = 0, fp_latency = 0, fp_next = 0, fp_concurrent = 0;
+};
+
 struct Insn {
     uint32_t address = 0;
     uint8_t size = 0;         // bytes
@@ -96,7 +107,12 @@ struct Insn {
     bool writes_sp_explicitly = false;  // ESP as an explicit destination (not PUSH/POP's implicit change)
     Memory mem;
     Fpu fpu;  // Kind::Fpu
+    mutable Memo memo;
 };
+
+// The mnemonic of the stand-in a whole run puts in place of an instruction the models have no
+// timing for (machine.h): a cycle, pairing with nothing.
+inline constexpr const char* UNMODELLED = "(unmodelled)";
 
 // The family's 32-bit name ("esi").
 inline const char* family_name(Family f) {

@@ -122,23 +122,92 @@ int P5::clocks(const Insn& in, Mode mode) {
     if (m == "idiv") return in.operand_bytes == 1 ? 22 : in.operand_bytes == 2 ? 30 : 46;
     if (in.kind == Kind::Out) return mode == Mode::Real16 ? 12 : 9;  // P5: real mode; CPL at or below IOPL
     if (in.kind == Kind::In) return mode == Mode::Real16 ? 7 : 4;
+    // the rest a compiled program runs; a REP string instruction's repetitions each run as an
+    // instruction of their own (as QEMU executes them), a cycle each (P5: REP STOS 3+n, REP MOVS 13+n)
+    if (m == "pop") return 3;  // memory
+    if (m == "xchg" || m == "leave") return 3;
+    if (m == "xlatb" || m == "xlat") return 4;
+    if (m.rfind("stos", 0) == 0) return in.rep_prefix ? 1 : 3;
+    if (m.rfind("lods", 0) == 0) return 2;
+    if (m.rfind("movs", 0) == 0) return in.rep_prefix ? 1 : 4;
+    if (among(m, {"cld", "std", "clc", "stc", "cmc"})) return 2;
+    if (m == "cli" || m == "sti") return 7;
+    if (m == "pushfd" || m == "pushf") return 4;
+    if (m == "popfd" || m == "popf") return 6;
+    if (among(m, {"pushal", "pushad", "popal", "popad"})) return 5;
+    if (m == "bt") return 4;
+    if (among(m, {"bts", "btr", "btc"})) return 7;
+    if (m == "bsf" || m == "bsr") return 6;  // (6 to 34: its least)
+    if (m == "shld" || m == "shrd") return 4;
+    if (m == "rcl" || m == "rcr") return 7;  // by CL or an immediate (7 to 24: its least)
+    if (in.kind == Kind::Ret) return in.has_imm ? 3 : 2;
+    if (in.kind == Kind::Jcc && in.loop) return 5;
+    if (m == "iretd" || m == "iret") return 10;
+    if (m == UNMODELLED) return 1;
     if (in.kind == Kind::Jcc && !in.loop) return 1;  // predicted (BB19)
     if (in.kind == Kind::Jmp || in.kind == Kind::Call) return 1;
     throw std::runtime_error("no Pentium timing for '" + in.text + "' (docs/cycles.md lists what the model knows)");
 }
 
-bool P5::predicted(const Insn& in) const {
-    const auto it = btb_.find(in.address);
-    return it != btb_.end() && it->second >= 2;  // (not in the buffer: not taken)
+// The instruction's entries in the tables, worked out once for this P5's settings (insn.h, Memo).
+const Memo& P5::facts(const Insn& in) const {
+    const uint32_t key = 0x50000u + uint32_t(mode_) * 128u + uint32_t(precision_);
+    Memo& m = in.memo;
+    if (m.key == key) return m;
+    m = Memo{};
+    m.key = key;
+    m.pairing = int8_t(pairing(in));
+    m.prefix = int8_t(prefix_cycles(in));
+    m.memory = accesses_memory(in), m.memory_dest = mem_dest(in);
+    m.multiplier = in.mnemonic == "imul" || in.mnemonic == "mul";
+    try {
+        if (in.kind == Kind::Fpu) {
+            const FpCycles c = fpu_cycles(in, precision_);
+            m.fp_issue = int16_t(c.issue), m.fp_latency = int16_t(c.latency), m.fp_next = int16_t(c.next);
+        } else {
+            m.clocks = int16_t(clocks(in, mode_));
+        }
+    } catch (const std::runtime_error&) {
+        m.clocks = -1;
+    }
+    return m;
+}
+
+// the stream's copy of fpu_cycles and clocks: from the memo, or the tables' refusal
+FpCycles P5::fp(const Insn& in) const {
+    const Memo& m = facts(in);
+    if (m.clocks < 0) fpu_cycles(in, precision_);  // (throws)
+    return FpCycles{m.fp_issue, m.fp_latency, m.fp_next};
+}
+
+// The branch target buffer: 256 entries, 4-way set associative (P5, AF), the least recently used
+// way replaced; a set by the branch's address bits 0-5 (the model's choice: the sources give the
+// size and the ways, not the index).
+P5::BtbEntry* P5::btb_find(uint32_t address) {
+    BtbEntry* set = &btb_[(address & 63) * 4];
+    for (int w = 0; w < 4; ++w)
+        if (set[w].used && set[w].address == address) return &set[w];
+    return nullptr;
+}
+
+bool P5::predicted(const Insn& in) {
+    const BtbEntry* e = btb_find(in.address);
+    return e && e->counter >= 2;  // (not in the buffer: not taken)
 }
 
 void P5::learn(const Insn& in, bool taken) {
-    const auto it = btb_.find(in.address);
-    if (it == btb_.end()) {
-        if (taken) btb_[in.address] = 3;  // enters taken
-        return;
+    BtbEntry* e = btb_find(in.address);
+    if (!e) {
+        if (!taken) return;
+        BtbEntry* set = &btb_[(in.address & 63) * 4];
+        e = &set[0];
+        for (int w = 1; w < 4; ++w)
+            if (!set[w].used || (e->used && set[w].last_use < e->last_use)) e = &set[w];
+        *e = BtbEntry{in.address, 3, true, 0};  // enters taken
+    } else {
+        e->counter = int8_t(std::clamp(e->counter + (taken ? 1 : -1), 0, 3));
     }
-    it->second = std::clamp(it->second + (taken ? 1 : -1), 0, 3);
+    e->last_use = ++btb_clock_;
 }
 
 // the cycle its address registers are ready in (written two cycles before, BB21); PUSH and POP
@@ -152,8 +221,11 @@ long P5::address_ready(const Insn& in, Family* on) const {
 }
 
 int P5::branch_clocks(const Insn& in, bool taken, char pipe, P5Issue* issue) {
-    if (in.kind != Kind::Jcc && in.kind != Kind::Jmp && in.kind != Kind::Call) return clocks(in, mode_);
-    const bool right = in.kind == Kind::Jcc ? predicted(in) == taken : btb_.count(in.address) > 0;
+    if (in.kind != Kind::Jcc && in.kind != Kind::Jmp && in.kind != Kind::Call) {
+        const Memo& m = facts(in);
+        return m.clocks >= 0 ? m.clocks : clocks(in, mode_);  // (throws)
+    }
+    const bool right = in.kind == Kind::Jcc ? predicted(in) == taken : btb_find(in.address) != nullptr;
     learn(in, taken || in.kind != Kind::Jcc);
     if (right) return 1;
     const int c = in.kind != Kind::Jcc ? 3 : pipe == 'U' ? 4 : 5;  // BB19, BB21
@@ -175,7 +247,7 @@ long P5::x87_ready(const Insn& in, std::string* why) const {
         if (t > r) r = t, name = what, reg = k;
     };
     if (in.kind != Kind::Fpu) {
-        if (in.mnemonic == "imul" || in.mnemonic == "mul") wait(divide_done_, "the FDIV", -1);
+        if (facts(in).multiplier) wait(divide_done_, "the FDIV", -1);
     } else {
         const FpOp op = in.fpu.op;
         wait(fp_next_, divide_done_ == fp_next_ ? "the FDIV" : "the x87", -1);
@@ -194,7 +266,7 @@ long P5::x87_ready(const Insn& in, std::string* why) const {
 
 // `in` issued at `start`: the x87's state after it; the last cycle of its result
 long P5::x87_issue(const Insn& in, long start) {
-    const FpCycles c = fpu_cycles(in, precision_);
+    const FpCycles c = fp(in);
     const FpOp op = in.fpu.op;
     if (op == FpOp::Exchange) {
         const int k = std::countr_zero(unsigned(in.fpu.reads & 0xFE));
@@ -218,7 +290,8 @@ int P5::issue(const Executed* window, size_t n, P5Issue* out) {
     iu = P5Issue{};
     Family agi_on = Family::None;
     const long agi_ready = address_ready(u, &agi_on);
-    const int prefixes = prefix_cycles(u);
+    const Memo& fu = facts(u);
+    const int prefixes = fu.prefix;
     std::string fp_why;
     const long fp_wait = std::max<long>(0, x87_ready(u, &fp_why) - now_);
     const long wait = std::max<long>(0, agi_ready - now_);
@@ -237,10 +310,11 @@ int P5::issue(const Executed* window, size_t n, P5Issue* out) {
     const bool fp = u.kind == Kind::Fpu;
     if (fp) {
         pair = n > 1 && window[1].insn->kind == Kind::Fpu && window[1].insn->fpu.op == FpOp::Exchange && pairs_with_fxch(u) &&
-               prefix_cycles(*window[1].insn) == 0;
+               facts(*window[1].insn).prefix == 0;
     } else if (n > 1) {
         const Insn& v = *window[1].insn;
-        const Pairing pu = pairing(u), pv = pairing(v);
+        const Memo& fv = facts(v);
+        const Pairing pu = Pairing(fu.pairing), pv = Pairing(fv.pairing);
         Family v_on = Family::None;
         const bool contention = [&] {
             for (RegPart w : u.writes) {
@@ -252,10 +326,10 @@ int P5::issue(const Executed* window, size_t n, P5Issue* out) {
             }
             return u.writes_flags && v.reads_flags && v.kind != Kind::Jcc;
         }();
-        pair = (pu == Pairing::UV || pu == Pairing::PU) && (pv == Pairing::UV || pv == Pairing::PV) && prefix_cycles(v) == 0 && !contention &&
+        pair = (pu == Pairing::UV || pu == Pairing::PU) && (pv == Pairing::UV || pv == Pairing::PV) && fv.prefix == 0 && !contention &&
                address_ready(v, &v_on) <= start;
     }
-    int cu = fp ? fpu_cycles(u, precision_).issue : branch_clocks(u, window[0].taken, 'U', &iu), cycles = cu;
+    int cu = fp ? this->fp(u).issue : branch_clocks(u, window[0].taken, 'U', &iu), cycles = cu;
     long fp_done = -1000;
     if (fp) {
         fp_done = x87_issue(u, start);
@@ -276,10 +350,11 @@ int P5::issue(const Executed* window, size_t n, P5Issue* out) {
         iv = P5Issue{};
         const int cv = branch_clocks(v, window[1].taken, 'V', &iv);
         // lockstep; two memory-destination instructions overlap a cycle only (BB20)
-        cycles = mem_dest(u) && mem_dest(v) ? cu + cv - 1 : std::max(cu, cv);
+        const Memo& fv = facts(v);
+        cycles = fu.memory_dest && fv.memory_dest ? cu + cv - 1 : std::max(cu, cv);
         // the same bank of the data cache (address bits 2-4) where the code tells: the same
         // registers, displacements in the same dword of the 32 bytes (BB20)
-        if (accesses_memory(u) && accesses_memory(v) && u.mem.base == v.mem.base && u.mem.index == v.mem.index && u.mem.scale == v.mem.scale &&
+        if (fu.memory && fv.memory && u.mem.base == v.mem.base && u.mem.index == v.mem.index && u.mem.scale == v.mem.scale &&
             ((u.mem.disp >> 2) & 7) == ((v.mem.disp >> 2) & 7)) {
             ++cycles;
             stall(&iv, "bank conflict", 1);

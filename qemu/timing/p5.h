@@ -1,16 +1,15 @@
-// The P5 Pentium's (non-MMX) integer timing, from its documented rules (docs/cycles.md, "The
-// Pentium"): two pipes, U and V, an instruction pairing with the next by its class (UV, PU, PV, NP)
-// where neither writes what the other reads or writes (flags into a branch, and two flag writers,
-// excepted); a pair in lockstep; the AGI (a register written in the cycle before or the same cycle
-// cannot address memory); prefixes alone in U; data-cache bank conflicts where they can be told
-// from the code; a branch target buffer of two-bit counters. The x87: FLD, FADD, FMUL pipelined
-// (a result 3 cycles on, an FMUL every other cycle), FXCH paired with the FP instruction before it
-// and free, FDIV by the precision control and overlapped by integer work, FST a cycle later after
-// arithmetic.
+// The P5 Pentium's (non-MMX) timing, from its documented rules (docs/cycles.md, "The Pentium"): two
+// pipes, U and V, an instruction pairing with the next by its class (UV, PU, PV, NP) where neither
+// writes what the other reads or writes (flags into a branch, and two flag writers, excepted); a
+// pair in lockstep; the AGI (a register written in the cycle before or the same cycle cannot
+// address memory); prefixes alone in U; data-cache bank conflicts where the code shows them; a
+// branch target buffer of two-bit counters, 256 entries in 64 sets of 4. The x87: FLD, FADD, FMUL
+// pipelined (a result 3 cycles on, an FMUL every other cycle), FXCH paired with the FP instruction
+// before it and free, FDIV by the precision control and overlapped by integer work, FST a cycle
+// later after arithmetic.
 #pragma once
 
 #include <array>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -76,7 +75,16 @@ public:
     static FpCycles fpu_cycles(const Insn& in, int precision);
 
 private:
-    bool predicted(const Insn& in) const;
+    const Memo& facts(const Insn& in) const;
+    FpCycles fp(const Insn& in) const;
+    struct BtbEntry {
+        uint32_t address = 0;
+        int8_t counter = 0;  // two bits: taken predicted from 2 up
+        bool used = false;
+        uint64_t last_use = 0;
+    };
+    BtbEntry* btb_find(uint32_t address);
+    bool predicted(const Insn& in);
     void learn(const Insn& in, bool taken);
     long address_ready(const Insn& in, Family* on) const;
     int branch_clocks(const Insn& in, bool taken, char pipe, P5Issue* issue);
@@ -89,7 +97,8 @@ private:
     bool explain_ = true;
     long now_ = 0;
     std::array<long, size_t(Family::Count)> written_ = filled(-1000);  // the cycle a write of each family ended in
-    std::map<uint32_t, int> btb_;  // a branch's two-bit counter: taken predicted from 2 up
+    std::array<BtbEntry, 256> btb_{};  // 64 sets of 4 ways
+    uint64_t btb_clock_ = 0;
     // the x87: its stack, when it takes its next instruction, its next FMUL, the end of a divide,
     // and the compare FNSTSW waits for
     FpStack st_;

@@ -3,6 +3,7 @@
 // (tests/timing/listings), each against its published figure, with the residuals docs/cycles.md
 // explains.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <string>
 #include <vector>
@@ -218,7 +219,7 @@ TEST(TimingAnalyser, DiagramJsonAndErrors) {
     const std::string p5 = diagram(analyse(l.insns, Cpu::Pentium, Mode::Protected32, BranchPolicy{}), 1);
     EXPECT_NE(p5.find("     1 U 1   mov bl, byte ptr [esi]\n     1 V 1   add edx, ebp\n"), std::string::npos) << "its pipes: " << p5;
 
-    const std::string bad = testing::TempDir() + "bad.asm";
+    const std::string bad = testing::TempDir() + "bad." + std::to_string(getpid()) + ".asm";
     FILE* f = std::fopen(bad.c_str(), "w");
     std::fputs("bits 32\n  movv eax, 1\n", f);
     std::fclose(f);

@@ -3,6 +3,8 @@
 // the Black Book's L58-4), with the residuals docs/cycles.md explains.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -17,7 +19,7 @@ using namespace timing;
 
 // `code` assembled by NASM in 32-bit mode.
 std::vector<Insn> asm32(const std::string& code) {
-    const std::string path = testing::TempDir() + "p5_test.asm";
+    const std::string path = testing::TempDir() + "p5_test." + std::to_string(getpid()) + ".asm";  // (test runs side by side)
     FILE* f = std::fopen(path.c_str(), "w");
     std::fputs(("bits 32\nvar equ 0x1000\nvar2 equ 0x1044\n" + code).c_str(), f);
     std::fclose(f);
