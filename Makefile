@@ -336,7 +336,7 @@ $(HBUILD)/%.cpp.o: %.cpp | deps
 $(HBUILD)/pic/%.cpp.o: %.cpp | deps
 	@mkdir -p $(@D)
 	$(call say,CXX-PIC,$<)
-	$(Q)$(HCXX) $(HCXXFLAGS) -fPIC -c $< -o $@
+	$(Q)$(HCXX) $(HCXXFLAGS) -fPIC -fvisibility=hidden -c $< -o $@
 
 $(TIMING_PLUGIN): $(TIMING_PLUGIN_CXX:%=$(HBUILD)/pic/%.o)
 	$(call say,LINK,$@)

@@ -20,15 +20,16 @@ std::string register_name(Family f, Mode mode) {
 
 bool is_byte(RegPart p) { return p.bytes == 1 || p.bytes == 2; }
 
-// The registers the instruction addresses memory through: its base and index; the stack pointer of
-// PUSH, POP, CALL and RET counts only after an explicit write of it (BB12, "Stack Addressing"),
-// which the caller checks.
-std::vector<Family> address_registers(const Insn& in) {
-    std::vector<Family> out;
-    if (!in.mem.present) return out;
-    if (in.mem.base != Family::None) out.push_back(in.mem.base);
-    if (in.mem.index != Family::None) out.push_back(in.mem.index);
-    return out;
+// The registers the instruction addresses memory through: its base and index (None where it has
+// none); the stack pointer of PUSH, POP, CALL and RET counts only after an explicit write of it
+// (BB12, "Stack Addressing"), which the caller checks.
+struct Address {
+    Family base = Family::None, index = Family::None;
+    bool uses(Family f) const { return f != Family::None && (f == base || f == index); }
+};
+Address address_registers(const Insn& in) {
+    if (!in.mem.present) return {};
+    return {in.mem.base, in.mem.index};
 }
 
 bool addresses_32(const Insn& in, Mode mode) { return (mode == Mode::Protected32) != in.addrsize_prefix; }
@@ -143,7 +144,7 @@ Step I486::run(const Insn& in, bool taken) {
     Step s;
     s.start = now_;
     long start = now_;
-    const std::vector<Family> address = address_registers(in);
+    const Address address = address_registers(in);
     const bool addressing = in.mem.present && !in.mem.stack;
 
     // AGI: a register written in the cycle before is used to address memory: 1 lost (Intel's rule,
@@ -151,9 +152,8 @@ Step I486::run(const Insn& in, bool taken) {
     // published counts of BB58 do not take: docs/cycles.md, "Where the sources disagree")
     int agi = 0;
     Family agi_on = Family::None;
-    std::vector<Family> checked = address;
-    if (in.mem.stack) checked.push_back(Family::SP);
-    for (Family f : checked) {
+    for (Family f : {address.base, address.index, in.mem.stack ? Family::SP : Family::None}) {
+        if (f == Family::None) continue;
         const long d = start - last_write_[size_t(f)];
         const int lost = d == 1 ? 1 : 0;
         if (lost > agi) agi = lost, agi_on = f;
@@ -172,7 +172,7 @@ Step I486::run(const Insn& in, bool taken) {
     // a byte of a register written in the cycle before, then the register read whole (BB12, rule 3)
     for (RegPart r : in.reads) {
         const size_t f = size_t(r.family);
-        if (std::find(address.begin(), address.end(), r.family) != address.end()) continue;  // (the AGI's)
+        if (address.uses(r.family)) continue;  // (the AGI's)
         if (last_byte_write_[f] == start - 1 && (r.bytes & ~last_byte_bytes_[f])) {
             ++start;
             if (explain_) s.stalls.push_back(std::string("byte then whole of ") + register_name(r.family, mode_) + " +1");

@@ -74,9 +74,8 @@ void Machine::feed(const Insn* in, bool taken, Effects fx, bool is_modelled) {
 void Machine::issue_pentium() {
     Executed w[3];
     for (int k = 0; k < held_; ++k) w[k] = Executed{window_[size_t(k)].in, window_[size_t(k)].taken};
-    P5Issue out[2];
-    const int n = p5_.issue(w, size_t(held_), out);
-    for (int k = 0; k < n; ++k) issued(window_[size_t(k)], out[k].cycle + delayed_);
+    const int n = p5_.issue(w, size_t(held_), issues_.data());
+    for (int k = 0; k < n; ++k) issued(window_[size_t(k)], issues_[size_t(k)].cycle + delayed_);
     for (int k = n; k < held_; ++k) window_[size_t(k - n)] = window_[size_t(k)];
     held_ -= n;
 }

@@ -102,6 +102,7 @@ private:
     P5 p5_;
     std::array<Pending, 3> window_{};  // the Pentium's instructions held back to pair (`held_` of them)
     int held_ = 0;
+    std::array<P5Issue, 2> issues_;     // (kept: the Pentium's issues of the pair in hand)
     Insn stand_in_;                     // an unmodelled instruction, as the models run it
     std::deque<long> buffer_;           // the cycles the posted writes reach the display in
     long bus_free_ = 0;

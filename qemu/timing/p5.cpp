@@ -287,7 +287,7 @@ long P5::x87_issue(const Insn& in, long start) {
 int P5::issue(const Executed* window, size_t n, P5Issue* out) {
     const Insn& u = *window[0].insn;
     P5Issue& iu = out[0];
-    iu = P5Issue{};
+    iu.stalls.clear();
     Family agi_on = Family::None;
     const long agi_ready = address_ready(u, &agi_on);
     const Memo& fu = facts(u);
@@ -337,7 +337,7 @@ int P5::issue(const Executed* window, size_t n, P5Issue* out) {
     }
     if (pair && fp) {
         P5Issue& iv = out[1];
-        iv = P5Issue{};
+        iv.stalls.clear();
         // an FXCH paired but not followed by an FP instruction costs a cycle (AP-500; AF)
         if (n > 2 && window[2].insn->kind != Kind::Fpu) {
             ++cycles;
@@ -347,7 +347,7 @@ int P5::issue(const Executed* window, size_t n, P5Issue* out) {
     } else if (pair) {
         const Insn& v = *window[1].insn;
         P5Issue& iv = out[1];
-        iv = P5Issue{};
+        iv.stalls.clear();
         const int cv = branch_clocks(v, window[1].taken, 'V', &iv);
         // lockstep; two memory-destination instructions overlap a cycle only (BB20)
         const Memo& fv = facts(v);
