@@ -42,9 +42,7 @@ ErrorBound bound_d_draw16(const BoundContext& c, const Vertex* vertices, int cou
 
 }  // namespace raster::quake
 
-namespace raster {
-
-namespace {
+namespace raster::single_chop {
 
 // Derivation: the x87 under Quake's single_cw on doubles, exactly, on any FPU that rounds doubles
 // correctly (the host's SSE2, the kernel's x87 at 53 bits). Every operand has at most 24
@@ -56,6 +54,8 @@ namespace {
 // quotient 2^16 / zi, zi = M 2^e with M a 24-bit integer, equals a 24-bit G 2^f or differs from it
 // by at least 1 / (M G) > 2^-48 of it (2^(16-e-f) - M G a nonzero integer, or M G above it): a
 // double's rounding (within 2^-53) never crosses a 24-bit value, so chopping the double is exact.
+namespace {
+
 constexpr uint64_t LOW29 = (uint64_t(1) << 29) - 1;  // the bits of a double's significand below 24
 
 uint64_t bits(double x) {
@@ -70,12 +70,13 @@ double from_bits(uint64_t b) {
 }
 int exponent(double x) { return int((bits(x) >> 52) & 0x7FF); }
 bool finite(double x) { return exponent(x) != 0x7FF; }
-
-// x with its significand truncated to 24 bits (toward zero); infinities and NaNs as they are
-double chop24(double x) { return finite(x) ? from_bits(bits(x) & ~LOW29) : x; }
 // the 24-bit value next to x (24 bits, not 0) toward zero
 double toward_zero(double x) { return from_bits(bits(x) - (LOW29 + 1)); }
 
+}  // namespace
+
+// x with its significand truncated to 24 bits (toward zero); infinities and NaNs as they are
+double chop24(double x) { return finite(x) ? from_bits(bits(x) & ~LOW29) : x; }
 double mul(double a, double b) { return chop24(a * b); }
 
 double add(double a, double b) {
@@ -86,8 +87,16 @@ double add(double a, double b) {
     return (larger > 0) == (smaller > 0) ? larger : toward_zero(larger);
 }
 
-// z = 65536 / zi, chopped (the divide d_draw16.s overlaps with the pixels)
-double z_of(double zi) { return chop24(65536.0 / zi); }
+// 65536 / zi, chopped (z: the divide d_draw16.s overlaps with the pixels)
+double quotient_65536(double zi) { return chop24(65536.0 / zi); }
+
+}  // namespace raster::single_chop
+
+namespace raster {
+
+using namespace single_chop;
+
+namespace {
 
 // FISTP: truncated (the value is already), the integer indefinite 0x80000000 beyond 32 bits
 int32_t fistp(double x) {
@@ -150,13 +159,13 @@ void quake_draw16_loop(const void* raw) {
     p.sdivz = add(add(mul(du, a.s_stepu), mul(dv, a.s_stepv)), a.s_origin);
     p.tdivz = add(add(mul(du, a.t_stepu), mul(dv, a.t_stepv)), a.t_origin);
     p.zi = add(add(mul(dv, a.z_stepv), mul(du, a.z_stepu)), a.z_origin);
-    double z = z_of(p.zi);
+    double z = quotient_65536(p.zi);
     int32_t s = clamp_start(wrap_add(fistp(mul(z, p.sdivz)), a.sadjust_16_16), a.bbextents);
     int32_t t = clamp_start(wrap_add(fistp(mul(z, p.tdivz)), a.tadjust_16_16), a.bbextentt);
     int32_t left = a.count;  // pixels from the segment's first on
     // the divide for the first segment's end (none for a single pixel)
-    if (left > 16) to_next_segment(p, a), z = z_of(p.zi);
-    else if (left > 1) to_last_pixel(p, a, left - 1), z = z_of(p.zi);
+    if (left > 16) to_next_segment(p, a), z = quotient_65536(p.zi);
+    else if (left > 1) to_last_pixel(p, a, left - 1), z = quotient_65536(p.zi);
     Stepper st;
     st.offset = uint32_t(s >> 16) + uint32_t(t >> 16) * uint32_t(a.pitch);
     st.sfrac = uint32_t(s) << 16, st.tfrac = uint32_t(t) << 16;
@@ -172,8 +181,8 @@ void quake_draw16_loop(const void* raw) {
             st.step();
         }
         // the next end's divide, started after pixel 8 (its result the same whenever it runs)
-        if (left > 16) to_next_segment(p, a), z = z_of(p.zi);
-        else if (left > 1) to_last_pixel(p, a, left - 1), z = z_of(p.zi);
+        if (left > 16) to_next_segment(p, a), z = quotient_65536(p.zi);
+        else if (left > 1) to_last_pixel(p, a, left - 1), z = quotient_65536(p.zi);
         pdest += 16;
         s = snext, t = tnext;
     }

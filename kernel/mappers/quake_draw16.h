@@ -32,6 +32,15 @@ extern "C" {
 raster::Loop quake_draw16_loop_asm;
 }
 
+// The x87 at 24-bit precision with chop on doubles (the twin's arithmetic; its derivation in
+// quake_draw16.cpp): operands of at most 24 significant bits, each result as the x87 gives it.
+namespace raster::single_chop {
+double chop24(double x);
+double mul(double a, double b);
+double add(double a, double b);
+double quotient_65536(double zi);
+}  // namespace raster::single_chop
+
 namespace raster::quake {
 
 SetupStatus draw_d_draw16(const DrawContext& c, const Vertex* vertices, int count);  // quake-d_draw16
