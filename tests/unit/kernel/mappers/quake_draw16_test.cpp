@@ -1,3 +1,4 @@
+// Under test: kernel/mappers/quake_draw16.h (single_chop).
 // The twin's x87 model (24-bit precision, chop) against this machine's own single-precision
 // arithmetic rounding toward zero, which IEEE 754 defines as the x87 under Quake's single_cw gives
 // it for operands and results inside float's range.
