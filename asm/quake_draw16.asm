@@ -431,114 +431,24 @@ align 4
     add ebx, ebp
     adc esi, ADVANCE
     jmp .entry3
-.e3:
-    sub edi, 12
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry4
-.e4:
-    sub edi, 11
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry5
-.e5:
-    sub edi, 10
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry6
-.e6:
-    sub edi, 9
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry7
-.e7:
-    sub edi, 8
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry8
-.e8:
-    sub edi, 7
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry9
-.e9:
-    sub edi, 6
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry10
-.e10:
-    sub edi, 5
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry11
-.e11:
-    sub edi, 4
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry12
-.e12:
-    sub edi, 3
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry13
-.e13:
-    sub edi, 2
-    add edx, eax
-    mov al, [esi]
-    sbb ecx, ecx
-    add ebx, ebp
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-    jmp .entry14
-.e14:
+%assign m 3
+%rep 12
+%assign next m + 1
+.e%[m]:
+%if m == 14
     dec edi
+%else
+    sub edi, 15 - m
+%endif
     add edx, eax
     mov al, [esi]
     sbb ecx, ecx
     add ebx, ebp
     adc esi, ADVANCE
     add edx, [esp + L_TSTEP]
-    jmp .entry15
+    jmp .entry%[next]
+%assign m m + 1
+%endrep
 .e15:
     add edx, eax
     mov al, [esi]
@@ -553,83 +463,18 @@ align 4
     mov al, [esi]
     adc esi, ADVANCE
     add edx, [esp + L_TSTEP]
-.entry15:
+; the written-out pixels the entries join: .entryK's pixel is the last segment's (17 - K)th
+%assign k 15
+%rep 11
+.entry%[k]:
     sbb ecx, ecx
-    mov [edi + 2], al
+    mov [edi + 17 - k], al
     add ebx, ebp
     mov al, [esi]
     adc esi, ADVANCE
     add edx, [esp + L_TSTEP]
-.entry14:
-    sbb ecx, ecx
-    mov [edi + 3], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-.entry13:
-    sbb ecx, ecx
-    mov [edi + 4], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-.entry12:
-    sbb ecx, ecx
-    mov [edi + 5], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-.entry11:
-    sbb ecx, ecx
-    mov [edi + 6], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-.entry10:
-    sbb ecx, ecx
-    mov [edi + 7], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-.entry9:
-    sbb ecx, ecx
-    mov [edi + 8], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-.entry8:
-    sbb ecx, ecx
-    mov [edi + 9], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-.entry7:
-    sbb ecx, ecx
-    mov [edi + 10], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-.entry6:
-    sbb ecx, ecx
-    mov [edi + 11], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
-.entry5:
-    sbb ecx, ecx
-    mov [edi + 12], al
-    add ebx, ebp
-    mov al, [esi]
-    adc esi, ADVANCE
-    add edx, [esp + L_TSTEP]
+%assign k k - 1
+%endrep
 .entry4:
     sbb ecx, ecx
     mov [edi + 13], al

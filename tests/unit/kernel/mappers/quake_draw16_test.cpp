@@ -31,9 +31,18 @@ struct Bits {
 };
 
 // The operations done under FE_TOWARDZERO, out of line so that none moves across fesetround.
-[[gnu::noinline]] float sum(volatile float a, volatile float b) { return a + b; }
-[[gnu::noinline]] float product(volatile float a, volatile float b) { return a * b; }
-[[gnu::noinline]] float quotient(volatile float a, volatile float b) { return a / b; }
+[[gnu::noinline]] float sum(float a, float b) {
+    volatile float r = a + b;
+    return r;
+}
+[[gnu::noinline]] float product(float a, float b) {
+    volatile float r = a * b;
+    return r;
+}
+[[gnu::noinline]] float quotient(float a, float b) {
+    volatile float r = a / b;
+    return r;
+}
 
 TEST(QuakeDraw16, TheModelChopsAsSinglePrecisionTowardZero) {
     const int rounding = std::fegetround();
