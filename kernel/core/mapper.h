@@ -81,7 +81,7 @@ struct SpanContext {
 using SpanFn = void (*)(const SpanContext& c, const Span& s, uint8_t* dst, int32_t stride);
 
 // At most this many registry rows (registry.cpp checks): arrays indexed by row.
-constexpr int MAPPER_LIMIT = 32;
+constexpr int MAPPER_LIMIT = 33;
 
 struct RenderStats {
     uint32_t polygons = 0;   // set up and walked

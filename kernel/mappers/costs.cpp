@@ -36,6 +36,7 @@ const MapperCost MAPPER_COSTS[] = {
     {"fatmap-lut", 2334.0f, 165.69f, 10.055f}, // 7 scenes
     {"quake-subdiv16", 1490.9f, 301.88f, 13.883f}, // 10 scenes
     {"quake-subdiv8", 1490.9f, 286.54f, 20.235f}, // 10 scenes
+    {"quake-d_draw16", 1515.9f, 322.05f, 9.576f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);

@@ -29,45 +29,53 @@ SetupStatus takes(const Vertex* vertices, int count, const Texture& tex, double*
     return SetupStatus::Ok;
 }
 
-template <int SHIFT>
-SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
+}  // namespace
+
+SetupStatus prepare(const DrawContext& c, const Vertex* vertices, int count, PolygonSetup* own, const PolygonSetup** setup, Gradients* g) {
     double shift_u, shift_v;
     SetupStatus status = takes(vertices, count, c.tex, &shift_u, &shift_v);
     if (status != SetupStatus::Ok) return status;
-    PolygonSetup own;  // the setup auto made already, or one here
-    if (!c.setup && (status = setup_polygon(vertices, count, &own, PLANES_PERSPECTIVE, c.input)) != SetupStatus::Ok) return status;
-    const PolygonSetup& setup = c.setup ? *c.setup : own;
+    // the setup auto made already, or one here
+    if (!c.setup && (status = setup_polygon(vertices, count, own, PLANES_PERSPECTIVE, c.input)) != SetupStatus::Ok) return status;
+    *setup = c.setup ? c.setup : own;
+    // the whole periods in 16.16, modulo 2^32 (a shift can pass 32768 texels: u near -32000 in a
+    // 999-texel texture; add_wrapping then lands on the shifted value, which fits)
+    g->sadjust_16_16 = int32_t(uint32_t(int64_t(shift_u * 65536.0)));
+    g->tadjust_16_16 = int32_t(uint32_t(int64_t(shift_v * 65536.0)));
+    g->bbextents = (c.tex.width << 16) - 1;
+    g->bbextentt = (c.tex.height << 16) - 1;
+    // D_CalcGradients: the planes per screen pixel, origin at pixel (0, 0)
+    const PolygonSetup& s = **setup;
+    const double per_pixel = double(SUBPIXEL_ONE), x0 = centre_x(s, 0), y0 = centre_y(s, 0);
+    auto plane = [&](const Plane& p, double* out) { out[0] = p.at(x0, y0), out[1] = p.gx * per_pixel, out[2] = p.gy * per_pixel; };
+    plane(s.pu, g->s);
+    plane(s.pv, g->t);
+    plane(s.q, g->z);
+    return SetupStatus::Ok;
+}
 
+namespace {
+
+template <int SHIFT>
+SetupStatus draw(const DrawContext& c, const Vertex* vertices, int count) {
+    PolygonSetup own;
+    const PolygonSetup* setup;
+    Gradients g;
+    SetupStatus status = prepare(c, vertices, count, &own, &setup, &g);
+    if (status != SetupStatus::Ok) return status;
     constexpr double N = double(1 << SHIFT);
-    const double per_pixel = double(SUBPIXEL_ONE);
     QuakeArgs a;
     a.texels = c.tex.texels;
     a.pitch = c.tex.width;
-    // the whole periods in 16.16, modulo 2^32 (a shift can pass 32768 texels: u near -32000 in a
-    // 999-texel texture; add_wrapping then lands on the shifted value, which fits)
-    a.sadjust_16_16 = int32_t(uint32_t(int64_t(shift_u * 65536.0)));
-    a.tadjust_16_16 = int32_t(uint32_t(int64_t(shift_v * 65536.0)));
-    a.bbextents = (c.tex.width << 16) - 1;
-    a.bbextentt = (c.tex.height << 16) - 1;
+    a.sadjust_16_16 = g.sadjust_16_16, a.tadjust_16_16 = g.tadjust_16_16;
+    a.bbextents = g.bbextents, a.bbextentt = g.bbextentt;
     a.shift = SHIFT;
     a.reserved = 0;
-    // D_CalcGradients: the planes per screen pixel, origin at pixel (0, 0)
-    double x0 = centre_x(setup, 0), y0 = centre_y(setup, 0);
-    a.s_origin = setup.pu.at(x0, y0), a.s_stepu = setup.pu.gx * per_pixel, a.s_stepv = setup.pu.gy * per_pixel;
-    a.t_origin = setup.pv.at(x0, y0), a.t_stepu = setup.pv.gx * per_pixel, a.t_stepv = setup.pv.gy * per_pixel;
-    a.z_origin = setup.q.at(x0, y0), a.z_stepu = setup.q.gx * per_pixel, a.z_stepv = setup.q.gy * per_pixel;
+    a.s_origin = g.s[0], a.s_stepu = g.s[1], a.s_stepv = g.s[2];
+    a.t_origin = g.t[0], a.t_stepu = g.t[1], a.t_stepv = g.t[2];
+    a.z_origin = g.z[0], a.z_stepu = g.z[1], a.z_stepv = g.z[2];
     a.s_stepu_n = a.s_stepu * N, a.t_stepu_n = a.t_stepu * N, a.z_stepu_n = a.z_stepu * N;
-
-    EdgeWalker walker(setup, Axis::Rows, c.target.clip);
-    setup_done(c);
-    Span span;
-    while (walker.next(&span)) {
-        a.dst = c.target.base + span.y * c.target.pitch + span.x;
-        a.count = span.count;
-        a.x = span.x;
-        a.y = span.y;
-        emit(c, &a, 1, uint32_t(span.count));
-    }
+    draw_spans(c, *setup, a);
     return SetupStatus::Ok;
 }
 
@@ -83,16 +91,16 @@ constexpr double UNIT = 1.0 / 65536;                // a 16.16 unit, in texels
 
 // Quake's arithmetic on a polygon (docs/bounds.md, "Quake's spans"), in texels from the chord
 // between the exact values at its segment ends: each end is chop(s/z * z) + sadjust, clamped: the
-// chop within a unit, Quake's own double evaluation within `evaluation` below, and the clamp moving
-// it by no more than the exact value's distance from its range (at most n units, plus how far the
-// vertices' values leave [0, size]); the step (snext - s) >> shift (or / (count - 1) on the last
-// segment) within a unit of the chord's slope, so the value drawn within j units after j steps.
+// chop within a unit, Quake's own evaluation within `evaluation` below, and the clamp moving it by
+// no more than the exact value's distance from its range (at most the low clamp, plus how far the
+// vertices' values leave [0, size]); each step within r.per_step of the chord's slope, so the
+// value drawn within j of them after j steps.
 // NO_BOUND (as `fixed`) where the spread cannot say (Q not positive from the vertices) or s/z * z
 // might not fit 32 bits.
-SegmentArithmetic arithmetic(const BoundContext& c, const PolygonSetup& s, const PolygonSpread& p, const double* shift, int n) {
+SegmentArithmetic arithmetic(const BoundContext& c, const PolygonSetup& s, const PolygonSpread& p, const double* shift, int n, const Rounding& r) {
     SegmentArithmetic a;
     a.wraps = false;
-    a.per_step = UNIT;
+    a.per_step = r.per_step;
     a.fixed = NO_BOUND;
     if (p.corners == 0) {  // nothing of the polygon inside the clip: no pixel to bound
         a.fixed = 0;
@@ -101,15 +109,15 @@ SegmentArithmetic arithmetic(const BoundContext& c, const PolygonSetup& s, const
     if (!(p.q_min > 0)) return a;
     // every term summed into s/z, t/z and 1/z at a pixel of the clip: the plane at pixel (0, 0)
     // (two products, two sums), the rows down and the pixels across (two each), the segments' steps
-    // (one sum each) and the last (two): each result within half an epsilon of the terms' sum; the
-    // pixels across and the steps together reach at most the clip's far side (X counts it twice:
-    // slack)
+    // (one sum each), the last (two) and the inputs' own rounding: each within r.op of the terms'
+    // sum; the pixels across and the steps together reach at most the clip's far side (X counts it
+    // twice: slack)
     const double one = double(SUBPIXEL_ONE);
     const double xs = larger(magnitude(double(c.clip.x0)), magnitude(double(c.clip.x1))), ys = larger(magnitude(double(c.clip.y0)), magnitude(double(c.clip.y1)));
     const double X = magnitude(centre_x(s, 0)) + 2 * xs * one, Y = magnitude(centre_y(s, 0)) + ys * one;
     auto terms = [&](const Plane& q) { return magnitude(q.a0) + magnitude(q.gy) * Y + magnitude(q.gx) * X; };
-    const double operations = 10 + xs / n + 1;
-    const double dq = operations * EPSILON / 2 * terms(s.q) * (1 + 1e-9);
+    const double operations = 10 + xs / n + 1 + r.inputs;
+    const double dq = operations * r.op * terms(s.q) * (1 + 1e-9);
     if (!(dq < p.q_min / 2)) return a;
     const Plane* plane[2] = {&s.pu, &s.pv};
     const int32_t size[2] = {c.tex.width, c.tex.height};
@@ -117,20 +125,21 @@ SegmentArithmetic arithmetic(const BoundContext& c, const PolygonSetup& s, const
     for (int t = 0; t < 2; ++t) {
         const double most = p.t_abs[t] + p.evaluation[t];
         // (P + dP) / (Q - dQ) against P / Q, Q at least q_min and dQ at most half of it; then the
-        // divide and the product, each within half an epsilon
-        const double dp = operations * EPSILON / 2 * terms(*plane[t]) * (1 + 1e-9);
-        const double evaluation = (2 * (dp + most * dq) / p.q_min + 2 * EPSILON * most) * (1 + 1e-9);
+        // divide and the product, each within r.op (counted twice: slack)
+        const double dp = operations * r.op * terms(*plane[t]) * (1 + 1e-9);
+        const double evaluation = (2 * (dp + most * dq) / p.q_min + 4 * r.op * most) * (1 + 1e-9);
         if (!((most + evaluation) / UNIT < 2147483647.0 - 1)) return a;  // chop: 0x80000000 beyond
         const double lo = p.t_min[t] + shift[t] - p.evaluation[t], hi = p.t_max[t] + shift[t] + p.evaluation[t];
         const double outside = larger(0.0, larger(-lo, hi - double(size[t])));
-        worst = larger(worst, (1 + n) * UNIT + evaluation + outside);
+        worst = larger(worst, UNIT + r.low_clamp + evaluation + outside);
     }
     a.fixed = worst;
     return a;
 }
 
-template <int SHIFT>
-ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
+}  // namespace
+
+ErrorBound bound_with(const BoundContext& c, const Vertex* vertices, int count, int n, const Rounding& r) {
     ErrorBound b;
     double shift[2];
     if (!mapper_accepts(c.mapper, c.tex) || takes(vertices, count, c.tex, &shift[0], &shift[1]) != SetupStatus::Ok) return b;
@@ -139,11 +148,20 @@ ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
     BoundContext with = c;
     if (!with.prepared) prepare_setup(vertices, count, &own), with.prepared = &own;
     if (with.prepared->status != SetupStatus::Ok) return b;
-    const SegmentArithmetic a = arithmetic(c, with.prepared->setup, prepared_spread(with.prepared, c.clip), shift, 1 << SHIFT);
-    if (a.fixed < NO_BOUND) return segments_bound(with, vertices, count, 1 << SHIFT, a);
+    const SegmentArithmetic a = arithmetic(c, with.prepared->setup, prepared_spread(with.prepared, c.clip), shift, n, r);
+    if (a.fixed < NO_BOUND) return segments_bound(with, vertices, count, n, a);
     b.draws = b.exact_coverage = true;
     b.footprint = NO_BOUND;
     return b;
+}
+
+namespace {
+
+// d_scan.c's arithmetic: doubles rounding to nearest, the low clamp at n units, floored steps.
+template <int SHIFT>
+ErrorBound bound(const BoundContext& c, const Vertex* vertices, int count) {
+    constexpr int n = 1 << SHIFT;
+    return bound_with(c, vertices, count, n, Rounding{EPSILON / 2, 0, n * UNIT, UNIT});
 }
 
 }  // namespace

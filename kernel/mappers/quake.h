@@ -44,4 +44,41 @@ SetupStatus draw8(const DrawContext& c, const Vertex* vertices, int count);   //
 ErrorBound bound16(const BoundContext& c, const Vertex* vertices, int count);
 ErrorBound bound8(const BoundContext& c, const Vertex* vertices, int count);
 
+// What the Quake drivers settle for a polygon before its spans: the whole-period shifts (sadjust,
+// tadjust) and extents in 16.16, and s/z, t/z, 1/z at pixel (0, 0) and per pixel across and down
+// (D_CalcGradients), each as {origin, stepu, stepv}.
+struct Gradients {
+    int32_t sadjust_16_16, tadjust_16_16, bbextents, bbextentt;
+    double s[3], t[3], z[3];
+};
+// Whether a Quake driver takes the polygon (the texture shift, |u| and |v| within 32000); then its
+// setup (c.setup, or *own set up here) and its gradients.
+SetupStatus prepare(const DrawContext& c, const Vertex* vertices, int count, PolygonSetup* own, const PolygonSetup** setup, Gradients* g);
+
+// Each span of the polygon on our walker to the context's loop: the block's dst, count, x and y set
+// a span at a time, the rest as the driver filled it.
+template <typename Args>
+void draw_spans(const DrawContext& c, const PolygonSetup& setup, Args& a) {
+    EdgeWalker walker(setup, Axis::Rows, c.target.clip);
+    setup_done(c);
+    Span span;
+    while (walker.next(&span)) {
+        a.dst = c.target.base + span.y * c.target.pitch + span.x;
+        a.count = span.count;
+        a.x = span.x;
+        a.y = span.y;
+        emit(c, &a, 1, uint32_t(span.count));
+    }
+}
+
+// A Quake loop's arithmetic, for its bound (docs/bounds.md, "Quake's spans"): in texels but `op`.
+struct Rounding {
+    double op;         // relative error of one x87 result (a sum into s/z, t/z, 1/z, the divide, the product)
+    int inputs;        // roundings of the inputs besides the loop's own (the planes stored as floats)
+    double low_clamp;  // the segment ends' low clamp
+    double per_step;   // how far one step may be from the chord's slope
+};
+// The chords of persp-subdiv-n with that arithmetic (segments_bound).
+ErrorBound bound_with(const BoundContext& c, const Vertex* vertices, int count, int n, const Rounding& r);
+
 }  // namespace raster::quake

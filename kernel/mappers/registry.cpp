@@ -10,6 +10,7 @@
 #include "kernel/mappers/fatmap.h"
 #include "kernel/mappers/hecker.h"
 #include "kernel/mappers/quake.h"
+#include "kernel/mappers/quake_draw16.h"
 #include "kernel/mappers/subdiv.h"
 #include "kernel/mappers/xsharp.h"
 
@@ -167,6 +168,12 @@ const Mapper MAPPERS[] = {
      .guarantee = EXACT_COVERAGE, .needs = NEED_INSIDE, .axes = AXIS_ROWS,
      TWIN_AND_ASM(quake_span_loop), .draw = quake::draw8, .check = check_quake,
      .bound = quake::bound8, .span_proof = SPANS_ASKED},
+    {.name = "quake-d_draw16", .family = "classic", .origin = "id Software, WinQuake d_draw16.s D_DrawSpans16, as shipped (Abrash, Black Book ch. 68 and 70)",
+     .promise = "as quake-subdiv16, with d_draw16.s's own arithmetic: s/z, t/z, 1/z as floats and the x87 at 24-bit precision with chop (Quake's single_cw), "
+         "full segments stepped exactly (delta / 16), the last by a reciprocal table, segment ends clamped to [1/16 texel, size)",
+     .guarantee = EXACT_COVERAGE, .needs = NEED_INSIDE, .axes = AXIS_ROWS,
+     TWIN_AND_ASM(quake_draw16_loop), .draw = quake::draw_d_draw16, .check = check_quake_draw16,
+     .bound = quake::bound_d_draw16, .span_proof = SPANS_ASKED},
     {.name = "auto", .family = "ours", .origin = "the scene's budget: the cheapest mapper proven to meet it, polygon by polygon",
      .promise = "each polygon by the cheapest of the bounded mappers (the cost model: make bench) whose error bound meets the scene's budget "
          "(without a budget line: footprint error 1, exact coverage); exact coverage unless the budget allows any",

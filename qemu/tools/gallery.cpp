@@ -34,7 +34,7 @@ const Colour& error_colour(double footprint_error) {
 }
 
 Colour mapper_colour(const raster::Mapper& m) {
-    // Tableau's twenty colours, told apart easily, then twelve more saturated ones: one for each row
+    // Tableau's twenty colours, told apart easily, then twenty more saturated ones: one for each row
     // the registry may have (MAPPER_LIMIT; gallery_test checks they differ), none black
     static const Colour COLOURS[] = {{31, 119, 180},  {255, 127, 14},  {44, 160, 44},   {214, 39, 40},   {148, 103, 189},
                                      {140, 86, 75},   {227, 119, 194}, {127, 127, 127}, {188, 189, 34},  {23, 190, 207},
@@ -42,7 +42,8 @@ Colour mapper_colour(const raster::Mapper& m) {
                                      {196, 156, 148}, {247, 182, 210}, {199, 199, 199}, {219, 219, 141}, {158, 218, 229},
                                      {0, 0, 160},     {160, 0, 0},     {0, 120, 0},     {255, 255, 0},   {0, 255, 255},
                                      {255, 0, 255},   {255, 255, 255}, {80, 80, 80},    {128, 128, 0},   {0, 128, 128},
-                                     {128, 0, 128},   {255, 215, 160}};
+                                     {128, 0, 128},   {255, 215, 160}, {64, 0, 128},    {0, 64, 128},    {128, 64, 0},
+                                     {0, 200, 100},   {200, 0, 100},   {100, 200, 0},   {64, 64, 200},   {200, 64, 64}};
     static_assert(sizeof COLOURS / sizeof COLOURS[0] >= raster::MAPPER_LIMIT, "a colour for every registry row");
     return COLOURS[size_t(&m - raster::MAPPERS) % (sizeof COLOURS / sizeof COLOURS[0])];
 }

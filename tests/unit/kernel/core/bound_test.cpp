@@ -216,7 +216,7 @@ TEST(Bounds, QuakeTakesWholePeriodShiftsBeyondSixteenBits) {
     TextureCopies copies(&tex);
     const std::vector<Vertex> p = {vertex_raw(20 * 256, 20 * 256, 1, -32000, 0), vertex_raw(300 * 256, 20 * 256, 1, -31970, 0),
                                    vertex_raw(20 * 256, 200 * 256, 1, -32000, 60)};
-    for (const char* name : {"quake-subdiv16", "quake-subdiv8"}) {
+    for (const char* name : {"quake-subdiv16", "quake-subdiv8", "quake-d_draw16"}) {
         const Mapper& m = *find_mapper(name);
         PolygonMeter meter(m, Axis::Rows);
         Tightness tight;

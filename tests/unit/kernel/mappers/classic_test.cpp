@@ -260,7 +260,7 @@ using namespace rastertest;
 TEST(Quake, SegmentsAreExactWhereDepthIsConstantAlongRows) {
     // a floor: along each row depth is constant, so affine steps between exact points are exact
     LoadedScene s = load_scene_file("scenes/screen/floor-tiles.scene");
-    for (const char* name : {"quake-subdiv16", "quake-subdiv8"}) {
+    for (const char* name : {"quake-subdiv16", "quake-subdiv8", "quake-d_draw16"}) {
         AccuracyMetrics m = accuracy(s, name);
         EXPECT_EQ(m.gaps + m.overdraw + m.overlaps, 0u) << name << ": our walker's coverage";
         EXPECT_LE(m.max_texel_error, 1u) << name;
