@@ -9,6 +9,8 @@
 ; Pixels: esi texel pointer, edi destination, ebx s fraction (16.16 << 16, or 12 bits more on a full
 ; segment), edx t fraction, ebp s fraction step, [L_TSTEP] t fraction step, ecx 0 / -1 (t carried),
 ; al texel. Quake's globals are frame slots here.
+;
+; precision: 24
 
 bits 32
 

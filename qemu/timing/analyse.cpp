@@ -140,8 +140,9 @@ constexpr size_t WARM = 8, SHARED = 4096;
 double pentium(const Body& b, Mode mode, int precision, const BranchPolicy& branch, unsigned all, int data_branches, std::vector<Line>* lines) {
     std::vector<unsigned> paths;
     switch (branch.kind) {
-    case BranchPolicy::Taken: paths.assign(WARM + 2, all); return run_p5(b, mode, precision, paths, WARM, WARM + 1, lines);
-    case BranchPolicy::NotTaken: paths.assign(WARM + 2, 0); return run_p5(b, mode, precision, paths, WARM, WARM + 1, lines);
+    case BranchPolicy::Taken:
+    case BranchPolicy::NotTaken:
+    case BranchPolicy::Pattern: paths.assign(WARM + 2, branch.path(data_branches)); return run_p5(b, mode, precision, paths, WARM, WARM + 1, lines);
     case BranchPolicy::Alternate:
         for (size_t k = 0; k < WARM + 3; ++k) paths.push_back(k % 2 ? 0 : all);
         return run_p5(b, mode, precision, paths, WARM, WARM + 2, lines);
@@ -191,8 +192,24 @@ double once(const Body& b, Cpu cpu, Mode mode, int precision, unsigned path, std
 
 }  // namespace
 
+unsigned BranchPolicy::path(int count) const {
+    const unsigned all = (1u << count) - 1;
+    if (kind == Taken) return all;
+    if (kind != Pattern) return 0;
+    if (int(pattern.size()) != count)
+        throw std::runtime_error("the branch pattern '" + pattern + "' has " + std::to_string(pattern.size()) + " letters for " + std::to_string(count) +
+                                 " data-dependent branches");
+    unsigned p = 0;
+    for (int k = 0; k < count; ++k) {
+        if (pattern[size_t(k)] != 't' && pattern[size_t(k)] != 'n') throw std::runtime_error("a branch pattern is of t and n: '" + pattern + "'");
+        if (pattern[size_t(k)] == 't') p |= 1u << k;
+    }
+    return p;
+}
+
 std::string BranchPolicy::name() const {
     switch (kind) {
+    case Pattern: return pattern;
     case Taken: return "taken";
     case NotTaken: return "not-taken";
     case Alternate: return "alternate";
@@ -215,8 +232,9 @@ Report analyse(const std::vector<Insn>& insns, Cpu cpu, Mode mode, const BranchP
     r.lines.assign(insns.size(), Line{});
     for (size_t i = 0; i < insns.size(); ++i) r.lines[i].text = insns[i].text;
     if (options.once) {
-        if (branch.kind != BranchPolicy::Taken && branch.kind != BranchPolicy::NotTaken) throw std::runtime_error("code run once takes its branches all taken or none");
-        r.cycles_per_iteration = once(b, cpu, mode, options.precision, branch.kind == BranchPolicy::Taken ? all : 0, &r.lines);
+        if (branch.kind == BranchPolicy::Alternate || branch.kind == BranchPolicy::Share)
+            throw std::runtime_error("code run once takes each branch one way: taken, not-taken or a pattern");
+        r.cycles_per_iteration = once(b, cpu, mode, options.precision, branch.path(r.data_branches), &r.lines);
         return r;
     }
     if (cpu == Cpu::Pentium) {
@@ -224,8 +242,13 @@ Report analyse(const std::vector<Insn>& insns, Cpu cpu, Mode mode, const BranchP
         return r;
     }
     switch (branch.kind) {
-    case BranchPolicy::Taken: r.cycles_per_iteration = double(measure(b, mode, all, all, &r.lines)); break;
-    case BranchPolicy::NotTaken: r.cycles_per_iteration = double(measure(b, mode, 0, 0, &r.lines)); break;
+    case BranchPolicy::Taken:
+    case BranchPolicy::NotTaken:
+    case BranchPolicy::Pattern: {
+        const unsigned p = branch.path(r.data_branches);
+        r.cycles_per_iteration = double(measure(b, mode, p, p, &r.lines));
+        break;
+    }
     case BranchPolicy::Alternate:
         r.cycles_per_iteration = (double(measure(b, mode, 0, all, &r.lines)) + double(measure(b, mode, all, 0, nullptr))) / 2;
         break;

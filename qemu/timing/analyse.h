@@ -15,11 +15,16 @@ enum class Cpu { I486, Pentium };
 
 // How the body's data-dependent branches go (a forward conditional jump inside the body; the jump
 // back to the body's top, where there is one, is the loop's own and always taken): all taken, none,
-// taken and not taken by turns, or each taken with probability `share` (the expected cycles).
+// taken and not taken by turns, each taken with probability `share` (the expected cycles), or each
+// as `pattern` says, one letter a branch in the body's order ('t' taken, 'n' not).
 struct BranchPolicy {
-    enum Kind { Taken, NotTaken, Alternate, Share } kind = Taken;
+    enum Kind { Taken, NotTaken, Alternate, Share, Pattern } kind = Taken;
     double share = 1;
+    std::string pattern;
     std::string name() const;
+    // Taken, NotTaken, Pattern: the one path every iteration takes (bit k: branch k taken) of
+    // `count` branches; throws for a pattern of another length
+    unsigned path(int count) const;
 };
 
 // One instruction of the diagram: where it issued on the path shown (cycle -1: not run on it).

@@ -21,7 +21,8 @@ const char* USAGE =
     "  --mapper: a registered mapper's NASM inner loop, from the kernel's objects (DIR: build/kernel/asm), run\n"
     "    from the repository's root; --object/--function: the first loop of SYMBOL in an object (32-bit)\n"
     "  prints each instruction's cycle (and pipe, on the Pentium), clocks and stalls, then 'cycles per iteration: X'\n"
-    "  --branch: how its data-dependent branches go (P: each taken with probability P, 0..1; default taken)\n"
+    "  --branch: how its data-dependent branches go (P: each taken with probability P, 0..1; a pattern such as\n"
+    "    tnt: each as its letter says, in the body's order; default taken)\n"
     "  --pixels: the pixels an iteration draws (default: the listing's '; pixels:' line, or 1)\n"
     "  --precision: the x87's precision control, which the Pentium's FDIV time follows (default: the listing's\n"
     "    '; precision:' line; else 53 for the kernel's objects, as it boots, and 64 for a listing, as FNINIT leaves it)\n"
@@ -33,9 +34,10 @@ timing::BranchPolicy branch_policy(const std::string& s) {
     if (s.empty() || s == "taken") return b;
     if (s == "not-taken") return b.kind = timing::BranchPolicy::NotTaken, b;
     if (s == "alternate") return b.kind = timing::BranchPolicy::Alternate, b;
+    if (!s.empty() && s.find_first_not_of("tn") == std::string::npos) return b.kind = timing::BranchPolicy::Pattern, b.pattern = s, b;
     char* end = nullptr;
     const double p = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end || !(p >= 0 && p <= 1)) throw UsageError("--branch takes taken, not-taken, alternate or a share 0..1");
+    if (end == s.c_str() || *end || !(p >= 0 && p <= 1)) throw UsageError("--branch takes taken, not-taken, alternate, a share 0..1 or a pattern of t and n");
     b.kind = timing::BranchPolicy::Share, b.share = p;
     return b;
 }

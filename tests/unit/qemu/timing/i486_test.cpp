@@ -181,7 +181,7 @@ TEST_P(Calibration486, TheModelGivesThePublishedFigure) {
     EXPECT_EQ(r.cycles_per_iteration, published + p.residual) << p.file << " (" << p.branch.name() << "): " << p.why << "\n" << diagram(r, 1);
 }
 
-BranchPolicy policy(BranchPolicy::Kind k, double share = 1) { return BranchPolicy{k, share}; }
+BranchPolicy policy(BranchPolicy::Kind k, double share = 1) { return BranchPolicy{k, share, {}}; }
 
 INSTANTIATE_TEST_SUITE_P(
     BlackBookChapter58, Calibration486,
