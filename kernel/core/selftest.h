@@ -134,6 +134,22 @@ const uint8_t* check_aligned_texture(const CheckBuffers& buf);
 // to the extremes, now and then with 1/w zero everywhere (infinities and NaN).
 void random_planes(Random& r, double* q, double* pu, double* pv);
 
+// Random s/z, t/z and 1/z for the Quake loops, origins and steps a pixel across and down (in the
+// argument block's own type, double or float): from random_planes, the origin moved along the row.
+template <typename Args>
+void random_span_planes(Random& r, Args& a) {
+    double q[3], pu[3], pv[3];
+    random_planes(r, q, pu, pv);
+    using T = decltype(a.s_origin);
+    auto per_pixel = [&](const double* p, T* origin, T* stepu, T* stepv) {
+        *stepu = T(p[1] * 256), *stepv = T(p[2] * 256);
+        *origin = T(p[0] + double(r.range(-100000, 100000)) * 1e-3 * (p[1] * 256));
+    };
+    per_pixel(pu, &a.s_origin, &a.s_stepu, &a.s_stepv);
+    per_pixel(pv, &a.t_origin, &a.t_stepu, &a.t_stepv);
+    per_pixel(q, &a.z_origin, &a.z_stepu, &a.z_stepv);
+}
+
 // Random 16.16 coordinates and steps for the 8:16 loops: anything at all a quarter of the time,
 // else steps up to 4 texels a pixel.
 template <typename Args>

@@ -255,15 +255,7 @@ LoopCheck check_quake(const Mapper& m, LoopFn other, uint32_t seed, uint32_t cas
         a.x = r.range(0, 319);
         a.y = r.range(0, 239);
         // planes from a real triangle most of the time (then s/z * z is u in 16.16), else raw values
-        double q[3], pu[3], pv[3];
-        random_planes(r, q, pu, pv);
-        auto per_pixel = [&](const double* p, double* origin, double* stepu, double* stepv) {
-            *stepu = p[1] * 256, *stepv = p[2] * 256;
-            *origin = p[0] + double(r.range(-100000, 100000)) * 1e-3 * (*stepu);
-        };
-        per_pixel(pu, &a.s_origin, &a.s_stepu, &a.s_stepv);
-        per_pixel(pv, &a.t_origin, &a.t_stepu, &a.t_stepv);
-        per_pixel(q, &a.z_origin, &a.z_stepu, &a.z_stepv);
+        random_span_planes(r, a);
         double n = double(1 << a.shift);
         a.s_stepu_n = a.s_stepu * n, a.t_stepu_n = a.t_stepu * n, a.z_stepu_n = a.z_stepu * n;
         return place_span(buf, a, 1);

@@ -220,15 +220,7 @@ LoopCheck check_quake_draw16(const Mapper& m, LoopFn other, uint32_t seed, uint3
         a.x = r.range(0, 319);
         a.y = r.range(0, 239);
         // planes from a real triangle most of the time (then s/z * z is u in 16.16), else raw values
-        double q[3], pu[3], pv[3];
-        random_planes(r, q, pu, pv);
-        auto per_pixel = [&](const double* p, float* origin, float* stepu, float* stepv) {
-            *stepu = float(p[1] * 256), *stepv = float(p[2] * 256);
-            *origin = float(p[0] + double(r.range(-100000, 100000)) * 1e-3 * (p[1] * 256));
-        };
-        per_pixel(pu, &a.s_origin, &a.s_stepu, &a.s_stepv);
-        per_pixel(pv, &a.t_origin, &a.t_stepu, &a.t_stepv);
-        per_pixel(q, &a.z_origin, &a.z_stepu, &a.z_stepv);
+        random_span_planes(r, a);
         if (r.below(16) == 0) {  // steps far below the values they add to: sums beyond 28 exponents apart
             a.s_stepu *= 0x1p-32f, a.t_stepu *= -0x1p-32f, a.z_stepu *= 0x1p-30f;
         }
