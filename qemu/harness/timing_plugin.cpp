@@ -25,7 +25,9 @@ std::string timing_plugin_spec(const TimingPlugin& p, const std::string& kernel_
     }
     pclose(nm);
     if (marks.empty()) throw HarnessError(kernel_elf + ": no symbol modexlab_cycle_marks (the timing plugin's marks)");
-    return plugin + ",cpu=" + p.cpu + ",bus=" + p.bus + ",precision=" + std::to_string(p.precision) + ",marks=" + marks + ",out=" + p.out;
+    std::string spec = plugin + ",cpu=" + p.cpu + ",precision=" + std::to_string(p.precision) + ",marks=" + marks + ",out=" + p.out;
+    for (const std::string& b : p.buses) spec += ",bus=" + b;
+    return spec;
 }
 
 std::vector<json> timing_plugin_rows(const std::string& out) {

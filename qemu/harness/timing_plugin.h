@@ -11,7 +11,7 @@ namespace harness {
 
 struct TimingPlugin {
     std::string cpu = "pentium";  // 486 or pentium
-    std::string bus = "zero-wait";
+    std::vector<std::string> buses = {"zero-wait"};  // bus models, each counted in the one run
     int precision = 53;
     std::string out;              // the file it writes its rows to
 };
@@ -20,7 +20,7 @@ struct TimingPlugin {
 // symbols (nm). Throws HarnessError where either is missing.
 std::string timing_plugin_spec(const TimingPlugin& p, const std::string& kernel_elf);
 
-// Its rows so far (a bench row's figures each), the last line too where QEMU has exited.
+// Its rows so far: a bench row's figures on each bus, in the order the rows ended.
 std::vector<json> timing_plugin_rows(const std::string& out);
 
 }  // namespace harness

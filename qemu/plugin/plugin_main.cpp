@@ -5,9 +5,10 @@
 //   -plugin build/host/libmodexlab-timing.so,cpu=486|pentium,bus=zero-wait|isa|vlb,precision=53,
 //           marks=ADDRESS,out=FILE
 //
-// marks: the address of the kernel's modexlab_cycle_marks (its symbol), where the bench probe
-// marks its laps, the frames and the rows by the byte it writes. Each bench row's figures go to
-// FILE as a JSON line when the row ends.
+// bus: a bus model; given again, more than one, all counted in the one run. marks: the address of
+// the kernel's modexlab_cycle_marks (its symbol), where the bench probe marks its laps, the frames
+// and the rows by the byte it writes. Each bench row's figures go to FILE when the row ends, as a
+// JSON line a bus.
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -40,7 +41,7 @@ struct Block {
 struct Plugin {
     std::unique_ptr<Machine> machine;
     timing::Cpu cpu = timing::Cpu::Pentium;
-    std::string cpu_name, bus_name, out_path;
+    std::string cpu_name, out_path;
     int precision = 53;
     uint64_t marks = 0;
     std::vector<std::unique_ptr<Block>> blocks;  // every block translated (QEMU may translate one again)
@@ -53,37 +54,35 @@ struct Plugin {
 Plugin g;
 
 void write_rows() {
-    const std::vector<Machine::Row>& rows = g.machine->rows();
-    for (; g.rows_written < rows.size(); ++g.rows_written) {
-        const Machine::Row& r = rows[g.rows_written];
-        nlohmann::json j = {{"row", g.rows_written},
-                            {"model", "modexlab timing " + g.cpu_name},
-                            {"cpu", g.cpu_name},
-                            {"bus", g.bus_name},
-                            {"precision", g.precision},
-                            {"frames", r.frames},
-                            {"frame_cycles", r.frame_cycles},
-                            {"setup", r.net(Machine::Setup)},
-                            {"walk", r.net(Machine::Walk)},
-                            {"inner", r.net(Machine::Inner)},
-                            {"choose", r.net(Machine::Choose)},
-                            {"lap_cost", r.lap_cost},
-                            {"laps", r.laps},
-                            {"phase_instructions", r.phase_instructions},
-                            {"instructions", r.instructions},
-                            {"unmodelled", r.unmodelled},
-                            {"display_writes", r.display_writes},
-                            {"outs", r.outs},
-                            {"bus_stall", r.bus_stall},
-                            {"unmodelled_by_mnemonic", r.unknown}};
-        std::fprintf(g.out, "%s\n", j.dump().c_str());
+    for (const size_t rows = g.machine->rows(0).size(); g.rows_written < rows; ++g.rows_written) {
+        for (size_t k = 0; k < g.machine->buses(); ++k) {
+            const Machine::Row& r = g.machine->rows(k)[g.rows_written];
+            nlohmann::json j = {{"row", g.rows_written},
+                                {"model", "modexlab timing " + g.cpu_name},
+                                {"cpu", g.cpu_name},
+                                {"bus", g.machine->bus(k).name},
+                                {"precision", g.precision},
+                                {"frames", r.frames},
+                                {"frame_cycles", r.frame_cycles},
+                                {"setup", r.net(Machine::Setup)},
+                                {"walk", r.net(Machine::Walk)},
+                                {"inner", r.net(Machine::Inner)},
+                                {"choose", r.net(Machine::Choose)},
+                                {"lap_cost", r.lap_cost},
+                                {"laps", r.laps},
+                                {"phase_instructions", r.phase_instructions},
+                                {"instructions", r.instructions},
+                                {"unmodelled", r.unmodelled},
+                                {"display_writes", r.display_writes},
+                                {"outs", r.outs},
+                                {"bus_stall", r.bus_stall},
+                                {"unmodelled_by_mnemonic", r.unknown}};
+            std::fprintf(g.out, "%s\n", j.dump().c_str());
+        }
     }
     std::fflush(g.out);
 }
 
-// The block that ran, up to where the next one starts: its end, or an instruction inside it
-// where QEMU cut it short (an I/O instruction under icount ends its block: the block runs again
-// from there, translated anew); its last branch taken where the next starts elsewhere.
 void feed(const Block& b, uint64_t next) {
     size_t n = b.insns.size();
     const timing::Insn& last = b.insns.back();
@@ -102,9 +101,9 @@ void feed(const Block& b, uint64_t next) {
 void on_block(unsigned int, void* userdata) {
     const Block* b = static_cast<const Block*>(userdata);
     if (g.running) {
-        const size_t rows = g.machine->rows().size();
+        const size_t rows = g.machine->rows(0).size();
         feed(*g.running, b->address);
-        if (g.machine->rows().size() != rows) write_rows();
+        if (g.machine->rows(0).size() != rows) write_rows();
     }
     g.running = b;
     std::fill_n(g.effects.begin(), std::min(g.effects.size(), b->insns.size()), Effects{});
@@ -164,11 +163,15 @@ bool argument(const std::string& a, const std::string& key, std::string* value) 
 }  // namespace
 
 int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t*, int argc, char** argv) {
-    std::string cpu = "pentium", bus = "zero-wait", precision = "53", marks, out;
+    std::string cpu = "pentium", precision = "53", marks, out, bus;
+    std::vector<std::string> buses;
     for (int k = 0; k < argc; ++k) {
         const std::string a = argv[k];
-        if (!argument(a, "cpu", &cpu) && !argument(a, "bus", &bus) && !argument(a, "precision", &precision) && !argument(a, "marks", &marks) &&
-            !argument(a, "out", &out)) {
+        if (argument(a, "bus", &bus)) {
+            buses.push_back(bus);
+            continue;
+        }
+        if (!argument(a, "cpu", &cpu) && !argument(a, "precision", &precision) && !argument(a, "marks", &marks) && !argument(a, "out", &out)) {
             qemu_plugin_outs(("modexlab timing plugin: unknown argument '" + a + "' (cpu, bus, precision, marks, out)\n").c_str());
             return 1;
         }
@@ -178,10 +181,13 @@ int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t*, int argc, char*
         return 1;
     }
     g.cpu = cpu == "486" ? timing::Cpu::I486 : timing::Cpu::Pentium;
-    g.cpu_name = cpu, g.bus_name = bus, g.precision = std::atoi(precision.c_str());
+    g.cpu_name = cpu, g.precision = std::atoi(precision.c_str());
     g.marks = std::strtoull(marks.c_str(), nullptr, 0);
+    if (buses.empty()) buses.push_back("zero-wait");
     try {
-        g.machine = std::make_unique<Machine>(g.cpu, g.precision, timing::Bus::preset(bus, g.cpu));
+        std::vector<timing::Bus> models;
+        for (const std::string& b : buses) models.push_back(timing::Bus::preset(b, g.cpu));
+        g.machine = std::make_unique<Machine>(g.cpu, g.precision, models);
     } catch (const std::exception& e) {
         qemu_plugin_outs((std::string("modexlab timing plugin: ") + e.what() + "\n").c_str());
         return 1;

@@ -51,19 +51,21 @@ bool Machine::modelled(const Insn& in, Cpu cpu) {
     }
 }
 
-Machine::Machine(Cpu cpu, int precision, const Bus& bus) : cpu_(cpu), bus_(bus), i486_(Mode::Protected32), p5_(precision, Mode::Protected32) {
+Machine::Machine(Cpu cpu, int precision, const std::vector<Bus>& buses)
+    : cpu_(cpu), i486_(Mode::Protected32), p5_(precision, Mode::Protected32) {
     i486_.explain(false), p5_.explain(false);
     stand_in_.mnemonic = stand_in_.text = UNMODELLED;
+    for (const Bus& b : buses) tracks_.push_back(Track{b, {}, 0, 0, 0, -1, 0, -1, 0, false, {}, {}});
 }
 
-long Machine::cycles() const { return (cpu_ == Cpu::I486 ? i486_.now() : p5_.now()) + delayed_; }
+long Machine::cycles(size_t k) const { return model_cycles() + tracks_[k].delayed; }
 
 void Machine::feed(const Insn* in, bool taken, Effects fx, bool is_modelled) {
     const Insn* original = in;
     if (!is_modelled) in = &stand_in_;
     if (cpu_ == Cpu::I486) {
         const Step s = i486_.run(*in, taken);
-        issued(Pending{in, taken, fx, original}, s.start + delayed_);
+        issued(Pending{in, taken, fx, original}, s.start);
         return;
     }
     window_[held_++] = Pending{in, taken, fx, original};
@@ -75,7 +77,7 @@ void Machine::issue_pentium() {
     Executed w[3];
     for (int k = 0; k < held_; ++k) w[k] = Executed{window_[size_t(k)].in, window_[size_t(k)].taken};
     const int n = p5_.issue(w, size_t(held_), issues_.data());
-    for (int k = 0; k < n; ++k) issued(window_[size_t(k)], issues_[size_t(k)].cycle + delayed_);
+    for (int k = 0; k < n; ++k) issued(window_[size_t(k)], issues_[size_t(k)].cycle);
     for (int k = n; k < held_; ++k) window_[size_t(k - n)] = window_[size_t(k)];
     held_ -= n;
 }
@@ -84,77 +86,76 @@ void Machine::flush() {
     while (held_ > 0) issue_pentium();
 }
 
-// An instruction issued in `cycle` (the bus's stalls so far included): its bus work, then its mark.
+// An instruction issued in the model's `cycle`: on each bus, its bus work, then its mark.
 void Machine::issued(const Pending& p, long cycle) {
-    ++since_lap_;
-    if (in_frame_) {
-        ++row_.instructions;
-        if (p.in == &stand_in_) ++row_.unmodelled, ++row_.unknown[p.original->mnemonic];
+    const bool io = p.fx.display_write || p.in->kind == Kind::Out || p.in->kind == Kind::In;
+    for (Track& t : tracks_) {
+        ++t.since_lap;
+        if (t.in_frame) {
+            ++t.row.instructions;
+            if (p.in == &stand_in_) ++t.row.unmodelled, ++t.row.unknown[p.original->mnemonic];
+        }
+        long delay = 0;
+        if (io) delay = bus_wait(t, p, model_cycles() + t.delayed);
+        if (delay) {
+            t.delayed += delay;
+            if (t.in_frame) t.row.bus_stall += uint64_t(delay);
+        }
+        if (p.fx.mark >= 0) mark(t, p.fx.mark, cycle + t.delayed);
     }
-    long delay = 0;
-    if (p.fx.display_write || p.in->kind == Kind::Out || p.in->kind == Kind::In) bus(p, &delay);
-    if (delay) {
-        delayed_ += delay;
-        if (in_frame_) row_.bus_stall += uint64_t(delay);
-    }
-    if (p.fx.mark >= 0) mark(p.fx.mark, cycle + delay);
 }
 
 // The write buffer and the bus: a write to display memory is posted, and the CPU waits only when
 // the buffer is full; an OUT or an IN waits for the posted writes, then for its own bus cycle.
-void Machine::bus(const Pending& p, long* delay) {
-    const long now = cycles();
-    while (!buffer_.empty() && buffer_.front() <= now) buffer_.pop_front();
+// Returns the cycles the CPU waits, from `now`.
+long Machine::bus_wait(Track& t, const Pending& p, long now) const {
+    while (!t.buffer.empty() && t.buffer.front() <= now) t.buffer.pop_front();
     if (p.in->kind == Kind::Out || p.in->kind == Kind::In) {
-        if (in_frame_) ++row_.outs;
-        const long free = std::max(now, bus_free_);
-        const long done = free + bus_.out_cycles();
-        buffer_.clear();
-        bus_free_ = done;
-        *delay = done - now;
-        return;
+        if (t.in_frame) ++t.row.outs;
+        const long done = std::max(now, t.bus_free) + t.bus.out_cycles();
+        t.buffer.clear();
+        t.bus_free = done;
+        return done - now;
     }
-    if (in_frame_) ++row_.display_writes;
+    if (t.in_frame) ++t.row.display_writes;
     long at = now;
-    if (int(buffer_.size()) >= bus_.write_buffer && bus_.write_buffer > 0) {
-        at = buffer_.front();
-        buffer_.pop_front();
+    if (int(t.buffer.size()) >= t.bus.write_buffer && t.bus.write_buffer > 0) {
+        at = t.buffer.front();
+        t.buffer.pop_front();
     }
-    const long start = std::max(at, bus_free_);
-    bus_free_ = start + bus_.write_cycles(p.fx.display_write);
-    buffer_.push_back(bus_free_);
-    *delay = at - now;
+    t.bus_free = std::max(at, t.bus_free) + t.bus.write_cycles(p.fx.display_write);
+    t.buffer.push_back(t.bus_free);
+    return at - now;
 }
 
-void Machine::mark(int8_t m, long cycle) {
+void Machine::mark(Track& t, int8_t m, long cycle) {
     switch (m) {
-    case ProbeStart: lap_from_ = cycle, since_lap_ = 0; break;
-    case CalibrationStart: calibration_from_ = cycle, lap_cost_ = -1; break;
+    case ProbeStart: t.lap_from = cycle, t.since_lap = 0; break;
+    case CalibrationStart: t.calibration_from = cycle, t.lap_cost = -1; break;
     case CalibrationLap:
         // the least interval between back-to-back laps, as Probe::calibrate takes it
-        if (lap_cost_ < 0 || cycle - calibration_from_ < lap_cost_) lap_cost_ = cycle - calibration_from_;
-        calibration_from_ = cycle;
+        if (t.lap_cost < 0 || cycle - t.calibration_from < t.lap_cost) t.lap_cost = cycle - t.calibration_from;
+        t.calibration_from = cycle;
         break;
     case FrameStart:
-        frame_from_ = cycle, in_frame_ = true;
-        lap_from_ = cycle;
+        t.frame_from = cycle, t.in_frame = true;
+        t.lap_from = cycle;
         break;
     case FrameEnd:
-        if (in_frame_) row_.frame_cycles += uint64_t(cycle - frame_from_), ++row_.frames;
-        in_frame_ = false;
+        if (t.in_frame) t.row.frame_cycles += uint64_t(cycle - t.frame_from), ++t.row.frames;
+        t.in_frame = false;
         break;
     case RowEnd:
-        row_.lap_cost = uint64_t(std::max<long>(0, lap_cost_));
-        rows_.push_back(row_);
-        row_ = Row{};
+        t.row.lap_cost = uint64_t(std::max<long>(0, t.lap_cost));
+        t.rows.push_back(t.row);
+        t.row = Row{};
         break;
     default:
         if (m >= 0 && m < PHASES) {
-            row_.phase_cycles[m] += uint64_t(cycle - lap_from_);
-            row_.phase_instructions[m] += since_lap_;
-            ++row_.laps[m];
-            since_lap_ = 0;
-            lap_from_ = cycle;
+            t.row.phase_cycles[m] += uint64_t(cycle - t.lap_from);
+            t.row.phase_instructions[m] += t.since_lap;
+            ++t.row.laps[m];
+            t.lap_from = cycle, t.since_lap = 0;
         }
     }
 }

@@ -69,7 +69,10 @@ public:
         }
     };
 
-    Machine(Cpu cpu, int precision, const Bus& bus);
+    // One CPU model, and a bus model for each of `buses`: the buses' stalls leave the CPU model as
+    // it is, so one run gives each bus its own cycles and rows.
+    Machine(Cpu cpu, int precision, const std::vector<Bus>& buses);
+    Machine(Cpu cpu, int precision, const Bus& bus) : Machine(cpu, precision, std::vector<Bus>{bus}) {}
 
     // The next instruction as it ran (`taken`: it jumped to its target), with its effects.
     // `modelled` false: the models have no timing for it; it runs as a one-cycle instruction and
@@ -78,8 +81,11 @@ public:
     // The instructions fed so far, issued (the Pentium holds two back to pair them).
     void flush();
 
-    long cycles() const;
-    const std::vector<Row>& rows() const { return rows_; }
+    // the cycles so far, and the rows, with bus `k`'s stalls
+    long cycles(size_t k = 0) const;
+    const std::vector<Row>& rows(size_t k = 0) const { return tracks_[k].rows; }
+    const Bus& bus(size_t k) const { return tracks_[k].bus; }
+    size_t buses() const { return tracks_.size(); }
 
     // Whether a model has a timing for `in` (what feed()'s `modelled` says).
     static bool modelled(const Insn& in, Cpu cpu);
@@ -91,28 +97,34 @@ private:
         Effects fx;
         const Insn* original = nullptr;  // the instruction where `in` is the stand-in
     };
+    // A bus and what it counts: the posted writes, its stalls so far (added to the CPU model's
+    // cycles), the marks' state, the rows.
+    struct Track {
+        Bus bus;
+        std::deque<long> buffer;  // the cycles the posted writes reach the display in
+        long bus_free = 0;
+        long delayed = 0;
+        long lap_from = 0, frame_from = -1, calibration_from = 0;
+        long lap_cost = -1;
+        uint64_t since_lap = 0;   // instructions since the last lap or probe start
+        bool in_frame = false;
+        Row row;
+        std::vector<Row> rows;
+    };
     void issue_pentium();
     void issued(const Pending& p, long cycle);
-    void bus(const Pending& p, long* delay);
-    void mark(int8_t m, long cycle);
+    long bus_wait(Track& t, const Pending& p, long now) const;
+    void mark(Track& t, int8_t m, long cycle);
+    long model_cycles() const { return cpu_ == Cpu::I486 ? i486_.now() : p5_.now(); }
 
     Cpu cpu_;
-    Bus bus_;
     I486 i486_;
     P5 p5_;
     std::array<Pending, 3> window_{};  // the Pentium's instructions held back to pair (`held_` of them)
     int held_ = 0;
     std::array<P5Issue, 2> issues_;     // (kept: the Pentium's issues of the pair in hand)
     Insn stand_in_;                     // an unmodelled instruction, as the models run it
-    std::deque<long> buffer_;           // the cycles the posted writes reach the display in
-    long bus_free_ = 0;
-    long delayed_ = 0;                  // the bus's stalls so far, added to the model's cycles
-    long lap_from_ = 0, frame_from_ = -1, calibration_from_ = 0;
-    long lap_cost_ = -1;
-    uint64_t since_lap_ = 0;            // instructions since the last lap or probe start
-    bool in_frame_ = false;
-    Row row_;
-    std::vector<Row> rows_;
+    std::vector<Track> tracks_;
 };
 
 }  // namespace timing

@@ -103,6 +103,20 @@ TEST(TimingMachine, TheBusPostsWritesAndStallsWhenItsBufferIsFull) {
     EXPECT_THROW(Bus::preset("pci", Cpu::I486), std::runtime_error);
 }
 
+// Buses side by side in one run: each its own stalls, the CPU model's cycles shared.
+TEST(TimingMachine, CountsEachBusOfOneRun) {
+    const std::vector<Insn> store = code({0x89, 0x07});  // mov [edi],eax
+    Machine m(Cpu::Pentium, 53, std::vector<Bus>{Bus::preset("zero-wait", Cpu::Pentium), Bus::preset("isa", Cpu::Pentium)});
+    for (int k = 0; k < 20; ++k) m.feed(&store[0], false, Effects{4, -1}, true);
+    m.flush();
+    ASSERT_EQ(m.buses(), 2u);
+    EXPECT_EQ(m.bus(1).name, "isa");
+    EXPECT_EQ(m.cycles(0), 20) << "paired, each pair a bank conflict: a store a cycle";
+    // ISA at 90 MHz: 65 cycles a dword; two posted: the twentieth waits until 18 have left the bus
+    EXPECT_EQ(Bus::preset("isa", Cpu::Pentium).write_cycles(4), 65);
+    EXPECT_GE(m.cycles(1), 18 * 65);
+}
+
 TEST(TimingMachine, AnInstructionWithoutATimingRunsAsACountedStandIn) {
     const std::vector<Insn> in = code({0x0F, 0xA2, 0x90});  // cpuid; nop
     EXPECT_FALSE(Machine::modelled(in[0], Cpu::Pentium));
