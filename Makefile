@@ -450,13 +450,16 @@ run:
 # when the run is full, the cost model auto chooses by (kernel/mappers/costs.cpp), the errors the
 # on-screen bench shows (kernel/mappers/errors.cpp), and the docs' figures (docs/data/trade.csv,
 # the generated tables of README.md and docs/results.md, the README's plot).
-# SCENES=a,b MAPPERS=x,y FRAMES=N narrow it.
+# SCENES=a,b MAPPERS=x,y FRAMES=N narrow it. The frames run again on the timing model's 486 and
+# Pentium (docs/cycles.md, "Whole frames"); TARGET=486 or pentium: that one only; TARGET=icount: none.
 # Then the gallery, with the report's speeds.
+BENCH_TARGETS = $(if $(filter icount,$(TARGET)),,$(if $(TARGET),$(TARGET),486$(comma)pentium))
+comma := ,
 bench report:
 	@$(MAKE) -s DEPS_FOR=BENCH deps
-	@$(MAKE) -s -j$(NPROC) DEPS_FOR=BENCH $(KERNEL) $(BENCH) $(CYCLES) $(RUN32) $(GALLERY)
+	@$(MAKE) -s -j$(NPROC) DEPS_FOR=BENCH $(KERNEL) $(BENCH) $(CYCLES) $(RUN32) $(GALLERY) $(TIMING_PLUGIN)
 	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
-		$(if $(FRAMES),--frames $(FRAMES))
+		$(if $(FRAMES),--frames $(FRAMES)) $(if $(BENCH_TARGETS),--targets $(BENCH_TARGETS))
 	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "not copied (a narrowed run): the cost model and measured errors and the docs' figures in $(BUILD)/report",\
 		cmp -s $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model unchanged" || \
 		{ cp $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model updated: kernel/mappers/costs.cpp (commit it)"; }; \

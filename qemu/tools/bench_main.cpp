@@ -19,6 +19,7 @@
 #include "qemu/lib/host_image.h"
 #include "qemu/accuracy/measure.h"
 #include "qemu/harness/session.h"
+#include "qemu/harness/timing_plugin.h"
 #include "qemu/tools/trade.h"
 #include "qemu/tools/trade_docs.h"
 
@@ -28,6 +29,7 @@ using namespace harness;
 
 const char* USAGE =
     "usage: modexlab-bench [--scenes NAME,...] [--mappers NAME,...] [--frames N] [--out DIR] [--kernel ELF] [--no-wall]\n"
+    "                      [--targets 486,pentium]\n"
     "       modexlab-bench --costs-from CSV [--out DIR]\n"
     "       modexlab-bench --refresh-docs CSV\n"
     "  --scenes   demo scenes (default: all; modexlab-scene list) or scene files (uploaded; procedural textures only)\n"
@@ -35,6 +37,7 @@ const char* USAGE =
     "  --frames   frames a scene, spread evenly over its animation (default 8)\n"
     "  --out      where the report goes (default build/report): trade.csv, trade.md, trade-SCENE.png, costs.cpp\n"
     "  --no-wall  skip the wall-clock frames per second (QEMU without icount)\n"
+    "  --targets  the timing model's CPUs to run the frames again on, under QEMU with its plugin (default: none)\n"
     "  --costs-from  measure nothing: fit the cost model (costs.cpp) to an earlier run's trade.csv\n"
     "  --refresh-docs  measure nothing: rewrite the generated tables of README.md and docs/results.md (run from the\n"
     "             source tree) from a trade.csv, and say which changed\n";
@@ -47,7 +50,7 @@ struct BenchScene {
 };
 
 struct Args {
-    std::vector<std::string> scenes, mappers;
+    std::vector<std::string> scenes, mappers, targets;
     int frames = 8;
     std::string out, kernel, costs_from, refresh_docs;
     bool wall = true;
@@ -55,7 +58,8 @@ struct Args {
 
 // The settings a command line asks for; none when it asks for the usage.
 std::optional<Args> parse(const std::vector<std::string>& words) {
-    const CommandLine args = parse_command_line(words, {"--scenes", "--mappers", "--frames", "--out", "--kernel", "--costs-from", "--refresh-docs"}, {"--no-wall"});
+    const CommandLine args = parse_command_line(words, {"--scenes", "--mappers", "--frames", "--out", "--kernel", "--costs-from", "--refresh-docs", "--targets"},
+                                                {"--no-wall"});
     if (args.help()) return std::nullopt;
     if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
     Args a;
@@ -65,6 +69,9 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     a.out = args.text("--out", build_dir() + "/report");
     a.kernel = args.text("--kernel");
     a.wall = !args.has("--no-wall");
+    a.targets = args.list("--targets");
+    for (const std::string& t : a.targets)
+        if (t != "486" && t != "pentium") throw UsageError("--targets takes 486 and pentium, not '" + t + "'");
     a.costs_from = args.text("--costs-from");
     a.refresh_docs = args.text("--refresh-docs");
     if (a.scenes.empty())
@@ -176,6 +183,55 @@ void bench_486_path(const SessionOptions& p6, std::vector<BenchScene>& scenes, i
             row.draw_i486 = sum_of(r, "ticks_draw");
             std::fprintf(stderr, "%.1f instructions/pixel drawing (P6 path %.1f)%s\n", row.per_pixel(row.draw_i486), row.draw_per_pixel(),
                          equal ? "" : ", kernel DIFFERS from host");
+        }
+    }
+    k.ok("exit 0");
+    k.wait_exit();
+}
+
+// The timing model's cycles (docs/cycles.md, "Whole frames"): the kernel under QEMU's `-cpu
+// target` with the timing plugin, every single mapper's rows and auto's at the scene's budget drawn
+// again, the same pixels as before, the plugin's rows (a bench row and bus each) kept in the row.
+void cycles_pass(const SessionOptions& p6, const std::string& target, std::vector<BenchScene>& scenes, int frames, std::vector<TradeRow>& rows) {
+    SessionOptions o = p6;
+    o.name = "bench-" + target;
+    o.cpu = target;
+    TimingPlugin plugin;
+    plugin.cpu = target, plugin.buses = {"zero-wait", "isa", "vlb"};
+    plugin.out = build_dir() + "/runs/bench-" + target + ".cycles.jsonl";
+    std::filesystem::create_directories(build_dir() + "/runs");
+    std::filesystem::remove(plugin.out);
+    o.plugin = timing_plugin_spec(plugin, o.image.empty() ? build_dir() + "/kernel/modexlab.elf" : o.image);
+    Session k(o);
+    k.ok("mode modex");
+    auto taken = [](const TradeRow& r) { return single_mapper(r) || r.mapper == "auto"; };
+    size_t done = 0, total = 0, read = 0;
+    for (const TradeRow& r : rows) total += taken(r);
+    for (BenchScene& s : scenes) {
+        load_in_kernel(k, s);
+        for (TradeRow& row : rows) {
+            if (row.scene != s.name || !taken(row)) continue;
+            std::fprintf(stderr, "[%s %zu/%zu] %s %s ", target.c_str(), ++done, total, s.name.c_str(), row.mapper.c_str());
+            const json r = k.ok("bench " + std::to_string(frames) + " " + row.mapper + " " + row.surface, [](const json&) {});
+            if (r["pixels"].get<uint64_t>() != row.pixels)
+                throw HarnessError(s.name + " " + row.mapper + ": under the timing plugin the kernel drew " + r["pixels"].dump() +
+                                   " pixels, before " + std::to_string(row.pixels));
+            const std::vector<json> lines = timing_plugin_rows(plugin.out);
+            if (lines.size() != read + plugin.buses.size())
+                throw HarnessError(plugin.out + ": " + std::to_string(lines.size()) + " lines after " + std::to_string(done) +
+                                   " rows; expected one a bus each row");
+            TradeRow::Cycles& c = target == "486" ? row.cycles_486 : row.cycles_pentium;
+            for (size_t b = 0; b < plugin.buses.size(); ++b) {
+                const json& l = lines[read + b];
+                c.frame[b] = l["frame_cycles"].get<uint64_t>();
+                if (b == 0) {
+                    c.inner = l["inner"].get<uint64_t>();
+                    c.draw = c.inner + l["setup"].get<uint64_t>() + l["walk"].get<uint64_t>() + l["choose"].get<uint64_t>();
+                }
+            }
+            read = lines.size();
+            std::fprintf(stderr, "%.1f cycles/pixel drawing, %.1f a frame's pixel (zero-wait), %.1f (isa)\n", row.per_pixel(c.draw),
+                         row.per_pixel(c.frame[0]), row.per_pixel(c.frame[1]));
         }
     }
     k.ok("exit 0");
@@ -353,6 +409,7 @@ int run(const Args& a) {
     k.ok("exit 0");
     k.wait_exit();
     bench_486_path(o, scenes, a.frames, rows);
+    for (const std::string& t : a.targets) cycles_pass(o, t, scenes, a.frames, rows);
     mark_pareto(rows);
     std::fprintf(stderr, "host cycles: every mapper again, natively (32-bit, rdtsc)\n");
     std::string unmeasured;

@@ -138,8 +138,18 @@ std::vector<std::string> csv_header() {
             "index_differs[pixels]", "kernel_equals_host[bool]", "pareto[bool]", "max_bound[footprints]", "bound_exact_coverage[bool]",
             "drawn_by[mapper:polygons:pixels;...]", "compared[pixels]", "exact[pixels]", "within_one[pixels]", "enveloped[polygons]",
             "budget_error[footprints]", "budget_exact[bool]", "budget_given[bool]", "draw_per_pixel_i486[instructions/pixel]",
-            "ticks_draw_i486[instructions]"};
+            "ticks_draw_i486[instructions]",
+            "cycles_486_draw[cycles]", "cycles_486_inner[cycles]", "cycles_486_frame_zero-wait[cycles]", "cycles_486_frame_isa[cycles]",
+            "cycles_486_frame_vlb[cycles]", "cycles_pentium_draw[cycles]", "cycles_pentium_inner[cycles]",
+            "cycles_pentium_frame_zero-wait[cycles]", "cycles_pentium_frame_isa[cycles]", "cycles_pentium_frame_vlb[cycles]"};
 }
+
+namespace {
+
+// (an unmeasured count: an empty field)
+std::string count_or_empty(uint64_t n) { return n ? std::to_string(n) : ""; }
+
+}  // namespace
 
 void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
     std::ofstream out = open_out(path);
@@ -167,6 +177,9 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
             << (r.budget_error < 0 ? "any" : budget_text(r.budget_error)) << "," << (r.budget_exact ? "true" : "false") << ","
             << (r.budget_given ? "true" : "false") << "," << (r.draw_i486 ? fixed(r.per_pixel(r.draw_i486), 3) : "") << ","
             << (r.draw_i486 ? std::to_string(r.draw_i486) : "");
+        for (const TradeRow::Cycles* c : {&r.cycles_486, &r.cycles_pentium})
+            out << "," << count_or_empty(c->draw) << "," << count_or_empty(c->inner) << "," << count_or_empty(c->frame[0]) << ","
+                << count_or_empty(c->frame[1]) << "," << count_or_empty(c->frame[2]);
         out << "\n";
     }
 }
@@ -255,6 +268,16 @@ std::vector<TradeRow> read_trade(const std::string& path) {
         r.budget_exact = flag("budget_exact"), r.budget_given = flag("budget_given");
         r.budget = budget_words(raster::Budget{r.budget_given, r.budget_error, r.budget_exact});
         r.draw_i486 = text("ticks_draw_i486").empty() ? 0 : count("ticks_draw_i486");
+        // the timing model's columns, where the CSV has them (a bench of an earlier version has not)
+        auto cycles = [&](const std::string& target, TradeRow::Cycles* c) {
+            const std::string p = "cycles_" + target + "_";
+            if (std::find_if(header.begin(), header.end(), [&](const std::string& h) { return h.rfind(p, 0) == 0; }) == header.end()) return;
+            auto optional = [&](const std::string& name) { return text(name.c_str()).empty() ? 0 : count(name.c_str()); };
+            c->draw = optional(p + "draw"), c->inner = optional(p + "inner");
+            c->frame[0] = optional(p + "frame_zero-wait"), c->frame[1] = optional(p + "frame_isa"), c->frame[2] = optional(p + "frame_vlb");
+        };
+        cycles("486", &r.cycles_486);
+        cycles("pentium", &r.cycles_pentium);
         rows.push_back(std::move(r));
     }
     return rows;
@@ -281,6 +304,38 @@ std::string isa_table(const std::vector<TradeRow>& rows) {
         t += "| " + mapper + " | " + std::to_string(m.of.size()) + " | " + fixed(m.p6 / px, 1) + " | " + fixed(m.i486 / px, 1) + " | " +
              fixed(m.i486 / m.p6, 3) + " | " + fixed(*std::min_element(m.of.begin(), m.of.end()), 3) + " | " +
              fixed(*std::max_element(m.of.begin(), m.of.end()), 3) + " |\n";
+    }
+    return t;
+}
+
+std::string cycles_table(const std::vector<TradeRow>& rows) {
+    struct Sums {
+        double c486[5] = {}, pentium[5] = {};  // inner, draw, frame on each bus; summed over the scenes
+        double pixels486 = 0, pixels_pentium = 0;
+    };
+    std::vector<std::pair<std::string, Sums>> by_mapper;  // in the rows' order
+    for (const TradeRow& r : rows) {
+        if (!r.pixels || (!r.cycles_486.draw && !r.cycles_pentium.draw)) continue;
+        auto it = std::find_if(by_mapper.begin(), by_mapper.end(), [&](const auto& m) { return m.first == r.mapper; });
+        if (it == by_mapper.end()) it = by_mapper.insert(by_mapper.end(), {r.mapper, Sums{}});
+        auto add = [&](const TradeRow::Cycles& c, double* to, double* pixels) {
+            if (!c.draw) return;
+            const uint64_t v[5] = {c.inner, c.draw, c.frame[0], c.frame[1], c.frame[2]};
+            for (int k = 0; k < 5; ++k) to[k] += double(v[k]);
+            *pixels += double(r.pixels);
+        };
+        add(r.cycles_486, it->second.c486, &it->second.pixels486);
+        add(r.cycles_pentium, it->second.pentium, &it->second.pixels_pentium);
+    }
+    if (by_mapper.empty()) return "";
+    std::string t =
+        "| mapper | 486 inner | 486 draw | 486 frame zero-wait | isa | vlb | Pentium inner | Pentium draw | Pentium frame zero-wait | isa | vlb |\n"
+        "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
+    for (const auto& [mapper, m] : by_mapper) {
+        t += "| " + mapper;
+        for (int k = 0; k < 5; ++k) t += " | " + (m.pixels486 ? fixed(m.c486[k] / m.pixels486, 1) : std::string("-"));
+        for (int k = 0; k < 5; ++k) t += " | " + (m.pixels_pentium ? fixed(m.pentium[k] / m.pixels_pentium, 1) : std::string("-"));
+        t += " |\n";
     }
     return t;
 }
@@ -494,6 +549,14 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "every single mapper's rows and auto's at each scene's budget with the 486's: drawing instructions a pixel over all the "
            "scenes, their ratio, and the least and the most ratio of a scene. The pictures are the same.\n\n"
         << (isa.empty() ? std::string("(not measured)\n") : isa);
+    const std::string cycles = cycles_table(rows);
+    out << "\n## Cycles on a 486 and a Pentium (the timing model)\n\n"
+        << "The same frames run again in the kernel under QEMU's `-cpu 486` and `-cpu pentium` with the timing model's plugin "
+           "(docs/cycles.md, \"Whole frames\"): estimated cycles a pixel over all the scenes a mapper drew, of its inner loops, of "
+           "its drawing (setup, walking, inner loops, choosing), and of its frames (geometry, clearing, drawing, the blit) with the "
+           "display on each bus model: zero-wait (the published counts' terms), isa (a 16-bit card at 8.33 MHz) and vlb. The 486 "
+           "at 33 MHz, the Pentium at 90. Single mappers, and auto at each scene's budget.\n\n"
+        << (cycles.empty() ? std::string("(not measured: make bench TARGET=486 or TARGET=pentium)\n") : cycles);
 
     // the classics' published cycles beside our instruction counts, on the scene each drew most of
     out << "\n## The classics' published figures beside ours\n\n"

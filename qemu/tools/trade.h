@@ -55,6 +55,14 @@ struct TradeRow {
     // The drawing's ticks with the 486's build of the kernel's C++ (booted isa=i486, docs/platform.md)
     // on the same frames: every single mapper's row and auto's at the scene's budget; 0: not measured
     uint64_t draw_i486 = 0;
+    // The timing model's cycles on the same frames, a target each (the kernel under QEMU's -cpu 486
+    // or pentium with the timing plugin: docs/cycles.md, "Whole frames"): the drawing's (setup,
+    // walking, inner loops, choosing) and the inner loops', and the frame's (its plain drawing:
+    // geometry, clearing, drawing, the blit) on each bus, zero-wait, isa and vlb; 0: not measured
+    struct Cycles {
+        uint64_t draw = 0, inner = 0, frame[3] = {};
+    };
+    Cycles cycles_486, cycles_pentium;
 
     bool draws_everything() const { return rejected == 0 && pixels > 0; }
     double per_pixel(uint64_t t) const { return pixels ? double(t) / double(pixels) : 0.0; }
@@ -113,6 +121,10 @@ std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only)
 // The rows measured with the 486's build beside the P6's (draw_i486), a line a mapper: drawing
 // instructions a pixel of each over all the scenes, their ratio, and the least and most of a scene's.
 std::string isa_table(const std::vector<TradeRow>& rows);
+
+// The timing model's rows (cycles_486, cycles_pentium), a line a mapper: cycles a pixel over all
+// the scenes it drew, of its inner loops, its drawing and its frames on each bus, for each target.
+std::string cycles_table(const std::vector<TradeRow>& rows);
 
 // build/report/trade.md: per scene, a table sorted by speed; the mappers that cannot draw it; the
 // classics' published figures beside ours.
