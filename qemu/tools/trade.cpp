@@ -2,7 +2,6 @@
 #include "qemu/tools/trade.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -14,8 +13,7 @@
 #include "kernel/core/mapper.h"
 #include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
-#include "qemu/timing/analyse.h"
-#include "qemu/timing/listing.h"
+#include "qemu/tools/published.h"
 
 namespace harness {
 
@@ -54,95 +52,6 @@ std::vector<const TradeRow*> drawing_rows_by_speed(const std::vector<TradeRow>& 
 // them, and the instructions a pixel of the published listing, counted by hand in the steady state
 // (docs/classics.md, "The published loops counted"), beside the same count for our reproduction.
 // A Pentium pairs two simple instructions a cycle, so its cycles and instructions do not divide.
-struct Published {
-    const char* mapper;  // ours that is that loop, or "" when we did not build it
-    const char* loop;
-    const char* figure;
-    const char* machine;
-    const char* listing;  // instructions a pixel of the published listing, counted
-    const char* ours;     // the same count for our NASM loop
-    // the listing as tests/timing/listings transcribes it ("": none); our loop's pixels a pass, and
-    // the two paths of its data-dependent branches the model runs ours by ("" "": taken, not taken)
-    const char* listing_file;
-    int our_pixels;
-    const char* our_paths[2];
-};
-const Published PUBLISHED[] = {
-    {"xsharp-row-out", "Abrash, Black Book listing 58.1 (57.2's loop, OUT per pixel)", "44", "486", "17 (15-17 run), 1 OUT", "17 (15-17 run), 1 OUT",
-     "l58-1.asm", 1, {"", ""}},
-    {"", "Abrash, listing 58.2 (columns, 16-bit fractions, unrolled)", "22", "486", "13 (11-13 run) + loop control / unroll", "-", "l58-2.asm", 1,
-     {"", ""}},
-    {"", "Abrash, packed fractions with ADC (no listing)", "10", "486", "no listing", "-", "", 1, {"", ""}},
-    {"", "Abrash, listing 58.3 (16-bit, SS:BP texture pointer)", "9", "486", "8 (6-8 run) + loop control / unroll", "-", "l58-3.asm", 1, {"", ""}},
-    {"xsharp-column", "Abrash, listing 58.4 (32-bit)", "8", "486", "8 (6-8 run) + loop control / unroll", "8 + 3/2 = 9.5 (unrolled x2)",
-     "l58-4.asm", 2, {"", ""}},
-    {"xsharp-column", "Abrash, listing 58.4 (32-bit)", "5.5", "Pentium", "8 (6-8 run) + loop control / unroll", "8 + 3/2 = 9.5 (unrolled x2)",
-     "l58-4.asm", 2, {"", ""}},
-    {"quake-subdiv16", "id Software, d_draw16.s (the cycles: Abrash's, not in the source)", "7.5", "Pentium",
-     "6 (unrolled x16); 6 + 68/16 = 10.25 with the segment", "9; 9 + 98/16 = 15.1 with the segment", "quake-d_draw16.asm", 1, {"", ""}},
-    {"quake-d_draw16", "id Software, d_draw16.s as shipped (24-bit, chop; the cycles: Abrash's)", "7.5", "Pentium",
-     "6 (unrolled x16); 6 + 68/16 = 10.25 with the segment", "the same instructions", "quake-d_draw16.asm", 16, {"ttt", "ntt"}},
-    {"quake-subdiv8", "id Software, d_draw.s", "none given", "", "6 (unrolled x8); 6 + 68/8 = 14.5 with the segment",
-     "9; 9 + 98/8 = 21.25 with the segment", "", 1, {"", ""}},
-    {"fatmap-256", "Byggmastar, fatmap.txt's combined 8:16 loop", "5 (ticks)", "Pentium", "9", "9", "fatmap-combined.asm", 1, {"", ""}},
-    {"fatmap-256-16", "Simmons's 8:16 loop, fatmap2.txt section 13", "4 (ticks)", "Pentium", "8", "8 (the same instructions)", "fatmap2-simmons.asm",
-     1, {"", ""}},
-    {"fatmap-lut", "Byggmastar, fatmap.txt's table-lookup loop", "4 (ticks)", "Pentium", "7", "7", "fatmap-lut.asm", 1, {"", ""}},
-    {"hecker-steptable", "Hecker, Game Developer part V listing 2 (not found here)", "none given", "", "not found", "9", "", 1, {"", ""}},
-};
-
-// The timing model's cycles a pixel on `machine` ("486" or "Pentium"), the least and the most of
-// the two paths ("4" or "4-6"), of a loop; "-" where it cannot say (no listing, no loop, no
-// objects: the report's figures come from a tree with the kernel built).
-std::string model_range(const std::vector<timing::Insn>& insns, int bits, const std::string& machine, int precision, int pixels,
-                        const std::string (&paths)[2]) {
-    try {
-        const timing::Cpu cpu = machine == "486" ? timing::Cpu::I486 : timing::Cpu::Pentium;
-        double lo = 0, hi = 0;
-        for (int k = 0; k < 2; ++k) {
-            timing::BranchPolicy b;
-            if (paths[k].empty()) b.kind = k ? timing::BranchPolicy::NotTaken : timing::BranchPolicy::Taken;
-            else b.kind = timing::BranchPolicy::Pattern, b.pattern = paths[k];
-            timing::Options o;
-            o.precision = precision;
-            const double c = timing::analyse(insns, cpu, bits == 16 ? timing::Mode::Real16 : timing::Mode::Protected32, b, o).cycles_per_iteration / pixels;
-            lo = k ? std::min(lo, c) : c, hi = k ? std::max(hi, c) : c;
-        }
-        auto text = [](double c) {  // (two decimals at most, trailing zeros dropped)
-            std::string t = fixed(c, 2);
-            while (t.back() == '0') t.pop_back();
-            if (t.back() == '.') t.pop_back();
-            return t;
-        };
-        return lo == hi ? text(lo) : text(lo) + "-" + text(hi);
-    } catch (const std::exception&) {
-        return "-";
-    }
-}
-
-std::string model_of_listing(const Published& p) {
-    if (!*p.listing_file || (std::string(p.machine) != "486" && std::string(p.machine) != "Pentium")) return "-";
-    try {
-        const timing::Listing l = timing::read_listing(std::string("tests/timing/listings/") + p.listing_file);
-        const int pixels = l.header.count("pixels") ? std::max(1, std::atoi(l.header.at("pixels").c_str())) : 1;
-        const int precision = l.header.count("precision") ? std::atoi(l.header.at("precision").c_str()) : 64;
-        return model_range(l.insns, l.bits, p.machine, precision, pixels, {"", ""});
-    } catch (const std::exception&) {
-        return "-";
-    }
-}
-
-std::string model_of_ours(const Published& p) {
-    if (!*p.mapper || (std::string(p.machine) != "486" && std::string(p.machine) != "Pentium")) return "-";
-    try {
-        const timing::Listing l = timing::read_mapper_loop(p.mapper, "build/kernel/asm");
-        const int precision = l.header.count("precision") ? std::atoi(l.header.at("precision").c_str()) : 53;
-        return model_range(l.insns, 32, p.machine, precision, p.our_pixels, {p.our_paths[0], p.our_paths[1]});
-    } catch (const std::exception&) {
-        return "-";
-    }
-}
-
 }  // namespace
 
 std::string budget_text(double max_error) {
@@ -625,40 +534,7 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "at 33 MHz, the Pentium at 90. Single mappers, and auto at each scene's budget.\n\n"
         << (cycles.empty() ? std::string("(not measured: make bench TARGET=486 or TARGET=pentium)\n") : cycles);
 
-    // the classics' published cycles beside our instruction counts, on the scene each drew most of
-    out << "\n## The classics' published figures beside ours\n\n"
-        << "Published: cycles per pixel of the inner loop on the machine named, as its author gave it. Listing: the instructions "
-           "a pixel of the published listing, counted by hand in the steady state (a carry branch taken or not: the range run); "
-           "ours counted: the same count for our NASM loop. Ours measured: guest instructions per pixel of our loop under QEMU "
-           "icount (with its per-span and per-segment work), on the scene where the mapper drew the most pixels without "
-           "refusing a polygon. A Pentium pairs two simple instructions a cycle: cycles and instructions sit side by side, "
-           "they do not divide (docs/classics.md, \"The published loops counted\").\n\n"
-        << "The model columns: the timing model's cycles a pixel on the machine named (docs/cycles.md), of the listing as "
-           "tests/timing/listings transcribes it and of our loop from the kernel's objects, a steady-state pass on each path of its "
-           "data-dependent branches (a range where they differ).\n\n"
-        << "| loop | published cycles/px | machine | model: listing | model: ours | listing instr/px | ours | ours counted | ours measured "
-           "instr/px | scene |\n"
-           "|---|--:|---|--:|--:|---|---|---|--:|---|\n";
-    auto best_row = [&](const std::string& mapper) -> const TradeRow* {
-        const TradeRow* best = nullptr;
-        for (const TradeRow& r : rows)
-            if (r.mapper == mapper && r.draws_everything() && (!best || r.pixels > best->pixels)) best = &r;
-        return best;
-    };
-    for (const Published& p : PUBLISHED) {
-        const TradeRow* r = *p.mapper ? best_row(p.mapper) : nullptr;
-        out << "| " << p.loop << " | " << p.figure << " | " << p.machine << " | " << model_of_listing(p) << " | " << model_of_ours(p) << " | "
-            << p.listing << " | " << (*p.mapper ? p.mapper : "not built")
-            << " | " << p.ours << " | " << (r ? fixed(r->inner_per_pixel(), 1) : "-") << " | " << (r ? r->scene : "-") << " |\n";
-    }
-    // ours with no published counterpart, counted the same way (asm/fast.asm)
-    const std::pair<const char*, const char*> OURS[] = {{"fast-affine", "5.5 + 3/16 (pairs, one word store each)"},
-                                                        {"fast-columns", "6 + 3/8"}};
-    for (const auto& [ours, counted] : OURS) {
-        const TradeRow* r = best_row(ours);
-        out << "| ours: " << ours << " | - | - | - | - | - | " << ours << " | " << counted << " | " << (r ? fixed(r->inner_per_pixel(), 1) : "-")
-            << " | " << (r ? r->scene : "-") << " |\n";
-    }
+    write_published(out, rows);
     if (!info.wall_clock.empty()) out << "\n" << info.wall_clock;
 }
 
