@@ -13,6 +13,7 @@
 #include "kernel/core/mapper.h"
 #include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
+#include "qemu/tools/cycles_report.h"
 #include "qemu/tools/published.h"
 
 namespace harness {
@@ -284,38 +285,6 @@ std::string isa_table(const std::vector<TradeRow>& rows) {
     return t;
 }
 
-std::string cycles_table(const std::vector<TradeRow>& rows) {
-    struct Sums {
-        double c486[5] = {}, pentium[5] = {};  // inner, draw, frame on each bus; summed over the scenes
-        double pixels486 = 0, pixels_pentium = 0;
-    };
-    std::vector<std::pair<std::string, Sums>> by_mapper;  // in the rows' order
-    for (const TradeRow& r : rows) {
-        if (!r.pixels || (!r.cycles_486.draw && !r.cycles_pentium.draw)) continue;
-        auto it = std::find_if(by_mapper.begin(), by_mapper.end(), [&](const auto& m) { return m.first == r.mapper; });
-        if (it == by_mapper.end()) it = by_mapper.insert(by_mapper.end(), {r.mapper, Sums{}});
-        auto add = [&](const TradeRow::Cycles& c, double* to, double* pixels) {
-            if (!c.draw) return;
-            const uint64_t v[5] = {c.inner, c.draw, c.frame[0], c.frame[1], c.frame[2]};
-            for (int k = 0; k < 5; ++k) to[k] += double(v[k]);
-            *pixels += double(r.pixels);
-        };
-        add(r.cycles_486, it->second.c486, &it->second.pixels486);
-        add(r.cycles_pentium, it->second.pentium, &it->second.pixels_pentium);
-    }
-    if (by_mapper.empty()) return "";
-    std::string t =
-        "| mapper | 486 inner | 486 draw | 486 frame zero-wait | isa | vlb | Pentium inner | Pentium draw | Pentium frame zero-wait | isa | vlb |\n"
-        "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n";
-    for (const auto& [mapper, m] : by_mapper) {
-        t += "| " + mapper;
-        for (int k = 0; k < 5; ++k) t += " | " + (m.pixels486 ? fixed(m.c486[k] / m.pixels486, 1) : std::string("-"));
-        for (int k = 0; k < 5; ++k) t += " | " + (m.pixels_pentium ? fixed(m.pentium[k] / m.pixels_pentium, 1) : std::string("-"));
-        t += " |\n";
-    }
-    return t;
-}
-
 namespace {
 
 // Whether the row meets a budget on the whole scene: everything drawn, the measured max footprint
@@ -525,14 +494,19 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "every single mapper's rows and auto's at each scene's budget with the 486's: drawing instructions a pixel over all the "
            "scenes, their ratio, and the least and the most ratio of a scene. The pictures are the same.\n\n"
         << (isa.empty() ? std::string("(not measured)\n") : isa);
-    const std::string cycles = cycles_table(rows);
+    const std::string cycles = cycles_table(rows), modex = modex_table(rows);
     out << "\n## Cycles on a 486 and a Pentium (the timing model)\n\n"
         << "The same frames run again in the kernel under QEMU's `-cpu 486` and `-cpu pentium` with the timing model's plugin "
            "(docs/cycles.md, \"Whole frames\"): estimated cycles a pixel over all the scenes a mapper drew, of its inner loops, of "
            "its drawing (setup, walking, inner loops, choosing), and of its frames (geometry, clearing, drawing, the blit) with the "
            "display on each bus model: zero-wait (the published counts' terms), isa (a 16-bit card at 8.33 MHz) and vlb. The 486 "
            "at 33 MHz, the Pentium at 90. Single mappers, and auto at each scene's budget.\n\n"
-        << (cycles.empty() ? std::string("(not measured: make bench TARGET=486 or TARGET=pentium)\n") : cycles);
+        << (cycles.empty() ? std::string("(not measured: make bench TARGET=486 or TARGET=pentium)\n") : cycles)
+        << "\n### Straight into Mode X, or into RAM and a blit\n\n"
+        << "On each scene, target and bus: the fastest whole frame (cycles a pixel drawn) of the mappers that draw straight into "
+           "the VGA's page (surface vga), against the fastest that draw into RAM and blit the page (linear, planar). Which wins "
+           "depends on the bus, as the Black Book and FastDoom found it depends on the card.\n\n"
+        << (modex.empty() ? std::string("(not measured)\n") : modex);
 
     write_published(out, rows);
     if (!info.wall_clock.empty()) out << "\n" << info.wall_clock;

@@ -122,10 +122,6 @@ std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only)
 // instructions a pixel of each over all the scenes, their ratio, and the least and most of a scene's.
 std::string isa_table(const std::vector<TradeRow>& rows);
 
-// The timing model's rows (cycles_486, cycles_pentium), a line a mapper: cycles a pixel over all
-// the scenes it drew, of its inner loops, its drawing and its frames on each bus, for each target.
-std::string cycles_table(const std::vector<TradeRow>& rows);
-
 // build/report/trade.md: per scene, a table sorted by speed; the mappers that cannot draw it; the
 // classics' published figures beside ours.
 void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, const ReportInfo& info);

@@ -15,6 +15,7 @@
 #include "kernel/scene/frame.h"
 #include "kernel/core/render.h"
 #include "qemu/accuracy/measure.h"
+#include "qemu/tools/cycles_report.h"
 #include "qemu/tools/trade.h"
 #include "qemu/tools/trade_docs.h"
 #include "qemu/lib/error.h"
@@ -209,6 +210,12 @@ TEST(Trade, TheCsvReadBackIsTheSameRows) {
         const std::string table = cycles_table(t);
         EXPECT_NE(table.find("| fast-affine | 4.5 | 7.0 | 11.0 | 13.0 | 11.5 | 2.0 | 3.0 | 5.0 | 9.0 | 6.0 |"), std::string::npos)
             << "100 pixels a row: " << table;
+        // straight into Mode X against RAM and the blit: each bus picks its own winner
+        timed[0].surface = "vga", timed[0].cycles_pentium = TradeRow::Cycles{300, 200, {700, 800, 650}};
+        const std::string modex = modex_table(timed);
+        EXPECT_NE(modex.find("| a | pentium | zero-wait | exact 7.0 | fast-affine 5.0 | RAM and blit |"), std::string::npos) << modex;
+        EXPECT_NE(modex.find("| a | pentium | isa | exact 8.0 | fast-affine 9.0 | straight |"), std::string::npos) << modex;
+        EXPECT_EQ(modex.find("| 486 |"), std::string::npos) << "no 486 row drawn straight";
         std::ofstream old(dir + "/old.csv");
         for (const auto& fields : lines) {
             size_t n = 0;

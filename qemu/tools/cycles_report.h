@@ -1,0 +1,20 @@
+// The timing model's figures in the report (trade.md): cycles a pixel a mapper on each target and
+// bus, and straight into Mode X against RAM and a blit.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "qemu/tools/trade.h"
+
+namespace harness {
+
+// The timing model's rows (cycles_486, cycles_pentium), a line a mapper: cycles a pixel over all
+// the scenes it drew, of its inner loops, its drawing and its frames on each bus, for each target.
+std::string cycles_table(const std::vector<TradeRow>& rows);
+
+// A line a scene, target and bus: the fastest frame (cycles a pixel) of the mappers that draw
+// straight into the VGA's page, against the fastest that draw into RAM and blit; "" unmeasured.
+std::string modex_table(const std::vector<TradeRow>& rows);
+
+}  // namespace harness
