@@ -310,10 +310,12 @@ $(WRONG_MAGIC_LOADER): $(KBUILD)/tests/fixtures/wrong_magic_loader.asm.o
 # module to a built-in of the same name, so files on a USB stick can be changed without a rebuild),
 # and a menu entry per demo scene loading just that scene and the files it names. GRUB's own files
 # go in uncompressed: the ISO is rebuilt at every kernel change, and compressing them would be most of that.
+# The kernel goes in without its debug sections (its symbols kept): GRUB reads the whole file, and
+# in 16 MiB its heap has no room for them beside the image.
 $(ISO): $(KERNEL) boot/grub.cfg $(BUILTIN_SOURCES)
 	$(call say,ISO,$@)
 	$(Q)rm -rf $(BUILD)/isodir && mkdir -p $(BUILD)/isodir/boot/grub $(BUILD)/isodir/boot/files
-	$(Q)cp $(KERNEL) $(BUILD)/isodir/boot/modexlab.elf
+	$(Q)objcopy --strip-debug $(KERNEL) $(BUILD)/isodir/boot/modexlab.elf
 	$(Q)for f in $(BUILTIN_SOURCES); do n=$${f#scenes/}; n=$${n#$(BUILD)/scenes/}; \
 		mkdir -p $(BUILD)/isodir/boot/files/$$(dirname $$n); cp $$f $(BUILD)/isodir/boot/files/$$n; done
 	$(Q)modules=""; entries=""; \
