@@ -5,38 +5,38 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1028.2f, 348.36f, 40.340f}, // 11 scenes
-    {"exact", 1008.0f, 320.76f, 64.314f}, // 11 scenes
-    {"persp-subdiv-4", 1008.0f, 321.13f, 91.386f}, // 11 scenes
-    {"persp-subdiv-8", 1008.0f, 375.87f, 59.525f}, // 11 scenes
-    {"persp-subdiv-16", 1008.0f, 414.88f, 43.464f}, // 11 scenes
-    {"persp-subdiv-32", 1008.0f, 435.32f, 35.612f}, // 11 scenes
-    {"constant-depth", 1008.0f, 451.70f, 29.808f}, // 11 scenes
-    {"persp-adaptive-0.5", 1008.0f, 908.12f, 290.052f}, // 11 scenes
-    {"persp-adaptive-1", 1008.0f, 999.18f, 51.775f}, // 11 scenes
-    {"persp-adaptive-2", 1008.0f, 1016.33f, 44.511f}, // 11 scenes
-    {"persp-adaptive-4", 1008.0f, 1029.12f, 40.044f}, // 11 scenes
-    {"fast-affine", 1041.9f, 109.01f, 5.140f}, // 11 scenes
-    {"fast-table", 1296.7f, 99.04f, 2.071f}, // 11 scenes
-    {"fast-columns", 1113.4f, 177.47f, 4.970f}, // 11 scenes
-    {"fast-table-columns", 1368.6f, 248.22f, 2.829f}, // 11 scenes
-    {"fast-subdiv-8", 1008.0f, 298.60f, 14.051f}, // 11 scenes
-    {"fast-subdiv-16", 1008.0f, 308.89f, 9.943f}, // 11 scenes
-    {"fast-subdiv-32", 1008.0f, 313.99f, 7.956f}, // 11 scenes
-    {"fast-constant-depth", 1008.0f, 318.56f, 6.316f}, // 11 scenes
-    {"fast-adaptive-1", 1008.0f, 341.45f, 9.607f}, // 11 scenes
-    {"fast-adaptive-2", 1008.0f, 345.20f, 8.126f}, // 11 scenes
-    {"fast-oriented-1", 1124.2f, 359.15f, 7.780f}, // 11 scenes
-    {"xsharp-dda", 1505.3f, 376.43f, 37.424f}, // 10 scenes
-    {"xsharp-row-out", 1505.3f, 511.69f, 18.935f}, // 10 scenes
-    {"xsharp-column", 1509.0f, 484.37f, 12.607f}, // 10 scenes
-    {"hecker-steptable", 5317.9f, 0.00f, 613.872f}, // 10 scenes
-    {"fatmap-256", 1717.2f, 162.21f, 13.650f}, // 8 scenes
-    {"fatmap-256-16", 1717.2f, 167.21f, 12.650f}, // 8 scenes
-    {"fatmap-lut", 2334.0f, 165.69f, 10.055f}, // 7 scenes
-    {"quake-subdiv16", 1490.9f, 301.88f, 13.883f}, // 10 scenes
-    {"quake-subdiv8", 1490.9f, 286.54f, 20.235f}, // 10 scenes
-    {"quake-d_draw16", 1515.9f, 322.05f, 9.576f}, // 10 scenes
+    {"affine", 1030.2f, 353.90f, 40.349f}, // 11 scenes
+    {"exact", 1010.0f, 326.29f, 64.323f}, // 11 scenes
+    {"persp-subdiv-4", 1010.0f, 326.67f, 91.396f}, // 11 scenes
+    {"persp-subdiv-8", 1010.0f, 381.40f, 59.535f}, // 11 scenes
+    {"persp-subdiv-16", 1010.0f, 420.42f, 43.474f}, // 11 scenes
+    {"persp-subdiv-32", 1010.0f, 440.85f, 35.621f}, // 11 scenes
+    {"constant-depth", 1010.0f, 457.24f, 29.817f}, // 11 scenes
+    {"persp-adaptive-0.5", 1010.0f, 913.66f, 290.061f}, // 11 scenes
+    {"persp-adaptive-1", 1010.0f, 1004.71f, 51.784f}, // 11 scenes
+    {"persp-adaptive-2", 1010.0f, 1021.86f, 44.520f}, // 11 scenes
+    {"persp-adaptive-4", 1010.0f, 1034.65f, 40.054f}, // 11 scenes
+    {"fast-affine", 1048.9f, 108.08f, 5.161f}, // 11 scenes
+    {"fast-table", 1303.7f, 98.35f, 2.085f}, // 11 scenes
+    {"fast-columns", 1120.8f, 176.80f, 4.984f}, // 11 scenes
+    {"fast-table-columns", 1375.6f, 247.33f, 2.848f}, // 11 scenes
+    {"fast-subdiv-8", 1010.0f, 304.14f, 14.060f}, // 11 scenes
+    {"fast-subdiv-16", 1010.0f, 314.42f, 9.952f}, // 11 scenes
+    {"fast-subdiv-32", 1010.0f, 319.52f, 7.965f}, // 11 scenes
+    {"fast-constant-depth", 1010.0f, 324.10f, 6.325f}, // 11 scenes
+    {"fast-adaptive-1", 1010.0f, 346.98f, 9.617f}, // 11 scenes
+    {"fast-adaptive-2", 1010.0f, 350.73f, 8.135f}, // 11 scenes
+    {"fast-oriented-1", 1131.2f, 363.87f, 7.784f}, // 11 scenes
+    {"xsharp-dda", 1512.3f, 374.71f, 37.443f}, // 10 scenes
+    {"xsharp-row-out", 1512.3f, 509.97f, 18.955f}, // 10 scenes
+    {"xsharp-column", 1516.0f, 487.74f, 12.609f}, // 10 scenes
+    {"hecker-steptable", 5325.2f, 0.00f, 608.779f}, // 10 scenes
+    {"fatmap-256", 1722.9f, 160.21f, 13.682f}, // 8 scenes
+    {"fatmap-256-16", 1722.9f, 165.21f, 12.682f}, // 8 scenes
+    {"fatmap-lut", 2339.7f, 163.69f, 10.090f}, // 7 scenes
+    {"quake-subdiv16", 1541.9f, 303.70f, 13.887f}, // 10 scenes
+    {"quake-subdiv8", 1541.9f, 288.36f, 20.240f}, // 10 scenes
+    {"quake-d_draw16", 1522.9f, 321.35f, 9.591f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
