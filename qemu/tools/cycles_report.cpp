@@ -42,10 +42,7 @@ std::string modex_table(const std::vector<TradeRow>& rows) {
     static const char* const BUSES[3] = {"zero-wait", "isa", "vlb"};
     std::string t = "| scene | target | bus | straight into Mode X | into RAM, then the blit | faster |\n|---|---|---|---|---|---|\n";
     bool any = false;
-    std::vector<std::string> scenes;
-    for (const TradeRow& r : rows)
-        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
-    for (const std::string& scene : scenes)
+    for (const std::string& scene : scenes_in_order(rows))
         for (const char* target : {"486", "pentium"})
             for (int b = 0; b < 3; ++b) {
                 // the fastest straight and through RAM: cycles a pixel, mapper
@@ -62,6 +59,32 @@ std::string modex_table(const std::vector<TradeRow>& rows) {
                 t += "| " + scene + " | " + target + " | " + BUSES[b] + " | " + straight.second + " " + fixed(straight.first, 1) + " | " +
                      ram.second + " " + fixed(ram.first, 1) + " | " + (straight.first < ram.first ? "straight" : "RAM and blit") + " |\n";
             }
+    return any ? t : "";
+}
+
+std::string pareto_by_target(const std::vector<TradeRow>& rows) {
+    std::string t = "| scene | target | the front: mapper (drawing cycles a pixel, mean footprint error), fastest first |\n|---|---|---|\n";
+    bool any = false;
+    for (const std::string& scene : scenes_in_order(rows))
+        for (const char* target : {"486", "pentium"}) {
+            std::vector<const TradeRow*> measured;
+            std::vector<std::pair<double, double>> points;
+            for (const TradeRow& r : rows) {
+                const TradeRow::Cycles& c = std::string(target) == "486" ? r.cycles_486 : r.cycles_pentium;
+                if (r.scene != scene || !c.draw || !r.draws_everything()) continue;
+                measured.push_back(&r);
+                points.emplace_back(r.per_pixel(c.draw), r.accuracy.mean_footprint_error);
+            }
+            std::vector<size_t> front = pareto_front(points);
+            if (front.empty()) continue;
+            std::sort(front.begin(), front.end(), [&](size_t a, size_t b) { return points[a].first < points[b].first; });
+            any = true;
+            t += "| " + scene + " | " + target + " | ";
+            for (size_t k = 0; k < front.size(); ++k)
+                t += (k ? ", " : "") + measured[front[k]]->mapper + " (" + fixed(points[front[k]].first, 1) + ", " +
+                     fixed(points[front[k]].second, 3) + ")";
+            t += " |\n";
+        }
     return any ? t : "";
 }
 

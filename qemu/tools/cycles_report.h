@@ -17,4 +17,9 @@ std::string cycles_table(const std::vector<TradeRow>& rows);
 // straight into the VGA's page, against the fastest that draw into RAM and blit; "" unmeasured.
 std::string modex_table(const std::vector<TradeRow>& rows);
 
+// A line a scene and target: its Pareto front under the timing model, drawing cycles a pixel
+// against mean footprint error (the rows that draw everything and were run on the target), fastest
+// first; "" unmeasured.
+std::string pareto_by_target(const std::vector<TradeRow>& rows);
+
 }  // namespace harness

@@ -24,6 +24,13 @@ std::string fixed(double v, int decimals) {
     return buf;
 }
 
+std::vector<std::string> scenes_in_order(const std::vector<TradeRow>& rows) {
+    std::vector<std::string> scenes;
+    for (const TradeRow& r : rows)
+        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    return scenes;
+}
+
 namespace {
 
 std::ofstream open_out(const std::string& path) {
@@ -32,13 +39,6 @@ std::ofstream open_out(const std::string& path) {
     std::ofstream out(path);
     if (!out) throw HarnessError(path + ": cannot write");
     return out;
-}
-
-std::vector<std::string> scenes_in_order(const std::vector<TradeRow>& rows) {
-    std::vector<std::string> scenes;
-    for (const TradeRow& r : rows)
-        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
-    return scenes;
 }
 
 std::vector<const TradeRow*> drawing_rows_by_speed(const std::vector<TradeRow>& rows, const std::string& scene) {
@@ -494,7 +494,7 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "every single mapper's rows and auto's at each scene's budget with the 486's: drawing instructions a pixel over all the "
            "scenes, their ratio, and the least and the most ratio of a scene. The pictures are the same.\n\n"
         << (isa.empty() ? std::string("(not measured)\n") : isa);
-    const std::string cycles = cycles_table(rows), modex = modex_table(rows);
+    const std::string cycles = cycles_table(rows), modex = modex_table(rows), fronts = pareto_by_target(rows);
     out << "\n## Cycles on a 486 and a Pentium (the timing model)\n\n"
         << "The same frames run again in the kernel under QEMU's `-cpu 486` and `-cpu pentium` with the timing model's plugin "
            "(docs/cycles.md, \"Whole frames\"): estimated cycles a pixel over all the scenes a mapper drew, of its inner loops, of "
@@ -502,6 +502,11 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "display on each bus model: zero-wait (the published counts' terms), isa (a 16-bit card at 8.33 MHz) and vlb. The 486 "
            "at 33 MHz, the Pentium at 90. Single mappers, and auto at each scene's budget.\n\n"
         << (cycles.empty() ? std::string("(not measured: make bench TARGET=486 or TARGET=pentium)\n") : cycles)
+        << "\n### The Pareto front on each target\n\n"
+        << "Scene by scene: the mappers no other beats both in drawing cycles a pixel on the target and in mean footprint error "
+           "(those that draw the whole scene). Where it differs from the front in instructions (the scene tables above), the "
+           "machine, not the count, decides.\n\n"
+        << (fronts.empty() ? std::string("(not measured)\n") : fronts)
         << "\n### Straight into Mode X, or into RAM and a blit\n\n"
         << "On each scene, target and bus: the fastest whole frame (cycles a pixel drawn) of the mappers that draw straight into "
            "the VGA's page (surface vga), against the fastest that draw into RAM and blit the page (linear, planar). Which wins "

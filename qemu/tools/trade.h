@@ -82,6 +82,9 @@ void mark_pareto(std::vector<TradeRow>& rows);
 // The front of (cost, error) points, both to be minimised: the indices on it (the rule above).
 std::vector<size_t> pareto_front(const std::vector<std::pair<double, double>>& points);
 
+// The rows' scenes, in the order they first appear.
+std::vector<std::string> scenes_in_order(const std::vector<TradeRow>& rows);
+
 // build/report/trade.csv: a header line naming each column with its unit, then one line a row.
 void write_csv(const std::string& path, const std::vector<TradeRow>& rows);
 std::vector<std::string> csv_header();
