@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "kernel/lib/encode.h"
 #include "qemu/harness/readback.h"
@@ -17,6 +18,24 @@ namespace harness {
 std::string build_dir() {
     const char* env = std::getenv("MODEXLAB_BUILD_DIR");
     return env && *env ? env : MODEXLAB_BUILD_DIR;
+}
+
+uint64_t elf_symbol(const std::string& elf, const std::string& name) {
+    FILE* p = popen(("nm -P " + elf + " 2>/dev/null").c_str(), "r");
+    if (!p) return 0;
+    // whole, then line by line: C++ symbols (lambdas in templates) run to hundreds of characters
+    std::string text;
+    char chunk[4096];
+    for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, p)) > 0;) text.append(chunk, n);
+    pclose(p);
+    std::istringstream lines(text);
+    uint64_t found = 0;
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream fields(line);
+        std::string symbol, type, address;
+        if (fields >> symbol >> type >> address && symbol == name) found = std::stoull(address, nullptr, 16);
+    }
+    return found;
 }
 
 Session::Session(SessionOptions options) : options_(std::move(options)) {

@@ -23,6 +23,9 @@ namespace harness {
 // The build directory (absolute) the harness takes default images from and writes runs into.
 std::string build_dir();
 
+// The address of a symbol in an ELF (nm -P), or 0 where it has none.
+uint64_t elf_symbol(const std::string& elf, const std::string& name);
+
 struct SessionOptions {
     Emulator emulator = Emulator::Qemu;  // Bochs: medium Cdrom; no screendump, no send-key
     Firmware firmware = Firmware::Bios;  // QEMU's (UEFI: an ISO, medium Cdrom or Usb)

@@ -1,7 +1,6 @@
 // The timing plugin's argument and rows (timing_plugin.h).
 #include "qemu/harness/timing_plugin.h"
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -13,19 +12,9 @@ namespace harness {
 std::string timing_plugin_spec(const TimingPlugin& p, const std::string& kernel_elf) {
     const std::string plugin = build_dir() + "/host/libmodexlab-timing.so";
     if (!std::filesystem::exists(plugin)) throw HarnessError("no " + plugin + " (make host builds it)");
-    FILE* nm = popen(("nm " + kernel_elf + " 2>/dev/null").c_str(), "r");
-    if (!nm) throw HarnessError("cannot run nm");
-    std::string marks;
-    char line[512];
-    while (fgets(line, sizeof line, nm)) {
-        unsigned long long address = 0;
-        char type = 0, name[400] = "";
-        if (std::sscanf(line, "%llx %c %399s", &address, &type, name) == 3 && std::string(name) == "modexlab_cycle_marks")
-            marks = std::to_string(address);
-    }
-    pclose(nm);
-    if (marks.empty()) throw HarnessError(kernel_elf + ": no symbol modexlab_cycle_marks (the timing plugin's marks)");
-    std::string spec = plugin + ",cpu=" + p.cpu + ",precision=" + std::to_string(p.precision) + ",marks=" + marks + ",out=" + p.out;
+    const uint64_t marks = elf_symbol(kernel_elf, "modexlab_cycle_marks");
+    if (!marks) throw HarnessError(kernel_elf + ": no symbol modexlab_cycle_marks (the timing plugin's marks)");
+    std::string spec = plugin + ",cpu=" + p.cpu + ",precision=" + std::to_string(p.precision) + ",marks=" + std::to_string(marks) + ",out=" + p.out;
     for (const std::string& b : p.buses) spec += ",bus=" + b;
     return spec;
 }

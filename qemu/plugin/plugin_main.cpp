@@ -41,7 +41,7 @@ struct Block {
 struct Plugin {
     std::unique_ptr<Machine> machine;
     timing::Cpu cpu = timing::Cpu::Pentium;
-    std::string cpu_name, out_path;
+    std::string cpu_name;
     int precision = 53;
     uint64_t marks = 0;
     std::vector<std::unique_ptr<Block>> blocks;  // every block translated (QEMU may translate one again)

@@ -151,6 +151,32 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
     return row;
 }
 
+// Every single mapper's rows and auto's at the scene's budget benched again in `k` (the same
+// frames), the progress named `label`: each must draw the pixels it drew before; `after` takes the
+// scene, the row, the reply and the last frame's event. Ends the session.
+template <typename After>
+void bench_again(Session& k, const std::string& label, std::vector<BenchScene>& scenes, int frames, std::vector<TradeRow>& rows, After after) {
+    auto taken = [](const TradeRow& r) { return single_mapper(r) || r.mapper == "auto"; };
+    k.ok("mode modex");
+    size_t done = 0, total = 0;
+    for (const TradeRow& r : rows) total += taken(r);
+    for (BenchScene& s : scenes) {
+        load_in_kernel(k, s);
+        for (TradeRow& row : rows) {
+            if (row.scene != s.name || !taken(row)) continue;
+            std::fprintf(stderr, "[%s %zu/%zu] %s %s ", label.c_str(), ++done, total, s.name.c_str(), row.mapper.c_str());
+            json last;
+            const json r = k.ok("bench " + std::to_string(frames) + " " + row.mapper + " " + row.surface, [&](const json& e) { last = e; });
+            if (r["pixels"].get<uint64_t>() != row.pixels)
+                throw HarnessError(s.name + " " + row.mapper + ": the " + label + " pass drew " + r["pixels"].dump() + " pixels, the first " +
+                                   std::to_string(row.pixels));
+            after(s, row, r, last);
+        }
+    }
+    k.ok("exit 0");
+    k.wait_exit();
+}
+
 // The 486's build of the kernel's C++ (booted isa=i486; the bench's QEMU CPU, a P6, runs the P6's
 // otherwise): every mapper's row and auto's at the scene's budget drawn again, the same pixels and
 // the same picture as the host's, their drawing's ticks kept in draw_i486.
@@ -161,37 +187,22 @@ void bench_486_path(const SessionOptions& p6, std::vector<BenchScene>& scenes, i
     Session k(o);
     const json hello = k.ok("hello");
     if (hello.value("isa", std::string()) != "i486") throw HarnessError("the kernel booted isa=i486 runs the " + hello.value("isa", std::string("?")) + " build");
-    auto taken = [](const TradeRow& r) { return single_mapper(r) || r.mapper == "auto"; };
-    k.ok("mode modex");
-    size_t done = 0, total = 0;
-    for (const TradeRow& r : rows) total += taken(r);
-    for (BenchScene& s : scenes) {
-        load_in_kernel(k, s);
-        for (TradeRow& row : rows) {
-            if (row.scene != s.name || !taken(row)) continue;
-            const raster::Mapper& m = *raster::find_mapper({row.mapper.data(), row.mapper.size()});
-            std::fprintf(stderr, "[486 path %zu/%zu] %s %s ", ++done, total, s.name.c_str(), m.name);
-            json last;
-            const json r = k.ok("bench " + std::to_string(frames) + " " + m.name + " " + row.surface, [&](const json& e) { last = e; });
-            if (r["pixels"].get<uint64_t>() != row.pixels)
-                throw HarnessError(s.name + " " + m.name + ": the 486 path drew " + r["pixels"].dump() + " pixels, the P6 path " + std::to_string(row.pixels));
-            auto frame = world_frame(s.host, last["frame"].get<int32_t>());
-            const raster::Axis axis = row.walker == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
-            const IndexImage want = render_world_frame(s.host, *frame, m, axis);
-            const bool equal = k.screendump("bench-i486-" + s.name + "-" + m.name).rgb == screendump_of(want, s.host.world->palette).rgb;
-            row.kernel_equals_host = row.kernel_equals_host && equal;
-            row.draw_i486 = sum_of(r, "ticks_draw");
-            std::fprintf(stderr, "%.1f instructions/pixel drawing (P6 path %.1f)%s\n", row.per_pixel(row.draw_i486), row.draw_per_pixel(),
-                         equal ? "" : ", kernel DIFFERS from host");
-        }
-    }
-    k.ok("exit 0");
-    k.wait_exit();
+    bench_again(k, "486 path", scenes, frames, rows, [&](BenchScene& s, TradeRow& row, const json& r, const json& last) {
+        const raster::Mapper& m = *raster::find_mapper({row.mapper.data(), row.mapper.size()});
+        auto frame = world_frame(s.host, last["frame"].get<int32_t>());
+        const raster::Axis axis = row.walker == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
+        const IndexImage want = render_world_frame(s.host, *frame, m, axis);
+        const bool equal = k.screendump("bench-i486-" + s.name + "-" + m.name).rgb == screendump_of(want, s.host.world->palette).rgb;
+        row.kernel_equals_host = row.kernel_equals_host && equal;
+        row.draw_i486 = sum_of(r, "ticks_draw");
+        std::fprintf(stderr, "%.1f instructions/pixel drawing (P6 path %.1f)%s\n", row.per_pixel(row.draw_i486), row.draw_per_pixel(),
+                     equal ? "" : ", kernel DIFFERS from host");
+    });
 }
 
 // The timing model's cycles (docs/cycles.md, "Whole frames"): the kernel under QEMU's `-cpu
 // target` with the timing plugin, every single mapper's rows and auto's at the scene's budget drawn
-// again, the same pixels as before, the plugin's rows (a bench row and bus each) kept in the row.
+// again, the plugin's rows (a bench row and bus each) kept in the row.
 void cycles_pass(const SessionOptions& p6, const std::string& target, std::vector<BenchScene>& scenes, int frames, std::vector<TradeRow>& rows) {
     SessionOptions o = p6;
     o.name = "bench-" + target;
@@ -203,39 +214,25 @@ void cycles_pass(const SessionOptions& p6, const std::string& target, std::vecto
     std::filesystem::remove(plugin.out);
     o.plugin = timing_plugin_spec(plugin, o.image.empty() ? build_dir() + "/kernel/modexlab.elf" : o.image);
     Session k(o);
-    k.ok("mode modex");
-    auto taken = [](const TradeRow& r) { return single_mapper(r) || r.mapper == "auto"; };
-    size_t done = 0, total = 0, read = 0;
-    for (const TradeRow& r : rows) total += taken(r);
-    for (BenchScene& s : scenes) {
-        load_in_kernel(k, s);
-        for (TradeRow& row : rows) {
-            if (row.scene != s.name || !taken(row)) continue;
-            std::fprintf(stderr, "[%s %zu/%zu] %s %s ", target.c_str(), ++done, total, s.name.c_str(), row.mapper.c_str());
-            const json r = k.ok("bench " + std::to_string(frames) + " " + row.mapper + " " + row.surface, [](const json&) {});
-            if (r["pixels"].get<uint64_t>() != row.pixels)
-                throw HarnessError(s.name + " " + row.mapper + ": under the timing plugin the kernel drew " + r["pixels"].dump() +
-                                   " pixels, before " + std::to_string(row.pixels));
-            const std::vector<json> lines = timing_plugin_rows(plugin.out);
-            if (lines.size() != read + plugin.buses.size())
-                throw HarnessError(plugin.out + ": " + std::to_string(lines.size()) + " lines after " + std::to_string(done) +
-                                   " rows; expected one a bus each row");
-            TradeRow::Cycles& c = target == "486" ? row.cycles_486 : row.cycles_pentium;
-            for (size_t b = 0; b < plugin.buses.size(); ++b) {
-                const json& l = lines[read + b];
-                c.frame[b] = l["frame_cycles"].get<uint64_t>();
-                if (b == 0) {
-                    c.inner = l["inner"].get<uint64_t>();
-                    c.draw = c.inner + l["setup"].get<uint64_t>() + l["walk"].get<uint64_t>() + l["choose"].get<uint64_t>();
-                }
+    size_t read = 0;
+    bench_again(k, target, scenes, frames, rows, [&](BenchScene&, TradeRow& row, const json&, const json&) {
+        const std::vector<json> lines = timing_plugin_rows(plugin.out);
+        if (lines.size() != read + plugin.buses.size())
+            throw HarnessError(plugin.out + ": " + std::to_string(lines.size()) + " lines after " + std::to_string(read / plugin.buses.size() + 1) +
+                               " rows; expected one a bus each row");
+        TradeRow::Cycles& c = target == "486" ? row.cycles_486 : row.cycles_pentium;
+        for (size_t b = 0; b < plugin.buses.size(); ++b) {
+            const json& l = lines[read + b];
+            c.frame[b] = l["frame_cycles"].get<uint64_t>();
+            if (b == 0) {
+                c.inner = l["inner"].get<uint64_t>();
+                c.draw = c.inner + l["setup"].get<uint64_t>() + l["walk"].get<uint64_t>() + l["choose"].get<uint64_t>();
             }
-            read = lines.size();
-            std::fprintf(stderr, "%.1f cycles/pixel drawing, %.1f a frame's pixel (zero-wait), %.1f (isa)\n", row.per_pixel(c.draw),
-                         row.per_pixel(c.frame[0]), row.per_pixel(c.frame[1]));
         }
-    }
-    k.ok("exit 0");
-    k.wait_exit();
+        read = lines.size();
+        std::fprintf(stderr, "%.1f cycles/pixel drawing, %.1f a frame's pixel (zero-wait), %.1f (isa)\n", row.per_pixel(c.draw),
+                     row.per_pixel(c.frame[0]), row.per_pixel(c.frame[1]));
+    });
 }
 
 // Frames per second in QEMU without icount: the emulator's cost of VGA memory against RAM and

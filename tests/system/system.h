@@ -52,25 +52,7 @@ inline SessionOptions options_for_this_test() {
 }
 
 // The address of a symbol in the kernel ELF (nm -P), or 0 when missing.
-inline uint32_t kernel_symbol(const std::string& name) {
-    std::string cmd = "nm -P " + build_dir() + "/kernel/modexlab.elf";
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return 0;
-    // line by line: C++ symbols (lambdas in templates) run to hundreds of characters
-    std::string text;
-    char chunk[4096];
-    for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, p)) > 0;) text.append(chunk, n);
-    pclose(p);
-    std::istringstream lines(text);
-    std::string line, sym, type;
-    unsigned long found = 0;
-    while (std::getline(lines, line)) {
-        std::istringstream fields(line);
-        std::string addr;
-        if (fields >> sym >> type >> addr && sym == name) found = std::stoul(addr, nullptr, 16);
-    }
-    return uint32_t(found);
-}
+inline uint32_t kernel_symbol(const std::string& name) { return uint32_t(elf_symbol(build_dir() + "/kernel/modexlab.elf", name)); }
 
 struct ToolRun {
     int status;
