@@ -8,6 +8,21 @@
 
 namespace raster {
 
+const char* cost_target_name(CostTarget t) { return t == CostTarget::I486 ? "486" : t == CostTarget::Pentium ? "pentium" : "icount"; }
+
+bool cost_target_named(const char* word, size_t length, CostTarget* t) {
+    for (int i = 0; i < int(CostTarget::Count); ++i) {
+        const char* name = cost_target_name(CostTarget(i));
+        size_t n = 0;
+        while (name[n] && n < length && name[n] == word[n]) ++n;
+        if (!name[n] && n == length) {
+            *t = CostTarget(i);
+            return true;
+        }
+    }
+    return false;
+}
+
 bool choosable(const Mapper& m) { return !m.is_auto && !m.own_walker && m.bound && m.bound != unbounded; }
 bool drawn_by_auto(const Mapper& m) { return choosable(m) || m.draw == fast_oriented_draw<4>; }
 
@@ -68,6 +83,7 @@ namespace {
 // than the cheapest priced and not yet asked (the dearest per pixel are mostly never priced).
 struct Candidates {
     bool built = false;
+    CostTarget priced_for = CostTarget::Icount;  // the cost model it was built with (rebuilt on a change)
     int count = 0;
     int certain = -1;  // the first that promises the reference itself (exact): its bound costs nothing and always holds
     int16_t row[2 * MAPPER_LIMIT] = {};
@@ -101,7 +117,10 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
     const bool exact_coverage = budget.exact_coverage, no_error = budget.max_error == 0;
     Candidates& c = cache[(tex.bordered ? 1 : 0) | (whole256 ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0) | (no_error ? 16 : 0) |
                           (doubled ? 32 : 0) | (any_wrap ? 64 : 0) | (repeat ? 128 : 0)];
-    if (c.built) return c;
+    const CostModel& model = cost_model(budget.target);
+    if (c.built && c.priced_for == budget.target) return c;
+    c = Candidates{};
+    c.priced_for = budget.target;
     for (int a = 0; a < 2; ++a)
         for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {
             const Mapper& m = MAPPERS[i];
@@ -109,7 +128,7 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
             if ((exact_coverage && !m.guarantee.exact_coverage) || (no_error && m.guarantee.max_error != 0)) continue;
             // insertion by the cost per pixel, rows not measured last (stable: ties keep rows first,
             // registry order)
-            const CostRow cost = proven_cost(m, cost_row(MAPPER_COSTS[i]));
+            const CostRow cost = proven_cost(m, cost_row(model.rows[i]), model.proof_scale);
             auto key = [](const CostRow& r) { return r.polygon < 1e29 ? r.pixel : 1e300; };
             int k = c.count++;
             for (; k > 0 && key(c.cost[k - 1]) > key(cost); --k)
@@ -120,7 +139,7 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
         for (int two = 0; two < 2; ++two)
             if (MAPPERS[c.row[k]].span == (two ? fast_adaptive_span<8> : fast_adaptive_span<4>)) c.adaptive[two][int(c.axis[k])] = k;
     for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i)
-        if (MAPPERS[i].draw == fast_oriented_draw<4> && mapper_accepts(MAPPERS[i], tex) && MAPPER_COSTS[i].polygon >= 0) c.oriented_row = i;
+        if (MAPPERS[i].draw == fast_oriented_draw<4> && mapper_accepts(MAPPERS[i], tex) && model.rows[i].polygon >= 0) c.oriented_row = i;
     for (int k = 0; k < c.count; ++k)
         if (MAPPERS[c.row[k]].span == fast_subdiv_span<FAST_SPAN_LONG> && c.cost[k].polygon < 1e29) c.constant_depth[int(c.axis[k])] = k;
     for (int k = c.count - 1; k >= 0; --k) {
@@ -139,7 +158,7 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
         if (!MAPPERS[c.row[j]].enveloped) continue;
         if (c.enveloped_count++ == 0)
             c.enveloped_first = j, c.envelope_cheapest = true, c.envelope_pixels = 1e300, c.envelope_lines = double(ENVELOPE_REACH + 1);
-        const CostRow own = cost_row(MAPPER_COSTS[c.row[j]]);  // proven for nothing
+        const CostRow own = cost_row(model.rows[c.row[j]]);  // proven for nothing
         for (int k = 0; k < c.count; ++k) {
             if (MAPPERS[c.row[k]].enveloped) continue;
             const CostRow& other = c.cost[k];
@@ -149,7 +168,8 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
             // costs less a line, the lines limited where needed so that they take at most half of
             // what its setup costs more; and where it costs less a pixel, the most pixels up to
             // which what it costs more for the rest is not made up
-            const double polygon = other.polygon + (certain ? ENVELOPE_SETUP_ALLOWANCE : 0) - own.polygon, span = other.span - own.span;
+            const double polygon = other.polygon + (certain ? ENVELOPE_SETUP_ALLOWANCE * model.proof_scale : 0) - own.polygon;
+            const double span = other.span - own.span;
             if (span < 0 && polygon + span * c.envelope_lines < 0 && polygon > 0) c.envelope_lines = polygon / (2 * -span);
             const double fixed = polygon + (span < 0 ? span * c.envelope_lines : span);
             if (fixed < 0 || c.envelope_lines < 1) c.envelope_cheapest = false;
@@ -197,6 +217,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     prepared->status = SetupStatus::Unsupported;
     const Candidates& list = candidates(tex, target, budget);
     if (list.count == 0) return choice;
+    const CostModel& model = cost_model(budget.target);
     // set up once, for both walkers (the spread and the spans come when a bound asks for them)
     prepare_setup(vertices, count, prepared, input);
     probe_lap(probe, Phase::Setup);
@@ -301,24 +322,25 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         if (a >= 0 && proven()) {
             oriented = two ? &m : &MAPPERS[list.oriented_row];
             oriented_bound.footprint = within;
-            estimate = estimate_cost(MAPPER_COSTS[oriented - MAPPERS], size[int(oriented_walker)]);
+            estimate = estimate_cost(model.rows[oriented - MAPPERS], size[int(oriented_walker)]);
         }
         // (asked once, where needed)
         int ruled_out = -1;
+        const double gate = ORIENTED_GATE * model.proof_scale;
         auto affine_ruled_out = [&] { return ruled_out < 0 ? (ruled_out = affine_deviation(s, target.clip) > budget.max_error) : ruled_out; };
         const int d = list.constant_depth[int(oriented_walker)];
         const bool by_spread = !inside && oriented;
         const FastCertificate chords = d < 0 ? FastCertificate{} : by_spread ? fast_certificate(prepared_spread(prepared, target.clip)) : certificate;
         if (chords.holds) {
             const Mapper& c = MAPPERS[list.row[d]];
-            const double priced_at = estimate_cost(MAPPER_COSTS[list.row[d]], size[int(oriented_walker)]);
-            const double bound = priced_at < estimate && (!by_spread || priced_at <= least_cost(0) + ORIENTED_GATE || affine_ruled_out())
+            const double priced_at = estimate_cost(model.rows[list.row[d]], size[int(oriented_walker)]);
+            const double bound = priced_at < estimate && (!by_spread || priced_at <= least_cost(0) + gate || affine_ruled_out())
                                      ? fast_chords_bound(chords, s, oriented_walker, FAST_SPAN_LONG)
                                      : NO_BOUND;
             if (bound <= budget.max_error) oriented = &c, oriented_bound.footprint = bound, estimate = priced_at;
         }
         if (oriented) {
-            if (estimate <= least_cost(0) + ORIENTED_GATE || affine_ruled_out()) return Choice{oriented, oriented_walker, oriented_bound, false};
+            if (estimate <= least_cost(0) + gate || affine_ruled_out()) return Choice{oriented, oriented_walker, oriented_bound, false};
             oriented_price = price_of(estimate);
         }
     }
@@ -339,7 +361,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     }
     for (int i = 0; i < n; ++i) {
         const int k = before[i];
-        price[k] = price_of(walks[k] ? cost[k] : cost[k] + BOUND_SPAN_COST * size[int(list.axis[k])].spans);
+        price[k] = price_of(walks[k] ? cost[k] : cost[k] + BOUND_SPAN_COST * model.proof_scale * size[int(list.axis[k])].spans);
     }
     for (int k; n > 0 && (k = cheapest(ceiling)) >= 0;)
         if (ask(k, false)) break;
@@ -362,6 +384,7 @@ double corner_footprint(const Vertex* v) {
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint) {
     const Candidates& list = candidates(tex, target, budget);
     AutoPlan plan = list.plan;
+    plan.choice_cost = CHOICE_COST * cost_model(budget.target).proof_scale;
     // below a budget of 1, every bound but the certain one's is at least 1 / max(1, F) (a rounding
     // of some texel, over the footprint F where it is least): within it only where F >= 1 / budget
     plan.exact_below = budget.max_error > 0 && budget.max_error < 1 ? 1 / budget.max_error : 0;
@@ -373,7 +396,7 @@ AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& targe
     if (plan.certain && !plan.sole && plan.exact_below == 0 && mine.pixel > least.pixel) {
         const double most_lines = double(larger(target.clip.x1 - target.clip.x0, target.clip.y1 - target.clip.y0));
         const double span = mine.span < least.span ? (mine.span - least.span) * most_lines : 0;
-        const double p0 = (CHOICE_COST - (mine.polygon - least.polygon) - span) / (mine.pixel - least.pixel) + 1;
+        const double p0 = (plan.choice_cost - (mine.polygon - least.polygon) - span) / (mine.pixel - least.pixel) + 1;
         const double one = double(SUBPIXEL_ONE), above2 = 2 * (p0 > 0 ? p0 : 0) * one * one;
         if (above2 < 1e18) plan.choosing_pays_above2 = int64_t(above2);
     }
@@ -424,7 +447,7 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     const bool rows_fewer = lines[0] < lines[1];
     const double others_lines = lines[(plan.others.span < 0) == rows_fewer ? 1 : 0];  // (a fitted cost below 0: where they are most)
     const double least = plan.others.polygon + plan.others.span * others_lines + plan.others.pixel * pixels;
-    if (best <= least + CHOICE_COST) return plan.certain;
+    if (best <= least + plan.choice_cost) return plan.certain;
     // (only where the polygon lies inside the clip: its first corner is then among the pixels
     // drawn, not off the screen where a wall comes nearest)
     const int32_t one_px = SUBPIXEL_ONE;

@@ -10,13 +10,21 @@
 
 namespace raster {
 
+// The unit auto prices its candidates in (docs/auto.md, "Per target"): instructions under QEMU's
+// icount, or the timing model's cycles on a 486 or a Pentium (docs/cycles.md).
+enum class CostTarget : uint8_t { Icount, I486, Pentium, Count };
+// Its word in scene files, commands and replies ("icount", "486", "pentium"), and back (false: none).
+const char* cost_target_name(CostTarget t);
+bool cost_target_named(const char* word, size_t length, CostTarget* t);
+
 // What a scene requires of a mapper: the largest footprint error, and whether the pixels drawn
-// must be exactly the reference's.
+// must be exactly the reference's; and the machine auto is to be cheapest on.
 constexpr double ANY_ERROR = -1;
 struct Budget {
     bool given = false;          // from the scene's budget line (else the default)
     double max_error = 1;        // footprints (docs/accuracy.md); ANY_ERROR: any
     bool exact_coverage = true;  // no gaps, no overdraw
+    CostTarget target = CostTarget::Icount;
 };
 // Scenes without a budget line: within one footprint, exact coverage.
 constexpr Budget DEFAULT_BUDGET{};
@@ -25,15 +33,25 @@ inline bool budget_allows(const Budget& b, const ErrorBound& e) {
     return e.draws && (e.exact_coverage || !b.exact_coverage) && (b.max_error < 0 || e.footprint <= b.max_error);
 }
 
-// The cost model (kernel/mappers/costs.cpp, written by `make bench` from its own figures):
-// instructions under QEMU icount to set up a polygon, per span (walking and the loop's call), per
-// pixel. One row per registry row, in its order.
+// The cost model (kernel/mappers/costs.cpp, written by `make bench` from its own figures): per
+// target, the cost to set up a polygon, per span (walking and the loop's call), per pixel, in the
+// target's unit. One row per registry row, in its order.
 struct MapperCost {
     const char* mapper;
     float polygon, span, pixel;
 };
-extern const MapperCost MAPPER_COSTS[];
+extern const MapperCost MAPPER_COSTS[];  // icount's
 extern const int MAPPER_COST_COUNT;
+// A target's rows, and what an instruction of auto's own work (its proofs and pricing, whose
+// costs below are in instructions) costs there: the bench's cycles over instructions of auto's
+// choosing (1 for icount).
+struct CostModel {
+    const char* target;
+    const MapperCost* rows;
+    double proof_scale;
+};
+extern const CostModel COST_MODELS[int(CostTarget::Count)];
+inline const CostModel& cost_model(CostTarget t) { return COST_MODELS[int(t)]; }
 
 // A polygon's size as the cost model counts it, from its setup (before any walk): its lines along
 // the walker (rows or columns, from the bounding box inside the clip) and its pixels (its area, at
@@ -68,6 +86,7 @@ struct Choice {
     bool by_spans = false;           // proven span by span (else by the whole polygon at once)
 };
 
+// auto's own costs below are instructions under icount; on a cycle target, times its proof_scale.
 // What proving a bound span by span costs auto, in instructions a span of the polygon: its bounds'
 // walk of the span (a line, the coarse bound, pieces where needed) in the kernel, from the bench's
 // figures (docs/auto.md, "The rule").
@@ -89,11 +108,12 @@ inline bool bound_walks(const Mapper& m) { return !m.guarantee.exact_coverage; }
 inline bool proven_by_spans(const Mapper& m) { return bound_walks(m) || m.span_proof == SPANS_ASKED; }
 // A candidate's cost to auto with its first proof, as a cost row: its estimate and the
 // whole-polygon bound (whole_proof_cost), or, for a mapper whose bound walks, its setup and walk
-// again (its row without the pixels) and BOUND_SPAN_COST a line. A candidate proven span by span
-// after its whole-polygon bound (proven_by_spans) costs BOUND_SPAN_COST a span more.
-inline CostRow proven_cost(const Mapper& m, const CostRow& row) {
-    if (bound_walks(m)) return CostRow{2 * row.polygon, 2 * row.span + BOUND_SPAN_COST, row.pixel};
-    return CostRow{row.polygon + whole_proof_cost(m), row.span, row.pixel};
+// again (its row without the pixels) and BOUND_SPAN_COST a line; the proofs' instructions times
+// `proof_scale` (CostModel). A candidate proven span by span after its whole-polygon bound
+// (proven_by_spans) costs BOUND_SPAN_COST a span more.
+inline CostRow proven_cost(const Mapper& m, const CostRow& row, double proof_scale) {
+    if (bound_walks(m)) return CostRow{2 * row.polygon, 2 * row.span + BOUND_SPAN_COST * proof_scale, row.pixel};
+    return CostRow{row.polygon + whole_proof_cost(m) * proof_scale, row.span, row.pixel};
 }
 // The cheapest choosable mapper and walker by the cost model, its proof counted (proven_cost), that
 // draws into targets like `target`, takes the texture and whose bound meets the budget on the
@@ -152,6 +172,7 @@ struct AutoPlan {
     bool sole;
     CostRow others;
     double exact_below;  // a budget below 1: the footprint (corner_footprint) below which only the certain one can meet it; else 0
+    double choice_cost;  // CHOICE_COST in the budget's target's unit
     // twice the pixels (subpixels squared) above which unchosen_mapper gives nullptr at once, from
     // the corners' box and area in integers (no exact_below, and the certain one costs more a
     // pixel than the least of the others): there its estimate on either walker is above theirs on

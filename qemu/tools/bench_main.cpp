@@ -225,8 +225,9 @@ void cycles_pass(const SessionOptions& p6, const std::string& target, std::vecto
             const json& l = lines[read + b];
             c.frame[b] = l["frame_cycles"].get<uint64_t>();
             if (b == 0) {
-                c.inner = l["inner"].get<uint64_t>();
-                c.draw = c.inner + l["setup"].get<uint64_t>() + l["walk"].get<uint64_t>() + l["choose"].get<uint64_t>();
+                c.setup = l["setup"].get<uint64_t>(), c.walk = l["walk"].get<uint64_t>();
+                c.inner = l["inner"].get<uint64_t>(), c.choose = l["choose"].get<uint64_t>();
+                c.draw = c.setup + c.walk + c.inner + c.choose;
             }
         }
         read = lines.size();
@@ -337,7 +338,9 @@ void write_costs(const std::string& csv, const std::string& dir) {
     std::filesystem::create_directories(dir);
     const std::vector<std::vector<std::string>> rows = read_csv(csv);
     const std::string source = std::filesystem::path(csv).filename().string() + " of a make bench run";
-    write_text(dir + "/costs.cpp", cost_model_source(fit_costs(rows), source));
+    harness::FittedModel models[int(raster::CostTarget::Count)];
+    for (int t = 0; t < int(raster::CostTarget::Count); ++t) models[t] = fit_costs(rows, raster::CostTarget(t));
+    write_text(dir + "/costs.cpp", cost_model_source(models, source));
     write_text(dir + "/errors.cpp", measured_errors_source(rows, source));
     std::printf("cost model: %s/costs.cpp, measured errors: %s/errors.cpp\n", dir.c_str(), dir.c_str());
 }

@@ -118,7 +118,9 @@ std::vector<std::string> csv_header() {
             "ticks_draw_i486[instructions]",
             "cycles_486_draw[cycles]", "cycles_486_inner[cycles]", "cycles_486_frame_zero-wait[cycles]", "cycles_486_frame_isa[cycles]",
             "cycles_486_frame_vlb[cycles]", "cycles_pentium_draw[cycles]", "cycles_pentium_inner[cycles]",
-            "cycles_pentium_frame_zero-wait[cycles]", "cycles_pentium_frame_isa[cycles]", "cycles_pentium_frame_vlb[cycles]"};
+            "cycles_pentium_frame_zero-wait[cycles]", "cycles_pentium_frame_isa[cycles]", "cycles_pentium_frame_vlb[cycles]",
+            "cycles_486_setup[cycles]", "cycles_486_walk[cycles]", "cycles_486_choose[cycles]",
+            "cycles_pentium_setup[cycles]", "cycles_pentium_walk[cycles]", "cycles_pentium_choose[cycles]"};
 }
 
 namespace {
@@ -157,6 +159,8 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
         for (const TradeRow::Cycles* c : {&r.cycles_486, &r.cycles_pentium})
             out << "," << count_or_empty(c->draw) << "," << count_or_empty(c->inner) << "," << count_or_empty(c->frame[0]) << ","
                 << count_or_empty(c->frame[1]) << "," << count_or_empty(c->frame[2]);
+        for (const TradeRow::Cycles* c : {&r.cycles_486, &r.cycles_pentium})
+            out << "," << count_or_empty(c->setup) << "," << count_or_empty(c->walk) << "," << count_or_empty(c->choose);
         out << "\n";
     }
 }
@@ -248,9 +252,12 @@ std::vector<TradeRow> read_trade(const std::string& path) {
         // the timing model's columns, where the CSV has them (a bench of an earlier version has not)
         auto cycles = [&](const std::string& target, TradeRow::Cycles* c) {
             const std::string p = "cycles_" + target + "_";
-            if (std::find_if(header.begin(), header.end(), [&](const std::string& h) { return h.rfind(p, 0) == 0; }) == header.end()) return;
-            auto optional = [&](const std::string& name) { return text(name.c_str()).empty() ? 0 : count(name.c_str()); };
+            auto optional = [&](const std::string& name) {
+                const bool has = std::find_if(header.begin(), header.end(), [&](const std::string& h) { return h.rfind(name + "[", 0) == 0; }) != header.end();
+                return !has || text(name.c_str()).empty() ? 0 : count(name.c_str());
+            };
             c->draw = optional(p + "draw"), c->inner = optional(p + "inner");
+            c->setup = optional(p + "setup"), c->walk = optional(p + "walk"), c->choose = optional(p + "choose");
             c->frame[0] = optional(p + "frame_zero-wait"), c->frame[1] = optional(p + "frame_isa"), c->frame[2] = optional(p + "frame_vlb");
         };
         cycles("486", &r.cycles_486);

@@ -59,8 +59,8 @@ struct TradeRow {
     // or pentium with the timing plugin: docs/cycles.md, "Whole frames"): the drawing's (setup,
     // walking, inner loops, choosing) and the inner loops', and the frame's (its plain drawing:
     // geometry, clearing, drawing, the blit) on each bus, zero-wait, isa and vlb; 0: not measured
-    struct Cycles {
-        uint64_t draw = 0, inner = 0, frame[3] = {};
+    struct Cycles {  // draw = setup + walk + inner + choose (the probe's phases, net of the laps)
+        uint64_t draw = 0, setup = 0, walk = 0, inner = 0, choose = 0, frame[3] = {};
     };
     Cycles cycles_486, cycles_pentium;
 

@@ -121,7 +121,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 polygon_sizes(setup, target.clip, sizes);
                 // what a candidate costs with its proof, or nothing where it has none within the budget
                 auto total = [&](const Mapper& m, Axis axis) {
-                    const double cost = estimate_cost(proven_cost(m, cost_row(MAPPER_COSTS[&m - MAPPERS])), sizes[int(axis)]);
+                    const double cost = estimate_cost(proven_cost(m, cost_row(MAPPER_COSTS[&m - MAPPERS]), 1), sizes[int(axis)]);
                     BoundContext whole{m, tex, axis, target.clip, b.max_error < 0 ? NO_BOUND : b.max_error, nullptr, true};
                     if (!bound_walks(m) && budget_allows(b, m.bound(whole, p.data(), 3))) return cost;
                     if (proven_by_spans(m) && budget_allows(b, m.bound(BoundContext{m, tex, axis, target.clip}, p.data(), 3)))
@@ -174,7 +174,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                             const Mapper& m = MAPPERS[i];
                             if (!choosable(m) || !mapper_walks(m, axis) || !mapper_accepts(m, tex) || !mapper_targets(m, target, axis)) continue;
                             if ((b.exact_coverage && !m.guarantee.exact_coverage) || (b.max_error == 0 && m.guarantee.max_error != 0)) continue;
-                            const CostRow r = proven_cost(m, cost_row(MAPPER_COSTS[i]));
+                            const CostRow r = proven_cost(m, cost_row(MAPPER_COSTS[i]), 1);
                             least[0] = std::min(least[0], double(r.polygon)), least[1] = std::min(least[1], double(r.span)), least[2] = std::min(least[2], double(r.pixel));
                         }
                     const double fewest = std::min(sizes[0].spans, sizes[1].spans), most = std::max(sizes[0].spans, sizes[1].spans);
@@ -334,7 +334,7 @@ TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
                 PolygonSize size[2];
                 polygon_sizes(prepared.setup, target.clip, size);
                 const double drawn = estimate_cost(plan.certain_row, size[int(axis)]);
-                const double choice = estimate_cost(proven_cost(*c.mapper, cost_row(MAPPER_COSTS[c.mapper - MAPPERS])), size[int(c.axis)]);
+                const double choice = estimate_cost(proven_cost(*c.mapper, cost_row(MAPPER_COSTS[c.mapper - MAPPERS]), 1), size[int(c.axis)]);
                 // where choosing would pay, only below a budget of 1, for a polygon inside the clip
                 // whose first corner's footprint is below 1 / budget
                 if (drawn > choice + CHOICE_COST + 1e-6) {

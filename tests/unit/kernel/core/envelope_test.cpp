@@ -271,7 +271,7 @@ TEST(Envelope, TakesTrianglesOnlyUpToTheSizeWhereNoOtherCandidateUndercutsIt) {
     // up to the limit, fast-table with its proof costs no less on one line than fast-affine without
     // (fast-table's line costs about as much: the limit may come from it or a dearer candidate)
     const double one = double(SUBPIXEL_ONE), pixels = double(plan.enveloped_area2) / (2 * one * one);
-    const CostRow own = cost_row(MAPPER_COSTS[&fast - MAPPERS]), other = proven_cost(table, cost_row(MAPPER_COSTS[&table - MAPPERS]));
+    const CostRow own = cost_row(MAPPER_COSTS[&fast - MAPPERS]), other = proven_cost(table, cost_row(MAPPER_COSTS[&table - MAPPERS]), 1);
     // (where fast-table's line costs less, at the most lines the envelope takes)
     ASSERT_LE(plan.enveloped_extent, (ENVELOPE_REACH + 1) * SUBPIXEL_ONE);
     const double lines = other.span < own.span ? double(plan.enveloped_extent) / one : 1;

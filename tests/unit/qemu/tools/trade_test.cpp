@@ -199,19 +199,22 @@ TEST(Trade, TheCsvReadBackIsTheSameRows) {
     // bench's) still reads, its cycles not measured
     {
         std::vector<TradeRow> timed = rows;
-        timed[1].cycles_pentium = TradeRow::Cycles{300, 200, {500, 900, 600}};
-        timed[1].cycles_486 = TradeRow::Cycles{700, 450, {1100, 1300, 1150}};
+        timed[1].cycles_pentium = TradeRow::Cycles{.draw = 300, .setup = 60, .walk = 30, .inner = 200, .choose = 10, .frame = {500, 900, 600}};
+        timed[1].cycles_486 = TradeRow::Cycles{.draw = 700, .inner = 450, .frame = {1100, 1300, 1150}};
         write_csv(dir + "/timed.csv", timed);
         const std::vector<TradeRow> t = read_trade(dir + "/timed.csv");
         EXPECT_EQ(t[1].cycles_pentium.draw, 300u);
         EXPECT_EQ(t[1].cycles_pentium.frame[1], 900u);
         EXPECT_EQ(t[1].cycles_486.inner, 450u);
+        EXPECT_EQ(t[1].cycles_pentium.setup, 60u);
+        EXPECT_EQ(t[1].cycles_pentium.walk, 30u);
+        EXPECT_EQ(t[1].cycles_pentium.choose, 10u);
         EXPECT_EQ(t[0].cycles_486.draw, 0u) << "not measured";
         const std::string table = cycles_table(t);
         EXPECT_NE(table.find("| fast-affine | 4.5 | 7.0 | 11.0 | 13.0 | 11.5 | 2.0 | 3.0 | 5.0 | 9.0 | 6.0 |"), std::string::npos)
             << "100 pixels a row: " << table;
         // straight into Mode X against RAM and the blit: each bus picks its own winner
-        timed[0].surface = "vga", timed[0].cycles_pentium = TradeRow::Cycles{300, 200, {700, 800, 650}};
+        timed[0].surface = "vga", timed[0].cycles_pentium = TradeRow::Cycles{.draw = 300, .inner = 200, .frame = {700, 800, 650}};
         const std::string modex = modex_table(timed);
         EXPECT_NE(modex.find("| a | pentium | zero-wait | exact 7.0 | fast-affine 5.0 | RAM and blit |"), std::string::npos) << modex;
         EXPECT_NE(modex.find("| a | pentium | isa | exact 8.0 | fast-affine 9.0 | straight |"), std::string::npos) << modex;
