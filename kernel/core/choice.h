@@ -3,6 +3,7 @@
 // meets the budget.
 #pragma once
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "kernel/core/bound.h"

@@ -399,11 +399,14 @@ bool top_line(Parser& p, const StrView* w, size_t n) {
         return true;
     }
     if (w[0].equals("budget")) {
-        // budget max-error N|any coverage exact|any
-        if (n != 5 || !w[1].equals("max-error") || !w[3].equals("coverage") || !(w[4].equals("exact") || w[4].equals("any")))
-            return p.fail(Fmt().s("usage: budget max-error N|any coverage exact|any"));
+        // budget max-error N|any coverage exact|any [target icount|486|pentium]
+        if ((n != 5 && n != 7) || !w[1].equals("max-error") || !w[3].equals("coverage") || !(w[4].equals("exact") || w[4].equals("any")) ||
+            (n == 7 && !w[5].equals("target")))
+            return p.fail(Fmt().s("usage: budget max-error N|any coverage exact|any [target icount|486|pentium]"));
         Budget& b = world.budget;
         if (b.given) return p.fail(Fmt().s("a second budget line"));
+        if (n == 7 && !cost_target_named(w[6].data, w[6].size, &b.target))
+            return p.fail(Fmt().s("bad target '").s(w[6]).s("' (icount, 486 or pentium: the machine auto is to be cheapest on)"));
         b.given = true;
         b.exact_coverage = w[4].equals("exact");
         if (w[2].equals("any")) b.max_error = ANY_ERROR;

@@ -242,11 +242,12 @@ void write_budget(lib::JsonLine& r, const char* key, const raster::Budget& b) {
     r.begin_object(key).boolean("given", b.given);
     if (b.max_error < 0) r.str("max_error", "any");
     else r.fixed("max_error", b.max_error, raster::MAX_DECIMALS);  // as given: every decimal the parser takes
-    r.boolean("exact_coverage", b.exact_coverage).end_object();
+    r.boolean("exact_coverage", b.exact_coverage).str("target", raster::cost_target_name(b.target)).end_object();
 }
 
 // budget: shows what auto draws the 3D scene to; `budget scene` goes back to the scene's own,
-// `budget MAX-ERROR|any [exact|any]` sets one (coverage exact unless `any`) until then or the next load.
+// `budget MAX-ERROR|any [exact|any [icount|486|pentium]]` sets one (coverage exact unless `any`,
+// priced for icount unless a target is named) until then or the next load.
 void cmd_budget(Context&, const StrView* args, size_t nargs) {
     if (nargs == 1 && args[0].equals("scene")) {
         current_world::set_budget(nullptr);
@@ -255,10 +256,11 @@ void cmd_budget(Context&, const StrView* args, size_t nargs) {
         b.given = true;
         bool ok = args[0].equals("any") ? (b.max_error = raster::ANY_ERROR, true)
                                         : raster::scene_text::parse_decimal(args[0], &b.max_error) && b.max_error >= 0 && b.max_error <= 1e6;
-        if (nargs == 2) {
+        if (nargs >= 2) {
             ok = ok && (args[1].equals("exact") || args[1].equals("any"));
             b.exact_coverage = args[1].equals("exact");
         }
+        if (nargs == 3) ok = ok && raster::cost_target_named(args[2].data, args[2].size, &b.target);
         if (!ok) {
             usage_error("budget");
             return;

@@ -27,7 +27,7 @@ constexpr Command COMMANDS[] = {
     {"play", "play FRAMES MAPPER [linear|planar|vga] [asm|twin] (the 3D scene, page-flipped)", 2, 4, cmd_play},
     {"bench", "bench FRAMES MAPPER [linear|planar|vga] [asm|twin] (the 3D scene: timings per frame)", 2, 4, cmd_bench},
     {"mappers", "mappers", 0, 0, cmd_mappers},
-    {"budget", "budget [scene|MAX-ERROR|any [exact|any]] (what auto draws the 3D scene to)", 0, 2, cmd_budget},
+    {"budget", "budget [scene|MAX-ERROR|any [exact|any [icount|486|pentium]]] (what auto draws the 3D scene to, and for which machine)", 0, 3, cmd_budget},
     {"selftest", "selftest [CASES]", 0, 1, cmd_selftest},
     {"fuzz", "fuzz N MAPPER [SEED] (N random extreme polygons, drawn between guard pages)", 2, 3, cmd_fuzz},
     {"vbe", "vbe on", 1, 1, cmd_vbe},

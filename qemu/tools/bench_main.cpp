@@ -202,7 +202,8 @@ void bench_486_path(const SessionOptions& p6, std::vector<BenchScene>& scenes, i
 
 // The timing model's cycles (docs/cycles.md, "Whole frames"): the kernel under QEMU's `-cpu
 // target` with the timing plugin, every single mapper's rows and auto's at the scene's budget drawn
-// again, the plugin's rows (a bench row and bus each) kept in the row.
+// again, the plugin's rows (a bench row and bus each) kept in the row; and auto's row once more with
+// the scene's budget priced for the target (docs/auto.md, "Per target"), its picture the host's.
 void cycles_pass(const SessionOptions& p6, const std::string& target, std::vector<BenchScene>& scenes, int frames, std::vector<TradeRow>& rows) {
     SessionOptions o = p6;
     o.name = "bench-" + target;
@@ -215,24 +216,48 @@ void cycles_pass(const SessionOptions& p6, const std::string& target, std::vecto
     o.plugin = timing_plugin_spec(plugin, o.image.empty() ? build_dir() + "/kernel/modexlab.elf" : o.image);
     Session k(o);
     size_t read = 0;
-    bench_again(k, target, scenes, frames, rows, [&](BenchScene&, TradeRow& row, const json&, const json&) {
+    // the plugin's lines of the bench row just run (one a bus)
+    auto plugin_lines = [&]() {
         const std::vector<json> lines = timing_plugin_rows(plugin.out);
         if (lines.size() != read + plugin.buses.size())
             throw HarnessError(plugin.out + ": " + std::to_string(lines.size()) + " lines after " + std::to_string(read / plugin.buses.size() + 1) +
                                " rows; expected one a bus each row");
-        TradeRow::Cycles& c = target == "486" ? row.cycles_486 : row.cycles_pentium;
-        for (size_t b = 0; b < plugin.buses.size(); ++b) {
-            const json& l = lines[read + b];
-            c.frame[b] = l["frame_cycles"].get<uint64_t>();
-            if (b == 0) {
-                c.setup = l["setup"].get<uint64_t>(), c.walk = l["walk"].get<uint64_t>();
-                c.inner = l["inner"].get<uint64_t>(), c.choose = l["choose"].get<uint64_t>();
-                c.draw = c.setup + c.walk + c.inner + c.choose;
-            }
-        }
+        std::vector<json> mine(lines.begin() + std::ptrdiff_t(read), lines.end());
         read = lines.size();
+        return mine;
+    };
+    auto draw_cycles = [](const json& l) {
+        return l["setup"].get<uint64_t>() + l["walk"].get<uint64_t>() + l["inner"].get<uint64_t>() + l["choose"].get<uint64_t>();
+    };
+    raster::CostTarget priced_for = raster::CostTarget::Icount;
+    if (!raster::cost_target_named(target.data(), target.size(), &priced_for)) throw HarnessError("no cost model for the target '" + target + "'");
+    bench_again(k, target, scenes, frames, rows, [&](BenchScene& s, TradeRow& row, const json&, const json&) {
+        const std::vector<json> lines = plugin_lines();
+        TradeRow::Cycles& c = target == "486" ? row.cycles_486 : row.cycles_pentium;
+        for (size_t b = 0; b < plugin.buses.size(); ++b) c.frame[b] = lines[b]["frame_cycles"].get<uint64_t>();
+        c.setup = lines[0]["setup"].get<uint64_t>(), c.walk = lines[0]["walk"].get<uint64_t>();
+        c.inner = lines[0]["inner"].get<uint64_t>(), c.choose = lines[0]["choose"].get<uint64_t>();
+        c.draw = draw_cycles(lines[0]);
         std::fprintf(stderr, "%.1f cycles/pixel drawing, %.1f a frame's pixel (zero-wait), %.1f (isa)\n", row.per_pixel(c.draw),
                      row.per_pixel(c.frame[0]), row.per_pixel(c.frame[1]));
+        if (row.mapper != "auto") return;
+        raster::Budget priced = s.host.world->budget;
+        priced.target = priced_for;
+        k.ok("budget " + (priced.max_error < 0 ? std::string("any") : budget_text(priced.max_error)) + (priced.exact_coverage ? " exact " : " any ") + target);
+        json last;
+        const json r = k.ok("bench " + std::to_string(frames) + " auto " + row.surface, [&](const json& e) { last = e; });
+        k.ok("budget scene");
+        c.priced_draw = draw_cycles(plugin_lines()[0]), c.priced_pixels = r["pixels"].get<uint64_t>();
+        c.priced_by.clear();
+        for (const json& d : r["drawn_by"]) c.priced_by.emplace_back(d["mapper"].get<std::string>(), d["polygons"].get<uint64_t>(), d["pixels"].get<uint64_t>());
+        auto frame = world_frame(s.host, last["frame"].get<int32_t>());
+        frame->budget = priced;
+        const raster::Axis axis = row.walker == "rows" ? raster::Axis::Rows : raster::Axis::Columns;
+        const IndexImage want = render_world_frame(s.host, *frame, *raster::find_mapper("auto"), axis);
+        const bool equal = k.screendump("bench-" + target + "-priced-" + s.name).rgb == screendump_of(want, s.host.world->palette).rgb;
+        row.kernel_equals_host = row.kernel_equals_host && equal;
+        std::fprintf(stderr, "[%s] %s auto priced for the %s: %.1f cycles/pixel drawing%s\n", target.c_str(), s.name.c_str(), target.c_str(),
+                     c.priced_pixels ? double(c.priced_draw) / double(c.priced_pixels) : 0.0, equal ? "" : ", kernel DIFFERS from host");
     });
 }
 

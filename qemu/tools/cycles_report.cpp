@@ -89,3 +89,44 @@ std::string pareto_by_target(const std::vector<TradeRow>& rows) {
 }
 
 }  // namespace harness
+
+namespace harness {
+
+namespace {
+
+// "mapper share%, ..." by pixels, most first
+std::string shares(const TradeRow::DrawnBy& d) {
+    uint64_t total = 0;
+    for (const auto& m : d) total += std::get<2>(m);
+    TradeRow::DrawnBy sorted = d;
+    std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return std::get<2>(a) > std::get<2>(b); });
+    std::string out;
+    for (const auto& m : sorted)
+        out += (out.empty() ? "" : ", ") + std::get<0>(m) + " " + fixed(total ? 100.0 * double(std::get<2>(m)) / double(total) : 0.0, 1) + "%";
+    return out.empty() ? "nothing" : out;
+}
+
+}  // namespace
+
+std::string auto_by_target(const std::vector<TradeRow>& rows) {
+    std::string t =
+        "| scene | budget | 486: priced by icount | for the 486 | Pentium: priced by icount | for the Pentium | drawn for the 486 | drawn for the Pentium |\n"
+        "|---|---|--:|--:|--:|--:|---|---|\n";
+    bool any = false;
+    for (const TradeRow& r : rows) {
+        if (r.mapper != "auto" || !r.pixels || (!r.cycles_486.priced_draw && !r.cycles_pentium.priced_draw)) continue;
+        any = true;
+        auto per = [&](const TradeRow::Cycles& c, bool priced) {
+            if (!c.draw) return std::string("-");
+            return priced ? (c.priced_pixels ? fixed(double(c.priced_draw) / double(c.priced_pixels), 1) : std::string("-")) : fixed(r.per_pixel(c.draw), 1);
+        };
+        const TradeRow::Cycles &a = r.cycles_486, &p = r.cycles_pentium;
+        const bool same = a.priced_by == p.priced_by;
+        t += "| " + r.scene + " | " + budget_text(r.budget_error) + (r.budget_exact ? " exact" : " any") + " | " + per(a, false) + " | " + per(a, true) + " | " +
+             per(p, false) + " | " + per(p, true) + " | " + (a.priced_draw ? shares(a.priced_by) : "-") + " | " +
+             (p.priced_draw ? (same && a.priced_draw ? "the same" : shares(p.priced_by)) : "-") + " |\n";
+    }
+    return any ? t : "";
+}
+
+}  // namespace harness

@@ -23,3 +23,12 @@ std::string modex_table(const std::vector<TradeRow>& rows);
 std::string pareto_by_target(const std::vector<TradeRow>& rows);
 
 }  // namespace harness
+
+namespace harness {
+
+// A line a scene's auto row (at its budget) run on a target: its drawing cycles a pixel there,
+// priced by icount's cost model and by the target's (Cycles::priced_draw), and what it drew with
+// for each target, by share of pixels; "" where no row was priced.
+std::string auto_by_target(const std::vector<TradeRow>& rows);
+
+}  // namespace harness

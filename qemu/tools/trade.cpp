@@ -63,7 +63,9 @@ std::string budget_text(double max_error) {
 
 std::string budget_words(const raster::Budget& b) {
     return (b.max_error < 0 ? std::string("any footprint error") : "footprint error " + budget_text(b.max_error)) +
-           (b.exact_coverage ? ", exact coverage" : ", any coverage") + (b.given ? "" : ": the default");
+           (b.exact_coverage ? ", exact coverage" : ", any coverage") +
+           (b.target == raster::CostTarget::Icount ? "" : std::string(", priced for the ") + raster::cost_target_name(b.target)) +
+           (b.given ? "" : ": the default");
 }
 
 std::vector<std::string> known_mappers(std::vector<std::string> names) {
@@ -120,13 +122,23 @@ std::vector<std::string> csv_header() {
             "cycles_486_frame_vlb[cycles]", "cycles_pentium_draw[cycles]", "cycles_pentium_inner[cycles]",
             "cycles_pentium_frame_zero-wait[cycles]", "cycles_pentium_frame_isa[cycles]", "cycles_pentium_frame_vlb[cycles]",
             "cycles_486_setup[cycles]", "cycles_486_walk[cycles]", "cycles_486_choose[cycles]",
-            "cycles_pentium_setup[cycles]", "cycles_pentium_walk[cycles]", "cycles_pentium_choose[cycles]"};
+            "cycles_pentium_setup[cycles]", "cycles_pentium_walk[cycles]", "cycles_pentium_choose[cycles]",
+            "cycles_486_priced_draw[cycles]", "cycles_486_priced_pixels[pixels]", "drawn_by_priced_486[mapper:polygons:pixels;...]",
+            "cycles_pentium_priced_draw[cycles]", "cycles_pentium_priced_pixels[pixels]", "drawn_by_priced_pentium[mapper:polygons:pixels;...]"};
 }
 
 namespace {
 
 // (an unmeasured count: an empty field)
 std::string count_or_empty(uint64_t n) { return n ? std::to_string(n) : ""; }
+
+// mapper:polygons:pixels;...
+std::string drawn_by_text(const TradeRow::DrawnBy& d) {
+    std::string out;
+    for (size_t i = 0; i < d.size(); ++i)
+        out += (i ? ";" : "") + std::get<0>(d[i]) + ":" + std::to_string(std::get<1>(d[i])) + ":" + std::to_string(std::get<2>(d[i]));
+    return out;
+}
 
 }  // namespace
 
@@ -150,9 +162,7 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
             << "," << a.overdraw << "," << a.overlaps << "," << a.index_differs << "," << (r.kernel_equals_host ? "true" : "false")
             << "," << (r.pareto ? "true" : "false") << "," << (r.max_bound < 0 ? "" : r.max_bound >= raster::NO_BOUND ? "none" : fixed(r.max_bound, 4))
             << "," << (r.max_bound < 0 ? "" : r.bound_exact ? "true" : "false") << ",";
-        for (size_t i = 0; i < r.drawn_by.size(); ++i)
-            out << (i ? ";" : "") << std::get<0>(r.drawn_by[i]) << ":" << std::get<1>(r.drawn_by[i]) << ":" << std::get<2>(r.drawn_by[i]);
-        out << "," << a.compared << "," << a.exact << "," << a.within_one << "," << r.enveloped << ","
+        out << drawn_by_text(r.drawn_by) << "," << a.compared << "," << a.exact << "," << a.within_one << "," << r.enveloped << ","
             << (r.budget_error < 0 ? "any" : budget_text(r.budget_error)) << "," << (r.budget_exact ? "true" : "false") << ","
             << (r.budget_given ? "true" : "false") << "," << (r.draw_i486 ? fixed(r.per_pixel(r.draw_i486), 3) : "") << ","
             << (r.draw_i486 ? std::to_string(r.draw_i486) : "");
@@ -161,6 +171,8 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
                 << count_or_empty(c->frame[1]) << "," << count_or_empty(c->frame[2]);
         for (const TradeRow::Cycles* c : {&r.cycles_486, &r.cycles_pentium})
             out << "," << count_or_empty(c->setup) << "," << count_or_empty(c->walk) << "," << count_or_empty(c->choose);
+        for (const TradeRow::Cycles* c : {&r.cycles_486, &r.cycles_pentium}) 
+            out << "," << count_or_empty(c->priced_draw) << "," << count_or_empty(c->priced_pixels) << "," << drawn_by_text(c->priced_by);
         out << "\n";
     }
 }
@@ -238,12 +250,15 @@ std::vector<TradeRow> read_trade(const std::string& path) {
         const std::string& bound = text("max_bound");
         r.max_bound = bound.empty() ? -1 : bound == "none" ? raster::NO_BOUND : number("max_bound");
         r.bound_exact = !bound.empty() && flag("bound_exact_coverage");
-        std::stringstream drawn(text("drawn_by"));
-        for (std::string item; std::getline(drawn, item, ';');) {
-            const size_t c1 = item.find(':'), c2 = item.rfind(':');
-            if (c1 == std::string::npos || c2 == c1) throw HarnessError(where + "drawn_by '" + item + "' is not mapper:polygons:pixels");
-            r.drawn_by.emplace_back(item.substr(0, c1), std::stoull(item.substr(c1 + 1, c2 - c1 - 1)), std::stoull(item.substr(c2 + 1)));
-        }
+        auto drawn_by = [&](const std::string& name, TradeRow::DrawnBy* to) {
+            std::stringstream drawn(text(name.c_str()));
+            for (std::string item; std::getline(drawn, item, ';');) {
+                const size_t c1 = item.find(':'), c2 = item.rfind(':');
+                if (c1 == std::string::npos || c2 == c1) throw HarnessError(where + name + " '" + item + "' is not mapper:polygons:pixels");
+                to->emplace_back(item.substr(0, c1), std::stoull(item.substr(c1 + 1, c2 - c1 - 1)), std::stoull(item.substr(c2 + 1)));
+            }
+        };
+        drawn_by("drawn_by", &r.drawn_by);
         r.enveloped = count("enveloped");
         r.budget_error = text("budget_error") == "any" ? raster::ANY_ERROR : number("budget_error");
         r.budget_exact = flag("budget_exact"), r.budget_given = flag("budget_given");
@@ -259,6 +274,8 @@ std::vector<TradeRow> read_trade(const std::string& path) {
             c->draw = optional(p + "draw"), c->inner = optional(p + "inner");
             c->setup = optional(p + "setup"), c->walk = optional(p + "walk"), c->choose = optional(p + "choose");
             c->frame[0] = optional(p + "frame_zero-wait"), c->frame[1] = optional(p + "frame_isa"), c->frame[2] = optional(p + "frame_vlb");
+            c->priced_draw = optional(p + "priced_draw"), c->priced_pixels = optional(p + "priced_pixels");
+            if (c->priced_draw) drawn_by("drawn_by_priced_" + target, &c->priced_by);
         };
         cycles("486", &r.cycles_486);
         cycles("pentium", &r.cycles_pentium);
@@ -501,7 +518,7 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "every single mapper's rows and auto's at each scene's budget with the 486's: drawing instructions a pixel over all the "
            "scenes, their ratio, and the least and the most ratio of a scene. The pictures are the same.\n\n"
         << (isa.empty() ? std::string("(not measured)\n") : isa);
-    const std::string cycles = cycles_table(rows), modex = modex_table(rows), fronts = pareto_by_target(rows);
+    const std::string cycles = cycles_table(rows), modex = modex_table(rows), fronts = pareto_by_target(rows), priced = auto_by_target(rows);
     out << "\n## Cycles on a 486 and a Pentium (the timing model)\n\n"
         << "The same frames run again in the kernel under QEMU's `-cpu 486` and `-cpu pentium` with the timing model's plugin "
            "(docs/cycles.md, \"Whole frames\"): estimated cycles a pixel over all the scenes a mapper drew, of its inner loops, of "
@@ -514,6 +531,11 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "(those that draw the whole scene). Where it differs from the front in instructions (the scene tables above), the "
            "machine, not the count, decides.\n\n"
         << (fronts.empty() ? std::string("(not measured)\n") : fronts)
+        << "\n### auto priced for each target\n\n"
+        << "auto at each scene's budget, run on the target twice: priced by icount's cost model (as every row above), and with "
+           "the budget priced for the target (`budget ... 486|pentium`: the cost model fitted to that target's cycles, "
+           "docs/auto.md, \"Per target\"). Drawing cycles a pixel, and what the priced runs drew with, by share of pixels.\n\n"
+        << (priced.empty() ? std::string("(not measured)\n") : priced)
         << "\n### Straight into Mode X, or into RAM and a blit\n\n"
         << "On each scene, target and bus: the fastest whole frame (cycles a pixel drawn) of the mappers that draw straight into "
            "the VGA's page (surface vga), against the fastest that draw into RAM and blit the page (linear, planar). Which wins "

@@ -29,6 +29,7 @@ std::string budget_words(const raster::Budget& b);
 std::vector<std::string> known_mappers(std::vector<std::string> names);
 
 struct TradeRow {
+    using DrawnBy = std::vector<std::tuple<std::string, uint64_t, uint64_t>>;  // mapper, polygons, pixels
     std::string scene, mapper, family, surface, walker, loop;
     uint32_t frames = 0;
     // the kernel's drawing, summed over the frames: counts, and ticks (instructions under icount)
@@ -41,7 +42,7 @@ struct TradeRow {
     bool pareto = false;
     // the kernel's polygons and pixels per mapper that drew them (auto draws with several), and the
     // scene's budget auto chose for, in words
-    std::vector<std::tuple<std::string, uint64_t, uint64_t>> drawn_by;
+    DrawnBy drawn_by;
     uint64_t enveloped = 0;  // of those, the polygons auto drew as their object's envelope proved
     std::string budget;
     double budget_error = -1;   // the budget's footprint error (below 0: any), whether it asks for
@@ -61,6 +62,10 @@ struct TradeRow {
     // geometry, clearing, drawing, the blit) on each bus, zero-wait, isa and vlb; 0: not measured
     struct Cycles {  // draw = setup + walk + inner + choose (the probe's phases, net of the laps)
         uint64_t draw = 0, setup = 0, walk = 0, inner = 0, choose = 0, frame[3] = {};
+        // auto's row (at the scene's budget) again with the budget priced for this target: its
+        // drawing's cycles and what it chose (docs/auto.md, "Per target"); 0: not run
+        uint64_t priced_draw = 0, priced_pixels = 0;
+        DrawnBy priced_by;
     };
     Cycles cycles_486, cycles_pentium;
 

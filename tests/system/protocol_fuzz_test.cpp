@@ -32,7 +32,7 @@ const std::vector<std::vector<std::string>> COMMANDS = {
     {"frame", "0", "7", "359", "1000000", "exact", "auto", "fatmap-lut", "0", "1", "linear", "vga", "twin"},
     {"play", "1", "2", "100000", "exact", "auto", "fast-columns", "planar", "vga"},
     {"bench", "1", "2", "1000", "exact", "auto", "linear", "asm"},
-    {"budget", "scene", "0", "0.5", "4", "any", "exact", "-1", "1e9"},
+    {"budget", "scene", "0", "0.5", "4", "any", "exact", "-1", "1e9", "486", "pentium", "icount"},
     {"selftest", "1", "2", "0", "100000"},
     {"vbe", "on", "off"},
 };

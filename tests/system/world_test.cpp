@@ -190,25 +190,38 @@ TEST(Scenes3d, PlayReportsEveryFrameAndFlipsPages) {
 
 // The budget command: what auto draws to, until `budget scene` or the next load; auto at budget 0
 // draws the reference's texels (only exact has bound 0 on a polygon it draws pixels of), and every
-// picture equals the host's at the same budget; bad budgets are refused with the usage.
+// picture equals the host's at the same budget, priced for each target; bad budgets are refused with
+// the usage.
 TEST(Scenes3d, TheBudgetCommandSetsWhatAutoDrawsTo) {
     Session s(options_for_this_test());
     s.ok("mode modex");
     s.ok("load corridor.scene");
     LoadedWorld host = load_world_file(scene_path("corridor"));
     EXPECT_EQ(s.ok("budget")["source"], "scene");
-    for (const char* bad : {"budget -1", "budget x", "budget 1 maybe", "budget 1000001"}) {
+    EXPECT_EQ(s.ok("budget")["budget"]["target"], "icount");
+    for (const char* bad : {"budget -1", "budget x", "budget 1 maybe", "budget 1000001", "budget 1 exact p5", "budget 1 exact 486 more"}) {
         json r = s.command(bad);
         EXPECT_EQ(r["ok"], false) << bad;
         EXPECT_NE(r["error"].get<std::string>().find("usage: budget"), std::string::npos) << bad;
     }
-    const std::vector<std::pair<std::string, double>> budgets = {{"0", 0}, {"4", 4}, {"any", raster::ANY_ERROR}};
-    for (const auto& [word, max_error] : budgets) {
-        json b = s.ok("budget " + word + " exact");
+    struct Asked {
+        std::string word;
+        double max_error;
+        raster::CostTarget target;
+    };
+    const std::vector<Asked> budgets = {{"0", 0, raster::CostTarget::Icount},
+                                        {"4", 4, raster::CostTarget::Icount},
+                                        {"1", 1, raster::CostTarget::I486},
+                                        {"1", 1, raster::CostTarget::Pentium},
+                                        {"any", raster::ANY_ERROR, raster::CostTarget::Icount}};
+    for (const auto& [word, max_error, target] : budgets) {
+        const std::string name = raster::cost_target_name(target);
+        json b = s.ok("budget " + word + " exact" + (target == raster::CostTarget::Icount ? "" : " " + name));
         EXPECT_EQ(b["source"], "command");
+        EXPECT_EQ(b["budget"]["target"], name);
         json r = s.ok("frame 40 auto 1 linear");
         auto f = world_frame(host, 40);
-        f->budget = raster::Budget{true, max_error, true};
+        f->budget = raster::Budget{true, max_error, true, target};
         raster::RenderStats stats;
         IndexImage want = render_world_frame(host, *f, *raster::find_mapper("auto"), raster::Axis::Rows, &stats);
         uint64_t pixels = 0;
@@ -221,7 +234,7 @@ TEST(Scenes3d, TheBudgetCommandSetsWhatAutoDrawsTo) {
         EXPECT_EQ(pixels, r["pixels"].get<uint64_t>());
         EXPECT_EQ(r["pixels"], stats.pixels) << word;
         s.ok("flip 1");
-        expect_same_frame(s, want, host.world->palette, 1, "budget-" + word);
+        expect_same_frame(s, want, host.world->palette, 1, "budget-" + word + "-" + name);
     }
     EXPECT_EQ(s.ok("budget scene")["source"], "scene");
     s.ok("budget 0.5");

@@ -27,12 +27,19 @@ const Mapper& auto_mapper() { return *find_mapper("auto"); }
 
 const Budget BUDGETS[] = {{true, 0, true}, {true, 0.5, true}, {true, 1, true}, {true, 2, true}, {true, 4, true}, {true, ANY_ERROR, false}};
 
+// A table a target, each with a row per registry row in its order.
 TEST(CostModel, HasOneRowPerRegistryRowInItsOrder) {
     ASSERT_EQ(MAPPER_COST_COUNT, MAPPER_COUNT) << "kernel/mappers/costs.cpp is out of date: run make bench";
-    for (int i = 0; i < MAPPER_COUNT; ++i) {
-        EXPECT_STREQ(MAPPER_COSTS[i].mapper, MAPPERS[i].name) << "kernel/mappers/costs.cpp is out of date: run make bench";
-        if (choosable(MAPPERS[i])) {
-            EXPECT_GT(MAPPER_COSTS[i].pixel, 0) << MAPPERS[i].name << " is not measured";
+    EXPECT_EQ(cost_model(CostTarget::Icount).rows, MAPPER_COSTS);
+    for (int t = 0; t < int(CostTarget::Count); ++t) {
+        const CostModel& model = cost_model(CostTarget(t));
+        EXPECT_STREQ(model.target, cost_target_name(CostTarget(t)));
+        EXPECT_GT(model.proof_scale, 0) << model.target;
+        for (int i = 0; i < MAPPER_COUNT; ++i) {
+            EXPECT_STREQ(model.rows[i].mapper, MAPPERS[i].name) << "kernel/mappers/costs.cpp is out of date: run make bench";
+            if (choosable(MAPPERS[i])) {
+                EXPECT_GT(model.rows[i].pixel, 0) << MAPPERS[i].name << " is not measured on " << model.target;
+            }
         }
     }
 }
@@ -85,7 +92,8 @@ TEST(Auto, PreparesThePolygonAsTheWalkerDrawsIt) {
 // cost model: a candidate proven by the whole polygon at once costs its estimate and that proof,
 // one proven span by span (its tight bound, asked without a budget, where proven_by_spans)
 // BOUND_SPAN_COST a span more (proven_cost; a mapper whose bound walks is proven only so, at its own
-// price); auto takes the least, and a looser budget never costs more.
+// price); auto takes the least, and a looser budget never costs more. Priced for each target in turn
+// (its cost model's rows, auto's own costs times its proof_scale).
 TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     TriangleGen gen(1123u);
     std::vector<uint8_t> texels(256 * 256);
@@ -100,11 +108,16 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
     for (int n = 0; n < 400; ++n) {
         gen.depth_ratio = n % 4 == 0 ? 1.0001 : n % 4 == 1 ? 3 : 50;
         std::vector<Vertex> p = gen.triangle();
+        // priced for each target in turn: its rows, its proofs' costs scaled
+        const CostTarget priced_for = CostTarget(n % int(CostTarget::Count));
+        const CostModel& model = cost_model(priced_for);
+        const double scale = model.proof_scale;
         for (Surface surface : {Surface::Linear, Surface::Planar}) {
             Target target = surface_kind(surface);
             target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
             double last_total = 1e300;
-            for (const Budget& b : BUDGETS) {
+            for (Budget b : BUDGETS) {
+                b.target = priced_for;
                 PreparedPolygon prepared;
                 Choice c = choose_mapper(b, p.data(), 3, tex, target, &prepared);
                 if (!c.mapper) {  // only where exact cannot draw it either
@@ -121,11 +134,11 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 polygon_sizes(setup, target.clip, sizes);
                 // what a candidate costs with its proof, or nothing where it has none within the budget
                 auto total = [&](const Mapper& m, Axis axis) {
-                    const double cost = estimate_cost(proven_cost(m, cost_row(MAPPER_COSTS[&m - MAPPERS]), 1), sizes[int(axis)]);
+                    const double cost = estimate_cost(proven_cost(m, cost_row(model.rows[&m - MAPPERS]), scale), sizes[int(axis)]);
                     BoundContext whole{m, tex, axis, target.clip, b.max_error < 0 ? NO_BOUND : b.max_error, nullptr, true};
                     if (!bound_walks(m) && budget_allows(b, m.bound(whole, p.data(), 3))) return cost;
                     if (proven_by_spans(m) && budget_allows(b, m.bound(BoundContext{m, tex, axis, target.clip}, p.data(), 3)))
-                        return cost + (bound_walks(m) ? 0 : BOUND_SPAN_COST * sizes[int(axis)].spans);
+                        return cost + (bound_walks(m) ? 0 : BOUND_SPAN_COST * scale * sizes[int(axis)].spans);
                     return 1e300;
                 };
                 // the oriented candidate (ORIENTED_GATE): from a budget of 1 to below 4, fast-adaptive-B
@@ -154,12 +167,12 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 const Mapper* unsearched_by = nullptr;
                 double estimate = 1e300, unsearched_bound = within;
                 if ((one || two) && (inside ? certain_inside : adaptive_whole.draws && adaptive_whole.footprint <= within))
-                    unsearched_by = &drawn_by, estimate = estimate_cost(MAPPER_COSTS[&drawn_by - MAPPERS], sizes[int(walker)]);
+                    unsearched_by = &drawn_by, estimate = estimate_cost(model.rows[&drawn_by - MAPPERS], sizes[int(walker)]);
                 if ((one || two) && (inside || unsearched_by) && mapper_walks(constant_depth, walker) && mapper_targets(constant_depth, target, walker)) {
                     PolygonSpread spread;
                     if (!inside) polygon_spread(setup, clip, &spread);
                     const FastCertificate chords = inside ? certificate : fast_certificate(spread);
-                    const double cost = estimate_cost(MAPPER_COSTS[&constant_depth - MAPPERS], sizes[int(walker)]);
+                    const double cost = estimate_cost(model.rows[&constant_depth - MAPPERS], sizes[int(walker)]);
                     const double bound = fast_chords_bound(chords, setup, walker, FAST_SPAN_LONG);
                     // (where within the budget, at least the whole bound it stands for)
                     if (bound <= b.max_error) {
@@ -174,12 +187,12 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                             const Mapper& m = MAPPERS[i];
                             if (!choosable(m) || !mapper_walks(m, axis) || !mapper_accepts(m, tex) || !mapper_targets(m, target, axis)) continue;
                             if ((b.exact_coverage && !m.guarantee.exact_coverage) || (b.max_error == 0 && m.guarantee.max_error != 0)) continue;
-                            const CostRow r = proven_cost(m, cost_row(MAPPER_COSTS[i]), 1);
+                            const CostRow r = proven_cost(m, cost_row(model.rows[i]), scale);
                             least[0] = std::min(least[0], double(r.polygon)), least[1] = std::min(least[1], double(r.span)), least[2] = std::min(least[2], double(r.pixel));
                         }
                     const double fewest = std::min(sizes[0].spans, sizes[1].spans), most = std::max(sizes[0].spans, sizes[1].spans);
                     const double least_cost = least[0] + least[1] * (least[1] < 0 ? most : fewest) + least[2] * sizes[0].pixels;
-                    const bool unsearched_only = !inside && !(cost <= least_cost + ORIENTED_GATE) && !affine_ruled_out;
+                    const bool unsearched_only = !inside && !(cost <= least_cost + ORIENTED_GATE * scale) && !affine_ruled_out;
                     if (cost < estimate && bound <= b.max_error && !unsearched_only) unsearched_by = &constant_depth, estimate = cost, unsearched_bound = bound;
                 }
                 const bool certified = unsearched_by != nullptr;
@@ -187,7 +200,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 if (certified && c.mapper == unsearched_by && c.axis == walker && c.bound.footprint == unsearched_bound) {
                     ++unsearched, outside += !inside, ruled_out += affine_ruled_out, by_chords += unsearched_by != &drawn_by;
                     chords_outside += unsearched_by != &drawn_by && !inside;
-                    chosen = estimate, slack = affine_ruled_out ? 1e300 : ORIENTED_GATE;
+                    chosen = estimate, slack = affine_ruled_out ? 1e300 : ORIENTED_GATE * scale;
                 } else {
                     EXPECT_NE(c.mapper, &oriented) << "fast-oriented-1 where its candidate is not proven";
                     chosen = total(*c.mapper, c.axis);

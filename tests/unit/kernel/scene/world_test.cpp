@@ -170,7 +170,8 @@ TEST(World, ThePaletteCanComeFromAnImage) {
     EXPECT_EQ(w.texels[64 + 8], 0);
 }
 
-// The budget: decimal footprints or any; without the line, the default auto draws to.
+// The budget: decimal footprints or any, the target auto prices for; without the line, the default
+// auto draws to.
 TEST(World, ReadsTheBudget) {
     const std::string head = "modexlab-scene 2\ntexture t checker 8 8\n" + QUAD_MESH + "object a\nmesh quad\ntexture t\nend\n" + CAMERA;
     Parsed quarter = parse(head + "budget max-error 0.25 coverage any\n");
@@ -178,6 +179,13 @@ TEST(World, ReadsTheBudget) {
     EXPECT_TRUE(quarter.world->budget.given);
     EXPECT_EQ(quarter.world->budget.max_error, 0.25);
     EXPECT_FALSE(quarter.world->budget.exact_coverage);
+    EXPECT_EQ(quarter.world->budget.target, CostTarget::Icount);
+    for (CostTarget t : {CostTarget::Icount, CostTarget::I486, CostTarget::Pentium}) {
+        Parsed priced = parse(head + "budget max-error 2 coverage exact target " + cost_target_name(t) + "\n");
+        ASSERT_TRUE(priced.ok) << priced.error.message;
+        EXPECT_EQ(priced.world->budget.target, t);
+        EXPECT_EQ(priced.world->budget.max_error, 2);
+    }
     Parsed any = parse(head + "budget max-error any coverage exact\n");
     ASSERT_TRUE(any.ok) << any.error.message;
     EXPECT_LT(any.world->budget.max_error, 0);
@@ -255,6 +263,9 @@ TEST(World, EveryErrorNamesItsLine) {
         {TM + "camera\nkey 0 0 0 0 0 0 -1\nkey 1 0 0 0 0 0 -1\nkey 2 0 0 0 0 2 1\nend\n", {18, "from 1 s to 2 s"}},
         {TM + CAMERA + "camera\n", {18, "a second camera"}},
         {T + "budget max-error 1\n", {3, "usage: budget"}},
+        {T + "budget max-error 1 coverage exact target\n", {3, "usage: budget max-error N|any coverage exact|any [target icount|486|pentium]"}},
+        {T + "budget max-error 1 coverage exact aim 486\n", {3, "usage: budget"}},
+        {T + "budget max-error 1 coverage exact target p5\n", {3, "bad target 'p5' (icount, 486 or pentium: the machine auto is to be cheapest on)"}},
         {T + "budget max-error x coverage exact\n", {3, "bad max-error 'x'"}},
         {T + "budget max-error -1 coverage exact\n", {3, "bad max-error '-1' (a footprint error 0..1000000, or any)"}},
         {T + "budget max-error 1000001 coverage exact\n", {3, "bad max-error '1000001'"}},

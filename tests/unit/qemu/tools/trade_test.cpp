@@ -199,8 +199,14 @@ TEST(Trade, TheCsvReadBackIsTheSameRows) {
     // bench's) still reads, its cycles not measured
     {
         std::vector<TradeRow> timed = rows;
-        timed[1].cycles_pentium = TradeRow::Cycles{.draw = 300, .setup = 60, .walk = 30, .inner = 200, .choose = 10, .frame = {500, 900, 600}};
-        timed[1].cycles_486 = TradeRow::Cycles{.draw = 700, .inner = 450, .frame = {1100, 1300, 1150}};
+        auto cycles = [](uint64_t draw, uint64_t inner, uint64_t zero_wait, uint64_t isa, uint64_t vlb) {
+            TradeRow::Cycles c;
+            c.draw = draw, c.inner = inner, c.frame[0] = zero_wait, c.frame[1] = isa, c.frame[2] = vlb;
+            return c;
+        };
+        timed[1].cycles_pentium = cycles(300, 200, 500, 900, 600);
+        timed[1].cycles_pentium.setup = 60, timed[1].cycles_pentium.walk = 30, timed[1].cycles_pentium.choose = 10;
+        timed[1].cycles_486 = cycles(700, 450, 1100, 1300, 1150);
         write_csv(dir + "/timed.csv", timed);
         const std::vector<TradeRow> t = read_trade(dir + "/timed.csv");
         EXPECT_EQ(t[1].cycles_pentium.draw, 300u);
@@ -210,11 +216,26 @@ TEST(Trade, TheCsvReadBackIsTheSameRows) {
         EXPECT_EQ(t[1].cycles_pentium.walk, 30u);
         EXPECT_EQ(t[1].cycles_pentium.choose, 10u);
         EXPECT_EQ(t[0].cycles_486.draw, 0u) << "not measured";
+        // auto priced for each target: its cycles there both ways, and what each drew with
+        timed[2].cycles_486 = cycles(2000, 1000, 3000, 4000, 3500);
+        timed[2].cycles_486.priced_draw = 1800, timed[2].cycles_486.priced_pixels = 100;
+        timed[2].cycles_486.priced_by = {{"exact", 2, 30}, {"fast-table", 10, 70}};
+        timed[2].cycles_pentium = cycles(900, 500, 1500, 2500, 1700);
+        timed[2].cycles_pentium.priced_draw = 800, timed[2].cycles_pentium.priced_pixels = 100;
+        timed[2].cycles_pentium.priced_by = {{"fast-subdiv-16", 12, 100}};
+        write_csv(dir + "/priced.csv", timed);
+        const std::vector<TradeRow> priced = read_trade(dir + "/priced.csv");
+        EXPECT_EQ(priced[2].cycles_486.priced_by, timed[2].cycles_486.priced_by);
+        EXPECT_EQ(priced[2].cycles_pentium.priced_pixels, 100u);
+        const std::string by_target = auto_by_target(priced);
+        EXPECT_NE(by_target.find("| a | 0.5 exact | 20.0 | 18.0 | 9.0 | 8.0 | fast-table 70.0%, exact 30.0% | fast-subdiv-16 100.0% |"), std::string::npos)
+            << by_target;
+        EXPECT_EQ(auto_by_target(t), "") << "no row priced";
         const std::string table = cycles_table(t);
         EXPECT_NE(table.find("| fast-affine | 4.5 | 7.0 | 11.0 | 13.0 | 11.5 | 2.0 | 3.0 | 5.0 | 9.0 | 6.0 |"), std::string::npos)
             << "100 pixels a row: " << table;
         // straight into Mode X against RAM and the blit: each bus picks its own winner
-        timed[0].surface = "vga", timed[0].cycles_pentium = TradeRow::Cycles{.draw = 300, .inner = 200, .frame = {700, 800, 650}};
+        timed[0].surface = "vga", timed[0].cycles_pentium = cycles(300, 200, 700, 800, 650);
         const std::string modex = modex_table(timed);
         EXPECT_NE(modex.find("| a | pentium | zero-wait | exact 7.0 | fast-affine 5.0 | RAM and blit |"), std::string::npos) << modex;
         EXPECT_NE(modex.find("| a | pentium | isa | exact 8.0 | fast-affine 9.0 | straight |"), std::string::npos) << modex;
@@ -227,7 +248,7 @@ TEST(Trade, TheCsvReadBackIsTheSameRows) {
         for (const auto& fields : lines) {
             size_t n = 0;
             for (size_t i = 0; i < fields.size(); ++i)
-                if (lines[0][i].rfind("cycles_", 0) != 0) old << (n++ ? "," : "") << fields[i];
+                if (lines[0][i].rfind("cycles_", 0) != 0 && lines[0][i].rfind("drawn_by_priced_", 0) != 0) old << (n++ ? "," : "") << fields[i];
             old << "\n";
         }
     }
