@@ -271,14 +271,16 @@ $(LOOP_ASM:asm/%.asm=$(KBUILD)/p6/asm/%.asm.o): $(KBUILD)/p6/asm/%.asm.o: $(KBUI
 $(LOOP_ASM:asm/%.asm=$(KBUILD)/asm/%.asm.o): $(KBUILD)/asm/%.asm.o: $(KBUILD)/gen/%.inc $(CORE_INC)
 
 # The NASM runs on a 486: an object with a P6 instruction (CMOV, FCMOV, FCOMI, FUCOMI) is refused.
-$(KBUILD)/%.asm.o: %.asm | deps
+# NASM 2.16.01's -MD lists no %include, so every object depends on every asm/*.inc.
+ASM_INC := $(wildcard asm/*.inc)
+$(KBUILD)/%.asm.o: %.asm $(ASM_INC) | deps
 	@mkdir -p $(@D)
 	$(call say,NASM,$<)
 	$(Q)$(NASM) $(NASMFLAGS) -MD $(@:.o=.d) -MT $@ -MP $< -o $@
 	@if $(CROSS)objdump -d $@ | grep -iE '[[:space:]](cmov|fcmov|fcomi|fucomi)'; then \
 		echo "$<: P6 instructions above, which a 486 does not have"; rm -f $@; exit 1; fi
 
-$(KBUILD)/p6/%.asm.o: %.asm | deps
+$(KBUILD)/p6/%.asm.o: %.asm $(ASM_INC) | deps
 	@mkdir -p $(@D)
 	$(call say,NASM-P6,$<)
 	$(Q)$(NASM) $(NASMFLAGS) -DP6 -MD $(@:.o=.d) -MT $@ -MP $< -o $@

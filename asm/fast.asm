@@ -441,17 +441,22 @@ fast_column_run_doubled:
 ; fast_table_loop_asm: fast-table's run of rows (twin: fast_table_loop): the rows walked as
 ; fast_run_loop_asm walks them, each row's pixel x read through the polygon's offset table, table[x],
 ; from the texel of the row's pixel at which the table starts (u and v there: no multiply a row): an
-; odd span's first pixel alone, then two offsets, two texels and one word store a pair, sixteen
-; pairs a block. The pairs are indexed from their ends by ecx, which counts up from minus the
-; blocks' pairs to 0: two instructions a block for the loop.
-;   esi: the texel of the table's first pixel   ebp, edi: the table and the destination past the pairs
-;   ecx: -(pairs left in the blocks)   ebx, edx: offsets   al, ah: texels
+; odd span's first pixel alone, then the pairs, sixteen a block: a pair comes in with its two
+; offsets loaded (ebx, edx), reads its two texels into bl and al, stores them as bytes, and loads the
+; next pair's offsets, each into a register its own texel read has finished with, so that no offset
+; is used as an address in the cycle after its load (the AGI), and every instruction pairs on a
+; Pentium. The last pair loads the two entries after the span, inside the table's room
+; (TABLE_LIMIT), never read through. The table and the destination are addressed from the block's
+; start without an index register, which a 486 charges a clock.
+;   esi: the texel of the table's first pixel   ebp, edi: the block's offsets and pixels
+;   ecx: the blocks left   ebx, edx: offsets   bl, al: texels
 %macro TPAIR 1                          ; %1: the pair within the block
-    mov ebx, [ebp + ecx * 8 + 8 * %1]
-    mov edx, [ebp + ecx * 8 + 8 * %1 + 4]
-    mov al, [esi + ebx]
-    mov ah, [esi + edx]
-    mov [edi + ecx * 2 + 2 * %1], ax
+    mov al, [esi + edx]
+    mov edx, [ebp + 8 * %1 + 12]
+    mov bl, [esi + ebx]
+    mov [edi + 2 * %1 + 1], al
+    mov [edi + 2 * %1], bl
+    mov ebx, [ebp + 8 * %1 + 8]
 %endmacro
 
 ; fast_table_loop_asm's rows from .row, clipped (%1 = 1) or not (0), the pairs entered through the
@@ -481,15 +486,23 @@ fast_column_run_doubled:
     mov ecx, edi
     shr ecx, 1                          ; pairs (ZF: none)
     jz .next_row
-    lea ebp, [ebp + ecx * 8]            ; past the pairs' offsets
-    lea edi, [eax + ecx * 2]            ; past their pixels
+    mov edi, eax                        ; the first pair's pixels
+    mov ebx, [ebp]                      ; and its offsets, as TPAIR takes them
+    mov eax, [ebp + 4]
     mov edx, ecx
     neg edx
     and edx, 15                         ; the first block starts at pair j = (-pairs) mod 16
+    sub edi, edx
+    sub edi, edx                        ; the destination and the offsets j pairs back
+    neg edx
+    lea ebp, [ebp + edx * 8]
+    neg edx
+    mov edx, [%2 + edx * 4]
+    mov [esp + L_ENTRY], edx
+    mov edx, eax
     add ecx, 15
-    and ecx, -16
-    neg ecx                             ; -(pairs + j)
-    jmp [%2 + edx * 4]
+    shr ecx, 4                          ; the blocks
+    jmp [esp + L_ENTRY]
 .block:
 .e0: TPAIR 0
 .e1: TPAIR 1
@@ -507,7 +520,9 @@ fast_column_run_doubled:
 .e13: TPAIR 13
 .e14: TPAIR 14
 .e15: TPAIR 15
-    add ecx, 16
+    add ebp, 128
+    add edi, 32
+    dec ecx
     jnz .block
 .next_row:
     ROW_TAIL

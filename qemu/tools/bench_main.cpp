@@ -452,10 +452,11 @@ int run(const Args& a) {
                                    "frame), as a ratio to `" + baseline + "` on the same scene (below 1: faster than it).");
     info.command = "make bench";
     if (a.wall) info.wall_clock = wall_clock(scenes, a.kernel, tty);
-    for (const BenchScene& s : scenes) {
-        std::string png = write_plot(a.out, s.name, rows);
-        if (!png.empty()) info.plots.push_back(std::filesystem::path(png).filename().string());
-    }
+    for (const BenchScene& s : scenes)
+        for (const std::string target : {"", "486", "pentium"}) {
+            const std::string png = write_plot(a.out, s.name, rows, target);
+            if (!png.empty()) info.plots.push_back(std::filesystem::path(png).filename().string());
+        }
     // trade.md from the CSV read back: the figures it shows are the CSV's, as the docs' tables are
     write_csv(a.out + "/trade.csv", rows);
     write_markdown(a.out + "/trade.md", read_trade(a.out + "/trade.csv"), info);

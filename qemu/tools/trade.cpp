@@ -530,8 +530,16 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
         << "Scene by scene: the mappers no other beats both in drawing cycles a pixel on the target and in mean footprint error "
            "(those that draw the whole scene). Where it differs from the front in instructions (the scene tables above), the "
            "machine, not the count, decides.\n\n"
-        << (fronts.empty() ? std::string("(not measured)\n") : fronts)
-        << "\n### auto priced for each target\n\n"
+        << (fronts.empty() ? std::string("(not measured)\n") : fronts);
+    std::string target_plots;
+    for (const std::string& scene : scenes_in_order(rows))
+        for (const char* target : {"486", "pentium"}) {
+            const std::string plot = "trade-" + scene + "-" + target + ".png";
+            if (std::find(info.plots.begin(), info.plots.end(), plot) != info.plots.end())
+                target_plots += (target_plots.empty() ? "" : ", ") + std::string("[") + scene + " on the " + target + "](" + plot + ")";
+        }
+    if (!target_plots.empty()) out << "\nEach scene's plot on each target, drawing cycles a pixel against mean footprint error: " << target_plots << ".\n";
+    out << "\n### auto priced for each target\n\n"
         << "auto at each scene's budget, run on the target twice: priced by icount's cost model (as every row above), and with "
            "the budget priced for the target (`budget ... 486|pentium`: the cost model fitted to that target's cycles, "
            "docs/auto.md, \"Per target\"). Drawing cycles a pixel, and what the priced runs drew with, by share of pixels.\n\n"
@@ -546,14 +554,35 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
     if (!info.wall_clock.empty()) out << "\n" << info.wall_clock;
 }
 
-std::string write_plot(const std::string& dir, const std::string& scene, const std::vector<TradeRow>& rows) {
+std::string write_plot(const std::string& dir, const std::string& scene, const std::vector<TradeRow>& rows, const std::string& target) {
+    // the speed plotted: icount's drawing instructions a pixel, or the target's drawing cycles
+    auto cycles = [&](const TradeRow* r) -> const TradeRow::Cycles& { return target == "486" ? r->cycles_486 : r->cycles_pentium; };
+    auto speed = [&](const TradeRow* r) { return target.empty() ? r->draw_per_pixel() : r->per_pixel(cycles(r).draw); };
     std::vector<const TradeRow*> points = drawing_rows_by_speed(rows, scene);
-    std::string gp = dir + "/trade-" + scene + ".gp", png = dir + "/trade-" + scene + ".png";
+    std::vector<bool> on_front;
+    if (target.empty()) {
+        for (const TradeRow* r : points) on_front.push_back(r->pareto);
+    } else {
+        std::erase_if(points, [&](const TradeRow* r) { return cycles(r).draw == 0; });
+        if (points.empty()) return "";
+        std::stable_sort(points.begin(), points.end(), [&](const TradeRow* a, const TradeRow* b) { return speed(a) < speed(b); });
+        std::vector<std::pair<double, double>> measured;
+        std::vector<size_t> index;
+        for (size_t i = 0; i < points.size(); ++i)
+            if (points[i]->draws_everything()) measured.emplace_back(speed(points[i]), points[i]->accuracy.mean_footprint_error), index.push_back(i);
+        on_front.assign(points.size(), false);
+        for (size_t k : pareto_front(measured)) on_front[index[k]] = true;
+    }
+    const std::string base = "trade-" + scene + (target.empty() ? "" : "-" + target);
+    std::string gp = dir + "/" + base + ".gp", png = dir + "/" + base + ".png";
     std::ofstream out = open_out(gp);
     out << "# gnuplot script written by modexlab-bench: speed against accuracy for scene " << scene << "\n"
         << "set terminal pngcairo size 1000,640 font ',10'\nset output '" << png << "'\n"
-        << "set title '" << scene << ": speed against accuracy (QEMU icount; Pareto front joined; hollow: refuses some polygons)'\n"
-        << "set xlabel 'guest instructions per pixel drawn: setup, walking, inner loop (lower is faster)'\n"
+        << "set title '" << scene << ": speed against accuracy ("
+        << (target.empty() ? std::string("QEMU icount") : "timing model, " + std::string(target == "486" ? "486" : "Pentium") + ", zero-wait")
+        << "; Pareto front joined; hollow: refuses some polygons)'\n"
+        << (target.empty() ? "set xlabel 'guest instructions per pixel drawn: setup, walking, inner loop (lower is faster)'\n"
+                           : "set xlabel 'estimated cycles per pixel drawn: setup, walking, inner loop, choosing (lower is faster)'\n")
         << "set ylabel 'mean footprint error against the reference (log scale; 0 shown as 0.001)'\n"
         << "set logscale y\nset grid\nset key top right\nset offsets graph 0.02, graph 0.12, graph 0.05, graph 0.05\n";
     // points in speed order; labels alternate above and below so that neighbours do not overprint
@@ -561,7 +590,7 @@ std::string write_plot(const std::string& dir, const std::string& scene, const s
         out << "$" << name << " << EOD\n";
         int k = 0;
         for (const TradeRow* r : points)
-            if (keep(r, k++)) out << fixed(r->draw_per_pixel(), 3) << " " << fixed(std::max(0.001, r->accuracy.mean_footprint_error), 4) << " " << r->mapper << "\n";
+            if (keep(r, k++)) out << fixed(speed(r), 3) << " " << fixed(std::max(0.001, r->accuracy.mean_footprint_error), 4) << " " << r->mapper << "\n";
         out << "EOD\n";
     };
     block("all", [](const TradeRow* r, int) { return r->draws_everything(); });
@@ -569,8 +598,8 @@ std::string write_plot(const std::string& dir, const std::string& scene, const s
     block("all_down", [](const TradeRow* r, int k) { return r->draws_everything() && k % 2 == 1; });
     block("partial", [](const TradeRow* r, int) { return !r->draws_everything(); });
     out << "$front << EOD\n";
-    for (const TradeRow* r : points)
-        if (r->pareto) out << fixed(r->draw_per_pixel(), 3) << " " << fixed(std::max(0.001, r->accuracy.mean_footprint_error), 4) << "\n";
+    for (size_t i = 0; i < points.size(); ++i)
+        if (on_front[i]) out << fixed(speed(points[i]), 3) << " " << fixed(std::max(0.001, points[i]->accuracy.mean_footprint_error), 4) << "\n";
     out << "EOD\n";
     bool any_partial = std::any_of(points.begin(), points.end(), [](const TradeRow* r) { return !r->draws_everything(); });
     out << "plot $front using 1:2 with lines lw 2 lc rgb '#c03030' title 'Pareto front', \\\n"

@@ -136,6 +136,8 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
 
 // trade-SCENE.gp and, when gnuplot is installed, trade-SCENE.png: speed against mean texel error,
 // each point labelled, the Pareto front joined. Returns the PNG's path, or "" when not drawn.
-std::string write_plot(const std::string& dir, const std::string& scene, const std::vector<TradeRow>& rows);
+// `target` 486 or pentium: trade-SCENE-TARGET.*, the timing model's drawing cycles a pixel there
+// (the rows run on it, its own front), "" where none was.
+std::string write_plot(const std::string& dir, const std::string& scene, const std::vector<TradeRow>& rows, const std::string& target = "");
 
 }  // namespace harness

@@ -231,6 +231,17 @@ TEST(Trade, TheCsvReadBackIsTheSameRows) {
         EXPECT_NE(by_target.find("| a | 0.5 exact | 20.0 | 18.0 | 9.0 | 8.0 | fast-table 70.0%, exact 30.0% | fast-subdiv-16 100.0% |"), std::string::npos)
             << by_target;
         EXPECT_EQ(auto_by_target(t), "") << "no row priced";
+        // the plot on a target: the rows run there, at its cycles a pixel, its own front
+        const std::string plots = dir + "/plots";
+        std::filesystem::create_directories(plots);
+        write_plot(plots, "a", t, "pentium");
+        const std::string gp = read_whole_file(plots + "/trade-a-pentium.gp");
+        EXPECT_NE(gp.find("timing model, Pentium"), std::string::npos) << gp;
+        EXPECT_NE(gp.find("3.000 1.2500 fast-affine"), std::string::npos) << gp;
+        EXPECT_EQ(gp.find(" exact\n"), std::string::npos) << "exact was not run on the Pentium: " << gp;
+        write_plot(plots, "a", t, "486");
+        EXPECT_NE(read_whole_file(plots + "/trade-a-486.gp").find("7.000 1.2500 fast-affine"), std::string::npos);
+        EXPECT_EQ(write_plot(plots, "a", rows, "486"), "") << "nothing run on the 486";
         const std::string table = cycles_table(t);
         EXPECT_NE(table.find("| fast-affine | 4.5 | 7.0 | 11.0 | 13.0 | 11.5 | 2.0 | 3.0 | 5.0 | 9.0 | 6.0 |"), std::string::npos)
             << "100 pixels a row: " << table;
