@@ -14,4 +14,8 @@ namespace harness {
 // most of) and the listings and the kernel's objects (the model's figures; "-" where absent).
 void write_published(std::ostream& out, const std::vector<TradeRow>& rows);
 
+// The section after it (write_published writes both): our loops' figures under the timing model
+// against the goals the lab set them (docs/cycles.md, "Our loops against the goals").
+void write_goals(std::ostream& out, const std::vector<TradeRow>& rows);
+
 }  // namespace harness

@@ -16,6 +16,7 @@
 #include "kernel/core/render.h"
 #include "qemu/accuracy/measure.h"
 #include "qemu/tools/cycles_report.h"
+#include "qemu/tools/published.h"
 #include "qemu/tools/trade.h"
 #include "qemu/tools/trade_docs.h"
 #include "qemu/lib/error.h"
@@ -415,6 +416,31 @@ TEST(Measure3d, AffineIsWorseThanSubdividedPerspectiveOnTheCorridor) {
     AccuracyMetrics subdiv = measure_world_frame(w, *frame, *find_mapper("persp-subdiv-8"), Axis::Rows);
     EXPECT_GT(affine.mean_texel_error, 10 * subdiv.mean_texel_error);
     EXPECT_GT(subdiv.exact, affine.exact);
+}
+
+// The goals' last rows: on the corridor, our fastest perspective mapper within one footprint (on the
+// Pentium, the whole scene drawn) over our fastest affine one; a classic, auto, a mapper above one
+// footprint or one not run on the Pentium do not count.
+TEST(Trade, TheGoalsSetOurFastestPerspectiveAgainstOurFastestAffine) {
+    auto pentium = [](TradeRow r, uint64_t draw, double max_error, const char* family = "ours") {
+        r.cycles_pentium.draw = draw, r.accuracy.max_footprint_error = max_error, r.family = family;
+        return r;
+    };
+    const std::vector<TradeRow> rows = {pentium(row("corridor", "fast-table", 100, 1.5), 250, 2.5),
+                                        pentium(row("corridor", "fast-affine", 100, 1.5), 400, 2.5),
+                                        pentium(row("corridor", "fast-subdiv-16", 100, 0.2), 300, 0.9),
+                                        pentium(row("corridor", "fast-subdiv-32", 100, 0.4), 280, 1.2),
+                                        pentium(row("corridor", "quake-d_draw16", 100, 0.2), 100, 0.5, "classic"),
+                                        pentium(row("corridor", "auto", 100, 0.2), 90, 0.5),
+                                        row("corridor", "exact", 100, 0)};
+    std::ostringstream out;
+    write_goals(out, rows);
+    EXPECT_NE(out.str().find("| corridor: fastest perspective within one footprint over fastest affine | Pentium | 1.3 | fast-subdiv-16 3.0 / "
+                             "fast-table 2.5 = 1.20 | yes |"),
+              std::string::npos)
+        << out.str();
+    EXPECT_NE(out.str().find("| freedoom: fastest perspective within one footprint over fastest affine | Pentium | 1.3 | - | - |"), std::string::npos)
+        << out.str();
 }
 
 }  // namespace
