@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 #include "kernel/core/mapper.h"
 #include "qemu/lib/error.h"
@@ -59,14 +60,23 @@ FittedModel fit_costs(const std::vector<std::vector<std::string>>& csv, raster::
     double chose = 0, chose_instructions = 0;
     for (size_t i = 1; i < csv.size(); ++i) {
         const std::vector<std::string>& r = csv[i];
-        if (r.size() != h.size()) throw HarnessError("trade.csv line " + std::to_string(i + 1) + ": " + std::to_string(r.size()) + " fields, not " + std::to_string(h.size()));
-        if (r[setup].empty()) continue;  // not measured on the target
-        double n = std::stod(r[polygons]), px = std::stod(r[pixels]), sp = std::stod(r[spans]);
+        const std::string where = "trade.csv line " + std::to_string(i + 1) + ": ";
+        if (r.size() != h.size()) throw HarnessError(where + std::to_string(r.size()) + " fields, not " + std::to_string(h.size()));
+        if (r[setup].empty()) continue;  // not measured on the target (a drawn polygon's setup is never 0)
+        // (a count the bench left empty is 0: it writes a cycle column's 0 so)
+        auto number = [&](size_t column) {
+            if (r[column].empty()) return 0.0;
+            char* end = nullptr;
+            const double v = std::strtod(r[column].c_str(), &end);
+            if (*end) throw HarnessError(where + h[column] + " '" + r[column] + "' is not a number");
+            return v;
+        };
+        double n = number(polygons), px = number(pixels), sp = number(spans);
         if (n <= 0 || px <= 0) continue;
-        chose += std::stod(r[choose]), chose_instructions += std::stod(r[ticks_choose]);
-        double rest = std::stod(r[walk]) + std::stod(r[inner]);
+        chose += number(choose), chose_instructions += number(ticks_choose);
+        double rest = number(walk) + number(inner);
         Sums& s = sums[r[mapper]];
-        s.polygons += n, s.setup += std::stod(r[setup]);
+        s.polygons += n, s.setup += number(setup);
         s.x.push_back(sp / px), s.y.push_back(rest / px);
         s.spans += sp, s.pixels += px, s.rest += rest;
     }
