@@ -6,111 +6,110 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1030.2f, 353.90f, 40.349f}, // 11 scenes
-    {"exact", 1010.0f, 326.29f, 64.323f}, // 11 scenes
-    {"persp-subdiv-4", 1010.0f, 326.67f, 91.396f}, // 11 scenes
-    {"persp-subdiv-8", 1010.0f, 381.40f, 59.535f}, // 11 scenes
-    {"persp-subdiv-16", 1010.0f, 420.42f, 43.474f}, // 11 scenes
-    {"persp-subdiv-32", 1010.0f, 440.85f, 35.621f}, // 11 scenes
-    {"constant-depth", 1010.0f, 457.24f, 29.817f}, // 11 scenes
-    {"persp-adaptive-0.5", 1010.0f, 913.66f, 290.061f}, // 11 scenes
-    {"persp-adaptive-1", 1010.0f, 1004.71f, 51.784f}, // 11 scenes
-    {"persp-adaptive-2", 1010.0f, 1021.86f, 44.520f}, // 11 scenes
-    {"persp-adaptive-4", 1010.0f, 1034.65f, 40.054f}, // 11 scenes
-    {"fast-affine", 1048.9f, 108.08f, 5.161f}, // 11 scenes
-    {"fast-table", 1303.7f, 98.35f, 2.085f}, // 11 scenes
-    {"fast-columns", 1120.8f, 176.80f, 4.984f}, // 11 scenes
-    {"fast-table-columns", 1375.6f, 247.33f, 2.848f}, // 11 scenes
-    {"fast-subdiv-8", 1010.0f, 304.14f, 14.060f}, // 11 scenes
-    {"fast-subdiv-16", 1010.0f, 314.42f, 9.952f}, // 11 scenes
-    {"fast-subdiv-32", 1010.0f, 319.52f, 7.965f}, // 11 scenes
-    {"fast-constant-depth", 1010.0f, 324.10f, 6.325f}, // 11 scenes
-    {"fast-adaptive-1", 1010.0f, 346.98f, 9.617f}, // 11 scenes
-    {"fast-adaptive-2", 1010.0f, 350.73f, 8.135f}, // 11 scenes
-    {"fast-oriented-1", 1131.2f, 363.87f, 7.784f}, // 11 scenes
-    {"xsharp-dda", 1512.3f, 374.71f, 37.443f}, // 10 scenes
-    {"xsharp-row-out", 1512.3f, 509.97f, 18.955f}, // 10 scenes
-    {"xsharp-column", 1516.0f, 487.74f, 12.609f}, // 10 scenes
-    {"hecker-steptable", 5325.2f, 0.00f, 608.779f}, // 10 scenes
-    {"fatmap-256", 1722.9f, 160.21f, 13.682f}, // 8 scenes
-    {"fatmap-256-16", 1722.9f, 165.21f, 12.682f}, // 8 scenes
-    {"fatmap-lut", 2339.7f, 163.69f, 10.090f}, // 7 scenes
-    {"quake-subdiv16", 1541.9f, 303.70f, 13.887f}, // 10 scenes
-    {"quake-subdiv8", 1541.9f, 288.36f, 20.240f}, // 10 scenes
-    {"quake-d_draw16", 1522.9f, 321.35f, 9.591f}, // 10 scenes
+    {"affine", 1028.4f, 346.81f, 40.351f}, // 11 scenes
+    {"exact", 1009.0f, 319.20f, 64.325f}, // 11 scenes
+    {"persp-subdiv-4", 1009.0f, 319.58f, 91.397f}, // 11 scenes
+    {"persp-subdiv-8", 1009.0f, 374.31f, 59.536f}, // 11 scenes
+    {"persp-subdiv-16", 1009.0f, 413.33f, 43.475f}, // 11 scenes
+    {"persp-subdiv-32", 1009.0f, 433.76f, 35.622f}, // 11 scenes
+    {"constant-depth", 1009.0f, 450.15f, 29.819f}, // 11 scenes
+    {"persp-adaptive-0.5", 1009.0f, 906.56f, 290.063f}, // 11 scenes
+    {"persp-adaptive-1", 1009.0f, 997.62f, 51.785f}, // 11 scenes
+    {"persp-adaptive-2", 1009.0f, 1014.77f, 44.521f}, // 11 scenes
+    {"persp-adaptive-4", 1009.0f, 1027.56f, 40.055f}, // 11 scenes
+    {"fast-affine", 1044.7f, 108.32f, 5.155f}, // 11 scenes
+    {"fast-table", 1297.4f, 98.58f, 2.077f}, // 11 scenes
+    {"fast-columns", 1111.4f, 177.19f, 4.975f}, // 11 scenes
+    {"fast-table-columns", 1370.6f, 247.55f, 2.843f}, // 11 scenes
+    {"fast-subdiv-8", 1009.0f, 297.05f, 14.061f}, // 11 scenes
+    {"fast-subdiv-16", 1009.0f, 307.33f, 9.954f}, // 11 scenes
+    {"fast-subdiv-32", 1009.0f, 312.43f, 7.967f}, // 11 scenes
+    {"fast-constant-depth", 1009.0f, 317.00f, 6.327f}, // 11 scenes
+    {"fast-adaptive-1", 1009.0f, 339.89f, 9.618f}, // 11 scenes
+    {"fast-adaptive-2", 1009.0f, 343.64f, 8.137f}, // 11 scenes
+    {"fast-oriented-1", 1125.2f, 354.87f, 7.784f}, // 11 scenes
+    {"xsharp-dda", 1505.3f, 372.93f, 37.434f}, // 10 scenes
+    {"xsharp-row-out", 1505.3f, 508.19f, 18.946f}, // 10 scenes
+    {"xsharp-column", 1510.0f, 491.40f, 12.537f}, // 10 scenes
+    {"hecker-steptable", 5319.3f, 0.00f, 613.530f}, // 10 scenes
+    {"fatmap-256", 1717.3f, 163.19f, 13.680f}, // 8 scenes
+    {"fatmap-256-16", 1717.3f, 168.19f, 12.680f}, // 8 scenes
+    {"fatmap-lut", 2334.1f, 166.66f, 10.089f}, // 7 scenes
+    {"quake-subdiv16", 1534.9f, 299.64f, 13.864f}, // 10 scenes
+    {"quake-subdiv8", 1534.9f, 284.30f, 20.217f}, // 10 scenes
+    {"quake-d_draw16", 1515.9f, 317.29f, 9.568f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 
-// (not measured by this run: as the cost model before it)
 const MapperCost MAPPER_COSTS_486[] = {
-    {"affine", 1030.2f, 353.90f, 40.349f},
-    {"exact", 1010.0f, 326.29f, 64.323f},
-    {"persp-subdiv-4", 1010.0f, 326.67f, 91.396f},
-    {"persp-subdiv-8", 1010.0f, 381.40f, 59.535f},
-    {"persp-subdiv-16", 1010.0f, 420.42f, 43.474f},
-    {"persp-subdiv-32", 1010.0f, 440.85f, 35.621f},
-    {"constant-depth", 1010.0f, 457.24f, 29.817f},
-    {"persp-adaptive-0.5", 1010.0f, 913.66f, 290.061f},
-    {"persp-adaptive-1", 1010.0f, 1004.71f, 51.784f},
-    {"persp-adaptive-2", 1010.0f, 1021.86f, 44.520f},
-    {"persp-adaptive-4", 1010.0f, 1034.65f, 40.054f},
-    {"fast-affine", 1048.9f, 108.08f, 5.161f},
-    {"fast-table", 1303.7f, 98.35f, 2.085f},
-    {"fast-columns", 1120.8f, 176.80f, 4.984f},
-    {"fast-table-columns", 1375.6f, 247.33f, 2.848f},
-    {"fast-subdiv-8", 1010.0f, 304.14f, 14.060f},
-    {"fast-subdiv-16", 1010.0f, 314.42f, 9.952f},
-    {"fast-subdiv-32", 1010.0f, 319.52f, 7.965f},
-    {"fast-constant-depth", 1010.0f, 324.10f, 6.325f},
-    {"fast-adaptive-1", 1010.0f, 346.98f, 9.617f},
-    {"fast-adaptive-2", 1010.0f, 350.73f, 8.135f},
-    {"fast-oriented-1", 1131.2f, 363.87f, 7.784f},
-    {"xsharp-dda", 1512.3f, 374.71f, 37.443f},
-    {"xsharp-row-out", 1512.3f, 509.97f, 18.955f},
-    {"xsharp-column", 1516.0f, 487.74f, 12.609f},
-    {"hecker-steptable", 5325.2f, 0.00f, 608.779f},
-    {"fatmap-256", 1722.9f, 160.21f, 13.682f},
-    {"fatmap-256-16", 1722.9f, 165.21f, 12.682f},
-    {"fatmap-lut", 2339.7f, 163.69f, 10.090f},
-    {"quake-subdiv16", 1541.9f, 303.70f, 13.887f},
-    {"quake-subdiv8", 1541.9f, 288.36f, 20.240f},
-    {"quake-d_draw16", 1522.9f, 321.35f, 9.591f},
+    {"affine", 2845.9f, 1177.89f, 163.144f}, // 11 scenes
+    {"exact", 3286.6f, 586.39f, 560.902f}, // 11 scenes
+    {"persp-subdiv-4", 3277.8f, 957.20f, 436.632f}, // 11 scenes
+    {"persp-subdiv-8", 3283.6f, 1313.69f, 244.865f}, // 11 scenes
+    {"persp-subdiv-16", 3284.3f, 1550.69f, 148.234f}, // 11 scenes
+    {"persp-subdiv-32", 3282.4f, 1672.26f, 100.971f}, // 11 scenes
+    {"constant-depth", 3283.3f, 1772.62f, 66.012f}, // 11 scenes
+    {"persp-adaptive-0.5", 3281.2f, 4050.79f, 1776.463f}, // 11 scenes
+    {"persp-adaptive-1", 3282.8f, 4921.30f, 228.413f}, // 11 scenes
+    {"persp-adaptive-2", 3283.3f, 5047.48f, 175.119f}, // 11 scenes
+    {"persp-adaptive-4", 3283.0f, 5141.48f, 142.134f}, // 11 scenes
+    {"fast-affine", 2943.0f, 182.56f, 7.128f}, // 11 scenes
+    {"fast-table", 3402.4f, 162.00f, 5.168f}, // 11 scenes
+    {"fast-columns", 3018.5f, 333.84f, 6.152f}, // 11 scenes
+    {"fast-table-columns", 3461.6f, 358.31f, 7.186f}, // 11 scenes
+    {"fast-subdiv-8", 3281.0f, 986.18f, 59.857f}, // 11 scenes
+    {"fast-subdiv-16", 3281.0f, 1049.85f, 34.580f}, // 11 scenes
+    {"fast-subdiv-32", 3281.6f, 1081.88f, 22.362f}, // 11 scenes
+    {"fast-constant-depth", 3282.2f, 1108.43f, 13.013f}, // 11 scenes
+    {"fast-adaptive-1", 3282.8f, 1255.34f, 32.413f}, // 11 scenes
+    {"fast-adaptive-2", 3282.7f, 1278.51f, 23.385f}, // 11 scenes
+    {"fast-oriented-1", 4006.7f, 1342.94f, 17.947f}, // 11 scenes
+    {"xsharp-dda", 4206.2f, 582.27f, 80.315f}, // 10 scenes
+    {"xsharp-row-out", 4210.4f, 848.45f, 47.969f}, // 10 scenes
+    {"xsharp-column", 4213.8f, 826.04f, 19.716f}, // 10 scenes
+    {"hecker-steptable", 15041.0f, 0.00f, 2129.053f}, // 10 scenes
+    {"fatmap-256", 4040.1f, 194.45f, 20.614f}, // 8 scenes
+    {"fatmap-256-16", 4039.8f, 201.01f, 18.716f}, // 8 scenes
+    {"fatmap-lut", 4781.6f, 171.38f, 16.774f}, // 7 scenes
+    {"quake-subdiv16", 5508.9f, 1013.62f, 33.409f}, // 10 scenes
+    {"quake-subdiv8", 5509.0f, 966.99f, 52.572f}, // 10 scenes
+    {"quake-d_draw16", 5408.1f, 865.41f, 23.453f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
-// (not measured by this run: as the cost model before it)
+
 const MapperCost MAPPER_COSTS_PENTIUM[] = {
-    {"affine", 1030.2f, 353.90f, 40.349f},
-    {"exact", 1010.0f, 326.29f, 64.323f},
-    {"persp-subdiv-4", 1010.0f, 326.67f, 91.396f},
-    {"persp-subdiv-8", 1010.0f, 381.40f, 59.535f},
-    {"persp-subdiv-16", 1010.0f, 420.42f, 43.474f},
-    {"persp-subdiv-32", 1010.0f, 440.85f, 35.621f},
-    {"constant-depth", 1010.0f, 457.24f, 29.817f},
-    {"persp-adaptive-0.5", 1010.0f, 913.66f, 290.061f},
-    {"persp-adaptive-1", 1010.0f, 1004.71f, 51.784f},
-    {"persp-adaptive-2", 1010.0f, 1021.86f, 44.520f},
-    {"persp-adaptive-4", 1010.0f, 1034.65f, 40.054f},
-    {"fast-affine", 1048.9f, 108.08f, 5.161f},
-    {"fast-table", 1303.7f, 98.35f, 2.085f},
-    {"fast-columns", 1120.8f, 176.80f, 4.984f},
-    {"fast-table-columns", 1375.6f, 247.33f, 2.848f},
-    {"fast-subdiv-8", 1010.0f, 304.14f, 14.060f},
-    {"fast-subdiv-16", 1010.0f, 314.42f, 9.952f},
-    {"fast-subdiv-32", 1010.0f, 319.52f, 7.965f},
-    {"fast-constant-depth", 1010.0f, 324.10f, 6.325f},
-    {"fast-adaptive-1", 1010.0f, 346.98f, 9.617f},
-    {"fast-adaptive-2", 1010.0f, 350.73f, 8.135f},
-    {"fast-oriented-1", 1131.2f, 363.87f, 7.784f},
-    {"xsharp-dda", 1512.3f, 374.71f, 37.443f},
-    {"xsharp-row-out", 1512.3f, 509.97f, 18.955f},
-    {"xsharp-column", 1516.0f, 487.74f, 12.609f},
-    {"hecker-steptable", 5325.2f, 0.00f, 608.779f},
-    {"fatmap-256", 1722.9f, 160.21f, 13.682f},
-    {"fatmap-256-16", 1722.9f, 165.21f, 12.682f},
-    {"fatmap-lut", 2339.7f, 163.69f, 10.090f},
-    {"quake-subdiv16", 1541.9f, 303.70f, 13.887f},
-    {"quake-subdiv8", 1541.9f, 288.36f, 20.240f},
-    {"quake-d_draw16", 1522.9f, 321.35f, 9.591f},
+    {"affine", 1642.0f, 529.13f, 145.391f}, // 11 scenes
+    {"exact", 1795.8f, 332.83f, 283.362f}, // 11 scenes
+    {"persp-subdiv-4", 1800.3f, 451.11f, 187.316f}, // 11 scenes
+    {"persp-subdiv-8", 1801.0f, 587.49f, 110.253f}, // 11 scenes
+    {"persp-subdiv-16", 1796.5f, 682.27f, 71.381f}, // 11 scenes
+    {"persp-subdiv-32", 1802.0f, 731.78f, 52.290f}, // 11 scenes
+    {"constant-depth", 1798.8f, 771.50f, 38.119f}, // 11 scenes
+    {"persp-adaptive-0.5", 1809.4f, 1560.43f, 748.586f}, // 11 scenes
+    {"persp-adaptive-1", 1802.9f, 1893.54f, 107.979f}, // 11 scenes
+    {"persp-adaptive-2", 1802.8f, 1947.90f, 84.911f}, // 11 scenes
+    {"persp-adaptive-4", 1802.8f, 1988.34f, 70.778f}, // 11 scenes
+    {"fast-affine", 1713.2f, 135.74f, 4.427f}, // 11 scenes
+    {"fast-table", 2005.9f, 130.12f, 1.973f}, // 11 scenes
+    {"fast-columns", 1735.5f, 236.38f, 3.289f}, // 11 scenes
+    {"fast-table-columns", 2033.3f, 284.86f, 2.819f}, // 11 scenes
+    {"fast-subdiv-8", 1795.8f, 437.93f, 25.622f}, // 11 scenes
+    {"fast-subdiv-16", 1795.8f, 463.31f, 15.746f}, // 11 scenes
+    {"fast-subdiv-32", 1795.8f, 475.74f, 10.978f}, // 11 scenes
+    {"fast-constant-depth", 1795.7f, 486.69f, 7.110f}, // 11 scenes
+    {"fast-adaptive-1", 1795.8f, 546.89f, 14.813f}, // 11 scenes
+    {"fast-adaptive-2", 1795.9f, 555.91f, 11.316f}, // 11 scenes
+    {"fast-oriented-1", 2144.1f, 585.07f, 8.861f}, // 11 scenes
+    {"xsharp-dda", 2567.0f, 426.60f, 54.980f}, // 10 scenes
+    {"xsharp-row-out", 2567.0f, 597.93f, 33.774f}, // 10 scenes
+    {"xsharp-column", 2583.5f, 601.06f, 11.033f}, // 10 scenes
+    {"hecker-steptable", 7835.4f, 0.00f, 1169.314f}, // 10 scenes
+    {"fatmap-256", 2436.1f, 166.65f, 8.423f}, // 8 scenes
+    {"fatmap-256-16", 2436.1f, 173.73f, 7.420f}, // 8 scenes
+    {"fatmap-lut", 2807.3f, 155.72f, 6.062f}, // 7 scenes
+    {"quake-subdiv16", 2881.3f, 512.01f, 19.039f}, // 10 scenes
+    {"quake-subdiv8", 2881.4f, 487.31f, 29.184f}, // 10 scenes
+    {"quake-d_draw16", 2861.4f, 346.40f, 7.827f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
@@ -118,8 +117,8 @@ const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
 // proof_scale: auto's choosing, cycles an instruction on the target
 const CostModel COST_MODELS[] = {
     {"icount", MAPPER_COSTS, 1.000},
-    {"486", MAPPER_COSTS_486, 1.000},
-    {"pentium", MAPPER_COSTS_PENTIUM, 1.000},
+    {"486", MAPPER_COSTS_486, 3.819},
+    {"pentium", MAPPER_COSTS_PENTIUM, 1.693},
 };
 
 }  // namespace raster
