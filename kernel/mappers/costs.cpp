@@ -17,17 +17,17 @@ const MapperCost MAPPER_COSTS[] = {
     {"persp-adaptive-1", 1009.0f, 997.62f, 51.785f}, // 11 scenes
     {"persp-adaptive-2", 1009.0f, 1014.77f, 44.521f}, // 11 scenes
     {"persp-adaptive-4", 1009.0f, 1027.56f, 40.055f}, // 11 scenes
-    {"fast-affine", 1044.7f, 108.32f, 5.155f}, // 11 scenes
-    {"fast-table", 1297.4f, 98.58f, 2.077f}, // 11 scenes
+    {"fast-affine", 1044.7f, 108.16f, 5.603f}, // 11 scenes
+    {"fast-table", 1297.4f, 104.63f, 2.692f}, // 11 scenes
     {"fast-columns", 1111.4f, 177.19f, 4.975f}, // 11 scenes
     {"fast-table-columns", 1370.6f, 247.55f, 2.843f}, // 11 scenes
-    {"fast-subdiv-8", 1009.0f, 297.05f, 14.061f}, // 11 scenes
-    {"fast-subdiv-16", 1009.0f, 307.33f, 9.954f}, // 11 scenes
-    {"fast-subdiv-32", 1009.0f, 312.43f, 7.967f}, // 11 scenes
-    {"fast-constant-depth", 1009.0f, 317.00f, 6.327f}, // 11 scenes
-    {"fast-adaptive-1", 1009.0f, 339.89f, 9.618f}, // 11 scenes
-    {"fast-adaptive-2", 1009.0f, 343.64f, 8.137f}, // 11 scenes
-    {"fast-oriented-1", 1125.2f, 354.87f, 7.784f}, // 11 scenes
+    {"fast-subdiv-8", 1009.0f, 296.65f, 14.512f}, // 11 scenes
+    {"fast-subdiv-16", 1009.0f, 306.93f, 10.405f}, // 11 scenes
+    {"fast-subdiv-32", 1009.0f, 312.03f, 8.419f}, // 11 scenes
+    {"fast-constant-depth", 1009.0f, 316.60f, 6.779f}, // 11 scenes
+    {"fast-adaptive-1", 1009.0f, 339.49f, 10.069f}, // 11 scenes
+    {"fast-adaptive-2", 1009.0f, 343.24f, 8.589f}, // 11 scenes
+    {"fast-oriented-1", 1125.2f, 354.67f, 8.031f}, // 11 scenes
     {"xsharp-dda", 1505.3f, 372.93f, 37.434f}, // 10 scenes
     {"xsharp-row-out", 1505.3f, 508.19f, 18.946f}, // 10 scenes
     {"xsharp-column", 1510.0f, 491.40f, 12.537f}, // 10 scenes
@@ -42,74 +42,74 @@ const MapperCost MAPPER_COSTS[] = {
 };
 
 const MapperCost MAPPER_COSTS_486[] = {
-    {"affine", 2845.9f, 1177.89f, 163.144f}, // 11 scenes
-    {"exact", 3286.6f, 586.39f, 560.902f}, // 11 scenes
-    {"persp-subdiv-4", 3277.8f, 957.20f, 436.632f}, // 11 scenes
-    {"persp-subdiv-8", 3283.6f, 1313.69f, 244.865f}, // 11 scenes
-    {"persp-subdiv-16", 3284.3f, 1550.69f, 148.234f}, // 11 scenes
-    {"persp-subdiv-32", 3282.4f, 1672.26f, 100.971f}, // 11 scenes
-    {"constant-depth", 3283.3f, 1772.62f, 66.012f}, // 11 scenes
-    {"persp-adaptive-0.5", 3281.2f, 4050.79f, 1776.463f}, // 11 scenes
-    {"persp-adaptive-1", 3282.8f, 4921.30f, 228.413f}, // 11 scenes
-    {"persp-adaptive-2", 3283.3f, 5047.48f, 175.119f}, // 11 scenes
-    {"persp-adaptive-4", 3283.0f, 5141.48f, 142.134f}, // 11 scenes
-    {"fast-affine", 2943.0f, 182.56f, 7.128f}, // 11 scenes
-    {"fast-table", 3402.4f, 162.00f, 5.168f}, // 11 scenes
-    {"fast-columns", 3018.5f, 333.84f, 6.152f}, // 11 scenes
-    {"fast-table-columns", 3461.6f, 358.31f, 7.186f}, // 11 scenes
-    {"fast-subdiv-8", 3281.0f, 986.18f, 59.857f}, // 11 scenes
-    {"fast-subdiv-16", 3281.0f, 1049.85f, 34.580f}, // 11 scenes
-    {"fast-subdiv-32", 3281.6f, 1081.88f, 22.362f}, // 11 scenes
-    {"fast-constant-depth", 3282.2f, 1108.43f, 13.013f}, // 11 scenes
-    {"fast-adaptive-1", 3282.8f, 1255.34f, 32.413f}, // 11 scenes
-    {"fast-adaptive-2", 3282.7f, 1278.51f, 23.385f}, // 11 scenes
-    {"fast-oriented-1", 4006.7f, 1342.94f, 17.947f}, // 11 scenes
-    {"xsharp-dda", 4206.2f, 582.27f, 80.315f}, // 10 scenes
-    {"xsharp-row-out", 4210.4f, 848.45f, 47.969f}, // 10 scenes
-    {"xsharp-column", 4213.8f, 826.04f, 19.716f}, // 10 scenes
-    {"hecker-steptable", 15041.0f, 0.00f, 2129.053f}, // 10 scenes
-    {"fatmap-256", 4040.1f, 194.45f, 20.614f}, // 8 scenes
-    {"fatmap-256-16", 4039.8f, 201.01f, 18.716f}, // 8 scenes
-    {"fatmap-lut", 4781.6f, 171.38f, 16.774f}, // 7 scenes
-    {"quake-subdiv16", 5508.9f, 1013.62f, 33.409f}, // 10 scenes
-    {"quake-subdiv8", 5509.0f, 966.99f, 52.572f}, // 10 scenes
+    {"affine", 2845.8f, 1178.15f, 163.109f}, // 11 scenes
+    {"exact", 3286.6f, 587.90f, 560.427f}, // 11 scenes
+    {"persp-subdiv-4", 3277.1f, 956.12f, 436.632f}, // 11 scenes
+    {"persp-subdiv-8", 3284.2f, 1315.58f, 244.714f}, // 11 scenes
+    {"persp-subdiv-16", 3283.6f, 1549.06f, 148.271f}, // 11 scenes
+    {"persp-subdiv-32", 3281.6f, 1669.67f, 101.034f}, // 11 scenes
+    {"constant-depth", 3282.4f, 1769.67f, 66.085f}, // 11 scenes
+    {"persp-adaptive-0.5", 3281.6f, 4052.01f, 1776.430f}, // 11 scenes
+    {"persp-adaptive-1", 3282.7f, 4921.28f, 228.415f}, // 11 scenes
+    {"persp-adaptive-2", 3283.0f, 5047.47f, 174.931f}, // 11 scenes
+    {"persp-adaptive-4", 3282.9f, 5141.52f, 142.100f}, // 11 scenes
+    {"fast-affine", 2942.2f, 181.96f, 6.253f}, // 11 scenes
+    {"fast-table", 3402.9f, 170.70f, 4.775f}, // 11 scenes
+    {"fast-columns", 3018.0f, 333.83f, 5.375f}, // 11 scenes
+    {"fast-table-columns", 3461.7f, 358.50f, 7.181f}, // 11 scenes
+    {"fast-subdiv-8", 3281.1f, 987.16f, 58.960f}, // 11 scenes
+    {"fast-subdiv-16", 3281.1f, 1050.78f, 33.764f}, // 11 scenes
+    {"fast-subdiv-32", 3281.2f, 1082.91f, 21.473f}, // 11 scenes
+    {"fast-constant-depth", 3281.1f, 1109.41f, 12.089f}, // 11 scenes
+    {"fast-adaptive-1", 3282.8f, 1256.30f, 31.502f}, // 11 scenes
+    {"fast-adaptive-2", 3282.9f, 1279.40f, 22.534f}, // 11 scenes
+    {"fast-oriented-1", 4006.1f, 1343.45f, 17.445f}, // 11 scenes
+    {"xsharp-dda", 4205.8f, 580.77f, 80.361f}, // 10 scenes
+    {"xsharp-row-out", 4210.4f, 848.45f, 47.968f}, // 10 scenes
+    {"xsharp-column", 4213.8f, 826.01f, 19.717f}, // 10 scenes
+    {"hecker-steptable", 15041.1f, 0.00f, 2128.967f}, // 10 scenes
+    {"fatmap-256", 4040.2f, 194.29f, 20.656f}, // 8 scenes
+    {"fatmap-256-16", 4040.0f, 201.91f, 18.683f}, // 8 scenes
+    {"fatmap-lut", 4781.2f, 170.41f, 16.835f}, // 7 scenes
+    {"quake-subdiv16", 5508.7f, 1012.01f, 33.454f}, // 10 scenes
+    {"quake-subdiv8", 5508.6f, 966.33f, 52.387f}, // 10 scenes
     {"quake-d_draw16", 5408.1f, 865.41f, 23.453f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 
 const MapperCost MAPPER_COSTS_PENTIUM[] = {
-    {"affine", 1642.0f, 529.13f, 145.391f}, // 11 scenes
-    {"exact", 1795.8f, 332.83f, 283.362f}, // 11 scenes
-    {"persp-subdiv-4", 1800.3f, 451.11f, 187.316f}, // 11 scenes
-    {"persp-subdiv-8", 1801.0f, 587.49f, 110.253f}, // 11 scenes
-    {"persp-subdiv-16", 1796.5f, 682.27f, 71.381f}, // 11 scenes
-    {"persp-subdiv-32", 1802.0f, 731.78f, 52.290f}, // 11 scenes
-    {"constant-depth", 1798.8f, 771.50f, 38.119f}, // 11 scenes
-    {"persp-adaptive-0.5", 1809.4f, 1560.43f, 748.586f}, // 11 scenes
-    {"persp-adaptive-1", 1802.9f, 1893.54f, 107.979f}, // 11 scenes
-    {"persp-adaptive-2", 1802.8f, 1947.90f, 84.911f}, // 11 scenes
-    {"persp-adaptive-4", 1802.8f, 1988.34f, 70.778f}, // 11 scenes
-    {"fast-affine", 1713.2f, 135.74f, 4.427f}, // 11 scenes
-    {"fast-table", 2005.9f, 130.12f, 1.973f}, // 11 scenes
-    {"fast-columns", 1735.5f, 236.38f, 3.289f}, // 11 scenes
-    {"fast-table-columns", 2033.3f, 284.86f, 2.819f}, // 11 scenes
-    {"fast-subdiv-8", 1795.8f, 437.93f, 25.622f}, // 11 scenes
-    {"fast-subdiv-16", 1795.8f, 463.31f, 15.746f}, // 11 scenes
-    {"fast-subdiv-32", 1795.8f, 475.74f, 10.978f}, // 11 scenes
-    {"fast-constant-depth", 1795.7f, 486.69f, 7.110f}, // 11 scenes
-    {"fast-adaptive-1", 1795.8f, 546.89f, 14.813f}, // 11 scenes
-    {"fast-adaptive-2", 1795.9f, 555.91f, 11.316f}, // 11 scenes
-    {"fast-oriented-1", 2144.1f, 585.07f, 8.861f}, // 11 scenes
-    {"xsharp-dda", 2567.0f, 426.60f, 54.980f}, // 10 scenes
-    {"xsharp-row-out", 2567.0f, 597.93f, 33.774f}, // 10 scenes
-    {"xsharp-column", 2583.5f, 601.06f, 11.033f}, // 10 scenes
-    {"hecker-steptable", 7835.4f, 0.00f, 1169.314f}, // 10 scenes
+    {"affine", 1642.3f, 529.15f, 145.392f}, // 11 scenes
+    {"exact", 1795.4f, 332.74f, 283.363f}, // 11 scenes
+    {"persp-subdiv-4", 1798.9f, 451.76f, 187.303f}, // 11 scenes
+    {"persp-subdiv-8", 1797.6f, 587.21f, 110.259f}, // 11 scenes
+    {"persp-subdiv-16", 1802.4f, 681.76f, 71.386f}, // 11 scenes
+    {"persp-subdiv-32", 1797.1f, 731.64f, 52.292f}, // 11 scenes
+    {"constant-depth", 1798.7f, 772.84f, 38.087f}, // 11 scenes
+    {"persp-adaptive-0.5", 1804.4f, 1559.53f, 748.723f}, // 11 scenes
+    {"persp-adaptive-1", 1803.9f, 1893.70f, 108.066f}, // 11 scenes
+    {"persp-adaptive-2", 1803.9f, 1948.14f, 84.965f}, // 11 scenes
+    {"persp-adaptive-4", 1803.9f, 1988.64f, 70.811f}, // 11 scenes
+    {"fast-affine", 1712.5f, 137.02f, 4.016f}, // 11 scenes
+    {"fast-table", 2005.3f, 135.12f, 1.034f}, // 11 scenes
+    {"fast-columns", 1734.2f, 237.01f, 3.397f}, // 11 scenes
+    {"fast-table-columns", 2032.8f, 284.82f, 2.820f}, // 11 scenes
+    {"fast-subdiv-8", 1797.9f, 438.58f, 25.287f}, // 11 scenes
+    {"fast-subdiv-16", 1797.9f, 464.11f, 15.356f}, // 11 scenes
+    {"fast-subdiv-32", 1797.9f, 476.61f, 10.561f}, // 11 scenes
+    {"fast-constant-depth", 1797.8f, 487.51f, 6.708f}, // 11 scenes
+    {"fast-adaptive-1", 1798.0f, 547.64f, 14.437f}, // 11 scenes
+    {"fast-adaptive-2", 1797.9f, 556.71f, 10.921f}, // 11 scenes
+    {"fast-oriented-1", 2143.3f, 585.83f, 8.691f}, // 11 scenes
+    {"xsharp-dda", 2567.0f, 426.59f, 54.981f}, // 10 scenes
+    {"xsharp-row-out", 2567.1f, 597.93f, 33.775f}, // 10 scenes
+    {"xsharp-column", 2583.5f, 601.06f, 11.034f}, // 10 scenes
+    {"hecker-steptable", 7835.7f, 0.00f, 1169.315f}, // 10 scenes
     {"fatmap-256", 2436.1f, 166.65f, 8.423f}, // 8 scenes
     {"fatmap-256-16", 2436.1f, 173.73f, 7.420f}, // 8 scenes
     {"fatmap-lut", 2807.3f, 155.72f, 6.062f}, // 7 scenes
-    {"quake-subdiv16", 2881.3f, 512.01f, 19.039f}, // 10 scenes
-    {"quake-subdiv8", 2881.4f, 487.31f, 29.184f}, // 10 scenes
-    {"quake-d_draw16", 2861.4f, 346.40f, 7.827f}, // 10 scenes
+    {"quake-subdiv16", 2884.3f, 512.11f, 19.037f}, // 10 scenes
+    {"quake-subdiv8", 2884.4f, 487.40f, 29.182f}, // 10 scenes
+    {"quake-d_draw16", 2863.9f, 346.47f, 7.825f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
@@ -117,7 +117,7 @@ const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
 // proof_scale: auto's choosing, cycles an instruction on the target
 const CostModel COST_MODELS[] = {
     {"icount", MAPPER_COSTS, 1.000},
-    {"486", MAPPER_COSTS_486, 3.819},
+    {"486", MAPPER_COSTS_486, 3.817},
     {"pentium", MAPPER_COSTS_PENTIUM, 1.693},
 };
 
