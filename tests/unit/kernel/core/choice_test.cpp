@@ -1,8 +1,8 @@
 // Under test: kernel/core/choice.h, prepared.h.
 // auto: the cost model has a row for every mapper; auto picks the cheapest mapper whose bound meets
 // the budget, never a dearer one when the budget loosens; and on every demo scene at the bench's
-// frames, at budgets from 0 to any, through rows and columns, its measured footprint error stays
-// inside the budget and its coverage is exact.
+// frames, at budgets from 0 to any, through rows and columns, priced for each target in turn, its
+// measured footprint error stays inside the budget and its coverage is exact.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -390,9 +390,10 @@ TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
                     const int f = int(fi) * SANITIZED_SHARE;
                     Frame* frame = frames[fi].get();
                     frame->budget = b;
+                    frame->budget.target = CostTarget(fi % int(CostTarget::Count));  // priced for each target in turn
                     AccuracyMetrics m = measure_world_frame(w, *frame, a, axis);
                     std::string what = std::string(d.name) + " frame " + std::to_string(f) + " budget " + std::to_string(b.max_error) +
-                                       (axis == Axis::Rows ? " rows" : " columns");
+                                       (axis == Axis::Rows ? " rows" : " columns") + " priced for " + cost_target_name(frame->budget.target);
                     if (b.max_error >= 0) {
                         EXPECT_LE(m.max_footprint_error, b.max_error + 1e-6) << what;
                     }
