@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <map>
 
 #include "qemu/tools/demo_scenes.h"
 #include "qemu/accuracy/measure.h"
@@ -242,6 +243,33 @@ TEST(Scenes3d, TheBudgetCommandSetsWhatAutoDrawsTo) {
     json after = s.ok("budget");
     EXPECT_EQ(after["source"], "scene") << "a load goes back to the scene's budget";
     EXPECT_EQ(after["budget"]["max_error"], 1);
+}
+
+// Priced for the machine: the corridor's columns at any error and coverage, where fast-columns and
+// fast-table-columns are both within the budget; a 486 pays the table's base + index read a clock
+// and auto priced for it takes fast-columns, for the Pentium fast-table-columns (docs/accuracy.md,
+// "auto on a 486 and on a Pentium"); each picture the host's priced the same.
+TEST(Scenes3d, AutoPricedForEachTargetTakesItsCheapestColumns) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    s.ok("load corridor.scene");
+    LoadedWorld host = load_world_file(scene_path("corridor"));
+    for (raster::CostTarget target : {raster::CostTarget::I486, raster::CostTarget::Pentium}) {
+        const std::string name = raster::cost_target_name(target);
+        s.ok("budget any any " + name);
+        const json r = s.ok("frame 0 auto 1 planar");
+        std::map<std::string, uint64_t> pixels;
+        for (const json& d : r["drawn_by"]) pixels[d["mapper"].get<std::string>()] += d["pixels"].get<uint64_t>();
+        const std::string cheap = target == raster::CostTarget::I486 ? "fast-columns" : "fast-table-columns";
+        const std::string dear = target == raster::CostTarget::I486 ? "fast-table-columns" : "fast-columns";
+        EXPECT_GT(pixels[cheap] * 10, r["pixels"].get<uint64_t>() * 9) << name << ": " << r["drawn_by"].dump();
+        EXPECT_LT(pixels[dear] * 100, r["pixels"].get<uint64_t>()) << name << ": " << r["drawn_by"].dump();
+        auto f = world_frame(host, 0);
+        f->budget = raster::Budget{true, raster::ANY_ERROR, false, target};
+        const IndexImage want = render_world_frame(host, *f, *raster::find_mapper("auto"), raster::Axis::Columns);
+        s.ok("flip 1");
+        expect_same_frame(s, want, host.world->palette, 1, "priced-" + name);
+    }
 }
 
 // The mesh at its budget: auto draws nearly every triangle as the torus's envelope proves (the
