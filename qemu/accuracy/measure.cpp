@@ -75,6 +75,7 @@ LoadedWorld parse_world_text(const std::string& text, const std::string& name, c
         throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message);
     w.textures = std::make_unique<HostTextureSet>();
     build_texture_set(*w.world, w.textures.get());
+    w.files = std::move(finder.read);
     return w;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -65,6 +66,7 @@ struct LoadedWorld {
     std::string name;
     std::unique_ptr<raster::HostWorld> world;
     std::unique_ptr<raster::HostTextureSet> textures;
+    std::map<std::string, std::string> files;  // the files it read (texture images), by the name the scene gave, and their bytes
 };
 
 // Throws HarnessError "NAME:LINE: message" on a bad scene or a texture file it cannot read.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "qemu/tools/demo_scenes.h"
+#include "qemu/tools/trade.h"
 #include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
 #include "qemu/lib/host_image.h"
@@ -25,7 +26,7 @@ namespace {
 using namespace harness;
 
 const char* USAGE =
-    "usage: modexlab run  [BOOT] [--out DIR] [--scene NAME] [--mapper NAME] [--frames N] [--display]\n"
+    "usage: modexlab run  [BOOT] [--out DIR] [--scene NAME|FILE] [--mapper NAME] [--frames N] [--display]\n"
     "       modexlab exec [BOOT] [--full] COMMAND...\n"
     "BOOT:  --kernel ELF [--append OPTIONS] [--module PATH[=NAME]]... | --iso ISO [--usb]\n"
     "                     (default: build/kernel/modexlab.elf; a module's name is its path unless given)\n"
@@ -33,16 +34,18 @@ const char* USAGE =
     "       --cpu MODEL   QEMU's -cpu (486, pentium, ...)\n"
     "       --plugin SPEC QEMU's -plugin (the timing model: docs/cycles.md, \"Whole frames\")\n"
     "run:   boots, says hello, sets Mode X; draws, shows and screenshots every test pattern; then\n"
-    "       plays every demo scene (or NAME) for N frames (default 90: three seconds of its\n"
-    "       animation) with the mapper (default persp-subdiv-16), page-flipped, and screenshots the\n"
-    "       last frame. Each screenshot must equal the host's rendering. Screenshots go to DIR\n"
-    "       (default build/run). --display: a QEMU window playing the scene(s) until it is closed.\n"
+    "       plays every demo scene (or NAME, or a scene file of one's own) for N frames (default 90:\n"
+    "       three seconds of its animation) with the mapper (default auto: the scene's budget),\n"
+    "       page-flipped, and screenshots the last frame. Each screenshot must equal the host's\n"
+    "       rendering. Screenshots go to DIR (default build/run). --display: a QEMU window playing\n"
+    "       the demo scene(s) until it is closed. The scene and the mapper are checked before booting.\n"
     "exec:  sends each COMMAND (one kernel command line, quote it) and prints the JSON replies;\n"
     "       'screendump:NAME' saves a screendump as NAME.png in the run directory instead;\n"
     "       'scene:FILE' uploads a scene file (scene BYTES CRC32 and the bytes);\n"
     "       'file:NAME=PATH' uploads a file under NAME (file NAME BYTES CRC32 and the bytes).\n"
     "       Events a command sends before its reply (play's frames) are printed as they come.\n"
-    "       Long \"data\" fields are shortened unless --full.\n";
+    "       Long \"data\" fields are shortened unless --full. Exit status: 1 if a reply was not ok,\n"
+    "       else the kernel's own exit code where an `exit N` ended it, else 0.\n";
 
 struct Args {
     std::string verb;
@@ -51,6 +54,7 @@ struct Args {
     bool full = false;
     std::vector<std::string> commands;
     std::string scene, mapper = "auto";
+    std::string scene_file;  // --scene named a file, not a demo scene
     int frames = 90;
 };
 
@@ -94,8 +98,17 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
         a.session.display = args.has("--display");
         a.out = args.text("--out", build_dir() + "/run");
         a.scene = args.text("--scene");
+        if (!a.scene.empty()) {  // (before booting: a demo scene's name, or a scene file the host reads)
+            try {
+                a.scene_file = choose_scene(a.scene).demo ? "" : a.scene;
+            } catch (const HarnessError& e) {
+                throw UsageError(e.what());
+            }
+            if (!a.scene_file.empty()) load_world_file(a.scene_file);  // (its errors: FILE:LINE: what)
+            if (!a.scene_file.empty() && a.session.display) throw UsageError("--display plays the demo scenes; a scene file plays headless");
+        }
         a.mapper = args.text("--mapper", a.mapper);
-        if (!raster::find_mapper({a.mapper.data(), a.mapper.size()})) throw UsageError("unknown mapper '" + a.mapper + "'");
+        if (!raster::find_mapper({a.mapper.data(), a.mapper.size()})) throw UsageError(unknown_mapper(a.mapper));
         a.frames = args.integer("--frames", 1, 100000, a.frames);
     } else {
         a.full = args.has("--full");
@@ -126,39 +139,59 @@ int watch(Args& a) {
     return 0;
 }
 
-// Plays every demo scene (or one) and checks the last frame of each against the host.
+// A scene file of one's own into the kernel: the texture files it reads, each under the name the
+// scene gives it, then the scene under its own file name, loaded by that name (the kernel's errors
+// name it so).
+void upload_and_load(Session& s, const std::string& path) {
+    const LoadedWorld w = load_world_file(path);
+    auto ok = [&](const json& r, const std::string& what) {
+        if (!r.value("ok", false)) throw HarnessError(what + ": the kernel refused it: " + r.value("error", std::string("?")));
+    };
+    for (const auto& [name, bytes] : w.files) ok(s.upload_file(name, bytes), name);
+    const std::string name = std::filesystem::path(path).filename().string();
+    ok(s.upload_file(name, read_whole_file(path)), path);
+    ok(s.command("load " + name), path);
+}
+
+// Plays every demo scene (or one, or the scene file) and checks the last frame of each against
+// the host.
 int play_scenes(Args& a, Session& s) {
     int failures = 0;
-    std::vector<const DemoScene*> scenes;
+    std::vector<SceneChoice> scenes;
+    if (!a.scene_file.empty()) scenes.push_back(choose_scene(a.scene_file));
     for (const DemoScene& d : demo_scenes())
-        if (a.scene.empty() || a.scene == d.name) scenes.push_back(&d);
-    if (scenes.empty()) throw HarnessError("no demo scene '" + a.scene + "' (modexlab-scene list)");
+        if (a.scene_file.empty() && (a.scene.empty() || a.scene == d.name)) scenes.push_back(choose_scene(d.name));
     const raster::Mapper& mapper = *raster::find_mapper({a.mapper.data(), a.mapper.size()});
     const bool progress = isatty(1);  // frame counts on a terminal, not in logs
     std::printf("\nscenes, %d frames each (%.1f s of animation), drawn with %s; ticks are TSC ticks%s\n", a.frames,
                 double(a.frames) / raster::FRAMES_PER_SECOND, a.mapper.c_str(), a.session.icount ? " (icount: instructions)" : " (QEMU TCG, not a real PC)");
     std::printf("%-12s %6s %9s %11s %12s %10s  %-28s %s\n", "scene", "frames", "polygons", "pixels", "ticks/frame", "ticks/px", "screenshot", "vs host");
     for (size_t i = 0; i < scenes.size(); ++i) {
-        const DemoScene& d = *scenes[i];
-        s.ok(std::string("load ") + d.name + ".scene");
+        const SceneChoice& d = scenes[i];
+        // a demo scene is built in; a file goes up, and the kernel's errors name it
+        if (d.demo) {
+            s.ok("load " + d.name + ".scene");
+        } else {
+            upload_and_load(s, d.path);
+        }
         json last;
         json r = s.ok("play " + std::to_string(a.frames) + " " + a.mapper, [&](const json& e) {
             last = e;
             if (progress && e["n"].get<int>() % 10 == 9) {
-                std::printf("\r  scene %zu/%zu %s: frame %d/%d", i + 1, scenes.size(), d.name, e["n"].get<int>() + 1, a.frames);
+                std::printf("\r  scene %zu/%zu %s: frame %d/%d", i + 1, scenes.size(), d.name.c_str(), e["n"].get<int>() + 1, a.frames);
                 std::fflush(stdout);
             }
         });
         if (progress) std::printf("\r%60s\r", "");
-        LoadedWorld host = load_world_file("scenes/" + std::string(d.name) + ".scene");
+        LoadedWorld host = load_world_file(d.path);
         auto frame = world_frame(host, last["frame"].get<int32_t>());
         IndexImage want = render_world_frame(host, *frame, mapper, home_axis(mapper));
-        std::string stem = std::string("scene-") + d.name;
+        std::string stem = "scene-" + d.name;
         RgbImage dump = s.screendump(stem);
         bool same = dump.rgb == screendump_of(want, host.world->palette).rgb && compare(s.readback(last["page"].get<int>()), want).equal();
         std::filesystem::copy_file(s.run_dir() + "/" + stem + ".png", a.out + "/" + stem + ".png", std::filesystem::copy_options::overwrite_existing);
         uint64_t pixels = r["pixels"].get<uint64_t>();
-        std::printf("%-12s %6d %9d %11llu %12llu %10.1f  %-28s %s\n", d.name, a.frames, last["polygons"].get<int>(), (unsigned long long)pixels,
+        std::printf("%-12s %6d %9d %11llu %12llu %10.1f  %-28s %s\n", d.name.c_str(), a.frames, last["polygons"].get<int>(), (unsigned long long)pixels,
                     (unsigned long long)r["ticks_median"].get<uint64_t>(), pixels ? double(r["ticks"].get<uint64_t>()) / double(pixels) : 0.0,
                     (a.out + "/" + stem + ".png").c_str(), same ? "equal" : "DIFFERS");
         const json& drawn_by = r["drawn_by"];  // the mappers that drew: several when auto chose
@@ -264,8 +297,11 @@ int exec(Args& a) {
         std::fflush(stdout);
         all_ok = all_ok && reply["ok"].get<bool>();
         if (reply.value("cmd", "") == "exit" && reply["ok"].get<bool>()) {
-            std::printf("%s\n", s.wait_exit().describe().c_str());
-            return all_ok ? 0 : 1;
+            const ExitInfo e = s.wait_exit();
+            std::printf("%s\n", e.describe().c_str());
+            // the kernel's own exit code (isa-debug-exit: status 2 code + 1, codes 0..63), else 1
+            const bool by_code = e.exited && e.status % 2 == 1 && (e.status >> 1) <= 0x3F;
+            return !all_ok ? 1 : by_code ? e.status >> 1 : 1;
         }
     }
     return all_ok ? 0 : 1;

@@ -89,6 +89,35 @@ std::string CommandLine::one_of(const std::vector<std::string_view>& names) {
     return out;
 }
 
+namespace {
+
+// Levenshtein's distance: the least insertions, deletions and substitutions from a to b.
+size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            const size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+}  // namespace
+
+std::string nearest_first(const std::string& word, const std::vector<std::string>& names) {
+    std::vector<std::pair<size_t, std::string>> by_distance;
+    for (const std::string& n : names) by_distance.emplace_back(edit_distance(word, n), n);
+    std::stable_sort(by_distance.begin(), by_distance.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::string out;
+    for (const auto& [d, n] : by_distance) out += (out.empty() ? "" : ", ") + n;
+    return out;
+}
+
 int run_cli(std::string_view program, std::string_view usage, const std::function<int()>& body) {
     const std::string name(program);
     try {

@@ -68,6 +68,10 @@ CommandLine parse_command_line(const std::vector<std::string>& words, const std:
 
 // A program's main: runs body and returns its status; a UsageError from it prints "PROGRAM: why"
 // and the usage on stderr (status 2), any other exception "PROGRAM: what" (status 1).
+// The names, the nearest to `word` first (edit distance; ties in the order given), as "a, b, c":
+// what a message lists after a name it does not know.
+std::string nearest_first(const std::string& word, const std::vector<std::string>& names);
+
 int run_cli(std::string_view program, std::string_view usage, const std::function<int()>& body);
 
 // -h/--help: the usage on stdout, status 0.

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "kernel/scene/world.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
 
 namespace harness {
@@ -385,7 +386,11 @@ const std::vector<DemoScene>& demo_scenes() {
 SceneChoice choose_scene(const std::string& spec) {
     for (const DemoScene& d : demo_scenes())
         if (spec == d.name) return {spec, "scenes/" + spec + ".scene", &d};
-    if (!std::filesystem::is_regular_file(spec)) throw HarnessError("no demo scene or scene file '" + spec + "' (modexlab-scene list)");
+    if (!std::filesystem::is_regular_file(spec)) {
+        std::vector<std::string> names;
+        for (const DemoScene& d : demo_scenes()) names.push_back(d.name);
+        throw HarnessError("no demo scene or scene file '" + spec + "' (the demo scenes, the nearest first: " + nearest_first(spec, names) + ")");
+    }
     return {std::filesystem::path(spec).stem().string(), spec, nullptr};
 }
 

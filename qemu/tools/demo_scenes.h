@@ -17,7 +17,8 @@ const std::vector<DemoScene>& demo_scenes();
 
 // A scene as the tools' --scenes name it: a demo scene (its file scenes/NAME.scene, from the
 // repository's top, where the tools run) or a scene file (named after its stem). Throws
-// HarnessError "no demo scene or scene file 'X' (modexlab-scene list)" for neither.
+// HarnessError "no demo scene or scene file 'X' (the demo scenes, the nearest first: ...)" for
+// neither.
 struct SceneChoice {
     std::string name, path;
     const DemoScene* demo;  // nullptr: a file

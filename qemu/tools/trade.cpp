@@ -68,9 +68,15 @@ std::string budget_words(const raster::Budget& b) {
            (b.given ? "" : ": the default");
 }
 
+std::string unknown_mapper(const std::string& name) {
+    std::vector<std::string> names;
+    for (int i = 0; i < raster::MAPPER_COUNT; ++i) names.push_back(raster::MAPPERS[i].name);
+    return "unknown mapper '" + name + "' (the mappers, the nearest first: " + nearest_first(name, names) + ")";
+}
+
 std::vector<std::string> known_mappers(std::vector<std::string> names) {
     for (const std::string& m : names)
-        if (!raster::find_mapper({m.data(), m.size()})) throw UsageError("unknown mapper '" + m + "'");
+        if (!raster::find_mapper({m.data(), m.size()})) throw UsageError(unknown_mapper(m));
     return names;
 }
 

@@ -25,8 +25,10 @@ std::string budget_text(double max_error);
 std::string budget_words(const raster::Budget& b);
 
 // The mappers a tool's --mappers option names, each checked against the registry (UsageError
-// "unknown mapper 'X'").
+// unknown_mapper's).
 std::vector<std::string> known_mappers(std::vector<std::string> names);
+// "unknown mapper 'X' (the mappers, the nearest first: ...)"
+std::string unknown_mapper(const std::string& name);
 
 struct TradeRow {
     using DrawnBy = std::vector<std::tuple<std::string, uint64_t, uint64_t>>;  // mapper, polygons, pixels

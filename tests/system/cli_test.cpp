@@ -121,4 +121,53 @@ TEST(RunTool, AMapperThatDrawsNothingIsReportedNotACrash) {
     EXPECT_EQ(r.out.find("drawn by"), std::string::npos) << r.out;
 }
 
+std::string harness_tool() { return build_dir() + "/host/modexlab"; }
+std::string kernel_option() { return " --kernel " + build_dir() + "/kernel/modexlab.elf"; }
+
+// make run's arguments are checked before QEMU boots: an unknown scene or mapper is named with the
+// names, the nearest first; a scene file's error is named by its file and line.
+TEST(RunTool, ChecksTheSceneAndTheMapperBeforeBooting) {
+    const ToolRun scene = run_command(harness_tool() + " run" + kernel_option() + " --scene corridr");
+    EXPECT_EQ(scene.status, 2) << scene.out;
+    EXPECT_NE(scene.out.find("no demo scene or scene file 'corridr' (the demo scenes, the nearest first: corridor, corridor-cut,"), std::string::npos)
+        << scene.out;
+    EXPECT_EQ(scene.out.find("modexlab run: booting"), std::string::npos) << scene.out;
+    const ToolRun mapper = run_command(harness_tool() + " run" + kernel_option() + " --mapper fastaffine");
+    EXPECT_EQ(mapper.status, 2) << mapper.out;
+    EXPECT_NE(mapper.out.find("unknown mapper 'fastaffine' (the mappers, the nearest first: fast-affine, affine,"), std::string::npos) << mapper.out;
+    EXPECT_EQ(mapper.out.find("modexlab run: booting"), std::string::npos) << mapper.out;
+    const std::string bad = tmp("bad.scene");
+    std::ofstream(bad) << "modexlab-scene 2\ntexture t file nosuch.bmp\n";
+    const ToolRun file = run_command(harness_tool() + " run" + kernel_option() + " --scene " + bad);
+    EXPECT_EQ(file.status, 1) << file.out;
+    EXPECT_NE(file.out.find(bad + ":2: texture 't': no file 'nosuch.bmp'"), std::string::npos) << file.out;
+    EXPECT_EQ(file.out.find("modexlab run: booting"), std::string::npos) << file.out;
+}
+
+// A scene of one's own with its own texture files plays in the kernel as the demo scenes do: the
+// files go up under the names the scene gives them, and the last frame equals the host's.
+TEST(RunTool, PlaysASceneFileOfOnesOwnWithItsTextures) {
+    const std::string dir = tmp("own");
+    std::filesystem::create_directories(dir + "/tex");
+    for (const char* name : {"floor0_1", "ceil3_5", "startan3", "comptall", "brown1"})
+        std::filesystem::copy_file(build_dir() + "/scenes/freedoom/" + name + ".bmp", dir + "/tex/" + name + ".bmp",
+                                   std::filesystem::copy_options::overwrite_existing);
+    std::string text = read_whole_file("scenes/freedoom.scene");
+    for (size_t at; (at = text.find("file freedoom/")) != std::string::npos;) text.replace(at, 14, "file tex/");
+    std::ofstream(dir + "/my-room.scene") << text;
+    const ToolRun r = run_command(harness_tool() + " run" + kernel_option() + " --scene " + dir + "/my-room.scene --frames 2 --out " + dir + "/out");
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("my-room"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(" equal\n"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(dir + "/out/scene-my-room.png"));
+}
+
+// exec passes the kernel's exit code on; a reply that is not ok makes it 1.
+TEST(ExecTool, PassesTheKernelsExitCodeOn) {
+    EXPECT_EQ(run_command(harness_tool() + " exec" + kernel_option() + " 'exit 3'").status, 3);
+    EXPECT_EQ(run_command(harness_tool() + " exec" + kernel_option() + " 'exit 0'").status, 0);
+    const ToolRun refused = run_command(harness_tool() + " exec" + kernel_option() + " 'nosuch' 'exit 0'");
+    EXPECT_EQ(refused.status, 1) << refused.out;
+}
+
 }  // namespace
