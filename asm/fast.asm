@@ -438,17 +438,12 @@ fast_column_run_doubled:
     DOUBLED_STEPS ecx, CRUN, L_DVF, L_DSTEP, eax
     COLUMN_RUN doubled, column_run_doubled_entries
 
-; fast_table_loop_asm: fast-table's run of rows (twin: fast_table_loop): the rows walked as
-; fast_run_loop_asm walks them, each row's pixel x read through the polygon's offset table, table[x],
-; from the texel of the row's pixel at which the table starts (u and v there: no multiply a row): an
-; odd span's first pixel alone, then the pairs, sixteen a block: a pair comes in with its two
-; offsets loaded (ebx, edx), reads its two texels into bl and al, stores them as bytes, and loads the
-; next pair's offsets, each into a register its own texel read has finished with, so that no offset
-; is used as an address in the cycle after its load (the AGI), and every instruction pairs on a
-; Pentium. The last pair loads the two entries after the span, inside the table's room
-; (TABLE_LIMIT), never read through. The table and the destination are addressed from the block's
-; start without an index register, which a 486 charges a clock.
-;   esi: the texel of the table's first pixel   ebp, edi: the block's offsets and pixels
+; fast_table_loop_asm: fast-table's rows (twin: fast_table_loop), walked as fast_run_loop_asm walks
+; them, pixel x of a row read at the row's first texel + table[x]: an odd span's first pixel alone,
+; then pairs, sixteen a block. A pair comes in with its offsets loaded, stores its texels as bytes and
+; loads the next pair's offsets into registers its reads are done with (no AGI; docs/cycles.md, "Our
+; loops against the goals"); the last pair's loads fall inside the table's room, never read through.
+;   esi: the row's first texel   ebp, edi: the block's offsets and pixels (no index register)
 ;   ecx: the blocks left   ebx, edx: offsets   bl, al: texels
 %macro TPAIR 1                          ; %1: the pair within the block
     mov al, [esi + edx]

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <fstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -135,6 +136,11 @@ std::string isa_table(const std::vector<TradeRow>& rows);
 // build/report/trade.md: per scene, a table sorted by speed; the mappers that cannot draw it; the
 // classics' published figures beside ours.
 void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, const ReportInfo& info);
+
+// A file of the report opened for writing, its directory made (HarnessError where it cannot be).
+std::ofstream open_out(const std::string& path);
+// A scene's rows that drew, by drawing instructions a pixel, fastest first.
+std::vector<const TradeRow*> drawing_rows_by_speed(const std::vector<TradeRow>& rows, const std::string& scene);
 
 // trade-SCENE.gp and, when gnuplot is installed, trade-SCENE.png: speed against mean texel error,
 // each point labelled, the Pareto front joined. Returns the PNG's path, or "" when not drawn.

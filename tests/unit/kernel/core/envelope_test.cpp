@@ -293,12 +293,12 @@ TEST(Envelope, TakesTrianglesOnlyUpToTheSizeWhereNoOtherCandidateUndercutsIt) {
         EXPECT_EQ(stats.enveloped, scale < 1 ? 1u : 0u) << "a triangle of " << s * s / 2 << " pixels against a limit of " << pixels;
         EXPECT_EQ(stats.polygons, 1u);
     }
-    // a sliver two pixels wide, below the area limit, about the line limit
+    // a sliver a pixel wide (h / 2 pixels), below the area limit, about the line limit
     if (plan.enveloped_extent < (ENVELOPE_REACH + 1) * SUBPIXEL_ONE) {
         for (double scale : {0.8, 1.25}) {
             const double h = lines * scale;
-            ASSERT_LT(h, pixels);
-            const std::vector<Vertex> tri{vertex(20, 10, 1, 0, 0), vertex(22, 10, 1, 4, 0), vertex(20, 10 + h, 1, 0, 40)};
+            ASSERT_LT(h / 2, pixels);
+            const std::vector<Vertex> tri{vertex(20, 10, 1, 0, 0), vertex(21, 10, 1, 2, 0), vertex(20, 10 + h, 1, 0, 40)};
             RenderStats stats;
             Drawer d = Drawer::of(fast, tex, Axis::Rows, t, &stats, Variant::Twin, true);
             d.limits.area2 = plan.enveloped_area2;
