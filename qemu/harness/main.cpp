@@ -139,20 +139,6 @@ int watch(Args& a) {
     return 0;
 }
 
-// A scene file of one's own into the kernel: the texture files it reads, each under the name the
-// scene gives it, then the scene under its own file name, loaded by that name (the kernel's errors
-// name it so).
-void upload_and_load(Session& s, const std::string& path) {
-    const LoadedWorld w = load_world_file(path);
-    auto ok = [&](const json& r, const std::string& what) {
-        if (!r.value("ok", false)) throw HarnessError(what + ": the kernel refused it: " + r.value("error", std::string("?")));
-    };
-    for (const auto& [name, bytes] : w.files) ok(s.upload_file(name, bytes), name);
-    const std::string name = std::filesystem::path(path).filename().string();
-    ok(s.upload_file(name, read_whole_file(path)), path);
-    ok(s.command("load " + name), path);
-}
-
 // Plays every demo scene (or one, or the scene file) and checks the last frame of each against
 // the host.
 int play_scenes(Args& a, Session& s) {
@@ -168,12 +154,8 @@ int play_scenes(Args& a, Session& s) {
     std::printf("%-12s %6s %9s %11s %12s %10s  %-28s %s\n", "scene", "frames", "polygons", "pixels", "ticks/frame", "ticks/px", "screenshot", "vs host");
     for (size_t i = 0; i < scenes.size(); ++i) {
         const SceneChoice& d = scenes[i];
-        // a demo scene is built in; a file goes up, and the kernel's errors name it
-        if (d.demo) {
-            s.ok("load " + d.name + ".scene");
-        } else {
-            upload_and_load(s, d.path);
-        }
+        const LoadedWorld host = load_world_file(d.path);
+        load_scene_in_kernel(s, d, host);
         json last;
         json r = s.ok("play " + std::to_string(a.frames) + " " + a.mapper, [&](const json& e) {
             last = e;
@@ -183,7 +165,6 @@ int play_scenes(Args& a, Session& s) {
             }
         });
         if (progress) std::printf("\r%60s\r", "");
-        LoadedWorld host = load_world_file(d.path);
         auto frame = world_frame(host, last["frame"].get<int32_t>());
         IndexImage want = render_world_frame(host, *frame, mapper, home_axis(mapper));
         std::string stem = "scene-" + d.name;

@@ -32,7 +32,7 @@ const char* USAGE =
     "                      [--targets 486,pentium]\n"
     "       modexlab-bench --costs-from CSV [--out DIR]\n"
     "       modexlab-bench --refresh-docs CSV\n"
-    "  --scenes   demo scenes (default: all; modexlab-scene list) or scene files (uploaded; procedural textures only)\n"
+    "  --scenes   demo scenes (default: all; modexlab-scene list) or scene files (uploaded with their texture files)\n"
     "  --mappers  mappers (default: all of the registry)\n"
     "  --frames   frames a scene, spread evenly over its animation (default 8)\n"
     "  --out      where the report goes (default build/report): trade.csv, trade.md, trade-SCENE.png, costs.cpp\n"
@@ -45,7 +45,7 @@ const char* USAGE =
 struct BenchScene {
     std::string name;  // in the report
     std::string path;  // the file on the host
-    bool builtin;      // a demo scene: the kernel has it; else uploaded
+    const DemoScene* demo;  // a demo scene: the kernel has it; nullptr: a file, uploaded
     LoadedWorld host;
 };
 
@@ -84,16 +84,13 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
 BenchScene open_scene(const std::string& spec) {
     SceneChoice c = choose_scene(spec);
     BenchScene s;
-    s.name = c.name, s.path = c.path, s.builtin = c.demo != nullptr;
+    s.name = c.name, s.path = c.path, s.demo = c.demo;
     s.host = load_world_file(s.path);
     return s;
 }
 
 // The kernel loads the scene: a built-in by name, a file by upload.
-void load_in_kernel(Session& k, const BenchScene& s) {
-    json r = s.builtin ? k.command("load " + s.name + ".scene") : k.upload_scene(read_whole_file(s.path));
-    if (!r.value("ok", false)) throw HarnessError(s.path + ": the kernel refused it: " + r.value("error", std::string("?")));
-}
+void load_in_kernel(Session& k, const BenchScene& s) { load_scene_in_kernel(k, SceneChoice{s.name, s.path, s.demo}, s.host); }
 
 
 uint64_t sum_of(const json& r, const char* field) {
@@ -233,7 +230,7 @@ void cycles_pass(const SessionOptions& p6, const std::string& target, std::vecto
     if (!raster::cost_target_named(target.data(), target.size(), &priced_for)) throw HarnessError("no cost model for the target '" + target + "'");
     bench_again(k, target, scenes, frames, rows, [&](BenchScene& s, TradeRow& row, const json&, const json&) {
         const std::vector<json> lines = plugin_lines();
-        TradeRow::Cycles& c = target == "486" ? row.cycles_486 : row.cycles_pentium;
+        TradeRow::Cycles& c = row.cycles_on(target);
         for (size_t b = 0; b < plugin.buses.size(); ++b) c.frame[b] = lines[b]["frame_cycles"].get<uint64_t>();
         c.setup = lines[0]["setup"].get<uint64_t>(), c.walk = lines[0]["walk"].get<uint64_t>();
         c.inner = lines[0]["inner"].get<uint64_t>(), c.choose = lines[0]["choose"].get<uint64_t>();

@@ -48,7 +48,7 @@ std::string modex_table(const std::vector<TradeRow>& rows) {
                 // the fastest straight and through RAM: cycles a pixel, mapper
                 std::pair<double, std::string> straight{0, ""}, ram{0, ""};
                 for (const TradeRow& r : rows) {
-                    const TradeRow::Cycles& c = std::string(target) == "486" ? r.cycles_486 : r.cycles_pentium;
+                    const TradeRow::Cycles& c = r.cycles_on(target);
                     if (r.scene != scene || !c.frame[b] || !r.draws_everything()) continue;
                     auto& best = r.surface == "vga" ? straight : ram;
                     const double per = r.per_pixel(c.frame[b]);
@@ -70,7 +70,7 @@ std::string pareto_by_target(const std::vector<TradeRow>& rows) {
             std::vector<const TradeRow*> measured;
             std::vector<std::pair<double, double>> points;
             for (const TradeRow& r : rows) {
-                const TradeRow::Cycles& c = std::string(target) == "486" ? r.cycles_486 : r.cycles_pentium;
+                const TradeRow::Cycles& c = r.cycles_on(target);
                 if (r.scene != scene || !c.draw || !r.draws_everything()) continue;
                 measured.push_back(&r);
                 points.emplace_back(r.per_pixel(c.draw), r.accuracy.mean_footprint_error);

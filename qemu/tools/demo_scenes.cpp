@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "kernel/scene/world.h"
+#include "qemu/accuracy/measure.h"
+#include "qemu/harness/session.h"
 #include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
 
@@ -392,6 +394,17 @@ SceneChoice choose_scene(const std::string& spec) {
         throw HarnessError("no demo scene or scene file '" + spec + "' (the demo scenes, the nearest first: " + nearest_first(spec, names) + ")");
     }
     return {std::filesystem::path(spec).stem().string(), spec, nullptr};
+}
+
+void load_scene_in_kernel(Session& s, const SceneChoice& scene, const LoadedWorld& host) {
+    auto ok = [&](const json& r, const std::string& what) {
+        if (!r.value("ok", false)) throw HarnessError(what + ": the kernel refused it: " + r.value("error", std::string("?")));
+    };
+    if (scene.demo) return ok(s.command("load " + scene.name + ".scene"), scene.path);
+    for (const auto& [name, bytes] : host.files) ok(s.upload_file(name, bytes), name);
+    const std::string name = std::filesystem::path(scene.path).filename().string();
+    ok(s.upload_file(name, read_whole_file(scene.path)), scene.path);
+    ok(s.command("load " + name), scene.path);
 }
 
 std::string obj_to_mesh(const std::string& obj, const std::string& mesh_name, const std::string& file) {

@@ -7,6 +7,9 @@
 
 namespace harness {
 
+class Session;
+struct LoadedWorld;
+
 struct DemoScene {
     const char* name;      // the file is scenes/NAME.scene
     const char* exercises; // what it is for (docs/scene-format.md lists them)
@@ -24,6 +27,12 @@ struct SceneChoice {
     const DemoScene* demo;  // nullptr: a file
 };
 SceneChoice choose_scene(const std::string& spec);
+
+// The scene into the kernel: a demo scene by its built-in name; a file with the files `host` (its
+// parse on the host) read, each under the name the scene gives it, then itself under its own file
+// name, loaded by that name (the kernel's errors name it so). Throws HarnessError with the
+// kernel's error where it refuses one.
+void load_scene_in_kernel(Session& s, const SceneChoice& scene, const LoadedWorld& host);
 
 // A mesh block from a Wavefront OBJ subset (v, vt, f; f corners v/vt or v/vt/vn, negative indices
 // relative; other lines ignored): `v` flipped so that rows run down (OBJ's v runs up). What the

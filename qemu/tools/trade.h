@@ -71,6 +71,9 @@ struct TradeRow {
         DrawnBy priced_by;
     };
     Cycles cycles_486, cycles_pentium;
+    // a target's ("486", else the Pentium's)
+    Cycles& cycles_on(const std::string& target) { return target == "486" ? cycles_486 : cycles_pentium; }
+    const Cycles& cycles_on(const std::string& target) const { return target == "486" ? cycles_486 : cycles_pentium; }
 
     bool draws_everything() const { return rejected == 0 && pixels > 0; }
     double per_pixel(uint64_t t) const { return pixels ? double(t) / double(pixels) : 0.0; }

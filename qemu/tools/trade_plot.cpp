@@ -11,14 +11,13 @@ namespace harness {
 
 std::string write_plot(const std::string& dir, const std::string& scene, const std::vector<TradeRow>& rows, const std::string& target) {
     // the speed plotted: icount's drawing instructions a pixel, or the target's drawing cycles
-    auto cycles = [&](const TradeRow* r) -> const TradeRow::Cycles& { return target == "486" ? r->cycles_486 : r->cycles_pentium; };
-    auto speed = [&](const TradeRow* r) { return target.empty() ? r->draw_per_pixel() : r->per_pixel(cycles(r).draw); };
+    auto speed = [&](const TradeRow* r) { return target.empty() ? r->draw_per_pixel() : r->per_pixel(r->cycles_on(target).draw); };
     std::vector<const TradeRow*> points = drawing_rows_by_speed(rows, scene);
     std::vector<bool> on_front;
     if (target.empty()) {
         for (const TradeRow* r : points) on_front.push_back(r->pareto);
     } else {
-        std::erase_if(points, [&](const TradeRow* r) { return cycles(r).draw == 0; });
+        std::erase_if(points, [&](const TradeRow* r) { return r->cycles_on(target).draw == 0; });
         if (points.empty()) return "";
         std::stable_sort(points.begin(), points.end(), [&](const TradeRow* a, const TradeRow* b) { return speed(a) < speed(b); });
         std::vector<std::pair<double, double>> measured;
