@@ -45,8 +45,10 @@ DEPS_BUILD := \
 	i686-linux-gnu-g++:g++-i686-linux-gnu \
 	/usr/share/games/doom/freedoom1.wad:freedoom
 DEPS_RUN := $(DEPS_BUILD) qemu-system-i386:qemu-system-x86
+# (make run DISPLAY=1: QEMU's GTK window, a module of its own package)
+DEPS_DISPLAY := $(DEPS_RUN) /usr/lib/$(shell uname -m)-linux-gnu/qemu/ui-gtk.so:qemu-system-gui
 DEPS_BENCH := $(DEPS_RUN) gnuplot:gnuplot-nox
-DEPS_ALL := $(DEPS_BENCH) \
+DEPS_ALL := $(DEPS_BENCH) $(filter-out $(DEPS_RUN),$(DEPS_DISPLAY)) Xvfb:xvfb \
 	grub-mkrescue:grub-common \
 	/usr/lib/grub/i386-pc/multiboot.mod:grub-pc-bin \
 	xorriso:xorriso \
@@ -444,9 +446,11 @@ usb: $(ISO)
 # DISPLAY from the recipe; $(shell) still sees the environment make started with.
 X_DISPLAY := $(shell printenv DISPLAY)
 # `make run` builds what it runs: the kernel and the harness (not the ISO, the tools or the tests).
+RUN_DEPS := $(if $(filter 1,$(DISPLAY)),DISPLAY,RUN)
 run:
-	@$(MAKE) -s DEPS_FOR=RUN deps
-	@$(MAKE) -s -j$(NPROC) DEPS_FOR=RUN $(KERNEL) $(HARNESS)
+	@$(if $(filter 1,$(DISPLAY)),$(if $(X_DISPLAY)$(WAYLAND_DISPLAY),,echo "make run DISPLAY=1: no display for a window (neither DISPLAY nor WAYLAND_DISPLAY is set); make run plays headless"; exit 1))
+	@$(MAKE) -s DEPS_FOR=$(RUN_DEPS) deps
+	@$(MAKE) -s -j$(NPROC) DEPS_FOR=$(RUN_DEPS) $(KERNEL) $(HARNESS)
 	DISPLAY=$(X_DISPLAY) $(HARNESS) run --kernel $(KERNEL) --out $(BUILD)/run $(if $(SCENE),--scene $(SCENE)) \
 		$(if $(MAPPER),--mapper $(MAPPER)) $(if $(filter 1,$(DISPLAY)),--display)
 

@@ -96,6 +96,7 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     if (run) {
         if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
         a.session.display = args.has("--display");
+        if (a.session.display) window_backend();  // (before booting: a display, and QEMU's window for it)
         a.out = args.text("--out", build_dir() + "/run");
         a.scene = args.text("--scene");
         if (!a.scene.empty()) {  // (before booting: a demo scene's name, or a scene file the host reads)
@@ -130,10 +131,10 @@ std::string shorten_data(json reply, bool full) {
 int watch(Args& a) {
     a.session.name = "watch";
     a.session.append = "boot=demo mapper=" + a.mapper + (a.scene.empty() ? "" : " scene=" + a.scene + ".scene");
+    Session s(a.session);  // (the window is open once the kernel has booted in it)
     std::printf("modexlab run: a QEMU window plays %s with %s; close it to stop\n", a.scene.empty() ? "every demo scene" : a.scene.c_str(),
                 a.mapper.c_str());
     std::fflush(stdout);
-    Session s(a.session);
     ExitInfo e = s.wait_exit(std::chrono::hours(24 * 365));
     std::printf("%s\n", e.describe().c_str());
     return 0;

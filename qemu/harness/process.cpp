@@ -12,6 +12,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -86,6 +88,24 @@ std::string ExitInfo::describe() const {
     return s + "unknown isa-debug-exit value " + std::to_string(value);
 }
 
+std::string window_backend() {
+    const char* x = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if (!(x && *x) && !(wayland && *wayland))
+        throw HarnessError("no display for a window: neither DISPLAY nor WAYLAND_DISPLAY is set (run it from a graphical "
+                           "session, or without the window: make run, modexlab run without --display)");
+    FILE* p = popen("qemu-system-i386 -display help 2>/dev/null", "r");
+    if (!p) throw HarnessError(errno_text("qemu-system-i386 -display help"));
+    std::string text;
+    char chunk[1024];
+    for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, p)) > 0;) text.append(chunk, n);
+    pclose(p);
+    for (const char* backend : {"gtk", "sdl"})
+        if (text.find(std::string("\n") + backend + "\n") != std::string::npos) return backend;
+    throw HarnessError("QEMU has no window display (gtk or sdl): Debian ships them in qemu-system-gui "
+                       "(make run DISPLAY=1 installs it, or apt-get install qemu-system-gui)");
+}
+
 std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& serial_socket,
                                         const std::string& qmp_socket) {
     std::vector<std::string> a = {
@@ -100,7 +120,7 @@ std::vector<std::string> qemu_arguments(const QemuConfig& c, const std::string& 
         "-mon", "chardev=qmp,mode=control",
         "-parallel", "none", "-net", "none",
     };
-    if (!c.display) a.insert(a.end(), {"-display", "none"});
+    a.insert(a.end(), {"-display", c.display.empty() ? "none" : c.display});
     if (c.icount) a.insert(a.end(), {"-icount", "shift=0,align=off,sleep=off"});
     if (!c.cpu.empty()) a.insert(a.end(), {"-cpu", c.cpu});
     if (c.firmware == Firmware::Uefi64) a.insert(a.end(), {"-bios", OVMF64});

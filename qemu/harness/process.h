@@ -28,7 +28,7 @@ struct QemuConfig {
     std::string image;       // the ELF (-kernel) or the ISO (CD or USB stick)
     std::string append;      // multiboot command line, -kernel only
     std::vector<std::string> modules;  // -kernel only: Multiboot modules (-initrd), each "PATH" or "PATH NAME"
-    bool display = false;    // a window (QEMU's default display) instead of none
+    std::string display;     // a window's display backend (window_backend()); empty: none
     bool icount = false;     // -icount shift=0,align=off,sleep=off: rdtsc counts guest instructions
     std::string cpu;         // -cpu MODEL (Bochs: cpu model=MODEL); empty: the emulator's default
     int memory_mib = 0;      // -m (Bochs: megs); 0: 128 MiB (QEMU's UEFI: 256)
@@ -44,6 +44,11 @@ struct ExitInfo {
     Emulator emulator = Emulator::Qemu;
     std::string describe() const;  // what the status means for modexlab (docs/protocol.md)
 };
+
+// The display backend a QEMU window opens with: gtk where QEMU has it, else sdl. HarnessError, saying
+// what to do, where no graphical session is named (DISPLAY, WAYLAND_DISPLAY) or QEMU has neither
+// backend (Debian ships them in qemu-system-gui).
+std::string window_backend();
 
 // The argument vector (without the program name) for the given sockets.
 std::vector<std::string> qemu_arguments(const QemuConfig& config, const std::string& serial_socket,

@@ -49,7 +49,7 @@ Session::Session(SessionOptions options) : options_(std::move(options)) {
                                                             : build_dir() + "/modexlab.iso";
     config.append = options_.append;
     config.modules = options_.modules;
-    config.display = options_.display;
+    if (options_.display) config.display = window_backend();
     config.icount = options_.icount;
     config.cpu = options_.cpu;
     config.memory_mib = options_.memory_mib;
