@@ -4,6 +4,7 @@
 #include "drivers/serial.h"
 #include "drivers/timer.h"
 #include "kernel/platform/idt.h"
+#include "kernel/core/policy.h"
 #include "kernel/server/commands.h"
 #include "kernel/server/reply.h"
 #include "kernel/present/current_world.h"
@@ -125,6 +126,7 @@ bool parse_draw_args(const char* cmd, const StrView* args, size_t nargs, bool wi
     }
     size_t next = 1;
     if (with_page && !parse_page(cmd, args[next++], &d->page)) return false;
+    d->surface = raster::home_surface(*d->mapper);  // (unless a surface is named)
     if (nargs > next && !raster::surface_from_name(args[next], &d->surface)) {
         unknown_surface(cmd);
         return false;

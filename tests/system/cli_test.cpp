@@ -162,6 +162,13 @@ TEST(RunTool, PlaysASceneFileOfOnesOwnWithItsTextures) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/out/scene-my-room.png"));
 }
 
+// make run MAPPER=xsharp-column: the mapper draws through its own surface (the VGA planes).
+TEST(RunTool, AMapperThatWritesThePlanesPlaysWithoutASurfaceNamed) {
+    const ToolRun r = run_command(harness_tool() + " run" + kernel_option() + " --scene cube --mapper xsharp-column --frames 2 --out " + tmp("run-planes"));
+    ASSERT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find(" equal\n"), std::string::npos) << r.out;
+}
+
 // exec passes the kernel's exit code on; a reply that is not ok makes it 1.
 TEST(ExecTool, PassesTheKernelsExitCodeOn) {
     EXPECT_EQ(run_command(harness_tool() + " exec" + kernel_option() + " 'exit 3'").status, 3);

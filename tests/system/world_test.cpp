@@ -189,6 +189,27 @@ TEST(Scenes3d, PlayReportsEveryFrameAndFlipsPages) {
     EXPECT_EQ(again["ticks"], r["ticks"]);
 }
 
+// Without a surface named, a mapper draws through its own: the VGA planes for those that write
+// them (xsharp-column, the fast column loops), rows in RAM for the rest; the picture is the host's.
+TEST(Scenes3d, AMapperDrawsThroughItsOwnSurfaceUnlessOneIsNamed) {
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    s.ok("load cube.scene");
+    const LoadedWorld host = load_world_file(scene_path("cube"));
+    int planar = 0;
+    for (int i = 0; i < raster::MAPPER_COUNT; ++i) {
+        const raster::Mapper& m = raster::MAPPERS[i];
+        const json r = s.ok(std::string("frame 20 ") + m.name + " 1");
+        EXPECT_EQ(r["surface"], raster::surface_name(raster::home_surface(m))) << m.name;
+        if (raster::home_surface(m) == raster::Surface::Linear) continue;
+        ++planar;
+        s.ok("flip 1");
+        auto f = world_frame(host, 20);
+        expect_same_frame(s, render_world_frame(host, *f, m, raster::home_axis(m)), host.world->palette, 1, std::string("home-") + m.name);
+    }
+    EXPECT_GE(planar, 4) << "xsharp-column, xsharp-row-out, fast-columns, fast-table-columns";
+}
+
 // The budget command: what auto draws to, until `budget scene` or the next load; auto at budget 0
 // draws the reference's texels (only exact has bound 0 on a polygon it draws pixels of), and every
 // picture equals the host's at the same budget, priced for each target; bad budgets are refused with
