@@ -130,7 +130,10 @@ HARNESS_CXX := $(filter-out %/main.cpp %_main.cpp,$(wildcard qemu/*/*.cpp))
 HARNESS_OBJS := $(HARNESS_CXX:%=$(HBUILD)/%.o) $(PORTABLE_CXX:%=$(HBUILD)/%.o)
 TEST_CXX := $(wildcard tests/*.cpp tests/unit/*.cpp tests/unit/*/*/*.cpp tests/system/*.cpp)
 
-HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -I. -MMD -MP -DMODEXLAB_BUILD_DIR='"$(abspath $(BUILD))"'
+HCXXFLAGS := -std=c++20 -O2 -g $(WARNINGS) -ffp-contract=off -fno-math-errno -I. -MMD -MP
+# (the host objects and the tests' precompiled header depend on the file that records the flags)
+HFLAGS_FILE := $(HBUILD)/flags.txt
+$(shell mkdir -p $(HBUILD) && { echo '$(HCXXFLAGS)' | cmp -s - $(HFLAGS_FILE) || echo '$(HCXXFLAGS)' >$(HFLAGS_FILE); })
 HLDLIBS := -lpng -lpthread -lcapstone
 
 # 32-bit static host programs: the NASM loops against their C++ twins (tests/asm), with GoogleTest
@@ -334,12 +337,12 @@ $(ISO): $(KERNEL) boot/grub.cfg $(BUILTIN_SOURCES)
 		> $(BUILD)/isodir/boot/grub/grub.cfg
 	$(Q)grub-mkrescue -o $@ $(BUILD)/isodir 2>$(BUILD)/grub-mkrescue.log || { cat $(BUILD)/grub-mkrescue.log; exit 1; }
 
-$(HBUILD)/%.cpp.o: %.cpp | deps
+$(HBUILD)/%.cpp.o: %.cpp $(HFLAGS_FILE) | deps
 	@mkdir -p $(@D)
 	$(call say,CXX,$<)
 	$(Q)$(HCXX) $(HCXXFLAGS) -c $< -o $@
 
-$(HBUILD)/pic/%.cpp.o: %.cpp | deps
+$(HBUILD)/pic/%.cpp.o: %.cpp $(HFLAGS_FILE) | deps
 	@mkdir -p $(@D)
 	$(call say,CXX-PIC,$<)
 	$(Q)$(HCXX) $(HCXXFLAGS) -fPIC -fvisibility=hidden -c $< -o $@
@@ -354,7 +357,7 @@ $(TIMING_PLUGIN): $(TIMING_PLUGIN_CXX:%=$(HBUILD)/pic/%.o)
 # under test keeps -O2, and failures and backtraces still name lines.
 TEST_FLAGS := -O1 -g1
 TEST_PCH := $(HBUILD)/pch/tests.h
-$(TEST_PCH).gch: tests/pch.h | deps
+$(TEST_PCH).gch: tests/pch.h $(HFLAGS_FILE) | deps
 	@mkdir -p $(@D)
 	$(call say,PCH,$<)
 	$(Q)cp $< $(TEST_PCH)

@@ -1,5 +1,6 @@
 // Scene loading and the pictures the metrics compare.
 #include "qemu/accuracy/measure.h"
+#include "qemu/lib/paths.h"
 #include "kernel/core/bound.h"
 
 #include "kernel/core/policy.h"
@@ -36,6 +37,16 @@ LoadedScene parse_scene_text(const std::string& text, const std::string& name) {
     if (!parse_scene(text.data(), text.size(), scene.get(), &e))
         throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message);
     return make_loaded_scene(std::move(scene), name);
+}
+
+std::string refusal(const raster::Mapper& m, const raster::RenderStats& st) {
+    if (!st.rejected) return "";
+    lib::Fmt needs;
+    raster::describe_needs(needs, m.needs & raster::SCENE_NEEDS);
+    const uint32_t all = st.polygons + st.skipped + st.rejected;
+    std::string why = *needs.c_str() ? std::string(" (it needs ") + needs.c_str() + ")" : std::string();
+    return st.polygons ? "Draws part of the frame: refuses " + std::to_string(st.rejected) + " of its " + std::to_string(all) + " polygons" + why + "."
+                       : "Cannot draw this scene: refuses every polygon" + why + ".";
 }
 
 std::string read_whole_file(const std::string& path) {
@@ -83,7 +94,7 @@ void leave_out_doubled_copies(LoadedWorld& w) { build_texture_set(*w.world, w.te
 
 std::vector<std::string> world_search_path(const std::string& scene_path) {
     std::string dir = std::filesystem::path(scene_path).parent_path().string();
-    return {dir.empty() ? "." : dir, std::string(MODEXLAB_BUILD_DIR) + "/scenes"};
+    return {dir.empty() ? "." : dir, build_dir() + "/scenes"};
 }
 
 LoadedWorld load_world_file(const std::string& path) { return parse_world_text(read_whole_file(path), path, world_search_path(path)); }

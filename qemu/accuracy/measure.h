@@ -145,6 +145,11 @@ struct FrameBound {
 };
 FrameBound world_frame_bound(const LoadedWorld& w, const raster::Frame& frame, const raster::Mapper& mapper, raster::Axis axis);
 
+// Why the mapper did not draw every polygon it was given (its stats), or "": "Cannot draw this
+// scene: refuses every polygon (it needs ...)." or "Draws part of the frame: refuses R of its N
+// polygons (it needs ...)." (the needs: what a scene can fail to give, raster::SCENE_NEEDS).
+std::string refusal(const raster::Mapper& m, const raster::RenderStats& st);
+
 // Reads a whole file; throws HarnessError when it cannot.
 std::string read_whole_file(const std::string& path);
 

@@ -30,7 +30,7 @@ const char* USAGE =
     "       modexlab exec [BOOT] [--full] COMMAND...\n"
     "BOOT:  --kernel ELF [--append OPTIONS] [--module PATH[=NAME]]... | --iso ISO [--usb]\n"
     "                     (default: build/kernel/modexlab.elf; a module's name is its path unless given)\n"
-    "       --icount      count guest instructions (rdtsc = instructions executed)\n"
+    "       --icount      count guest instructions (rdtsc = instructions executed; run counts them always)\n"
     "       --cpu MODEL   QEMU's -cpu (486, pentium, ...)\n"
     "       --plugin SPEC QEMU's -plugin (the timing model: docs/cycles.md, \"Whole frames\")\n"
     "run:   boots, says hello, sets Mode X; draws, shows and screenshots every test pattern; then\n"
@@ -96,6 +96,7 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     if (run) {
         if (!args.positionals().empty()) throw UsageError("unexpected argument '" + args.positionals()[0] + "'");
         a.session.display = args.has("--display");
+        a.session.icount = !a.session.display;  // (its figures in instructions; a window plays at the PC's pace)
         if (a.session.display) window_backend();  // (before booting: a display, and QEMU's window for it)
         a.out = args.text("--out", build_dir() + "/run");
         a.scene = args.text("--scene");
@@ -140,26 +141,59 @@ int watch(Args& a) {
     return 0;
 }
 
-// Plays every demo scene (or one, or the scene file) and checks the last frame of each against
-// the host.
-int play_scenes(Args& a, Session& s) {
-    int failures = 0;
+// What make run says of the scenes it played, summed for its closing line.
+struct Played {
+    int scenes = 0, differ = 0;
+    uint64_t frames = 0, pixels = 0, draw_instructions = 0;
+    raster::AccuracyMetrics errors;   // the last frames' against the reference, merged
+    std::vector<std::string> nothing; // the scenes the mapper drew nothing of
+};
+
+std::string fixed(double x, int decimals) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*f", decimals, x);
+    return text;
+}
+
+// The lines under a scene's row where the mapper refused polygons of its last frame: how many, why,
+// and where it refused them all, the demo scenes it draws whole.
+void say_refusal(const raster::Mapper& mapper, const raster::RenderStats& stats, std::vector<std::string>* whole) {
+    const std::string why = refusal(mapper, stats);
+    if (why.empty()) return;
+    std::printf("%9s %s %s\n", "", mapper.name, why.c_str());
+    if (stats.polygons) return;
+    if (whole->empty()) *whole = demo_scenes_drawn_whole(mapper);
+    std::string names;
+    for (const std::string& n : *whole) names += (names.empty() ? "" : ", ") + n;
+    std::printf("%9s the demo scenes it draws whole: %s\n", "", names.empty() ? "none" : names.c_str());
+}
+
+// Plays every demo scene (or one, or the scene file) and checks the last frame of each against the
+// host's, and measures it against the exact reference.
+Played play_scenes(Args& a, Session& s) {
+    Played played;
     std::vector<SceneChoice> scenes;
     if (!a.scene_file.empty()) scenes.push_back(choose_scene(a.scene_file));
     for (const DemoScene& d : demo_scenes())
         if (a.scene_file.empty() && (a.scene.empty() || a.scene == d.name)) scenes.push_back(choose_scene(d.name));
     const raster::Mapper& mapper = *raster::find_mapper({a.mapper.data(), a.mapper.size()});
     const bool progress = isatty(1);  // frame counts on a terminal, not in logs
-    std::printf("\nscenes, %d frames each (%.1f s of animation), drawn with %s; ticks are TSC ticks%s\n", a.frames,
-                double(a.frames) / raster::FRAMES_PER_SECOND, a.mapper.c_str(), a.session.icount ? " (icount: instructions)" : " (QEMU TCG, not a real PC)");
-    std::printf("%-12s %6s %9s %11s %12s %10s  %-28s %s\n", "scene", "frames", "polygons", "pixels", "ticks/frame", "ticks/px", "screenshot", "vs host");
+    std::vector<std::string> whole;
+    std::printf("\nscenes, %d frames each (%.1f s of animation), drawn with %s\n", a.frames, double(a.frames) / raster::FRAMES_PER_SECOND,
+                a.mapper.c_str());
+    std::printf("instr/px: drawing instructions a pixel (QEMU icount); max and mean error: the last frame against the exact\n"
+                "reference, in footprints (docs/accuracy.md); vs host: the screenshot against the host's drawing with %s\n", a.mapper.c_str());
+    std::printf("%-12s %6s %8s %10s %8s %8s %8s  %-28s %s\n", "scene", "frames", "polygons", "pixels", "instr/px", "max err", "mean err", "screenshot",
+                "vs host");
     for (size_t i = 0; i < scenes.size(); ++i) {
         const SceneChoice& d = scenes[i];
         const LoadedWorld host = load_world_file(d.path);
         load_scene_in_kernel(s, d, host);
         json last;
+        uint64_t draw = 0;
         json r = s.ok("play " + std::to_string(a.frames) + " " + a.mapper, [&](const json& e) {
             last = e;
+            draw += e["ticks_draw"].get<uint64_t>();
             if (progress && e["n"].get<int>() % 10 == 9) {
                 std::printf("\r  scene %zu/%zu %s: frame %d/%d", i + 1, scenes.size(), d.name.c_str(), e["n"].get<int>() + 1, a.frames);
                 std::fflush(stdout);
@@ -167,15 +201,17 @@ int play_scenes(Args& a, Session& s) {
         });
         if (progress) std::printf("\r%60s\r", "");
         auto frame = world_frame(host, last["frame"].get<int32_t>());
-        IndexImage want = render_world_frame(host, *frame, mapper, home_axis(mapper));
+        raster::RenderStats stats;
+        IndexImage want = render_world_frame(host, *frame, mapper, home_axis(mapper), &stats);
+        const raster::AccuracyMetrics errors = measure_world_frame(host, *frame, mapper, home_axis(mapper));
         std::string stem = "scene-" + d.name;
         RgbImage dump = s.screendump(stem);
         bool same = dump.rgb == screendump_of(want, host.world->palette).rgb && compare(s.readback(last["page"].get<int>()), want).equal();
         std::filesystem::copy_file(s.run_dir() + "/" + stem + ".png", a.out + "/" + stem + ".png", std::filesystem::copy_options::overwrite_existing);
-        uint64_t pixels = r["pixels"].get<uint64_t>();
-        std::printf("%-12s %6d %9d %11llu %12llu %10.1f  %-28s %s\n", d.name.c_str(), a.frames, last["polygons"].get<int>(), (unsigned long long)pixels,
-                    (unsigned long long)r["ticks_median"].get<uint64_t>(), pixels ? double(r["ticks"].get<uint64_t>()) / double(pixels) : 0.0,
-                    (a.out + "/" + stem + ".png").c_str(), same ? "equal" : "DIFFERS");
+        const uint64_t pixels = r["pixels"].get<uint64_t>();
+        std::printf("%-12s %6d %8d %10llu %8s %8s %8s  %-28s %s\n", d.name.c_str(), a.frames, last["polygons"].get<int>(), (unsigned long long)pixels,
+                    pixels ? fixed(double(draw) / double(pixels), 2).c_str() : "-", errors.compared ? fixed(errors.max_footprint_error, 3).c_str() : "-",
+                    errors.compared ? fixed(errors.mean_footprint_error, 4).c_str() : "-", (a.out + "/" + stem + ".png").c_str(), same ? "equal" : "DIFFERS");
         const json& drawn_by = r["drawn_by"];  // the mappers that drew: several when auto chose
         if (drawn_by.size() > 1 || (drawn_by.size() == 1 && a.mapper != drawn_by[0]["mapper"])) {
             std::string by;
@@ -184,13 +220,31 @@ int play_scenes(Args& a, Session& s) {
                       " polygons (" + std::to_string(pixels ? 100 * m["pixels"].get<uint64_t>() / pixels : 0) + "% of pixels)";
             std::printf("%9s drawn by %s\n", "", by.c_str());
         }
+        say_refusal(mapper, stats, &whole);
         if (!same) {
-            ++failures;
+            ++played.differ;
             save_png(a.out + "/" + stem + "-expected.png", screendump_of(want, host.world->palette));
         }
+        if (!pixels) played.nothing.push_back(d.name);
+        ++played.scenes, played.frames += uint64_t(r["frames"].get<int>()), played.pixels += pixels, played.draw_instructions += draw;
+        raster::merge(played.errors, errors);
         std::fflush(stdout);
     }
-    return failures;
+    raster::finish_metrics(played.errors);
+    return played;
+}
+
+// The run in one line, as a timedemo gives it: the mapper, what it played, its speed and its error.
+void say_played(const std::string& mapper, const Played& p) {
+    std::printf("%s: %d scene%s, %llu frames, %s drawing instructions a pixel (icount), error against the exact reference max %s, mean %s "
+                "footprints (the last frames); %s\n",
+                mapper.c_str(), p.scenes, p.scenes == 1 ? "" : "s", (unsigned long long)p.frames,
+                p.pixels ? fixed(double(p.draw_instructions) / double(p.pixels), 2).c_str() : "-",
+                p.errors.compared ? fixed(p.errors.max_footprint_error, 3).c_str() : "-", p.errors.compared ? fixed(p.errors.mean_footprint_error, 4).c_str() : "-",
+                p.differ ? (std::to_string(p.differ) + " screenshot(s) DIFFER from the host's").c_str() : "every screenshot equal to the host's");
+    std::string nothing;
+    for (const std::string& n : p.nothing) nothing += (nothing.empty() ? "" : ", ") + n;
+    if (!nothing.empty()) std::printf("modexlab run: %s drew nothing of %s\n", mapper.c_str(), nothing.c_str());
 }
 
 int run(Args& a) {
@@ -214,12 +268,12 @@ int run(Args& a) {
     std::printf("       features: %s\n", cpu["features"].dump().c_str());
 
     json mode = s.ok("mode modex");
-    std::printf("mode modex: %dx%d, %d pages, set in %llu ticks\n", mode["width"].get<int>(), mode["height"].get<int>(),
+    std::printf("mode modex: %dx%d, %d pages, set in %llu instructions\n", mode["width"].get<int>(), mode["height"].get<int>(),
                 mode["pages"].get<int>(), mode["ticks"].get<unsigned long long>());
     const raster::Palette& palette = raster::palette(raster::PaletteId::Default);
 
     int failures = 0;
-    std::printf("%-8s %-4s %-12s %-30s %s\n", "pattern", "page", "draw ticks", "screendump vs host", "readback vs host");
+    std::printf("%-8s %-4s %-12s %-30s %s\n", "pattern", "page", "draw instr", "screendump vs host", "readback vs host");
     for (int i = 0; i < raster::PATTERN_COUNT; ++i) {
         auto pattern = raster::Pattern(i);
         std::string name = raster::pattern_name(pattern);
@@ -241,13 +295,15 @@ int run(Args& a) {
         if (!by_readback.equal()) ++failures;
         std::fflush(stdout);
     }
-    failures += play_scenes(a, s);
+    const Played played = play_scenes(a, s);
+    failures += played.differ;
     s.ok("exit 0");
     ExitInfo e = s.wait_exit();
     std::printf("screenshots (640x480, QEMU screendump): %s/pattern-*.png, %s/scene-*.png\n", a.out.c_str(), a.out.c_str());
     std::printf("serial log: %s/serial.log\n%s\n", s.run_dir().c_str(), e.describe().c_str());
+    say_played(a.mapper, played);
     if (failures) std::printf("modexlab run: %d comparison(s) FAILED\n", failures);
-    return failures || !(e.exited && e.status == 1) ? 1 : 0;
+    return failures || !played.nothing.empty() || !(e.exited && e.status == 1) ? 1 : 0;
 }
 
 int exec(Args& a) {

@@ -9,16 +9,7 @@
 #include "kernel/lib/encode.h"
 #include "qemu/harness/readback.h"
 
-#ifndef MODEXLAB_BUILD_DIR
-#define MODEXLAB_BUILD_DIR "build"
-#endif
-
 namespace harness {
-
-std::string build_dir() {
-    const char* env = std::getenv("MODEXLAB_BUILD_DIR");
-    return env && *env ? env : MODEXLAB_BUILD_DIR;
-}
 
 uint64_t elf_symbol(const std::string& elf, const std::string& name) {
     FILE* p = popen(("nm -P " + elf + " 2>/dev/null").c_str(), "r");

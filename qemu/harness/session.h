@@ -12,16 +12,13 @@
 #include "qemu/lib/ordered_json.h"
 
 #include "qemu/lib/host_image.h"
+#include "qemu/lib/paths.h"
 #include "qemu/harness/kernel_link.h"
 #include "qemu/harness/process.h"
 #include "qemu/harness/qmp.h"
 
 namespace harness {
 
-
-
-// The build directory (absolute) the harness takes default images from and writes runs into.
-std::string build_dir();
 
 // The address of a symbol in an ELF (nm -P), or 0 where it has none.
 uint64_t elf_symbol(const std::string& elf, const std::string& name);

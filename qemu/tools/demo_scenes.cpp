@@ -407,6 +407,17 @@ void load_scene_in_kernel(Session& s, const SceneChoice& scene, const LoadedWorl
     ok(s.command("load " + name), scene.path);
 }
 
+std::vector<std::string> demo_scenes_drawn_whole(const raster::Mapper& m) {
+    std::vector<std::string> whole;
+    for (const DemoScene& d : demo_scenes()) {
+        const LoadedWorld w = load_world_file("scenes/" + std::string(d.name) + ".scene");
+        raster::RenderStats stats;
+        render_world_frame(w, *world_frame(w, 0), m, raster::home_axis(m), &stats);
+        if (!stats.rejected && stats.pixels) whole.push_back(d.name);
+    }
+    return whole;
+}
+
 std::string obj_to_mesh(const std::string& obj, const std::string& mesh_name, const std::string& file) {
     using namespace raster;
     if (!world_name_ok(lib::StrView{mesh_name.data(), mesh_name.size()}))

@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+namespace raster {
+struct Mapper;
+}
+
 namespace harness {
 
 class Session;
@@ -33,6 +37,10 @@ SceneChoice choose_scene(const std::string& spec);
 // name, loaded by that name (the kernel's errors name it so). Throws HarnessError with the
 // kernel's error where it refuses one.
 void load_scene_in_kernel(Session& s, const SceneChoice& scene, const LoadedWorld& host);
+
+// The demo scenes whose first frame the mapper draws whole on the host (it refuses no polygon):
+// where to send a user whose scene it refuses.
+std::vector<std::string> demo_scenes_drawn_whole(const raster::Mapper& m);
 
 // A mesh block from a Wavefront OBJ subset (v, vt, f; f corners v/vt or v/vt/vn, negative indices
 // relative; other lines ignored): `v` flipped so that rows run down (OBJ's v runs up). What the

@@ -52,17 +52,6 @@ std::optional<Args> parse(const std::vector<std::string>& words) {
     return a;
 }
 
-// Why a mapper does not draw every polygon of the frame, or "".
-std::string refusal(const raster::Mapper& m, const raster::RenderStats& st) {
-    if (!st.rejected) return "";
-    lib::Fmt needs;
-    raster::describe_needs(needs, m.needs & raster::SCENE_NEEDS);
-    const uint32_t all = st.polygons + st.skipped + st.rejected;
-    std::string why = *needs.c_str() ? std::string(" (it needs ") + needs.c_str() + ")" : std::string();
-    return st.polygons ? "Draws part of the frame: refuses " + std::to_string(st.rejected) + " of its " + std::to_string(all) + " polygons" + why + "."
-                       : "Cannot draw this scene: refuses every polygon" + why + ".";
-}
-
 // A mapper's card: the frame drawn whole and measured polygon by polygon, auto at `budget`.
 GalleryCard mapper_card(const LoadedWorld& w, raster::Frame& frame, const raster::Mapper& m, const raster::Budget& budget, bool at_budget) {
     GalleryCard c;

@@ -111,16 +111,6 @@ TEST(RenderTool, BadInputGetsAClearError) {
     EXPECT_NE(texture.out.find("fast-affine cannot take this scene's texture (gradient 37x300 repeat)"), std::string::npos) << texture.out;
 }
 
-// `modexlab run` (make run) with a mapper that refuses every polygon of the scene: a row with no
-// pixels, and no "drawn by" line, not a crash.
-TEST(RunTool, AMapperThatDrawsNothingIsReportedNotACrash) {
-    ToolRun r = run_command(build_dir() + "/host/modexlab run --kernel " + build_dir() + "/kernel/modexlab.elf --out " +
-                            tmp("run-refused") + " --scene corridor --mapper xsharp-dda --frames 2");
-    ASSERT_EQ(r.status, 0) << r.out;
-    EXPECT_NE(r.out.find("corridor"), std::string::npos) << r.out;
-    EXPECT_EQ(r.out.find("drawn by"), std::string::npos) << r.out;
-}
-
 std::string harness_tool() { return build_dir() + "/host/modexlab"; }
 std::string kernel_option() { return " --kernel " + build_dir() + "/kernel/modexlab.elf"; }
 
@@ -162,11 +152,66 @@ TEST(RunTool, PlaysASceneFileOfOnesOwnWithItsTextures) {
     EXPECT_TRUE(std::filesystem::exists(dir + "/out/scene-my-room.png"));
 }
 
+// make run with a mapper that refuses every polygon of the scene says so, why, and which demo
+// scenes it draws whole (for X-Sharp's DDA, which cannot wrap: corridor-cut), and fails.
+TEST(RunTool, AMapperThatDrawsNothingSaysWhyAndWhereToGo) {
+    const ToolRun r = run_command(harness_tool() + " run" + kernel_option() + " --out " + tmp("run-refused") + " --scene corridor --mapper xsharp-dda --frames 2");
+    EXPECT_EQ(r.status, 1) << r.out;
+    EXPECT_NE(r.out.find("xsharp-dda Cannot draw this scene: refuses every polygon (it needs "), std::string::npos) << r.out;
+    const size_t whole = r.out.find("the demo scenes it draws whole: ");
+    ASSERT_NE(whole, std::string::npos) << r.out;
+    EXPECT_NE(r.out.substr(whole, r.out.find('\n', whole) - whole).find("corridor-cut"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("modexlab run: xsharp-dda drew nothing of corridor\n"), std::string::npos) << r.out;
+}
+
+// make run's figures: drawing instructions a pixel (icount) and the last frame's footprint errors
+// against the exact reference, as the host measures them; the closing line sums the run.
+TEST(RunTool, SaysTheErrorAgainstTheReferenceAndTheInstructionsAPixel) {
+    const ToolRun r = run_command(harness_tool() + " run" + kernel_option() + " --out " + tmp("run-figures") + " --scene corridor --mapper fast-affine --frames 3");
+    ASSERT_EQ(r.status, 0) << r.out;
+    const size_t row = r.out.find("\ncorridor ");
+    ASSERT_NE(row, std::string::npos) << r.out;
+    std::istringstream fields(r.out.substr(row + 1, r.out.find('\n', row + 1) - row - 1));
+    std::string scene, frames, polygons, pixels, per_pixel, max_error, mean_error;
+    fields >> scene >> frames >> polygons >> pixels >> per_pixel >> max_error >> mean_error;
+    EXPECT_GT(std::stod(per_pixel), 3.0) << "fast-affine's loop alone is over 5 instructions a pixel";
+    EXPECT_LT(std::stod(per_pixel), 50.0);
+    const LoadedWorld host = load_world_file("scenes/corridor.scene");
+    const raster::Mapper& m = *raster::find_mapper("fast-affine");
+    const raster::AccuracyMetrics want = measure_world_frame(host, *world_frame(host, 2), m, raster::home_axis(m));
+    char max_text[32], mean_text[32];
+    std::snprintf(max_text, sizeof max_text, "%.3f", want.max_footprint_error);
+    std::snprintf(mean_text, sizeof mean_text, "%.4f", want.mean_footprint_error);
+    EXPECT_EQ(max_error, max_text) << r.out;
+    EXPECT_EQ(mean_error, mean_text) << r.out;
+    EXPECT_GT(want.max_footprint_error, 10.0) << "the corridor is far from affine";
+    EXPECT_NE(r.out.find("fast-affine: 1 scene, 3 frames, " + per_pixel + " drawing instructions a pixel (icount), error against the exact reference max " +
+                         max_error + ", mean " + mean_error + " footprints (the last frames); every screenshot equal to the host's"),
+              std::string::npos)
+        << r.out;
+}
+
 // make run MAPPER=xsharp-column: the mapper draws through its own surface (the VGA planes).
 TEST(RunTool, AMapperThatWritesThePlanesPlaysWithoutASurfaceNamed) {
     const ToolRun r = run_command(harness_tool() + " run" + kernel_option() + " --scene cube --mapper xsharp-column --frames 2 --out " + tmp("run-planes"));
     ASSERT_EQ(r.status, 0) << r.out;
     EXPECT_NE(r.out.find(" equal\n"), std::string::npos) << r.out;
+}
+
+// The tools find their build beside themselves: a copied tree boots its own kernel and writes its
+// runs into its own build, and says where relative to the working directory.
+TEST(ExecTool, ACopiedTreeRunsInItsOwnBuild) {
+    const std::string tree = tmp("tree");
+    std::filesystem::remove_all(tree);
+    std::filesystem::create_directories(tree + "/build/host");
+    std::filesystem::create_directories(tree + "/build/kernel");
+    std::filesystem::copy_file(harness_tool(), tree + "/build/host/modexlab");
+    std::filesystem::copy_file(build_dir() + "/kernel/modexlab.elf", tree + "/build/kernel/modexlab.elf");
+    const ToolRun r = run_command("cd " + tree + " && env -u MODEXLAB_BUILD_DIR build/host/modexlab exec 'hello' screendump:shot 'exit 0'");
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("\nscreendump build/runs/exec/shot.png (640x480)\n"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::filesystem::exists(tree + "/build/runs/exec/serial.log"));
+    EXPECT_EQ(r.out.find(std::filesystem::current_path().string()), std::string::npos) << r.out;
 }
 
 // exec passes the kernel's exit code on; a reply that is not ok makes it 1.

@@ -23,7 +23,7 @@ std::string read(const fs::path& p) {
 
 struct FakeMachine {
     fs::path root;
-    explicit FakeMachine(const std::string& test) : root(build_dir() + "/test-tmp/usb/" + test) {
+    explicit FakeMachine(const std::string& test) : root(fs::absolute(build_dir() + "/test-tmp/usb/" + test)) {  // (absolute: the symlinks below)
         fs::remove_all(root);
         fs::create_directories(root / "dev");
         put(root / "proc/mounts", "/dev/nvme0n1p2 / ext4 rw 0 0\n");
