@@ -6,6 +6,8 @@
 #include "kernel/core/policy.h"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <iterator>
 #include <list>
@@ -51,7 +53,7 @@ std::string refusal(const raster::Mapper& m, const raster::RenderStats& st) {
 
 std::string read_whole_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw HarnessError(path + ": cannot open");
+    if (!in) throw HarnessError(path + ": cannot open (" + std::strerror(errno) + ")");
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();

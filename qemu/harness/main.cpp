@@ -348,8 +348,8 @@ int exec(Args& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_cli("modexlab", USAGE, [&] {
-        std::optional<Args> a = parse(std::vector<std::string>(argv + 1, argv + argc));
+    return run_cli("modexlab", USAGE, argc, argv, [](const std::vector<std::string>& words) {
+        std::optional<Args> a = parse(words);
         if (!a) return show_usage(USAGE);
         try {
             return a->verb == "run" ? run(*a) : exec(*a);

@@ -5,7 +5,13 @@
 #include <charconv>
 #include <cstdio>
 
+#include "kernel/version.h"
+
 namespace harness {
+
+namespace {
+const char* const EVERY_TOOL = "-h, --help: this text; --version: the version; an option's value may follow it after '='\n";
+}
 
 CommandLine parse_command_line(const std::vector<std::string>& words, const std::vector<std::string_view>& with_value,
                                const std::vector<std::string_view>& flags) {
@@ -21,7 +27,13 @@ CommandLine parse_command_line(const std::vector<std::string>& words, const std:
             c.help_ = true;
             break;
         }
-        if (named(with_value, w)) {
+        const size_t eq = w.rfind("--", 0) == 0 ? w.find('=') : std::string::npos;
+        if (eq != std::string::npos) {  // --option=value
+            const std::string option = w.substr(0, eq);
+            if (named(flags, option)) throw UsageError(option + " takes no value");
+            if (!named(with_value, option)) throw UsageError("unknown option " + option);
+            c.given_.emplace_back(option, w.substr(eq + 1));
+        } else if (named(with_value, w)) {
             if (i + 1 >= words.size()) throw UsageError(w + " needs a value");
             c.given_.emplace_back(w, words[++i]);
         } else if (named(flags, w)) {
@@ -118,12 +130,17 @@ std::string nearest_first(const std::string& word, const std::vector<std::string
     return out;
 }
 
-int run_cli(std::string_view program, std::string_view usage, const std::function<int()>& body) {
+int run_cli(std::string_view program, std::string_view usage, int argc, char** argv, const std::function<int(const std::vector<std::string>&)>& body) {
     const std::string name(program);
+    const std::vector<std::string> words(argv + 1, argv + argc);
+    if (std::find(words.begin(), words.end(), "--version") != words.end()) {
+        std::printf("%s %s\n", name.c_str(), MODEXLAB_VERSION);
+        return 0;
+    }
     try {
-        return body();
+        return body(words);
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "%s: %s\n%.*s", name.c_str(), e.what(), int(usage.size()), usage.data());
+        std::fprintf(stderr, "%s: %s\n%.*s%s", name.c_str(), e.what(), int(usage.size()), usage.data(), EVERY_TOOL);
         return 2;
     } catch (const std::exception& e) {
         // HarnessError says what and where; anything else (out of memory) is still reported, not a crash
@@ -134,6 +151,7 @@ int run_cli(std::string_view program, std::string_view usage, const std::functio
 
 int show_usage(std::string_view usage) {
     std::fwrite(usage.data(), 1, usage.size(), stdout);
+    std::fputs(EVERY_TOOL, stdout);
     return 0;
 }
 

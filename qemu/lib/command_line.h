@@ -61,18 +61,21 @@ private:
 };
 
 // Sorts words (argv without the program, or after a subcommand) into the options named in
-// with_value (the next word is the value, whatever it looks like) and flags, and positionals.
+// with_value (the next word is the value, whatever it looks like, or the rest of --option=value)
+// and flags, and positionals.
 // UsageError: an option it does not know, or one without its value.
 CommandLine parse_command_line(const std::vector<std::string>& words, const std::vector<std::string_view>& with_value,
                                const std::vector<std::string_view>& flags);
 
-// A program's main: runs body and returns its status; a UsageError from it prints "PROGRAM: why"
-// and the usage on stderr (status 2), any other exception "PROGRAM: what" (status 1).
 // The names, the nearest to `word` first (edit distance; ties in the order given), as "a, b, c":
 // what a message lists after a name it does not know.
 std::string nearest_first(const std::string& word, const std::vector<std::string>& names);
 
-int run_cli(std::string_view program, std::string_view usage, const std::function<int()>& body);
+// A program's main: `--version` anywhere prints "PROGRAM VERSION" (status 0); else runs body with
+// the words after the program's name and returns its status. A UsageError from it prints
+// "PROGRAM: why" and the usage on stderr (status 2), any other exception "PROGRAM: what" (status 1).
+int run_cli(std::string_view program, std::string_view usage, int argc, char** argv,
+            const std::function<int(const std::vector<std::string>&)>& body);
 
 // -h/--help: the usage on stdout, status 0.
 int show_usage(std::string_view usage);

@@ -95,7 +95,7 @@ RgbImage decode_ppm(std::string_view bytes) {
 
 RgbImage load_image(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw HarnessError("cannot open image " + path);
+    if (!in) throw HarnessError(path + ": cannot open the image (" + std::strerror(errno) + ")");
     std::stringstream ss;
     ss << in.rdbuf();
     std::string bytes = ss.str();

@@ -388,7 +388,8 @@ const std::vector<DemoScene>& demo_scenes() {
 SceneChoice choose_scene(const std::string& spec) {
     for (const DemoScene& d : demo_scenes())
         if (spec == d.name) return {spec, "scenes/" + spec + ".scene", &d};
-    if (!std::filesystem::is_regular_file(spec)) {
+    const bool a_path = spec.find('/') != std::string::npos || std::filesystem::path(spec).extension() == ".scene";
+    if (!a_path && !std::filesystem::is_regular_file(spec)) {  // (a path's errors come when it is read)
         std::vector<std::string> names;
         for (const DemoScene& d : demo_scenes()) names.push_back(d.name);
         throw HarnessError("no demo scene or scene file '" + spec + "' (the demo scenes, the nearest first: " + nearest_first(spec, names) + ")");

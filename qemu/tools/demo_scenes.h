@@ -23,9 +23,9 @@ struct DemoScene {
 const std::vector<DemoScene>& demo_scenes();
 
 // A scene as the tools' --scenes name it: a demo scene (its file scenes/NAME.scene, from the
-// repository's top, where the tools run) or a scene file (named after its stem). Throws
-// HarnessError "no demo scene or scene file 'X' (the demo scenes, the nearest first: ...)" for
-// neither.
+// repository's top, where the tools run) or a scene file (named after its stem; a word with a '/'
+// or ending in .scene is one, read later). Throws HarnessError "no demo scene or scene file 'X'
+// (the demo scenes, the nearest first: ...)" for neither.
 struct SceneChoice {
     std::string name, path;
     const DemoScene* demo;  // nullptr: a file

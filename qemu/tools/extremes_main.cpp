@@ -59,5 +59,5 @@ int run(const std::vector<std::string>& words) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_cli("modexlab-extremes", USAGE, [&] { return run(std::vector<std::string>(argv + 1, argv + argc)); });
+    return run_cli("modexlab-extremes", USAGE, argc, argv, run);
 }

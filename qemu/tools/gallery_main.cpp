@@ -129,8 +129,8 @@ int run(const Args& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_cli("modexlab-gallery", USAGE, [&] {
-        std::optional<Args> a = parse(std::vector<std::string>(argv + 1, argv + argc));
+    return run_cli("modexlab-gallery", USAGE, argc, argv, [](const std::vector<std::string>& words) {
+        std::optional<Args> a = parse(words);
         return a ? run(*a) : show_usage(USAGE);
     });
 }

@@ -10,35 +10,47 @@
 #include "qemu/lib/error.h"
 #include "qemu/lib/host_image.h"
 #include "qemu/accuracy/measure.h"
+#include "qemu/tools/demo_scenes.h"
+#include "qemu/tools/trade.h"
 
 namespace {
 
 using namespace harness;
 
 const char* USAGE =
-    "usage: modexlab-render SCENE --mapper NAME|reference [--axis rows|columns] --out FILE.png\n"
+    "usage: modexlab-render SCENE --mapper NAME|reference [--axis rows|columns] [--out FILE.png]\n"
     "                       [--frame N] [--compare [--diff FILE.png]]\n"
+    "  SCENE      a scene file, or a demo scene's name (corridor, cube, freedoom, ...)\n"
     "  --frame    a 3D scene's frame (default 0; frame n shows time n/30 s)\n"
     "  --mapper   a mapper of the registry (docs/mappers.md and docs/classics.md: exact, affine, fast-affine, ...) or 'reference'\n"
     "  --axis     the walker: rows or columns (default: the mapper's own, rows for those that walk\n"
     "             both; our generic walkers cover the same pixels either way)\n"
-    "  --out      the picture, 320x240, in the scene's palette\n"
+    "  --out      the picture, 320x240, in the scene's palette (needed unless --compare)\n"
     "  --compare  print the accuracy metrics against the reference (a 3D frame: polygon by polygon)\n"
-    "  --diff     with --compare, screen-space scenes: a picture of the differences (red: palette index differs,\n"
-    "             yellow: drawn but not covered by the reference, blue: covered but not drawn)\n";
+    "  --diff     with --compare: a picture of the differences (red: palette index differs, yellow: drawn\n"
+    "             but not covered by the reference, blue: covered but not drawn; elsewhere the picture, dimmed)\n"
+    "Every line printed is 'key value' (docs/accuracy.md, \"modexlab-render\"); drawn_by lines name the\n"
+    "mappers that drew (auto: the ones it chose), with their polygons and pixels.\n";
 
-RgbImage difference_picture(const raster::PixelImage& ref, const raster::PixelImage& drawn) {
-    RgbImage out{ref.width, ref.height, std::vector<uint8_t>(size_t(ref.width) * size_t(ref.height) * 3)};
-    const raster::Palette& pal = raster::palette(raster::PaletteId::Default);
-    for (int32_t i = 0; i < ref.width * ref.height; ++i) {
-        uint8_t* p = &out.rgb[3 * size_t(i)];
-        bool r = ref.coverage[i], d = drawn.coverage[i];
-        if (d && !r) p[0] = 255, p[1] = 255, p[2] = 0;
-        else if (r && !d) p[0] = 0, p[1] = 0, p[2] = 255;
-        else if (ref.index[i] != drawn.index[i]) p[0] = 255, p[1] = 0, p[2] = 0;
+// Per pixel: covered by the reference, drawn by the mapper, and each one's palette index.
+struct PixelPair {
+    const std::vector<uint8_t>& reference_covers;
+    const std::vector<uint8_t>& drawn;
+    const std::vector<uint8_t>& reference_index;
+    const std::vector<uint8_t>& drawn_index;
+};
+
+RgbImage difference_picture(const PixelPair& p, const raster::Palette& pal) {
+    RgbImage out{raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT, std::vector<uint8_t>(p.drawn.size() * 3)};
+    for (size_t i = 0; i < p.drawn.size(); ++i) {
+        uint8_t* c = &out.rgb[3 * i];
+        const bool r = p.reference_covers[i], d = p.drawn[i];
+        if (d && !r) c[0] = 255, c[1] = 255, c[2] = 0;
+        else if (r && !d) c[0] = 0, c[1] = 0, c[2] = 255;
+        else if (p.reference_index[i] != p.drawn_index[i]) c[0] = 255, c[1] = 0, c[2] = 0;
         else {
-            const raster::Rgb6& c = pal.entry[ref.index[i]];
-            p[0] = uint8_t(qemu_widen(c.r) / 4), p[1] = uint8_t(qemu_widen(c.g) / 4), p[2] = uint8_t(qemu_widen(c.b) / 4);
+            const raster::Rgb6& e = pal.entry[p.reference_index[i]];
+            c[0] = uint8_t(qemu_widen(e.r) / 4), c[1] = uint8_t(qemu_widen(e.g) / 4), c[2] = uint8_t(qemu_widen(e.b) / 4);
         }
     }
     return out;
@@ -66,22 +78,26 @@ void print_metrics(const raster::AccuracyMetrics& m) {
                 m.p999_texel_error, m.max_footprint_error, m.mean_footprint_error, m.p999_footprint_error, m.folded);
 }
 
+// The mappers that drew, by registry row: "drawn_by NAME POLYGONS PIXELS" (auto: those it chose).
+void print_drawn_by(const raster::RenderStats& st) {
+    for (int i = 0; i < raster::MAPPER_COUNT; ++i)
+        if (st.mapper_polygons[i]) std::printf("drawn_by %s %u %u\n", raster::MAPPERS[i].name, st.mapper_polygons[i], st.mapper_pixels[i]);
+}
+
 // A frame of a 3D scene: the picture and the frame's and the drawing's figures; with compare, the
-// metrics measured polygon by polygon (docs/accuracy.md, 3D frames).
+// metrics measured polygon by polygon (docs/accuracy.md, 3D frames), and with diff their picture.
 int render_world(const std::string& path, const std::string& text, const raster::Mapper* mapper, raster::Axis axis, int32_t n,
-                 const std::string& out, bool compare, bool diff) {
-    if (diff) throw HarnessError("--diff takes screen-space scenes (a 3D frame's metrics come polygon by polygon)");
+                 const std::string& out, bool compare, const std::string& diff) {
     LoadedWorld w = parse_world_text(text, path, world_search_path(path));
     auto frame = world_frame(w, n);
     std::printf("modexlab-render 1\nscene %s\nversion 2\nframe %d\n", path.c_str(), n);
     const raster::FrameStats& f = frame->stats;
     std::printf("faces %u\nculled %u\noutside %u\nclipped %u\npolygons %u\noverflow %u\n", f.faces, f.culled, f.outside, f.clipped,
                 f.polygons, f.overflow);
-    IndexImage picture;
+    Picture ref(raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT);
+    raster::reference_frame(*frame, *w.textures, ref.view);
+    IndexImage picture{ref.view.width, ref.view.height, ref.index};
     if (!mapper) {
-        Picture ref(raster::SCREEN_WIDTH, raster::SCREEN_HEIGHT);
-        raster::reference_frame(*frame, *w.textures, ref.view);
-        picture = IndexImage{ref.view.width, ref.view.height, ref.index};
         uint32_t covered = 0;
         for (uint8_t c : ref.coverage) covered += c ? 1 : 0;
         std::printf("mapper reference\npixels_drawn %u\n", covered);
@@ -91,9 +107,20 @@ int render_world(const std::string& path, const std::string& text, const raster:
         std::printf("mapper %s %s\n", mapper->name, axis == raster::Axis::Rows ? "rows" : "columns");
         std::printf("polygons_drawn %u\npolygons_skipped %u\npolygons_rejected %u\nspans %u\npixels_drawn %u\n", stats.polygons,
                     stats.skipped, stats.rejected, stats.spans, stats.pixels);
-        if (compare) print_metrics(measure_world_frame(w, *frame, *mapper, axis));
+        print_drawn_by(stats);
+        if (compare) {
+            FrameMap map;
+            print_metrics(measure_world_frame(w, *frame, *mapper, axis, &map));
+            if (!diff.empty()) {
+                std::vector<uint8_t> covers(map.kind.size()), drawn(map.kind.size());
+                for (size_t i = 0; i < map.kind.size(); ++i)
+                    covers[i] = map.kind[i] == FrameMap::GAP || map.kind[i] == FrameMap::COMPARED,
+                    drawn[i] = map.kind[i] == FrameMap::OVERDRAW || map.kind[i] == FrameMap::COMPARED;
+                save_png(diff, difference_picture({covers, drawn, ref.index, picture.index}, w.world->palette));
+            }
+        }
     }
-    save_png(out, colourise_with(picture, w.world->palette));
+    if (!out.empty()) save_png(out, colourise_with(picture, w.world->palette));
     return 0;
 }
 
@@ -101,9 +128,7 @@ int render_world(const std::string& path, const std::string& text, const raster:
 const raster::Mapper* mapper_named(const std::string& name) {
     if (name == "reference") return nullptr;
     if (const raster::Mapper* m = raster::find_mapper({name.data(), name.size()})) return m;
-    std::string known;
-    for (int k = 0; k < raster::MAPPER_COUNT; ++k) known += std::string(" ") + raster::MAPPERS[k].name;
-    throw UsageError("unknown mapper '" + name + "' (mappers:" + known + ", or reference)");
+    throw UsageError(unknown_mapper(name, {"reference"}));
 }
 
 int render(const std::vector<std::string>& words) {
@@ -114,11 +139,11 @@ int render(const std::vector<std::string>& words) {
                                                   raster::Axis::Rows);
     if (args.positionals().size() > 1) throw UsageError("more than one scene");
     if (args.positionals().empty()) throw UsageError("no scene");
-    const std::string scene_path = args.positionals()[0], mapper_name = args.text("--mapper"), out = args.text("--out");
+    const std::string mapper_name = args.text("--mapper"), out = args.text("--out");
     const std::string diff = args.text("--diff");
     const bool compare_to_reference = args.has("--compare");
     if (mapper_name.empty()) throw UsageError("no --mapper");
-    if (out.empty()) throw UsageError("no --out");
+    if (out.empty() && !compare_to_reference) throw UsageError("no --out (the picture) and no --compare (the metrics): nothing to do");
     if (!diff.empty() && !compare_to_reference) throw UsageError("--diff goes with --compare");
     const raster::Mapper* mapper = mapper_named(mapper_name);
     if (mapper) {
@@ -126,9 +151,15 @@ int render(const std::vector<std::string>& words) {
         if (!raster::mapper_walks(*mapper, axis))
             throw UsageError(mapper_name + " does not walk " + (axis == raster::Axis::Rows ? "rows" : "columns"));
     }
+    std::string scene_path;
+    try {
+        scene_path = choose_scene(args.positionals()[0]).path;
+    } catch (const HarnessError& e) {
+        throw UsageError(e.what());
+    }
     std::string text = read_whole_file(scene_path);
     raster::ParseError version_error;
-    if (raster::scene_version(text.data(), text.size(), &version_error) == 2) return render_world(scene_path, text, mapper, axis, frame, out, compare_to_reference, !diff.empty());
+    if (raster::scene_version(text.data(), text.size(), &version_error) == 2) return render_world(scene_path, text, mapper, axis, frame, out, compare_to_reference, diff);
     LoadedScene s = parse_scene_text(text, scene_path);
     const raster::Palette& pal = raster::palette(raster::PaletteId::Default);
     std::printf("modexlab-render 1\n");
@@ -138,7 +169,7 @@ int render(const std::vector<std::string>& words) {
     std::printf("polygons %d\n", s.scene->polygon_count);
     std::unique_ptr<Picture> ref = render_reference(s);
     if (!mapper) {
-        save_png(out, colourise(IndexImage{ref->view.width, ref->view.height, ref->index}, pal));
+        if (!out.empty()) save_png(out, colourise(IndexImage{ref->view.width, ref->view.height, ref->index}, pal));
         std::printf("mapper reference\n");
         uint32_t covered = 0;
         for (uint8_t c : ref->coverage) covered += c ? 1 : 0;
@@ -152,19 +183,20 @@ int render(const std::vector<std::string>& words) {
                            "): see its needs in docs/mappers.md or docs/classics.md");
     raster::RenderStats stats;
     IndexImage picture = render_mapper(s, *mapper, axis, &stats);
-    save_png(out, colourise(picture, pal));
+    if (!out.empty()) save_png(out, colourise(picture, pal));
     std::printf("mapper %s %s\n", mapper->name, axis == raster::Axis::Rows ? "rows" : "columns");
     std::printf("polygons_drawn %u\npolygons_skipped %u\npolygons_rejected %u\nspans %u\npixels_drawn %u\n", stats.polygons,
                 stats.skipped, stats.rejected, stats.spans, stats.pixels);
+    print_drawn_by(stats);
     if (!compare_to_reference) return 0;
     std::unique_ptr<Picture> drawn = measure_mapper(s, *mapper, axis);
     print_metrics(raster::compare_to_reference(ref->view, drawn->view, s.texture.width, s.texture.height, s.texture.wrap));
-    if (!diff.empty()) save_png(diff, difference_picture(ref->view, drawn->view));
+    if (!diff.empty()) save_png(diff, difference_picture({ref->coverage, drawn->coverage, ref->index, drawn->index}, pal));
     return 0;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_cli("modexlab-render", USAGE, [&] { return render(std::vector<std::string>(argv + 1, argv + argc)); });
+    return run_cli("modexlab-render", USAGE, argc, argv, render);
 }

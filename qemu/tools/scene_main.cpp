@@ -98,5 +98,5 @@ int scene_tool(const std::vector<std::string>& words) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_cli("modexlab-scene", USAGE, [&] { return scene_tool(std::vector<std::string>(argv + 1, argv + argc)); });
+    return run_cli("modexlab-scene", USAGE, argc, argv, scene_tool);
 }

@@ -73,5 +73,5 @@ int timing_tool(const std::vector<std::string>& words) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_cli("modexlab-timing", USAGE, [&] { return timing_tool(std::vector<std::string>(argv + 1, argv + argc)); });
+    return run_cli("modexlab-timing", USAGE, argc, argv, timing_tool);
 }

@@ -2,8 +2,10 @@
 #include "qemu/tools/trade.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -60,8 +62,8 @@ std::string budget_words(const raster::Budget& b) {
            (b.given ? "" : ": the default");
 }
 
-std::string unknown_mapper(const std::string& name) {
-    std::vector<std::string> names;
+std::string unknown_mapper(const std::string& name, const std::vector<std::string>& also) {
+    std::vector<std::string> names = also;
     for (int i = 0; i < raster::MAPPER_COUNT; ++i) names.push_back(raster::MAPPERS[i].name);
     return "unknown mapper '" + name + "' (the mappers, the nearest first: " + nearest_first(name, names) + ")";
 }
@@ -177,7 +179,7 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
 
 std::vector<std::vector<std::string>> read_csv(const std::string& path) {
     std::ifstream in(path);
-    if (!in) throw HarnessError(path + ": cannot open");
+    if (!in) throw HarnessError(path + ": cannot open (" + std::strerror(errno) + ")");
     std::vector<std::vector<std::string>> lines;
     for (std::string line; std::getline(in, line);) {
         std::vector<std::string> fields;

@@ -28,8 +28,9 @@ std::string budget_words(const raster::Budget& b);
 // The mappers a tool's --mappers option names, each checked against the registry (UsageError
 // unknown_mapper's).
 std::vector<std::string> known_mappers(std::vector<std::string> names);
-// "unknown mapper 'X' (the mappers, the nearest first: ...)"
-std::string unknown_mapper(const std::string& name);
+// "unknown mapper 'X' (the mappers, the nearest first: ...)"; `also`: other names the tool takes
+// there (the render tool's "reference"), listed among them.
+std::string unknown_mapper(const std::string& name, const std::vector<std::string>& also = {});
 
 struct TradeRow {
     using DrawnBy = std::vector<std::tuple<std::string, uint64_t, uint64_t>>;  // mapper, polygons, pixels

@@ -129,5 +129,5 @@ int wad_tool(const std::vector<std::string>& words) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    return run_cli("modexlab-wad", USAGE, [&] { return wad_tool(std::vector<std::string>(argv + 1, argv + argc)); });
+    return run_cli("modexlab-wad", USAGE, argc, argv, wad_tool);
 }

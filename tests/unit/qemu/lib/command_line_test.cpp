@@ -8,12 +8,13 @@
 
 #include "qemu/lib/command_line.h"
 #include "qemu/lib/error.h"
+#include "kernel/version.h"
 
 namespace {
 
 using namespace harness;
 
-const std::vector<std::string_view> WITH_VALUE = {"--out", "--frames", "--axis", "--module"};
+const std::vector<std::string_view> WITH_VALUE = {"--out", "--frames", "--axis", "--module", "--mapper", "--list"};
 const std::vector<std::string_view> FLAGS = {"--compare", "--full"};
 
 CommandLine parse(const std::vector<std::string>& words) { return parse_command_line(words, WITH_VALUE, FLAGS); }
@@ -67,7 +68,7 @@ TEST(Args, NothingGivenIsNothing) {
 TEST(Args, RefusesAnUnknownOption) {
     EXPECT_EQ(usage_error_of([] { parse({"a", "--bogus", "b"}); }), "unknown option --bogus");
     EXPECT_EQ(usage_error_of([] { parse({"--outx", "y"}); }), "unknown option --outx") << "no prefixes";
-    EXPECT_EQ(usage_error_of([] { parse({"--out=x"}); }), "unknown option --out=x") << "no --name=value form";
+    EXPECT_EQ(usage_error_of([] { parse({"--outx=y"}); }), "unknown option --outx") << "no prefixes in --name=value";
     EXPECT_EQ(usage_error_of([] { parse_command_line({"--out", "x"}, {}, {}); }), "unknown option --out");
 }
 
@@ -144,24 +145,60 @@ TEST(Args, AGetterForAnOptionNotDeclaredIsABug) {
 
 TEST(Args, RunCliTurnsErrorsIntoStatusesAndMessages) {
     const char* usage = "usage: tool FILE\n";
+    const std::string every = "-h, --help: this text; --version: the version; an option's value may follow it after '='\n";
+    char program[] = "tool", file[] = "x.scene";
+    char* argv[] = {program, file, nullptr};
     testing::internal::CaptureStderr();
-    int status = run_cli("tool", usage, [] () -> int { throw UsageError("no FILE"); });
-    EXPECT_EQ(testing::internal::GetCapturedStderr(), "tool: no FILE\nusage: tool FILE\n");
+    int status = run_cli("tool", usage, 2, argv, [](const std::vector<std::string>&) -> int { throw UsageError("no FILE"); });
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "tool: no FILE\nusage: tool FILE\n" + every);
     EXPECT_EQ(status, 2);
 
     testing::internal::CaptureStderr();
-    status = run_cli("tool", usage, [] () -> int { throw HarnessError("x.scene:3: bad"); });
+    status = run_cli("tool", usage, 2, argv, [](const std::vector<std::string>&) -> int { throw HarnessError("x.scene:3: bad"); });
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "tool: x.scene:3: bad\n") << "a failure, not a usage error: no usage";
     EXPECT_EQ(status, 1);
 
     testing::internal::CaptureStderr();
-    status = run_cli("tool", usage, [] { return 3; });
+    std::vector<std::string> given;
+    status = run_cli("tool", usage, 2, argv, [&](const std::vector<std::string>& words) {
+        given = words;
+        return 3;
+    });
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
     EXPECT_EQ(status, 3);
+    EXPECT_EQ(given, std::vector<std::string>{"x.scene"}) << "the words after the program's name";
 
     testing::internal::CaptureStdout();
     EXPECT_EQ(show_usage(usage), 0);
-    EXPECT_EQ(testing::internal::GetCapturedStdout(), usage);
+    EXPECT_EQ(testing::internal::GetCapturedStdout(), usage + every);
+}
+
+// --version, wherever it is, answers with the program's name and the version, and runs nothing.
+TEST(Args, VersionIsAnsweredBeforeAnythingRuns) {
+    char program[] = "tool", file[] = "x.scene", version[] = "--version";
+    char* argv[] = {program, file, version, nullptr};
+    bool ran = false;
+    testing::internal::CaptureStdout();
+    const int status = run_cli("tool", "usage: tool FILE\n", 3, argv, [&](const std::vector<std::string>&) {
+        ran = true;
+        return 1;
+    });
+    EXPECT_EQ(testing::internal::GetCapturedStdout(), "tool " MODEXLAB_VERSION "\n");
+    EXPECT_EQ(status, 0);
+    EXPECT_FALSE(ran);
+}
+
+// --option=value is --option value; a flag takes none; the option's name is checked either way.
+TEST(Args, AnOptionsValueMayFollowAnEqualsSign) {
+    const CommandLine c = parse({"--out=a.png", "--mapper=fast-affine", "--compare", "--list=a,b=c", "x"});
+    EXPECT_EQ(c.text("--out"), "a.png");
+    EXPECT_EQ(c.text("--mapper"), "fast-affine");
+    EXPECT_EQ(c.text("--list"), "a,b=c") << "the first '=' splits";
+    EXPECT_TRUE(c.has("--compare"));
+    EXPECT_EQ(c.positionals(), std::vector<std::string>{"x"});
+    EXPECT_EQ(parse({"--out="}).text("--out", "unset"), "") << "an empty value, given";
+    EXPECT_EQ(usage_error_of([] { parse({"--compare=yes"}); }), "--compare takes no value");
+    EXPECT_EQ(usage_error_of([] { parse({"--outt=a.png"}); }), "unknown option --outt");
 }
 
 }  // namespace
