@@ -4,8 +4,15 @@
 namespace lib {
 
 void Fmt::put(char c) {
-    if (len_ < CAPACITY) buf_[len_++] = c;
-    buf_[len_] = 0;
+    if (cut_) return;
+    if (len_ < CAPACITY) {
+        buf_[len_++] = c;
+        buf_[len_] = 0;
+        return;
+    }
+    cut_ = true;  // full: the text's end says so
+    const size_t n = c_length(CUT);
+    for (size_t i = 0; i < n; ++i) buf_[CAPACITY - n + i] = CUT[i];
 }
 
 Fmt& Fmt::s(const char* text) {

@@ -16,9 +16,11 @@ void format_hex32(uint32_t value, char* out);      // "0x" and 8 lower-case digi
 
 class Fmt {
 public:
-    // Room for the longest list an error names (every mapper, some 260 characters) and the word
-    // it could not find.
-    static constexpr size_t CAPACITY = 320;
+    // Room for the longest list an error names (every mapper) and the word it could not find (a
+    // unit test holds it). Text past it is dropped, and the text then ends with CUT: never cut
+    // silently.
+    static constexpr size_t CAPACITY = 1024;
+    static constexpr const char* CUT = " [cut short]";
 
     Fmt& s(const char* text);
     Fmt& s(StrView text);
@@ -28,11 +30,13 @@ public:
     // v >= 0 to two decimals, trailing zeros dropped ("0.5", "1", "2.25"); from 10 on, whole
     Fmt& decimal(double v);
     const char* c_str() const { return buf_; }
+    bool cut() const { return cut_; }
 
 private:
     void put(char c);
     char buf_[CAPACITY + 1] = {};
     size_t len_ = 0;
+    bool cut_ = false;
 };
 
 }  // namespace lib

@@ -53,7 +53,12 @@ bool decode_bmp(Reader& r, IndexedImage* out, uint8_t* pixels, size_t capacity) 
         return r.fail_at(14, "unknown BMP header size (12 or 40 to 124 bytes)");
     }
     if (planes != 1) return r.fail_at(dib == 12 ? 22 : 26, "BMP planes must be 1");
-    if (bits != 8) return r.fail_at(dib == 12 ? 24 : 28, "not an 8-bit indexed BMP (bits per pixel must be 8)");
+    if (bits != 8) {
+        r.fail_at(dib == 12 ? 24 : 28, "not an 8-bit indexed BMP: ");
+        r.error->u(bits).s(" bits a pixel, 8 wanted (save it with a palette of at most 256 colours: ImageMagick's ");
+        r.error->s("convert IN -colors 256 -type Palette BMP3:OUT.bmp, or GIMP's Image > Mode > Indexed)");
+        return false;
+    }
     if (compression != 0 && compression != 1) return r.fail_at(30, "BMP compression not supported (none or RLE8 only)");
     const int64_t stored_height = height;
     const bool top_down = height < 0;

@@ -58,9 +58,27 @@ bool check_file_name(Parser& p, StrView w) {
     return true;
 }
 
+// v to at most 6 decimals, trailing zeros dropped (-16384, 0.000001, 170): a range's ends.
+Fmt& put_limit(Fmt& m, double v) {
+    if (v < 0) m.s("-"), v = -v;
+    const uint64_t micro = uint64_t(v * 1e6 + 0.5);
+    m.u(uint32_t(micro / 1000000));
+    uint32_t fraction = uint32_t(micro % 1000000);
+    if (!fraction) return m;
+    char digits[7] = {};
+    for (int i = 5; i >= 0; --i) digits[i] = char('0' + fraction % 10), fraction /= 10;
+    for (int i = 5; i > 0 && digits[i] == '0'; --i) digits[i] = 0;
+    return m.s(".").s(digits);
+}
+
 bool number(Parser& p, StrView w, const char* what, double lo, double hi, double* out) {
     if (!parse_decimal(w, out)) return p.fail(Fmt().s("bad number '").s(w).s("' for ").s(what).s(" (a decimal with at most 6 digits after the point)"));
-    if (!(*out >= lo && *out <= hi)) return p.fail(Fmt().s(what).s(" '").s(w).s("' out of range"));
+    if (!(*out >= lo && *out <= hi)) {
+        Fmt m;
+        m.s(what).s(" '").s(w).s("' out of range (");
+        put_limit(m, lo).s(" to ");
+        return p.fail(put_limit(m, hi).s(")"));
+    }
     return true;
 }
 

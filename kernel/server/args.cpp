@@ -29,9 +29,9 @@ constexpr VariantName VARIANTS[] = {
 };
 constexpr int VARIANT_COUNT = sizeof(VARIANTS) / sizeof(VARIANTS[0]);
 
-void unknown_surface(const char* cmd) {
+void unknown_surface(const char* cmd, StrView word) {
     lib::Fmt m;
-    m.s("unknown surface (");
+    m.s("unknown surface '").s(word).s("' (");
     for (int i = 0; i < raster::SURFACE_COUNT; ++i)
         m.s(i ? "; " : "").s(raster::surface_name(raster::Surface(i))).s(": ").s(SURFACE_WORDS[i]);
     reply::error(cmd, m.s(")").c_str());
@@ -44,7 +44,7 @@ bool parse_variant(const char* cmd, StrView word, raster::Variant* out) {
         return true;
     }
     lib::Fmt m;
-    m.s("unknown variant (");
+    m.s("unknown variant '").s(word).s("' (");
     for (int i = 0; i < VARIANT_COUNT; ++i) m.s(i ? "; " : "").s(VARIANTS[i].name).s(": ").s(VARIANTS[i].words);
     reply::error(cmd, m.s(")").c_str());
     return false;
@@ -128,7 +128,7 @@ bool parse_draw_args(const char* cmd, const StrView* args, size_t nargs, bool wi
     if (with_page && !parse_page(cmd, args[next++], &d->page)) return false;
     d->surface = raster::home_surface(*d->mapper);  // (unless a surface is named)
     if (nargs > next && !raster::surface_from_name(args[next], &d->surface)) {
-        unknown_surface(cmd);
+        unknown_surface(cmd, args[next]);
         return false;
     }
     ++next;

@@ -1,5 +1,6 @@
 // Scene loading and the pictures the metrics compare.
 #include "qemu/accuracy/measure.h"
+#include "qemu/lib/command_line.h"
 #include "qemu/lib/paths.h"
 #include "kernel/core/bound.h"
 
@@ -61,11 +62,33 @@ std::string read_whole_file(const std::string& path) {
 
 LoadedScene load_scene_file(const std::string& path) { return parse_scene_text(read_whole_file(path), path); }
 
+namespace {
+
+// Where a file the scene names was looked for, and the name it may have meant there: "(looked in
+// A and B; is it 'tiles.bmp'?)".
+std::string where_looked(const std::string& wanted, const std::vector<std::string>& search) {
+    namespace fs = std::filesystem;
+    std::string dirs;
+    std::vector<std::string> names;
+    const fs::path sub = fs::path(wanted).parent_path();
+    for (size_t i = 0; i < search.size(); ++i) {
+        dirs += (i == 0 ? "" : i + 1 == search.size() ? " and " : ", ") + search[i];
+        std::error_code e;
+        for (const fs::directory_entry& f : fs::directory_iterator(fs::path(search[i]) / sub, e))
+            if (f.is_regular_file()) names.push_back((sub / f.path().filename()).string());
+    }
+    const std::string near = near_name(wanted, names);
+    return "(looked in " + dirs + (near.empty() ? "" : "; is it '" + near + "'?") + ")";
+}
+
+}  // namespace
+
 LoadedWorld parse_world_text(const std::string& text, const std::string& name, const std::vector<std::string>& search) {
     struct Finder {
         const std::vector<std::string>* search;
         std::map<std::string, std::string> read;  // the files read, kept while parsing
-    } finder{&search, {}};
+        std::string missing;                      // the last file not found
+    } finder{&search, {}, {}};
     FileResolver r;
     r.context = &finder;
     r.find = [](const void* ctx, lib::StrView file, const uint8_t** data, size_t* size) {
@@ -78,6 +101,7 @@ LoadedWorld parse_world_text(const std::string& text, const std::string& name, c
             *data = reinterpret_cast<const uint8_t*>(bytes.data()), *size = bytes.size();
             return true;
         }
+        f.missing = wanted;
         return false;
     };
     LoadedWorld w;
@@ -85,7 +109,8 @@ LoadedWorld parse_world_text(const std::string& text, const std::string& name, c
     w.world = std::make_unique<HostWorld>();
     ParseError e;
     if (!parse_world(text.data(), text.size(), r, w.world.get(), &e))
-        throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message);
+        throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message +
+                           (finder.missing.empty() ? std::string() : " " + where_looked(finder.missing, search)));
     w.textures = std::make_unique<HostTextureSet>();
     build_texture_set(*w.world, w.textures.get());
     w.files = std::move(finder.read);

@@ -130,6 +130,14 @@ std::string nearest_first(const std::string& word, const std::vector<std::string
     return out;
 }
 
+std::string near_name(const std::string& word, const std::vector<std::string>& names) {
+    std::string best;
+    size_t least = std::max<size_t>(1, word.size() / 3) + 1;
+    for (const std::string& n : names)
+        if (const size_t d = edit_distance(word, n); d < least && n != word) least = d, best = n;
+    return best;
+}
+
 int run_cli(std::string_view program, std::string_view usage, int argc, char** argv, const std::function<int(const std::vector<std::string>&)>& body) {
     const std::string name(program);
     const std::vector<std::string> words(argv + 1, argv + argc);

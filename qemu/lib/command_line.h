@@ -71,6 +71,10 @@ CommandLine parse_command_line(const std::vector<std::string>& words, const std:
 // what a message lists after a name it does not know.
 std::string nearest_first(const std::string& word, const std::vector<std::string>& names);
 
+// The name a typo of `word` would be: the nearest within an edit distance of max(1, a third of
+// its length), other than the word itself (the first of equals); "" where none is.
+std::string near_name(const std::string& word, const std::vector<std::string>& names);
+
 // A program's main: `--version` anywhere prints "PROGRAM VERSION" (status 0); else runs body with
 // the words after the program's name and returns its status. A UsageError from it prints
 // "PROGRAM: why" and the usage on stderr (status 2), any other exception "PROGRAM: what" (status 1).

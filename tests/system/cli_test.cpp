@@ -178,8 +178,18 @@ TEST(RunTool, ChecksTheSceneAndTheMapperBeforeBooting) {
     std::ofstream(bad) << "modexlab-scene 2\ntexture t file nosuch.bmp\n";
     const ToolRun file = run_command(harness_tool() + " run" + kernel_option() + " --scene " + bad);
     EXPECT_EQ(file.status, 1) << file.out;
-    EXPECT_NE(file.out.find(bad + ":2: texture 't': no file 'nosuch.bmp'"), std::string::npos) << file.out;
+    EXPECT_NE(file.out.find(bad + ":2: texture 't': no file 'nosuch.bmp' (looked in " + build_dir() + "/test-tmp/cli and " + build_dir() + "/scenes)"),
+              std::string::npos)
+        << file.out;
     EXPECT_EQ(file.out.find("modexlab run: booting"), std::string::npos) << file.out;
+    // a near name where it looked is offered
+    std::filesystem::create_directories(tmp("near"));
+    std::filesystem::copy_file(build_dir() + "/scenes/freedoom/brown1.bmp", tmp("near/tiles.bmp"), std::filesystem::copy_options::overwrite_existing);
+    std::ofstream(tmp("near/room.scene")) << "modexlab-scene 2\ntexture t file tile.bmp\n";
+    const ToolRun near = run_command(harness_tool() + " run" + kernel_option() + " --scene " + tmp("near/room.scene"));
+    EXPECT_EQ(near.status, 1) << near.out;
+    EXPECT_NE(near.out.find("no file 'tile.bmp' (looked in " + tmp("near") + " and " + build_dir() + "/scenes; is it 'tiles.bmp'?)"), std::string::npos)
+        << near.out;
 }
 
 // A scene of one's own with its own texture files plays in the kernel as the demo scenes do: the

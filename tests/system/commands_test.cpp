@@ -34,6 +34,9 @@ TEST(Commands, EveryMalformedCommandGetsAnErrorAndTheNextCommandWorks) {
         {std::string(300, 'x'), "line too long"},
         {"\x01\x02\xff\xfe", "control character 0x01 at column 1"},
         {"\xff\xfe", "unknown command"},
+        {"load cube.scene", ""},
+        {"play 10 exact 1 vga", "unknown surface '1' (linear: rows in RAM then blit"},
+        {"play 10 exact vga fast", "unknown variant 'fast' (asm: "},
     };
     for (const auto& [line, error] : bad) {
         json r = s.command(line);
@@ -45,6 +48,10 @@ TEST(Commands, EveryMalformedCommandGetsAnErrorAndTheNextCommandWorks) {
         EXPECT_NE(r.value("error", "").find(error), std::string::npos) << "for '" << line << "': " << r.dump();
         EXPECT_TRUE(s.ok("hello")["ok"].get<bool>()) << "the server carries on after '" << line << "'";
     }
+    // an unknown mapper's error names every mapper, whole
+    const std::string unknown = s.command("play 1 " + std::string(200, 'q')).value("error", "");
+    for (int i = 0; i < raster::MAPPER_COUNT; ++i) EXPECT_NE(unknown.find(std::string(" ") + raster::MAPPERS[i].name), std::string::npos) << unknown;
+    EXPECT_EQ(unknown.back(), ')') << unknown;
     // blank lines and carriage returns are not commands; backspace edits the line
     json r = s.raw("\r\n   \n\t\nhellx\bo\r\n");
     EXPECT_EQ(r["cmd"], "hello");

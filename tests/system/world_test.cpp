@@ -210,6 +210,35 @@ TEST(Scenes3d, AMapperDrawsThroughItsOwnSurfaceUnlessOneIsNamed) {
     EXPECT_GE(planar, 4) << "xsharp-column, xsharp-row-out, fast-columns, fast-table-columns";
 }
 
+// The background is palette index 0: with a scene palette whose entry 0 is red, what no polygon
+// covers is red on the screen (docs/scene-format.md, "The background").
+TEST(Scenes3d, TheBackgroundIsPaletteEntryZero) {
+    std::string bmp(14 + 40 + 256 * 4 + 8 * 8, '\0');
+    auto put = [&](size_t at, uint32_t v, int bytes) {
+        for (int i = 0; i < bytes; ++i) bmp[at + size_t(i)] = char(v >> (8 * i));
+    };
+    bmp[0] = 'B', bmp[1] = 'M';
+    put(2, uint32_t(bmp.size()), 4), put(10, 14 + 40 + 1024, 4), put(14, 40, 4), put(18, 8, 4), put(22, 8, 4), put(26, 1, 2), put(28, 8, 2);
+    put(54, 0x00FF0000, 4);  // entry 0: red (B, G, R, 0)
+    put(58, 0x0000FF00, 4);  // entry 1: green
+    for (size_t i = 0; i < 64; ++i) bmp[14 + 40 + 1024 + i] = 1;
+    const std::string scene = "modexlab-scene 2\ntexture t file red0.bmp\npalette t\nmesh quad\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+                              "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\nend\nobject q\nmesh quad\ntexture t\ncull none\nend\n"
+                              "camera\nposition 0 0 -6\ntarget 0 0 0\nend\n";
+    Session s(options_for_this_test());
+    s.ok("mode modex");
+    ASSERT_TRUE(s.upload_file("red0.bmp", bmp)["ok"].get<bool>());
+    ASSERT_TRUE(s.upload_scene(scene)["ok"].get<bool>());
+    const json r = s.ok("frame 0 exact 1");
+    ASSERT_GT(r["pixels"].get<int>(), 1000);
+    ASSERT_LT(r["pixels"].get<int>(), 320 * 240 / 2);
+    s.ok("flip 1");
+    const RgbImage shot = s.screendump("background");
+    EXPECT_EQ(std::vector<uint8_t>(shot.rgb.begin(), shot.rgb.begin() + 3), (std::vector<uint8_t>{255, 0, 0})) << "the corner, which no polygon covers";
+    const size_t centre = 3 * (size_t(shot.height / 2) * size_t(shot.width) + size_t(shot.width / 2));
+    EXPECT_EQ(std::vector<uint8_t>(shot.rgb.begin() + long(centre), shot.rgb.begin() + long(centre) + 3), (std::vector<uint8_t>{0, 255, 0})) << "the quad";
+}
+
 // The budget command: what auto draws to, until `budget scene` or the next load; auto at budget 0
 // draws the reference's texels (only exact has bound 0 on a polygon it draws pixels of), and every
 // picture equals the host's at the same budget, priced for each target; bad budgets are refused with

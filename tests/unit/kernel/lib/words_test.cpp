@@ -5,7 +5,9 @@
 #include <cstring>
 #include <string>
 
+#include "kernel/core/mapper.h"
 #include "kernel/lib/fmt.h"
+#include "kernel/lib/protocol.h"
 #include "kernel/lib/words.h"
 
 namespace {
@@ -64,9 +66,24 @@ TEST(Fmt, FormatsAndTruncates) {
     lib::Fmt f;
     f.s("page ").u(4294967295u).s(" at ").hex(0x4B00);
     EXPECT_STREQ(f.c_str(), "page 4294967295 at 0x00004b00");
-    lib::Fmt big;
-    for (int i = 0; i < 100; ++i) big.s("abcd");
+    EXPECT_FALSE(f.cut());
+    lib::Fmt full;  // exactly full: nothing dropped
+    for (size_t i = 0; i < lib::Fmt::CAPACITY; ++i) full.s("x");
+    EXPECT_FALSE(full.cut());
+    EXPECT_EQ(strlen(full.c_str()), lib::Fmt::CAPACITY);
+    lib::Fmt big;  // one more: the end says it was cut
+    for (size_t i = 0; i <= lib::Fmt::CAPACITY; ++i) big.s("x");
+    EXPECT_TRUE(big.cut());
     EXPECT_EQ(strlen(big.c_str()), lib::Fmt::CAPACITY);
+    EXPECT_EQ(std::string(big.c_str()).substr(lib::Fmt::CAPACITY - strlen(lib::Fmt::CUT)), lib::Fmt::CUT);
+}
+
+// The longest error the kernel's server builds from a list, an unknown mapper's (every mapper
+// named), fits with a name as long as a command line can be.
+TEST(Fmt, HoldsTheWholeMapperList) {
+    size_t list = std::strlen("unknown mapper '") + lib::LineAssembler::MAX_LINE + std::strlen("' (mappers: ") + std::strlen(")");
+    for (int i = 0; i < raster::MAPPER_COUNT; ++i) list += std::strlen(raster::MAPPERS[i].name) + (i ? 2 : 0);
+    EXPECT_LE(list, lib::Fmt::CAPACITY);
 }
 
 TEST(Fmt, TenthsAndDecimals) {

@@ -91,7 +91,8 @@ TEST(TextureFile, BadFilesAreRefusedWithTheByteTheyAreAbout) {
         {{'G', 'I', 'F', '8'}, "byte 0: not a BMP or PCX file"},
         {cut(bmp, 10), "truncated BMP header"},
         {with(bmp, 14, {200, 0, 0, 0}), "byte 14: unknown BMP header size"},
-        {with(bmp, 28, {24, 0}), "byte 28: not an 8-bit indexed BMP"},
+        {with(bmp, 28, {24, 0}), "byte 28: not an 8-bit indexed BMP: 24 bits a pixel, 8 wanted (save it with a palette of at most 256 colours: "
+                                 "ImageMagick's convert IN -colors 256 -type Palette BMP3:OUT.bmp"},
         {with(bmp, 26, {2, 0}), "byte 26: BMP planes must be 1"},
         {with(bmp, 30, {3, 0, 0, 0}), "byte 30: BMP compression not supported"},
         {with(bmp, 18, {0, 0, 0, 0}), "byte 18: image size 0 x 8 out of range"},

@@ -173,6 +173,16 @@ TEST(Args, RunCliTurnsErrorsIntoStatusesAndMessages) {
     EXPECT_EQ(testing::internal::GetCapturedStdout(), usage + every);
 }
 
+// A typo's name: the nearest within a third of the word's length (at least 1 edit), never the word.
+TEST(Args, ANearNameIsOnlyATyposDistanceAway) {
+    EXPECT_EQ(near_name("tile.bmp", {"floor.bmp", "tiles.bmp", "wall.bmp"}), "tiles.bmp");
+    EXPECT_EQ(near_name("corridr", {"cube", "corridor", "corridor-cut"}), "corridor");
+    EXPECT_EQ(near_name("stone.bmp", {"tiles.bmp", "brick.pcx"}), "") << "nothing near";
+    EXPECT_EQ(near_name("ab", {"xy"}), "") << "two substitutions in two letters: not a typo of it";
+    EXPECT_EQ(near_name("a.bmp", {"a.bmp"}), "");
+    EXPECT_EQ(near_name("a", {}), "");
+}
+
 // --version, wherever it is, answers with the program's name and the version, and runs nothing.
 TEST(Args, VersionIsAnsweredBeforeAnythingRuns) {
     char program[] = "tool", file[] = "x.scene", version[] = "--version";
