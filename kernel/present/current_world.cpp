@@ -13,6 +13,7 @@
 #include "kernel/lib/mem.h"
 #include "kernel/lib/words.h"
 #include "kernel/scene/scene_text.h"
+#include "kernel/scene/text.h"
 #include "kernel/lib/fmt.h"
 
 namespace current_world {
@@ -179,7 +180,7 @@ raster::Probe bench_probe() {
 }
 
 BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper, raster::Surface surface, raster::Variant variant,
-                       const raster::Probe& probe, const raster::Watch* watch) {
+                       const raster::Probe& probe, const raster::Watch* watch, const char* caption) {
     BenchFrame b{};
     b.frame = int32_t(uint64_t(i) * uint32_t(g_world.frames) / count);
     b.page = vga::shown_page() == 0 ? 1 : 0;
@@ -189,6 +190,11 @@ BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper,
     raster::Probe timed = probe;
     b.cut = f.render.stats.interrupted || render(b.frame, mapper, surface, b.page, variant, &timed, watch).render.stats.interrupted;
     if (b.cut) return b;
+    if (caption) {
+        const lib::StrView line{caption, lib::c_length(caption)};
+        raster::Target t = vga::page_target(b.page);
+        raster::draw_text_box(t, 0, 0, &line, 1, raster::text_colours(g_world.palette));
+    }
     const uint64_t t0 = timer::now();
     b.retrace = vga::flip(b.page);
     const uint64_t flip = timer::since(t0);

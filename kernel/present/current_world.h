@@ -64,8 +64,8 @@ raster::Probe bench_probe();
 // Frame i of `count` spread evenly over the animation (frame i * length / count), drawn twice into
 // the hidden page of pages 0 and 1 (plainly, then with a copy of the calibrated `probe`), then
 // flipped. With a watch, a drawing may stop early: the frame is then `cut`, neither shown nor
-// measured.
+// measured. A caption goes over the frame before it is shown (a text box at the top left, untimed).
 BenchFrame bench_frame(uint32_t i, uint32_t count, const raster::Mapper& mapper, raster::Surface surface, raster::Variant variant,
-                       const raster::Probe& probe, const raster::Watch* watch = nullptr);
+                       const raster::Probe& probe, const raster::Watch* watch = nullptr, const char* caption = nullptr);
 
 }  // namespace current_world

@@ -280,6 +280,26 @@ void show_page(const Setup& s, int k, raster::TextColours c) {
 
 }  // namespace
 
+namespace {
+
+// A duration to the nearest second, in the largest units that read well: "42 s", "3 min 5 s", "1 h 12 min".
+lib::Fmt& put_duration(lib::Fmt& m, uint64_t seconds) {
+    if (seconds >= 3600) return m.u(uint32_t(seconds / 3600)).s(" h ").u(uint32_t(seconds % 3600 / 60)).s(" min");
+    if (seconds >= 60) return m.u(uint32_t(seconds / 60)).s(" min ").u(uint32_t(seconds % 60)).s(" s");
+    return m.u(uint32_t(seconds)).s(" s");
+}
+
+// The progress line over every frame of row `row` (from 1) of `total`: the scene, the mapper, and
+// the time left at the pace of the rows done since `started` (none before the first).
+void progress_line(lib::Fmt& m, int row, int total, const char* scene, const char* mapper, uint64_t started) {
+    m.s("bench ").u(uint32_t(row)).s("/").u(uint32_t(total)).s(": ").s(scene).s(" ").s(mapper);
+    if (row == 1) return;
+    const uint64_t per_row = timer::since(started) / uint64_t(row - 1), hz = timer::hz();
+    put_duration(m.s(", about "), (per_row * uint64_t(total - row + 1) + hz / 2) / hz).s(" left");
+}
+
+}  // namespace
+
 bool run(const Setup& s, NextKey next_key, void* ctx) {
     g_row_count = 0;
     const raster::Probe probe = current_world::bench_probe();
@@ -291,6 +311,7 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
     bool stopped = false;
     const int scenes = s.scene_count < MAX_SCENES ? s.scene_count : MAX_SCENES;
     const int total = scenes * raster::MAPPER_COUNT;
+    const uint64_t started = timer::now();
     for (int i = 0; i < scenes && !stopped; ++i) {
         const file_table::File& f = file_table::at(s.scenes[i]);
         raster::ParseError pe;
@@ -301,6 +322,8 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
         colours = raster::text_colours(current_world::world().palette);
         for (int m = 0; m < raster::MAPPER_COUNT && !stopped; ++m) {
             const raster::Mapper& mapper = raster::MAPPERS[m];
+            lib::Fmt line;
+            progress_line(line, g_row_count + 1, total, f.name, mapper.name, started);
             Row& r = g_rows[g_row_count++];
             r = Row{i, m, 0, 0, 0, 0, -1, false};
             for (uint32_t k = 0; k < s.frames; ++k) {
@@ -309,7 +332,8 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
                     stopped = r.interrupted = true;
                     break;
                 }
-                const current_world::BenchFrame b = current_world::bench_frame(k, s.frames, mapper, raster::home_surface(mapper), raster::Variant::Asm, probe, &watch);
+                const current_world::BenchFrame b =
+                    current_world::bench_frame(k, s.frames, mapper, raster::home_surface(mapper), raster::Variant::Asm, probe, &watch, line.c_str());
                 if (b.cut) return false;  // a line came: the server takes over
                 r.pixels += b.stats.pixels, r.polygons += b.stats.polygons;
                 r.ticks_inner += b.figures[current_world::B_INNER], r.ticks_frame += b.figures[current_world::B_TICKS];
@@ -321,14 +345,7 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
             j.u64("pixels", r.pixels).u64("polygons", r.polygons).u64("ticks_inner", r.ticks_inner).u64("ticks", r.ticks_frame);
             if (r.error >= 0) j.fixed("max_footprint_error", r.error, 3);
             else j.str("max_footprint_error", "none measured");
-            j.boolean("interrupted", r.interrupted).u32("row", uint32_t(g_row_count)).u32("of", uint32_t(total)).end();
-            // progress, over the frame just shown
-            lib::Fmt line;
-            line.s("bench ").u(uint32_t(g_row_count)).s("/").u(uint32_t(total)).s(": ").s(f.name).s(" ").s(mapper.name);
-            lib::StrView l{line.c_str(), lib::c_length(line.c_str())};
-            raster::Target t = vga::page_target(vga::shown_page());
-            raster::draw_text_box(t, 0, 0, &l, 1, colours);
-            vga::refresh();
+            j.boolean("interrupted", r.interrupted).u32("row", uint32_t(g_row_count)).u32("of", uint32_t(total)).str("progress", line.c_str()).end();
         }
     }
     build_csv(s);

@@ -108,10 +108,14 @@ json KernelLink::read_reply(const std::string& what, std::chrono::milliseconds t
     }
 }
 
-json KernelLink::wait_event(const std::string& event, std::chrono::milliseconds timeout) {
-    KernelLine k = next_line(Clock::now() + timeout, timeout, "'" + event + "' event");
-    if (k.kind == KernelLine::Kind::OtherEvent && k.body.value("event", "") == event) return k.body;
-    throw HarnessError("while waiting for a '" + event + "' event: " + k.body.dump());
+json KernelLink::wait_event(const std::string& event, std::chrono::milliseconds timeout, const EventFn& on_other) {
+    for (;;) {  // (each other event restarts the timeout: the kernel is at work)
+        KernelLine k = next_line(Clock::now() + timeout, timeout, "'" + event + "' event");
+        const bool an_event = k.kind == KernelLine::Kind::OtherEvent;
+        if (an_event && k.body.value("event", "") == event) return k.body;
+        if (!an_event || !on_other) throw HarnessError("while waiting for a '" + event + "' event: " + k.body.dump());
+        on_other(k.body);
+    }
 }
 
 json KernelLink::upload(const std::string& header, const std::string& bytes, std::chrono::milliseconds timeout) {

@@ -67,8 +67,10 @@ public:
     json upload(const std::string& header, const std::string& bytes, std::chrono::milliseconds timeout);
 
     // Waits for an event line named `event` that the kernel sends on its own (the show's `key`
-    // events) and returns it. Throws on a reply, a panic, a reboot, another event or a timeout.
-    json wait_event(const std::string& event, std::chrono::milliseconds timeout);
+    // events) and returns it; the other events before it go to on_other, each restarting the
+    // timeout. Throws on a reply, a
+    // panic, a reboot, a timeout, or another event where there is no on_other.
+    json wait_event(const std::string& event, std::chrono::milliseconds timeout, const EventFn& on_other = {});
 
     uint32_t next_seq() const { return next_seq_; }
 

@@ -42,7 +42,10 @@ const char* USAGE =
     "exec:  sends each COMMAND (one kernel command line, quote it) and prints the JSON replies;\n"
     "       'screendump:NAME' saves a screendump as NAME.png in the run directory instead;\n"
     "       'scene:FILE' uploads a scene file (scene BYTES CRC32 and the bytes);\n"
-    "       'file:NAME=PATH' uploads a file under NAME (file NAME BYTES CRC32 and the bytes).\n"
+    "       'file:NAME=PATH' uploads a file under NAME (file NAME BYTES CRC32 and the bytes);\n"
+    "       'key:NAME' presses a key on the PS/2 keyboard (QEMU's names: b, esc, right, ...), for the\n"
+    "       show, which plays until the first command (--append boot=demo); 'wait:EVENT' prints the\n"
+    "       kernel's events until one named EVENT (bench_row, bench_done, key, ...).\n"
     "       Events a command sends before its reply (play's frames) are printed as they come.\n"
     "       Long \"data\" fields are shortened unless --full. Exit status: 1 if a reply was not ok,\n"
     "       else the kernel's own exit code where an `exit N` ended it, else 0.\n";
@@ -316,6 +319,19 @@ int exec(Args& a) {
             std::string name = c.substr(11);
             RgbImage img = s.screendump(name);
             std::printf("screendump %s/%s.png (%dx%d)\n", s.run_dir().c_str(), name.c_str(), img.width, img.height);
+            continue;
+        }
+        if (c.rfind("key:", 0) == 0) {
+            s.send_key(c.substr(4));
+            std::printf("key %s\n", c.substr(4).c_str());
+            continue;
+        }
+        if (c.rfind("wait:", 0) == 0) {
+            auto print = [](const json& event) {
+                std::printf("%s\n", event.dump().c_str());
+                std::fflush(stdout);
+            };
+            print(s.wait_event(c.substr(5), print));
             continue;
         }
         json reply;

@@ -131,8 +131,8 @@ void Session::send_key(const std::string& qcode) {
     }
 }
 
-json Session::wait_event(const std::string& event) {
-    return guarded([&] { return link_.wait_event(event, options_.command_timeout); });
+json Session::wait_event(const std::string& event, const KernelLink::EventFn& on_other) {
+    return guarded([&] { return link_.wait_event(event, options_.command_timeout, on_other); });
 }
 
 RgbImage Session::screendump(const std::string& name, bool kept) {

@@ -69,8 +69,9 @@ public:
     // A key pressed and released on the PS/2 keyboard (QMP send-key; `qcode` as QEMU names keys:
     // "spc", "h", "f1", "right", ...).
     void send_key(const std::string& qcode);
-    // The next event the kernel sends unasked, which must be `event` (KernelLink::wait_event).
-    json wait_event(const std::string& event);
+    // The next event the kernel sends unasked named `event` (KernelLink::wait_event); the events
+    // before it go to on_other (without it, any other line is a failure).
+    json wait_event(const std::string& event, const KernelLink::EventFn& on_other = {});
 
     // QMP stop, screendump (PNG, saved as RUN_DIR/NAME.png), cont. Not `kept`: a PPM, read and
     // removed, which spares QEMU the compression (for a comparison that saves its pictures only

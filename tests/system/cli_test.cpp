@@ -272,6 +272,19 @@ TEST(ExecTool, ACopiedTreeRunsInItsOwnBuild) {
     EXPECT_EQ(r.out.find(std::filesystem::current_path().string()), std::string::npos) << r.out;
 }
 
+// exec drives the show's keyboard: key:b starts the on-screen bench, wait: prints the events up to
+// the one named, key:esc stops the bench.
+TEST(ExecTool, KeysDriveTheShowAndWaitPrintsItsEvents) {
+    const ToolRun r = run_command(harness_tool() + " exec" + kernel_option() +
+                                  " --append 'boot=demo scene=cube.scene mapper=exact' key:b wait:bench_row key:esc wait:bench_done 'exit 0'");
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_NE(r.out.find("\nkey b\n{\"event\":\"bench_row\""), std::string::npos) << r.out;
+    const size_t done = r.out.find("{\"event\":\"bench_done\"");
+    ASSERT_NE(done, std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"interrupted\":true", done), std::string::npos) << r.out;
+    EXPECT_EQ(run_command(harness_tool() + " exec" + kernel_option() + " key:nosuchkey").status, 1);
+}
+
 // exec passes the kernel's exit code on; a reply that is not ok makes it 1.
 TEST(ExecTool, PassesTheKernelsExitCodeOn) {
     EXPECT_EQ(run_command(harness_tool() + " exec" + kernel_option() + " 'exit 3'").status, 3);

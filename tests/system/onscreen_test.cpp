@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <map>
 #include <sstream>
+#include <thread>
 
 #include "kernel/core/policy.h"
 #include "kernel/scene/text.h"
@@ -115,6 +116,53 @@ TEST(OnScreenBench, RowsPagesAndQrCodesSayWhatTheBenchMeasured) {
         EXPECT_EQ(b["polygons"], r["polygons"]) << name;
         EXPECT_EQ(b["ticks_inner"]["sum"], r["ticks_inner"]) << name;
         EXPECT_EQ(b["ticks"]["sum"], r["ticks"]) << name;
+    }
+}
+
+// The progress line (the row, the scene, the mapper, and from the second row the time left) is
+// drawn over every frame before it is shown, so every screendump during the bench, taken a few
+// frames into a row, has it: the line of the row just reported or of a row after it (the events say
+// which line each row showed).
+TEST(OnScreenBench, ProgressAndTheTimeLeftStayOnScreenThroughTheFlips) {
+    SessionOptions o = options_for_this_test();
+    o.append = "boot=demo bench=6 scene=cube.scene mapper=exact";
+    o.icount = true;
+    o.command_timeout = std::chrono::milliseconds(120000);
+    Session s(o);
+    std::vector<std::string> lines;  // by row, from 0
+    std::vector<RgbImage> shots;     // after row k's event
+    for (int i = 0; i < raster::MAPPER_COUNT; ++i) {
+        const json r = s.wait_event("bench_row");
+        lines.push_back(r["progress"]);
+        std::this_thread::sleep_for(std::chrono::milliseconds(120));  // (some frames of the next row flipped)
+        shots.push_back(s.screendump("during-" + std::to_string(i), false));
+    }
+    EXPECT_EQ(lines[0], "bench 1/" + std::to_string(raster::MAPPER_COUNT) + ": cube.scene " + raster::MAPPERS[0].name);
+    for (size_t k = 1; k < lines.size(); ++k) {
+        EXPECT_EQ(lines[k].rfind("bench " + std::to_string(k + 1) + "/", 0), 0u) << lines[k];
+        EXPECT_NE(lines[k].find(", about "), std::string::npos) << lines[k];
+        EXPECT_EQ(lines[k].substr(lines[k].size() - 5), " left") << lines[k];
+    }
+    const LoadedWorld host = load_world_file("scenes/cube.scene");
+    const raster::TextColours colours = raster::text_colours(host.world->palette);
+    // whether the shot shows `line` in its box at the top left, colour for colour
+    auto shows = [&](const RgbImage& shot, const std::string& line) {
+        IndexImage box{320, 240, std::vector<uint8_t>(320 * 240, 0)};
+        std::vector<uint8_t> marked(320 * 240, 1);
+        raster::Target t = raster::linear_target(box.index.data(), 320, 240, 320), m = raster::linear_target(marked.data(), 320, 240, 320);
+        const lib::StrView l{line.data(), line.size()};
+        raster::draw_text_box(t, 0, 0, &l, 1, colours);
+        raster::draw_text_box(m, 0, 0, &l, 1, raster::TextColours{0, 0});  // (0 where the box is)
+        const RgbImage want = screendump_of(box, host.world->palette);
+        for (int y = 0; y < 240; ++y)
+            for (int x = 0; x < 320; ++x)
+                if (!marked[size_t(y) * 320 + size_t(x)] && !std::equal(want.at(2 * x, 2 * y), want.at(2 * x, 2 * y) + 3, shot.at(2 * x, 2 * y))) return false;
+        return true;
+    };
+    for (size_t k = 0; k < shots.size(); ++k) {
+        bool shown = false;
+        for (size_t j = k; j < lines.size() && j <= k + 2 && !shown; ++j) shown = shows(shots[k], lines[j]);
+        EXPECT_TRUE(shown) << "after row " << k + 1 << ": neither '" << lines[k] << "' nor a later row's line";
     }
 }
 
