@@ -40,7 +40,7 @@ const char* USAGE =
     "  --targets  the timing model's CPUs to run the frames again on, under QEMU with its plugin (default: none)\n"
     "  --costs-from  measure nothing: fit the cost model (costs.cpp) to an earlier run's trade.csv\n"
     "  --refresh-docs  measure nothing: rewrite the generated tables of README.md and docs/results.md (run from the\n"
-    "             source tree) from a trade.csv, and say which changed\n";
+    "             source tree) and the plot docs/img/trade-corridor.png from a trade.csv, and say which changed\n";
 
 struct BenchScene {
     std::string name;  // in the report
@@ -377,6 +377,10 @@ void refresh_docs(const std::string& csv) {
         if (fresh != text) write_text(path, fresh);
         std::printf("%s: %d generated tables, %s\n", path.c_str(), blocks, fresh == text ? "unchanged" : "refreshed (commit it)");
     }
+    // the README's plot, drawn again from the same rows
+    const std::string dir = build_dir() + "/report-docs", png = write_plot(dir, "corridor", rows);
+    if (!png.empty()) std::filesystem::copy_file(png, "docs/img/trade-corridor.png", std::filesystem::copy_options::overwrite_existing);
+    std::printf("docs/img/trade-corridor.png: %s\n", png.empty() ? "not drawn (no gnuplot)" : "drawn again");
 }
 
 int run(const Args& a) {

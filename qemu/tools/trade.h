@@ -146,8 +146,28 @@ std::ofstream open_out(const std::string& path);
 // A scene's rows that drew, by drawing instructions a pixel, fastest first.
 std::vector<const TradeRow*> drawing_rows_by_speed(const std::vector<TradeRow>& rows, const std::string& scene);
 
-// trade-SCENE.gp and, when gnuplot is installed, trade-SCENE.png: speed against mean texel error,
-// each point labelled, the Pareto front joined. Returns the PNG's path, or "" when not drawn.
+// A plot's point and where its name went, in the picture's pixels (y up): the label's box, and
+// whether a leader line joins it to a point it had to move away from. `placed` false: no room left
+// within reach of the point (the plot's note lists it).
+struct PlotLabel {
+    double x = 0, y = 0;  // the point
+    std::string text;
+    bool front = false;
+    bool placed = false, leader = false;
+    double left = 0, bottom = 0, right = 0, top = 0;
+};
+// The plot area in pixels, and a label's size: a character's width and a line's height.
+struct PlotArea {
+    double left, bottom, right, top, char_width = 7, line_height = 12;
+};
+// Names the points (pixels) with boxes that overlap neither each other nor a point's marker, inside
+// the area: the front's first, then in the order given; each at the nearest free place around its
+// point, rings further out with a leader line.
+void place_labels(std::vector<PlotLabel>& labels, const PlotArea& area);
+
+// trade-SCENE.gp and, when gnuplot is installed, trade-SCENE.png: speed (log scale) against mean
+// footprint error (log scale), each point named where no other name or point is (place_labels),
+// the Pareto front joined and its points named in its colour. Returns the PNG's path, or "" when not drawn.
 // `target` 486 or pentium: trade-SCENE-TARGET.*, the timing model's drawing cycles a pixel there
 // (the rows run on it, its own front), "" where none was.
 std::string write_plot(const std::string& dir, const std::string& scene, const std::vector<TradeRow>& rows, const std::string& target = "");

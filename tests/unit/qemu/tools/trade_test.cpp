@@ -20,6 +20,7 @@
 #include "qemu/tools/trade.h"
 #include "qemu/tools/trade_docs.h"
 #include "qemu/lib/error.h"
+#include "qemu/lib/paths.h"
 
 namespace {
 
@@ -238,10 +239,11 @@ TEST(Trade, TheCsvReadBackIsTheSameRows) {
         write_plot(plots, "a", t, "pentium");
         const std::string gp = read_whole_file(plots + "/trade-a-pentium.gp");
         EXPECT_NE(gp.find("timing model, Pentium"), std::string::npos) << gp;
-        EXPECT_NE(gp.find("3.000 1.2500 fast-affine"), std::string::npos) << gp;
-        EXPECT_EQ(gp.find(" exact\n"), std::string::npos) << "exact was not run on the Pentium: " << gp;
+        EXPECT_NE(gp.find("\n3.000 1.2500\n"), std::string::npos) << gp;
+        EXPECT_NE(gp.find("'fast-affine' at screen"), std::string::npos) << gp;
+        EXPECT_EQ(gp.find("'exact'"), std::string::npos) << "exact was not run on the Pentium: " << gp;
         write_plot(plots, "a", t, "486");
-        EXPECT_NE(read_whole_file(plots + "/trade-a-486.gp").find("7.000 1.2500 fast-affine"), std::string::npos);
+        EXPECT_NE(read_whole_file(plots + "/trade-a-486.gp").find("\n7.000 1.2500\n"), std::string::npos);
         EXPECT_EQ(write_plot(plots, "a", rows, "486"), "") << "nothing run on the 486";
         const std::string table = cycles_table(t);
         EXPECT_NE(table.find("| fast-affine | 4.5 | 7.0 | 11.0 | 13.0 | 11.5 | 2.0 | 3.0 | 5.0 | 9.0 | 6.0 |"), std::string::npos)
@@ -441,6 +443,62 @@ TEST(Trade, TheGoalsSetOurFastestPerspectiveAgainstOurFastestAffine) {
         << out.str();
     EXPECT_NE(out.str().find("| freedoom: fastest perspective within one footprint over fastest affine | Pentium | 1.3 | - | - |"), std::string::npos)
         << out.str();
+}
+
+// Names never overprint each other or a point, the front's are placed first, and a crowd is named
+// around it with leader lines: here twenty points within a few pixels of each other and one far off
+// (freedoom's plot had one classic at 2600 instructions a pixel and the rest near 5).
+TEST(TradePlot, NamesNeitherOverlapNorCoverAPoint) {
+    const PlotArea area{90, 64, 970, 589};
+    std::vector<PlotLabel> labels;
+    for (int i = 0; i < 20; ++i) {
+        PlotLabel l;
+        l.x = 200 + 3 * (i % 5), l.y = 300 + 4 * (i / 5), l.text = "mapper-number-" + std::to_string(i), l.front = i == 7;
+        labels.push_back(l);
+    }
+    PlotLabel far;
+    far.x = 960, far.y = 580, far.text = "hecker-steptable";
+    labels.push_back(far);
+    place_labels(labels, area);
+    for (size_t i = 0; i < labels.size(); ++i) {
+        const PlotLabel& a = labels[i];
+        ASSERT_TRUE(a.placed) << a.text;
+        EXPECT_TRUE(a.left >= area.left && a.right <= area.right && a.bottom >= area.bottom && a.top <= area.top) << a.text << ": inside the area";
+        EXPECT_GE(a.right - a.left, 7 * double(a.text.size())) << "room for the text";
+        for (size_t j = 0; j < labels.size(); ++j) {
+            const PlotLabel& b = labels[j];
+            const bool over = i != j && a.left < b.right && b.left < a.right && a.bottom < b.top && b.bottom < a.top;
+            EXPECT_FALSE(over) << a.text << " over " << b.text;
+            EXPECT_FALSE(b.x + 7 > a.left && b.x - 7 < a.right && b.y + 7 > a.bottom && b.y - 7 < a.top) << a.text << " covers " << b.text << "'s point";
+        }
+    }
+    EXPECT_FALSE(labels[7].leader) << "the front's name placed first, beside its point";
+    EXPECT_TRUE(std::any_of(labels.begin(), labels.end(), [](const PlotLabel& l) { return l.leader; })) << "a crowd needs leader lines";
+}
+
+// The plot of a scene whose speeds span decades: both axes logarithmic over positive ranges, every
+// mapper named (or listed as without room), the front's names in its colour.
+TEST(TradePlot, ALogSpeedAxisAndEveryMapperNamed) {
+    const std::vector<TradeRow> rows = read_trade("docs/data/trade.csv");
+    const std::string dir = build_dir() + "/test-tmp/plot";
+    std::filesystem::create_directories(dir);
+    write_plot(dir, "freedoom", rows, "");
+    const std::string gp = read_whole_file(dir + "/trade-freedoom.gp");
+    EXPECT_NE(gp.find("set logscale xy\n"), std::string::npos);
+    const size_t range = gp.find("set xrange [");
+    ASSERT_NE(range, std::string::npos);
+    EXPECT_GT(std::stod(gp.substr(range + 12)), 0.0) << "no negative or zero speed axis";
+    size_t named = 0, front = 0;
+    for (const TradeRow* r : drawing_rows_by_speed(rows, "freedoom")) {
+        const bool labelled = gp.find("'" + r->mapper + "' at screen") != std::string::npos;
+        const size_t note = gp.find("no room to name:");
+        EXPECT_TRUE(labelled || (note != std::string::npos && gp.find(r->mapper, note) != std::string::npos)) << r->mapper;
+        named += labelled;
+        if (r->pareto) front += gp.find("'" + r->mapper + "' at screen") != std::string::npos &&
+                                gp.find("tc rgb '#c03030'", gp.find("'" + r->mapper + "' at screen")) < gp.find("\n", gp.find("'" + r->mapper + "' at screen"));
+    }
+    EXPECT_GE(named, drawing_rows_by_speed(rows, "freedoom").size() - 2) << gp;
+    EXPECT_GE(front, 2u) << "the front's points named in its colour";
 }
 
 }  // namespace
