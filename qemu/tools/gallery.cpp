@@ -13,17 +13,17 @@
 
 namespace harness {
 
-
-
+// Every error above 0 stands out from 0's grey and the black background (a contrast of 3 or more,
+// gallery_test), the smallest as much as the largest; none is the gap's blue or the overdraw's yellow.
 const ErrorBin ERROR_BINS[] = {
-    {0, {38, 38, 38}, "0: the reference's texel"},
-    {0.25, {74, 20, 134}, "up to 0.25"},
-    {0.5, {100, 26, 128}, "up to 0.5"},
-    {1, {140, 41, 129}, "up to 1"},
-    {2, {183, 55, 121}, "up to 2"},
-    {4, {222, 73, 104}, "up to 4"},
-    {8, {254, 159, 109}, "up to 8"},
-    {1e300, {252, 253, 191}, "more than 8"},
+    {0, {48, 48, 48}, "0: the reference's texel"},
+    {0.25, {0, 170, 170}, "up to 0.25"},
+    {0.5, {0, 200, 90}, "up to 0.5"},
+    {1, {150, 220, 0}, "up to 1"},
+    {2, {255, 170, 0}, "up to 2"},
+    {4, {255, 100, 0}, "up to 4"},
+    {8, {240, 40, 40}, "up to 8"},
+    {1e300, {255, 80, 220}, "more than 8"},
 };
 const int ERROR_BIN_COUNT = sizeof ERROR_BINS / sizeof ERROR_BINS[0];
 
@@ -156,8 +156,6 @@ void rank_cards(GalleryPage& page, const MeasuredSpeeds& speeds) {
     });
 }
 
-namespace {
-
 std::string escape(const std::string& s) {
     std::string out;
     for (char c : s) {
@@ -171,6 +169,8 @@ std::string escape(const std::string& s) {
     }
     return out;
 }
+
+namespace {
 
 std::string hex(const Colour& c) {
     char buf[8];
@@ -192,13 +192,12 @@ void close_page(std::ofstream& out, const std::string& path) {
 }
 
 const char* STYLE =
-    "body{font-family:sans-serif;background:#eee;color:#111;margin:1em 2em}\n"
-    ".card{background:#fff;border:1px solid #bbb;margin:1em 0;padding:.3em 1em 1em}\n"
+    "body{font-family:sans-serif;background:#eee;color:#111;margin:.5em}\n"
+    ".card{background:#fff;border:1px solid #bbb;margin:.5em 0;padding:0 4px 4px}\n"
     ".card h3{margin:.4em 0}\n"
-    ".maps{display:flex;flex-wrap:wrap;gap:1em;background:#222;padding:.6em}\n"
+    ".maps{display:flex;flex-wrap:wrap;gap:4px;background:#222;padding:2px}\n"
     "figure{margin:0}\n"
     "figcaption{font-size:90%;color:#ddd}\n"
-    "img.x2{width:640px;height:480px;image-rendering:pixelated;display:block}\n"
     "img.x1{image-rendering:pixelated;display:block}\n"
     ".swatch{display:inline-block;width:1.1em;height:1.1em;border:1px solid #777;vertical-align:middle;margin-right:.3em}\n"
     "table{border-collapse:collapse}\n"
@@ -208,15 +207,11 @@ const char* STYLE =
 
 std::string head(const std::string& title) {
     return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escape(title) + "</title>\n<style>\n" +
-           STYLE + "</style>\n</head>\n<body>\n";
-}
-
-std::string image_path(const GalleryPage& page, const GalleryCard& card, const char* what) {
-    return "img/" + page.scene + "-" + card.file + (*what ? "-" : "") + what + ".png";
+           STYLE + TOOLS_STYLE + "</style>\n</head>\n<body>\n";
 }
 
 std::string figure(const std::string& src, const std::string& caption) {
-    return "<figure><img class=\"x2\" src=\"" + escape(src) + "\" width=\"640\" height=\"480\" alt=\"" + escape(caption) +
+    return "<figure><img class=\"x1\" src=\"" + escape(src) + "\" width=\"320\" height=\"240\" alt=\"" + escape(caption) +
            "\"><figcaption>" + escape(caption) + "</figcaption></figure>\n";
 }
 
@@ -293,6 +288,10 @@ std::string card_html(const GalleryPage& page, const GalleryCard& c) {
 
 }  // namespace
 
+std::string image_path(const GalleryPage& page, const GalleryCard& card, const char* what) {
+    return "img/" + page.scene + "-" + card.file + (*what ? "-" : "") + what + ".png";
+}
+
 void write_page(const std::string& dir, const GalleryPage& page, const raster::Palette& palette) {
     std::filesystem::create_directories(dir + "/img");
     for (const GalleryCard& c : page.cards) {
@@ -310,6 +309,7 @@ void write_page(const std::string& dir, const GalleryPage& page, const raster::P
         << ", frame " << page.frame << " of " << page.frames << "</h1>\n";
     if (!page.exercises.empty()) out << "<p>" << escape(page.exercises) << ".</p>\n";
     out << "<p>The scene's budget: " << escape(page.budget) << ". Speeds " << escape(page.speed_source) << ".</p>\n" << legend();
+    out << "<h2>Summary</h2>\n<p>Click a column's name to sort by it.</p>\n" << summary_html(page) << plot_svg(page) << compare_html(page);
     std::vector<const GalleryCard*> mappers, budgets;
     for (const GalleryCard& c : page.cards)
         if (c.mapper) (c.at_budget ? budgets : mappers).push_back(&c);
@@ -324,11 +324,13 @@ void write_page(const std::string& dir, const GalleryPage& page, const raster::P
             << " budgets of its own (exact coverage): " << links(budgets) << ".</p>\n";
     for (const GalleryCard& c : page.cards)
         if (!c.mapper) out << card_html(page, c);
-    out << "<h2>The mappers, fastest first</h2>\n";
+    out << "<h2>The mappers, fastest first</h2>\n<div class=\"cards\">\n";
     for (const GalleryCard* c : mappers) out << card_html(page, *c);
-    if (!budgets.empty()) out << "<h2>auto at budgets of its own</h2>\n";
+    out << "</div>\n";
+    if (!budgets.empty()) out << "<h2>auto at budgets of its own</h2>\n<div class=\"cards\">\n";
     for (const GalleryCard* c : budgets) out << card_html(page, *c);
-    out << "</body>\n</html>\n";
+    if (!budgets.empty()) out << "</div>\n";
+    out << PAGE_SCRIPT << "</body>\n</html>\n";
     close_page(out, path);
 }
 

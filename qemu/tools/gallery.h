@@ -93,8 +93,25 @@ double estimated_speed(const FrameMap& map);
 // (those that draw nothing last), the reference first, auto's budgets last in their order.
 void rank_cards(GalleryPage& page, const MeasuredSpeeds& speeds);
 
-// DIR/SCENE.html with its images in DIR/img/ (file:// links only, no scripts).
+// DIR/SCENE.html with its images in DIR/img/ (file:// links only; a script of its own for the
+// tools below, whose state the page's address keeps after '#').
 void write_page(const std::string& dir, const GalleryPage& page, const raster::Palette& palette);
+
+// The page's tools (gallery_view.cpp): the summary table, one row a mapper card, sortable by speed,
+// max and mean footprint error and the Pareto front (#sort=speed|max|mean|pareto); the plot of
+// speed against mean footprint error (inline SVG, both axes log, names placed apart: place_labels);
+// two mappers compared (#compare=A,B): their difference (CSS difference blending: black where they
+// agree), each flickering against the exact picture (#flicker=1), a region 4 times larger pixel
+// for pixel (#zoom=X,Y); with the style and the script they need.
+std::string summary_html(const GalleryPage& page);
+std::string plot_svg(const GalleryPage& page);
+std::string compare_html(const GalleryPage& page);
+extern const char* const TOOLS_STYLE;
+extern const char* const PAGE_SCRIPT;
+
+// HTML-escaped text; the path of a card's image ("frame", "error", "mappers"; "" the reference's).
+std::string escape(const std::string& s);
+std::string image_path(const GalleryPage& page, const GalleryCard& card, const char* what);
 // DIR/index.html: a link and a thumbnail a scene.
 void write_index(const std::string& dir, const std::vector<GalleryPage>& pages);
 

@@ -13,6 +13,7 @@
 #include "qemu/harness/session.h"
 #include "qemu/tools/demo_scenes.h"
 #include "qemu/tools/trade.h"
+#include "tests/browser/browser.h"
 #include "tests/html.h"
 #include "tests/system/system.h"
 
@@ -32,23 +33,7 @@ const char* STAMP =
     "});</script>\n";
 
 // The page's DOM as Chromium has it after loading the page and its images.
-std::string rendered_dom(const std::string& page) {
-    std::string html = read_whole_file(gallery_dir() + "/" + page + ".html");
-    size_t body = html.rfind("</body>");
-    if (body == std::string::npos) return "no </body> in " + page + ".html";
-    html.insert(body, STAMP);
-    const std::string copy = gallery_dir() + "/browser-" + page + ".html", log = gallery_dir() + "/browser-" + page + ".log";
-    {
-        std::ofstream out(copy);
-        out << html;
-    }
-    systest::ToolRun r = systest::run_command("{ chromium --headless --disable-gpu --no-sandbox --virtual-time-budget=10000 "
-                                              "--run-all-compositor-stages-before-draw --dump-dom 'file://" +
-                                              std::filesystem::absolute(copy).string() + "' 2>'" + log + "'; }");
-    std::filesystem::remove(copy);
-    EXPECT_EQ(r.status, 0) << "chromium failed: see " << log;
-    return r.out;
-}
+std::string rendered_dom(const std::string& page) { return browser::rendered_dom(gallery_dir() + "/" + page + ".html", STAMP); }
 
 // The text of the first element opened by `marker` (up to its closing `end`), or "".
 std::string element(const std::string& dom, const std::string& marker, const std::string& end) {

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <cmath>
 #include <set>
 
 #include "kernel/core/mapper.h"
@@ -206,6 +207,31 @@ TEST(Gallery, EveryMapperHasAColourOfItsOwn) {
         colours.insert(std::to_string(c.r) + "," + std::to_string(c.g) + "," + std::to_string(c.b));
     }
     EXPECT_EQ(colours.size(), size_t(raster::MAPPER_COUNT));
+}
+
+// The error scale: every error above 0, the smallest too, stands out from 0's colour and from the
+// background by a contrast ratio of 3 or more (WCAG's for graphics), and no bin looks like a gap,
+// overdraw or another bin.
+TEST(Gallery, TheSmallestErrorsStandOutOnTheErrorMap) {
+    auto luminance = [](const Colour& c) {
+        auto linear = [](uint8_t v) {
+            const double x = v / 255.0;
+            return x <= 0.03928 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+        };
+        return 0.2126 * linear(c.r) + 0.7152 * linear(c.g) + 0.0722 * linear(c.b);
+    };
+    auto contrast = [&](const Colour& a, const Colour& b) {
+        const double la = luminance(a), lb = luminance(b);
+        return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+    };
+    const Colour& zero = ERROR_BINS[0].colour;
+    for (int i = 1; i < ERROR_BIN_COUNT; ++i) {
+        const Colour& c = ERROR_BINS[i].colour;
+        EXPECT_GE(contrast(c, zero), 3.0) << ERROR_BINS[i].label << " against 0";
+        EXPECT_GE(contrast(c, BACKGROUND_COLOUR), 3.0) << ERROR_BINS[i].label << " against the background";
+        EXPECT_FALSE(c == GAP_COLOUR || c == OVERDRAW_COLOUR) << ERROR_BINS[i].label;
+        for (int j = 0; j < i; ++j) EXPECT_FALSE(c == ERROR_BINS[j].colour) << ERROR_BINS[i].label;
+    }
 }
 
 }  // namespace
