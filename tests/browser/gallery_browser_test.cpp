@@ -25,7 +25,7 @@ using htmltest::Attributes;
 std::string gallery_dir() { return build_dir() + "/runs/GalleryBrowser/gallery"; }
 
 // Stamps each image with its natural size once the page has loaded: added to a copy of the page for
-// the browser only (the pages themselves have no script).
+// the browser only.
 const char* STAMP =
     "<script>addEventListener('load', () => {\n"
     "  for (const img of document.images) img.setAttribute('data-natural', img.complete ? img.naturalWidth + 'x' + img.naturalHeight : 'incomplete');\n"

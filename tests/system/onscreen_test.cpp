@@ -29,12 +29,17 @@ std::string zbar(const std::string& png) {
     return out;
 }
 
-TEST(OnScreenBench, RowsPagesAndQrCodesSayWhatTheBenchMeasured) {
+// A boot into the on-screen bench on the cube, `frames` a row, under icount.
+SessionOptions bench_boot(int frames) {
     SessionOptions o = options_for_this_test();
-    o.append = "boot=demo bench=1 scene=cube.scene mapper=exact";
+    o.append = "boot=demo bench=" + std::to_string(frames) + " scene=cube.scene mapper=exact";
     o.icount = true;
     o.command_timeout = std::chrono::milliseconds(120000);
-    Session s(o);
+    return o;
+}
+
+TEST(OnScreenBench, RowsPagesAndQrCodesSayWhatTheBenchMeasured) {
+    Session s(bench_boot(1));
     // the rows: one a mapper, in registry order
     std::vector<json> rows;
     for (int i = 0; i < raster::MAPPER_COUNT; ++i) {
@@ -124,11 +129,7 @@ TEST(OnScreenBench, RowsPagesAndQrCodesSayWhatTheBenchMeasured) {
 // frames into a row, has it: the line of the row just reported or of a row after it (the events say
 // which line each row showed).
 TEST(OnScreenBench, ProgressAndTheTimeLeftStayOnScreenThroughTheFlips) {
-    SessionOptions o = options_for_this_test();
-    o.append = "boot=demo bench=6 scene=cube.scene mapper=exact";
-    o.icount = true;
-    o.command_timeout = std::chrono::milliseconds(120000);
-    Session s(o);
+    Session s(bench_boot(6));
     std::vector<std::string> lines;  // by row, from 0
     std::vector<RgbImage> shots;     // after row k's event
     for (int i = 0; i < raster::MAPPER_COUNT; ++i) {
