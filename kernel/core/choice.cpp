@@ -24,7 +24,13 @@ bool cost_target_named(const char* word, size_t length, CostTarget* t) {
 }
 
 bool choosable(const Mapper& m) { return !m.is_auto && !m.own_walker && m.bound && m.bound != unbounded; }
-bool drawn_by_auto(const Mapper& m) { return choosable(m) || m.draw == fast_oriented_draw<4>; }
+bool drawn_by_auto(const Mapper& m) { return choosable(m) || m.auto_role == AutoRole::Oriented; }
+
+const Mapper& auto_fallback() {
+    int row = 0;
+    while (row < MAPPER_COUNT - 1 && MAPPERS[row].auto_role != AutoRole::Fallback) ++row;
+    return MAPPERS[row];
+}
 
 namespace {
 
@@ -137,11 +143,11 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
         }
     for (int k = 0; k < c.count; ++k)
         for (int two = 0; two < 2; ++two)
-            if (MAPPERS[c.row[k]].span == (two ? fast_adaptive_span<8> : fast_adaptive_span<4>)) c.adaptive[two][int(c.axis[k])] = k;
+            if (MAPPERS[c.row[k]].auto_role == (two ? AutoRole::Adaptive2 : AutoRole::Adaptive1)) c.adaptive[two][int(c.axis[k])] = k;
     for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i)
-        if (MAPPERS[i].draw == fast_oriented_draw<4> && mapper_accepts(MAPPERS[i], tex) && model.rows[i].polygon >= 0) c.oriented_row = i;
+        if (MAPPERS[i].auto_role == AutoRole::Oriented && mapper_accepts(MAPPERS[i], tex) && model.rows[i].polygon >= 0) c.oriented_row = i;
     for (int k = 0; k < c.count; ++k)
-        if (MAPPERS[c.row[k]].span == fast_subdiv_span<FAST_SPAN_LONG> && c.cost[k].polygon < 1e29) c.constant_depth[int(c.axis[k])] = k;
+        if (MAPPERS[c.row[k]].auto_role == AutoRole::ConstantDepth && c.cost[k].polygon < 1e29) c.constant_depth[int(c.axis[k])] = k;
     for (int k = c.count - 1; k >= 0; --k) {
         const bool last = k == c.count - 1;
         c.least_polygon[k] = last || c.cost[k].polygon < c.least_polygon[k + 1] ? c.cost[k].polygon : c.least_polygon[k + 1];

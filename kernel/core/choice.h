@@ -76,9 +76,11 @@ inline double estimate_cost(const MapperCost& c, const PolygonSize& s) { return 
 // draws what fast-adaptive-1 does along one of them), and a derived bound (not `unbounded`, the
 // placeholder a new mapper's row starts with).
 bool choosable(const Mapper& m);
-// The mappers auto's choices draw with: the choosable ones, and fast-oriented-1, which draws its
-// oriented candidate (ORIENTED_GATE).
+// The mappers auto's choices draw with: the choosable ones, and the row whose role is Oriented,
+// which draws its oriented candidate (ORIENTED_GATE).
 bool drawn_by_auto(const Mapper& m);
+// The row that draws what no candidate may (role Fallback: exact).
+const Mapper& auto_fallback();
 
 struct Choice {
     const Mapper* mapper = nullptr;  // nullptr: no mapper draws the polygon (degenerate, or refused)

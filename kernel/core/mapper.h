@@ -174,6 +174,12 @@ using CheckFn = Check*;
 // own direction or place (docs/auto.md).
 enum SpanProof : uint8_t { SPANS_NOT_ASKED, SPANS_ASKED };
 
+// What auto takes a registry row for beyond its bound and its cost (core/choice.h): the oriented
+// candidate (its own driver picks the walker), the adaptive ones it is weighed against along each
+// walker, the constant-depth one whose one chord a line the oriented certificate proves too, and
+// the fallback that draws what no candidate may (the reference's definition).
+enum class AutoRole : uint8_t { None, Adaptive1, Adaptive2, Oriented, ConstantDepth, Fallback };
+
 struct Mapper {
     const char* name;
     const char* family;   // "ours" or "classic"
@@ -204,6 +210,7 @@ struct Mapper {
     // for rows it draws along this one (its bound too); asked for columns, columns. nullptr: the
     // walker it is asked for. auto does not take such a mapper as a candidate (choosable).
     Axis (*own_walker)(const PolygonSetup& s, const ClipRect& clip) = nullptr;
+    AutoRole auto_role = AutoRole::None;
 };
 
 extern const Mapper MAPPERS[];

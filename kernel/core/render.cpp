@@ -70,7 +70,7 @@ SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& te
     probe_lap(stats->probe, Phase::Choose);
     if (!c.mapper) {
         const Axis any = target_supports(target, axis) ? axis : Axis::Columns;  // a walker the target takes
-        return draw_with(Drawer::of(*find_mapper("exact"), tex, any, target, stats, variant), vertices, count, nullptr, nullptr, Input::Any);
+        return draw_with(Drawer::of(auto_fallback(), tex, any, target, stats, variant), vertices, count, nullptr, nullptr, Input::Any);
     }
     const bool set_up = prepared->status == SetupStatus::Ok;
     // (a candidate: its walker, texture and target checked when the list was built)

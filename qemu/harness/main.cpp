@@ -152,12 +152,6 @@ struct Played {
     std::vector<std::string> nothing; // the scenes the mapper drew nothing of
 };
 
-std::string fixed(double x, int decimals) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*f", decimals, x);
-    return text;
-}
-
 // The lines under a scene's row where the mapper refused polygons of its last frame: how many, why,
 // and where it refused them all, the demo scenes it draws whole.
 void say_refusal(const raster::Mapper& mapper, const raster::RenderStats& stats, std::vector<std::string>* whole) {

@@ -152,6 +152,13 @@ TEST(RenderTool, TakesDemoNamesAndSaysWhatAutoChoseAndDiffs3dFrames) {
     EXPECT_GT(red, 1000u) << "the corridor is far from affine";
 }
 
+// The harness's usage names the default mapper make run draws with: auto.
+TEST(Tools, TheUsageSaysTheDefaultMapperIsAuto) {
+    const ToolRun r = run_command(build_dir() + "/host/modexlab --help");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.out.find("with the mapper (default auto: the scene's budget)"), std::string::npos) << r.out;
+}
+
 // Every tool answers --version with its name and the version.
 TEST(Tools, EveryToolSaysItsVersion) {
     for (const char* tool : {"modexlab", "modexlab-render", "modexlab-scene", "modexlab-wad", "modexlab-bench", "modexlab-gallery", "modexlab-extremes",

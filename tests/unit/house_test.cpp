@@ -1,6 +1,7 @@
 // The rules the tree keeps (docs/architecture.md, "Rules the layout keeps"): no file over 600 lines
 // but generated code and tables; no comment block over 8 lines but a file's header or a derivation
-// (its first line says so); no date in a comment. Run from the source tree, as every test is.
+// (its first line says so); no date in a comment; kernel/core names no mapper. Run from the source
+// tree, as every test is.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -112,6 +113,20 @@ TEST(House, NoCommentCarriesADate) {
             const size_t c = l.find(s.comment);
             if (c != std::string::npos && std::regex_search(l.substr(c), date))
                 ADD_FAILURE() << s.path << ":" << i + 1 << ": a date in a comment (dates belong to commits): " << l;
+        }
+    }
+}
+
+// kernel/core names no mapper: it finds none by its name and recognises none by its functions;
+// what auto needs of a row is the row's (its role, Mapper::auto_role).
+TEST(House, CoreNamesNoMapper) {
+    const std::regex by_name(R"(find_mapper\(\s*")"), by_function(R"(\.(draw|span|bound)\s*==)");
+    for (const Source& s : sources()) {
+        if (s.path.rfind("kernel/core/", 0) != 0) continue;
+        for (size_t i = 0; i < s.lines.size(); ++i) {
+            const std::string& l = s.lines[i];
+            if (std::regex_search(l, by_name)) ADD_FAILURE() << s.path << ":" << i + 1 << ": a mapper found by its name: " << l;
+            if (std::regex_search(l, by_function)) ADD_FAILURE() << s.path << ":" << i + 1 << ": a mapper told by its functions: " << l;
         }
     }
 }

@@ -47,6 +47,31 @@ TEST(CostModel, HasOneRowPerRegistryRowInItsOrder) {
 // The errors the on-screen bench shows: one for every demo scene and registry row (a new mapper or
 // scene needs a make bench), as make bench measured them: exact's 0, and a mapper's that
 // drew nothing -1.
+// Each role auto gives a registry row is one row's, and that row is fit for it: the fallback equals
+// the reference, the oriented one picks its walker, the others are candidates auto may choose.
+TEST(Auto, EachRoleIsOneRowOfTheRegistryFitForIt) {
+    for (const AutoRole role : {AutoRole::Adaptive1, AutoRole::Adaptive2, AutoRole::Oriented, AutoRole::ConstantDepth, AutoRole::Fallback}) {
+        int rows = 0;
+        for (int i = 0; i < MAPPER_COUNT; ++i) rows += MAPPERS[i].auto_role == role;
+        EXPECT_EQ(rows, 1) << int(role);
+    }
+    const Mapper& fallback = auto_fallback();
+    EXPECT_EQ(fallback.auto_role, AutoRole::Fallback);
+    EXPECT_EQ(fallback.guarantee.max_error, 0.0);
+    EXPECT_TRUE(fallback.guarantee.exact_coverage);
+    EXPECT_EQ(fallback.needs, uint32_t(NEED_NOTHING)) << "it takes every texture";
+    for (int i = 0; i < MAPPER_COUNT; ++i) {
+        const Mapper& m = MAPPERS[i];
+        const bool candidate = m.auto_role == AutoRole::Adaptive1 || m.auto_role == AutoRole::Adaptive2 || m.auto_role == AutoRole::ConstantDepth;
+        if (m.auto_role == AutoRole::Oriented) {
+            EXPECT_TRUE(m.own_walker && drawn_by_auto(m) && !choosable(m)) << m.name;
+        }
+        if (candidate) {
+            EXPECT_TRUE(choosable(m)) << m.name;
+        }
+    }
+}
+
 TEST(MeasuredErrors, EveryDemoSceneAndMapperHasItsRow) {
     for (const harness::DemoScene& d : harness::demo_scenes())
         for (int i = 0; i < MAPPER_COUNT; ++i) {
