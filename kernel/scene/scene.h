@@ -8,6 +8,7 @@
 
 #include "kernel/core/setup.h"
 #include "kernel/core/texture.h"
+#include "kernel/lib/fmt.h"
 
 namespace raster {
 
@@ -28,7 +29,7 @@ struct Scene {
 
 struct ParseError {
     int32_t line = 0;  // 1-based; 0 when the error is about the whole file
-    char message[256] = {};
+    char message[lib::Fmt::CAPACITY + 1] = {};  // a message longer ends with Fmt::CUT (scene_text::fail)
 };
 
 // Parses `length` bytes of scene text. On failure returns false with the first error.

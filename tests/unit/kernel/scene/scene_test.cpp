@@ -2,11 +2,14 @@
 // The screen-space scene format: what it accepts, and an error with a line number for everything else.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <filesystem>
 #include <fstream>
 
 #include "qemu/lib/error.h"
 #include "qemu/harness/session.h"
+#include "kernel/scene/scene_text.h"
 #include "tests/unit/kernel/core/raster_helpers.h"
 
 namespace {
@@ -102,6 +105,19 @@ TEST(SceneFormat, EveryErrorNamesItsLine) {
         EXPECT_EQ(e.line, want.first) << text.substr(0, 80) << " -> " << e.message;
         EXPECT_NE(std::string(e.message).find(want.second), std::string::npos) << text.substr(0, 80) << " -> " << e.message;
     }
+}
+
+// A parse error's message is never cut silently: one as long as a message can be is kept whole, a
+// longer one ends saying it was cut.
+TEST(SceneFormat, AnErrorTooLongForItsRoomSaysSo) {
+    ParseError e;
+    const std::string whole(lib::Fmt::CAPACITY, 'x'), longer(lib::Fmt::CAPACITY + 40, 'y');
+    scene_text::fail(&e, 3, whole.c_str());
+    EXPECT_EQ(std::string(e.message), whole);
+    scene_text::fail(&e, 3, longer.c_str());
+    const std::string got = e.message;
+    EXPECT_EQ(got.size(), lib::Fmt::CAPACITY);
+    EXPECT_EQ(got.substr(got.size() - std::strlen(lib::Fmt::CUT)), lib::Fmt::CUT);
 }
 
 TEST(SceneFormat, EnforcesTheLimits) {
