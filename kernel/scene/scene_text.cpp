@@ -40,11 +40,8 @@ bool parse_int(lib::StrView w, int32_t lo, int32_t hi, int32_t* out) {
 
 bool fail(ParseError* error, int32_t line, const char* message) {
     error->line = line;
-    lib::copy_c_string(error->message, sizeof error->message, message);
-    if (lib::c_length(message) >= sizeof error->message) {  // (never cut silently)
-        const size_t cut = lib::c_length(lib::Fmt::CUT);
-        lib::copy_c_string(error->message + sizeof error->message - 1 - cut, cut + 1, lib::Fmt::CUT);
-    }
+    lib::Fmt whole;  // (its room is the message's; a longer one ends with Fmt::CUT)
+    lib::copy_c_string(error->message, sizeof error->message, whole.s(message).c_str());
     return false;
 }
 

@@ -88,18 +88,23 @@ std::string ExitInfo::describe() const {
     return s + "unknown isa-debug-exit value " + std::to_string(value);
 }
 
+bool command_output(const std::string& cmd, std::string* out) {
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return false;
+    out->clear();
+    char buf[4096];
+    for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out->append(buf, n);
+    return pclose(p) == 0;
+}
+
 std::string window_backend() {
     const char* x = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if (!(x && *x) && !(wayland && *wayland))
         throw HarnessError("no display for a window: neither DISPLAY nor WAYLAND_DISPLAY is set (run it from a graphical "
                            "session, or without the window: make run, modexlab run without --display)");
-    FILE* p = popen("qemu-system-i386 -display help 2>/dev/null", "r");
-    if (!p) throw HarnessError(errno_text("qemu-system-i386 -display help"));
     std::string text;
-    char chunk[1024];
-    for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, p)) > 0;) text.append(chunk, n);
-    pclose(p);
+    command_output("qemu-system-i386 -display help 2>/dev/null", &text);  // (what it lists, whatever its status)
     for (const char* backend : {"gtk", "sdl"})
         if (text.find(std::string("\n") + backend + "\n") != std::string::npos) return backend;
     throw HarnessError("QEMU has no window display (gtk or sdl): Debian ships them in qemu-system-gui "

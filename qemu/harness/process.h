@@ -45,6 +45,9 @@ struct ExitInfo {
     std::string describe() const;  // what the status means for modexlab (docs/protocol.md)
 };
 
+// A shell command's standard output, and whether it exited 0.
+bool command_output(const std::string& cmd, std::string* out);
+
 // The display backend a QEMU window opens with: gtk where QEMU has it, else sdl. HarnessError, saying
 // what to do, where no graphical session is named (DISPLAY, WAYLAND_DISPLAY) or QEMU has neither
 // backend (Debian ships them in qemu-system-gui).

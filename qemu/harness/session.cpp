@@ -12,13 +12,9 @@
 namespace harness {
 
 uint64_t elf_symbol(const std::string& elf, const std::string& name) {
-    FILE* p = popen(("nm -P " + elf + " 2>/dev/null").c_str(), "r");
-    if (!p) return 0;
     // whole, then line by line: C++ symbols (lambdas in templates) run to hundreds of characters
     std::string text;
-    char chunk[4096];
-    for (size_t n; (n = std::fread(chunk, 1, sizeof chunk, p)) > 0;) text.append(chunk, n);
-    pclose(p);
+    command_output("nm -P " + elf + " 2>/dev/null", &text);
     std::istringstream lines(text);
     uint64_t found = 0;
     for (std::string line; std::getline(lines, line);) {

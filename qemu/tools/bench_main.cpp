@@ -299,16 +299,6 @@ std::string wall_clock(std::vector<BenchScene>& scenes, const std::string& kerne
     return md.str();
 }
 
-// A shell command's standard output, and whether it exited 0.
-bool command_output(const std::string& cmd, std::string* out) {
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return false;
-    out->clear();
-    char buf[4096];
-    for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) out->append(buf, n);
-    return pclose(p) == 0;
-}
-
 // Real host cycles (modexlab-cycles, 32-bit static): each row's cycles per pixel as a ratio to the
 // baseline mapper's on the same scene, timed in the same run. Returns the baseline's name, or ""
 // where this machine runs 32-bit programs only under an emulator, whose timings mean nothing: the
