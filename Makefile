@@ -74,7 +74,7 @@ ISO := $(BUILD)/modexlab.iso
 LOOP_ASM := $(wildcard asm/*.asm)
 KERNEL_ASM := boot/entry.asm boot/isr.asm $(LOOP_ASM)
 # the portable core, the mappers and the scene code, built for the kernel and the host alike
-PORTABLE_DIRS := kernel/core kernel/mappers kernel/scene
+PORTABLE_DIRS := kernel/core kernel/mappers kernel/mappers/auto kernel/scene
 KERNEL_CXX := $(wildcard kernel/*.cpp kernel/platform/*.cpp kernel/present/*.cpp kernel/show/*.cpp kernel/lib/*.cpp kernel/server/*.cpp $(PORTABLE_DIRS:%=%/*.cpp) drivers/*.cpp)
 # One kernel for every PC from the 486 on: its C++ is built for the 486 (KARCH), and built again for
 # the P6 (P6ARCH: CMOV, FCOMI), which runs where CPUID reports CMOV (kernel/platform/isa.h). Each
@@ -458,7 +458,7 @@ run:
 		$(if $(MAPPER),--mapper $(MAPPER)) $(if $(filter 1,$(DISPLAY)),--display)
 
 # `make bench`: every mapper on every demo scene; the report in build/report (docs/bench.md), and,
-# when the run is full, the cost model auto chooses by (kernel/mappers/costs.cpp), the errors the
+# when the run is full, the cost model auto chooses by (kernel/mappers/auto/costs.cpp), the errors the
 # on-screen bench shows (kernel/mappers/errors.cpp), and the docs' figures (docs/data/trade.csv,
 # the generated tables of README.md and docs/results.md, the README's plot).
 # SCENES=a,b MAPPERS=x,y FRAMES=N narrow it. The frames run again on the timing model's 486 and
@@ -472,8 +472,8 @@ bench report:
 	$(BENCH) --out $(BUILD)/report $(if $(SCENES),--scenes $(SCENES)) $(if $(MAPPERS),--mappers $(MAPPERS)) \
 		$(if $(FRAMES),--frames $(FRAMES)) $(if $(BENCH_TARGETS),--targets $(BENCH_TARGETS))
 	@$(if $(SCENES)$(MAPPERS)$(FRAMES),echo "not copied (a narrowed run): the cost model and measured errors and the docs' figures in $(BUILD)/report",\
-		cmp -s $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model unchanged" || \
-		{ cp $(BUILD)/report/costs.cpp kernel/mappers/costs.cpp && echo "cost model updated: kernel/mappers/costs.cpp (commit it)"; }; \
+		cmp -s $(BUILD)/report/costs.cpp kernel/mappers/auto/costs.cpp && echo "cost model unchanged" || \
+		{ cp $(BUILD)/report/costs.cpp kernel/mappers/auto/costs.cpp && echo "cost model updated: kernel/mappers/auto/costs.cpp (commit it)"; }; \
 		cmp -s $(BUILD)/report/errors.cpp kernel/mappers/errors.cpp && echo "measured errors unchanged" || \
 		{ cp $(BUILD)/report/errors.cpp kernel/mappers/errors.cpp && echo "measured errors updated: kernel/mappers/errors.cpp (commit it)"; }; \
 		cmp -s $(BUILD)/report/trade.csv docs/data/trade.csv || { mkdir -p docs/data && cp $(BUILD)/report/trade.csv docs/data/trade.csv && \

@@ -99,6 +99,8 @@ struct RenderStats {
 
 // A mapper with its own setup and edge walking (the classics, our fast loops) draws whole polygons.
 struct EnvelopeLimits;  // (envelope.h)
+struct Budget;          // (budget.h)
+struct Mapper;
 struct DrawContext {
     const Texture& tex;
     Axis axis;
@@ -109,12 +111,22 @@ struct DrawContext {
     // picked (a driver that picks its own, fast-oriented's, takes it: auto picks it the same way)
     const PolygonSetup* setup = nullptr;
     Input input = Input::Any;             // for the driver's own setup_polygon
-    // auto's envelope (draw_enveloped, render.h), for a mapper's Mapper::enveloped driver: right
+    // auto's envelope (draw_enveloped, mappers/auto/draw.h), for a mapper's Mapper::enveloped driver: right
     // after its setup it checks within_envelope (envelope.h) and returns Unproven, nothing drawn,
     // where the triangle fails it
     const EnvelopeLimits* envelope = nullptr;
+    // for a driver that chooses a mapper (Mapper::chooses): the budget to meet, and the variant of
+    // the loops it draws with (nullptr: DEFAULT_BUDGET)
+    const Budget* budget = nullptr;
+    Variant variant = Variant::Twin;
 };
 using DrawFn = SetupStatus (*)(const DrawContext& c, const Vertex* vertices, int count);
+// A frame drawn by a mapper's own frame driver (Mapper::draw_frame; render_frame, kernel/scene/frame.h).
+struct Frame;
+struct TextureSet;
+struct Watch;
+using FrameFn = RenderStats (*)(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target,
+                                Variant variant, Probe* probe, const Watch* watch);
 
 // A polygon driver marks the end of its setup (for the bench's probe, probe.h).
 inline void setup_done(const DrawContext& c) { probe_lap(c.stats->probe, Phase::Setup); }
@@ -157,7 +169,6 @@ constexpr Guarantee EXACT_COVERAGE_FLAT_ONE{true, -1, 1};  // exact coverage; wi
 constexpr Guarantee EXACT_COVERAGE{true, -1, -1};
 constexpr Guarantee NO_GUARANTEE{false, -1, -1};           // the classics: what they are
 
-struct Mapper;
 struct LoopCheck;
 struct CheckBuffers;
 struct ErrorBound;
@@ -169,12 +180,12 @@ using Check = LoopCheck(const Mapper& m, LoopFn other, uint32_t seed, uint32_t c
 using CheckFn = Check*;
 
 // Whether auto, where a mapper's bound of the whole polygon at once is above the budget, asks its
-// bound span by span (BOUND_SPAN_COST a span, core/choice.h): only where the spans' bounds
+// bound span by span (BOUND_SPAN_COST a span, mappers/auto/choice.h): only where the spans' bounds
 // can be much tighter than the whole polygon's, as they are where the error depends on each line's
 // own direction or place (docs/auto.md).
 enum SpanProof : uint8_t { SPANS_NOT_ASKED, SPANS_ASKED };
 
-// What auto takes a registry row for beyond its bound and its cost (core/choice.h): the oriented
+// What auto takes a registry row for beyond its bound and its cost (mappers/auto/choice.h): the oriented
 // candidate (its own driver picks the walker), the adaptive ones it is weighed against along each
 // walker, the constant-depth one whose one chord a line the oriented certificate proves too, and
 // the fallback that draws what no candidate may (the reference's definition).
@@ -195,10 +206,15 @@ struct Mapper {
     CheckFn check = nullptr;  // random cases for its loop: NASM against twin (nullptr: no NASM loop,
                               // or one the kernel checks on the VGA itself, NEED_VGA_FOR_ASM)
     BoundFn bound = nullptr;  // its error bound on a polygon (unbounded: none derived)
-    bool is_auto = false;     // auto: draws each polygon with a mapper it chooses (core/choice.h)
-    SpanProof span_proof = SPANS_NOT_ASKED;  // whether auto asks its bound span by span (core/choice.h)
+    bool is_auto = false;     // auto: draws each polygon with a mapper it chooses (mappers/auto/choice.h)
+    // A driver that draws the polygon with a mapper it chooses for DrawContext::budget, counting it
+    // under that mapper's row (auto); and a driver of a whole frame, which settles what it can once
+    // an object (auto: its plans and envelopes). nullptr: the polygon's and frame's usual drawing.
+    DrawFn chooses = nullptr;
+    FrameFn draw_frame = nullptr;
+    SpanProof span_proof = SPANS_NOT_ASKED;  // whether auto asks its bound span by span (mappers/auto/choice.h)
     // Its bound is the 16.16 planes' (spread_planes_bound, planes_fit_16_16): an object's envelope
-    // proves it on the object's uncut triangles (plan_auto, core/choice.h), which auto draws with
+    // proves it on the object's uncut triangles (plan_auto, mappers/auto/choice.h), which auto draws with
     // this driver (draw's, given DrawContext::envelope: draw_enveloped, render.h); nullptr: no
     // envelope proves it. (A driver of its own, so that the mapper's own path checks nothing.)
     DrawFn enveloped = nullptr;

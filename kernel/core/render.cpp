@@ -1,5 +1,5 @@
-// Drawing a polygon (render.h): a mapper's own driver, or setup, the walker and the mapper per span;
-// auto's choice before it; a screen-space scene polygon by polygon.
+// Drawing a polygon (render.h): a mapper's own driver, or setup, the walker and the mapper per span,
+// or a driver that chooses the mapper; a screen-space scene polygon by polygon.
 #include "kernel/core/render.h"
 
 #include "kernel/core/prepared.h"
@@ -61,23 +61,6 @@ namespace {
     return status;
 }
 
-// auto's choice for the polygon, into *prepared, and the drawing with it (its setup counts as
-// setup, the rest of the choice as Phase::Choose); where no mapper draws the polygon, exact's setup
-// says why. `input`: as setup_polygon takes it.
-SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& tex, Axis axis, Target& target, RenderStats* stats,
-                            Variant variant, const Budget& budget, PreparedPolygon* prepared, Input input) {
-    Choice c = choose_mapper(budget, vertices, count, tex, target, prepared, input, stats->probe);
-    probe_lap(stats->probe, Phase::Choose);
-    if (!c.mapper) {
-        const Axis any = target_supports(target, axis) ? axis : Axis::Columns;  // a walker the target takes
-        return draw_with(Drawer::of(auto_fallback(), tex, any, target, stats, variant), vertices, count, nullptr, nullptr, Input::Any);
-    }
-    const bool set_up = prepared->status == SetupStatus::Ok;
-    // (a candidate: its walker, texture and target checked when the list was built)
-    return draw_with(Drawer::of(*c.mapper, tex, c.axis, target, stats, variant, true), vertices, count, set_up ? &prepared->setup : nullptr,
-                     &prepared->walked[int(c.axis)], Input::Any);
-}
-
 }  // namespace
 
 Drawer Drawer::of(const Mapper& mapper, const Texture& tex, Axis axis, Target& target, RenderStats* stats, Variant variant, bool checked) {
@@ -96,18 +79,15 @@ SetupStatus Drawer::draw(const Vertex* vertices, int count, Input input) const {
     return draw_with(*this, vertices, count, nullptr, nullptr, input);
 }
 
-SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
-                         Target& target, RenderStats* stats, Variant variant, const Budget& budget, Input input) {
-    if (!mapper.is_auto) return Drawer::of(mapper, tex, axis, target, stats, variant).draw(vertices, count, input);
-    probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
-    PreparedPolygon prepared;
-    return choose_and_draw(vertices, count, tex, axis, target, stats, variant, budget, &prepared, input);
+SetupStatus Drawer::draw_set_up(const Vertex* vertices, int count, const PolygonSetup* setup, const PreparedSpans* walked) const {
+    return draw_with(*this, vertices, count, setup, walked, Input::Any);
 }
 
-SetupStatus draw_unproven(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
-    PreparedPolygon prepared;
-    return choose_and_draw(vertices, 3, *enveloped.tex, enveloped.axis, *enveloped.target, enveloped.stats, variant, budget, &prepared,
-                           Input::InRange);
+SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
+                         Target& target, RenderStats* stats, Variant variant, const Budget& budget, Input input) {
+    if (!mapper.chooses) return Drawer::of(mapper, tex, axis, target, stats, variant).draw(vertices, count, input);
+    probe_lap(stats->probe, Phase::Walk);  // what came before the polygon: the caller's loop
+    return mapper.chooses(DrawContext{tex, axis, target, stats, nullptr, nullptr, input, nullptr, &budget, variant}, vertices, count);
 }
 
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,

@@ -3,9 +3,10 @@
 
 #include <stdint.h>
 
-#include "kernel/core/choice.h"
+#include "kernel/core/budget.h"
 #include "kernel/core/envelope.h"
 #include "kernel/core/mapper.h"
+#include "kernel/core/prepared.h"
 #include "kernel/scene/scene.h"
 #include "kernel/core/setup.h"
 #include "kernel/core/surface.h"
@@ -14,7 +15,8 @@ namespace raster {
 
 // Draws one convex polygon. Returns the setup status; nothing is drawn (and the polygon counts as
 // rejected) unless it is Ok, the mapper walks `axis`, accepts the texture and can draw into the
-// target (mapper_targets). `auto` draws it with the mapper choose_mapper picks for the budget.
+// target (mapper_targets). A mapper that chooses (Mapper::chooses: auto) draws it with the mapper it
+// picks for the budget.
 // `input`: InRange where the caller answers for the vertices' range (setup.h).
 SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, const Mapper& mapper, Axis axis,
                          Target& target, RenderStats* stats, Variant variant = Variant::Twin, const Budget& budget = DEFAULT_BUDGET,
@@ -43,6 +45,9 @@ struct Drawer {
     bool own;      // usable, and the mapper has its own driver (draw_own)
     // draw_polygon with this mapper, texture, axis and target
     SetupStatus draw(const Vertex* vertices, int count, Input input = Input::Any) const;
+    // The same with the polygon set up already with every plane (nullptr: not), and its spans along
+    // the drawer's axis where walked (PreparedSpans::count below 0: not): a chooser's choice.
+    SetupStatus draw_set_up(const Vertex* vertices, int count, const PolygonSetup* setup, const PreparedSpans* walked) const;
     // The same where `own`, inline: straight to the mapper's driver (a frame's loop).
     SetupStatus draw_own(const Vertex* vertices, int count, Input input) const;
     // draw_own's work with `driver` (the mapper's draw, or its enveloped one given auto's
@@ -72,22 +77,6 @@ inline SetupStatus Drawer::drive(DrawFn driver, const Vertex* vertices, int coun
 }
 inline SetupStatus Drawer::draw_own(const Vertex* vertices, int count, Input input) const {
     return drive(mapper->draw, vertices, count, input, nullptr);
-}
-
-// auto on an uncut triangle of an object whose envelope proves the mapper of `enveloped` (plan_auto,
-// choice.h; the drawer made once an object, checked): the mapper's Mapper::enveloped driver sets
-// it up and checks it (DrawContext::envelope: the envelope's guards, its doubled area and its extent
-// across its lines within the drawer's limits; fast-affine's rows in the same NASM call as its
-// setup and walk, fast_triangle_enveloped_asm) and draws it; where it is not within them, nothing
-// drawn, auto's choice as in draw_polygon, with the drawer's texture, axis and target
-// (draw_unproven). Inline: once a triangle of the mesh, in the frame's loop.
-SetupStatus draw_unproven(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget);
-inline SetupStatus draw_enveloped(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
-    // (an uncut triangle: in range, as build_frame makes it)
-    const SetupStatus status = enveloped.drive(enveloped.mapper->enveloped, vertices, 3, Input::InRange, &enveloped.limits);
-    if (status == SetupStatus::Unproven) return draw_unproven(enveloped, vertices, variant, budget);
-    enveloped.stats->enveloped += status == SetupStatus::Ok;
-    return status;
 }
 
 // The polygon being drawn, for a fault's report (the kernel's page-fault handler names them): the

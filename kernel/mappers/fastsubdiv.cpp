@@ -3,7 +3,7 @@
 
 #include "kernel/core/asm_offsets.h"
 #include "kernel/core/bound.h"
-#include "kernel/core/choice.h"
+#include "kernel/mappers/auto/choice.h"
 #include "kernel/core/footprint.h"
 #include "kernel/core/selftest.h"
 #include "kernel/core/spanline.h"

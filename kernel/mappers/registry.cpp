@@ -1,9 +1,10 @@
 // The mapper registry: one row per mapper, in the order the tables list them. Adding a mapper with
 // a NASM loop: kernel/mappers/NAME.h and NAME.cpp (driver, argument block, twin, checks, offsets),
 // asm/NAME.asm, and its row here (docs/architecture.md, "Where to add").
-#include "kernel/core/choice.h"
 #include "kernel/core/mapper.h"
 #include "kernel/mappers/affine.h"
+#include "kernel/mappers/auto/choice.h"
+#include "kernel/mappers/auto/draw.h"
 #include "kernel/mappers/exact.h"
 #include "kernel/mappers/fast.h"
 #include "kernel/mappers/fastsubdiv.h"
@@ -177,7 +178,8 @@ const Mapper MAPPERS[] = {
     {.name = "auto", .family = "ours", .origin = "the scene's budget: the cheapest mapper proven to meet it, polygon by polygon",
      .promise = "each polygon by the cheapest of the bounded mappers (the cost model: make bench) whose error bound meets the scene's budget "
          "(without a budget line: footprint error 1, exact coverage); exact coverage unless the budget allows any",
-     .guarantee = EXACT_COVERAGE_FLAT_ONE, .needs = NEED_NOTHING, .axes = AXIS_BOTH, .bound = auto_bound, .is_auto = true},
+     .guarantee = EXACT_COVERAGE_FLAT_ONE, .needs = NEED_NOTHING, .axes = AXIS_BOTH, .bound = auto_bound, .is_auto = true,
+     .chooses = auto_draw, .draw_frame = auto_draw_frame},
 };
 const int MAPPER_COUNT = sizeof(MAPPERS) / sizeof(MAPPERS[0]);
 static_assert(sizeof(MAPPERS) / sizeof(MAPPERS[0]) <= MAPPER_LIMIT, "more registry rows than MAPPER_LIMIT");

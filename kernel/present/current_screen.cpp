@@ -1,7 +1,7 @@
 // The current screen-space scene (a version 1 scene file) and drawing it.
 #include "kernel/present/current_screen.h"
 
-#include "kernel/core/choice.h"
+#include "kernel/mappers/auto/choice.h"
 #include "kernel/platform/guard.h"
 #include "kernel/present/parts.h"
 #include "kernel/lib/fmt.h"

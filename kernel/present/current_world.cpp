@@ -7,7 +7,7 @@
 #include "drivers/vga.h"
 #include "kernel/present/file_table.h"
 #include "kernel/present/parts.h"
-#include "kernel/core/choice.h"
+#include "kernel/mappers/auto/choice.h"
 #include "kernel/platform/cycle_marks.h"
 #include "kernel/platform/guard.h"
 #include "kernel/lib/mem.h"

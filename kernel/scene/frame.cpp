@@ -400,79 +400,20 @@ FrameRoom frame_room(const World& world) {
     return FrameRoom{at_most(polygons, most.polygons), at_most(vertices, most.vertices), at_most(positions, most.positions)};
 }
 
-namespace {
-// unchosen_mapper, its time charged to auto's choosing (the loop's before it to walking)
-const Mapper* timed_unchosen(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis, const RenderStats& stats) {
-    probe_lap(stats.probe, Phase::Walk);
-    const Mapper* m = unchosen_mapper(plan, vertices, count, clip, axis);
-    probe_lap(stats.probe, Phase::Choose);
-    return m;
-}
-// Each polygon of the frame in turn, the watch asked before it: draw(vertices, count, object,
-// input), `input` InRange for an uncut face (its corners within setup's limits:
-// Frame::polygon_whole).
-template <typename Draw>
-[[gnu::always_inline]] inline void each_polygon(const Frame& frame, const Mapper& mapper, const Watch* watch, RenderStats* stats, Draw&& draw) {
-    const Vertex* v = frame.vertices;
-    const uint8_t *const sizes = frame.polygon_size, *const objects = frame.polygon_object, *const whole = frame.polygon_whole;
-    const int32_t count = frame.polygon_count;
-    for (int32_t i = 0; i < count; ++i) {
-        if (watch && watch->stops(uint32_t(i), uint32_t(count), stats)) break;
-        if (watch) watch->drawing(mapper, uint32_t(i));
-        const int n = sizes[i];
-        draw(v, n, int(objects[i]), whole[i] ? Input::InRange : Input::Any);
-        v += n;
-    }
-}
-}  // namespace
-
 RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target, Variant variant,
                          Probe* probe, const Watch* watch) {
+    if (mapper.draw_frame) return mapper.draw_frame(frame, textures, mapper, axis, target, variant, probe, watch);
     RenderStats stats;
     stats.probe = probe;
-    // auto: what it settles once a frame per object (choice.h, AutoPlan)
-    AutoPlan plans[MAX_WORLD_OBJECTS];
-    // any other mapper, or the one auto's envelope proves: what it settles once for a texture
-    // (render.h, Drawer)
+    // what the mapper settles once for a texture (render.h, Drawer)
     Drawer drawers[MAX_WORLD_OBJECTS];
-    Drawer certain[MAX_WORLD_OBJECTS][2];  // auto: its certain mapper, by walker (what unchosen_mapper gives)
-    for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o) {
-        if (!mapper.is_auto) {
-            drawers[o] = Drawer::of(mapper, textures.objects[o], axis, target, &stats, variant);
-            continue;
-        }
-        plans[o] = plan_auto(frame.budget, textures.objects[o], target, frame.envelope[o].footprint);
-        if (plans[o].enveloped) {  // (plan_auto checked what Drawer::of would)
-            drawers[o] = Drawer::of(*plans[o].enveloped, textures.objects[o], plans[o].enveloped_axis, target, &stats, variant, true);
-            drawers[o].limits.area2 = plans[o].enveloped_area2;
-            (plans[o].enveloped_axis == Axis::Rows ? drawers[o].limits.extent_y : drawers[o].limits.extent_x) = plans[o].enveloped_extent;
-        }
-        if (plans[o].certain)
-            for (int a = 0; a < 2; ++a) certain[o][a] = Drawer::of(*plans[o].certain, textures.objects[o], Axis(a), target, &stats, variant);
-        probe_lap(stats.probe, Phase::Choose);  // (the plans)
-    }
-    // (a loop of its own for auto: a single mapper's carries none of its branches)
-    if (!mapper.is_auto) {
-        each_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
-            const Drawer& d = drawers[object];
-            if (d.own) d.draw_own(v, n, input);
-            else d.draw(v, n, input);
-        });
-    } else {
-        each_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
-            const AutoPlan& plan = plans[object];
-            Axis unchosen_axis;
-            const Mapper* unchosen = nullptr;
-            if (plan.enveloped && input == Input::InRange && n == 3)  // (an uncut triangle)
-                draw_enveloped(drawers[object], v, variant, frame.budget);
-            else if ((unchosen = timed_unchosen(plan, v, n, target.clip, &unchosen_axis, stats)) && unchosen == plan.certain)
-                certain[object][int(unchosen_axis)].draw(v, n, input);
-            else if (unchosen)
-                draw_polygon(v, n, textures.objects[object], *unchosen, unchosen_axis, target, &stats, variant, DEFAULT_BUDGET, input);
-            else
-                draw_polygon(v, n, textures.objects[object], mapper, axis, target, &stats, variant, frame.budget, input);
-        });
-    }
+    for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o)
+        drawers[o] = Drawer::of(mapper, textures.objects[o], axis, target, &stats, variant);
+    each_frame_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
+        const Drawer& d = drawers[object];
+        if (d.own) d.draw_own(v, n, input);
+        else d.draw(v, n, input);
+    });
     if (watch) watch->drawn();
     return stats;
 }

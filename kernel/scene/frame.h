@@ -216,9 +216,27 @@ inline void build_texture_set(const World& world, HostTextureSet* out, bool doub
 #endif
 
 // Draws the frame's polygons in order into `target`; with a probe, times the phases (probe.h);
-// with a watch, it may stop early (core/render.h).
-struct Watch;
+// with a watch, it may stop early (core/render.h). A mapper with a frame driver of its own
+// (Mapper::draw_frame: auto) draws it.
 RenderStats render_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target,
                          Variant variant = Variant::Twin, Probe* probe = nullptr, const Watch* watch = nullptr);
+
+// Each polygon of the frame in turn, the watch asked before it: draw(vertices, count, object,
+// input), `input` InRange for an uncut face (its corners within setup's limits:
+// Frame::polygon_whole). (A frame driver's loop: inline in it.)
+template <typename Draw>
+[[gnu::always_inline]] inline void each_frame_polygon(const Frame& frame, const Mapper& mapper, const Watch* watch, RenderStats* stats,
+                                                      Draw&& draw) {
+    const Vertex* v = frame.vertices;
+    const uint8_t *const sizes = frame.polygon_size, *const objects = frame.polygon_object, *const whole = frame.polygon_whole;
+    const int32_t count = frame.polygon_count;
+    for (int32_t i = 0; i < count; ++i) {
+        if (watch && watch->stops(uint32_t(i), uint32_t(count), stats)) break;
+        if (watch) watch->drawing(mapper, uint32_t(i));
+        const int n = sizes[i];
+        draw(v, n, int(objects[i]), whole[i] ? Input::InRange : Input::Any);
+        v += n;
+    }
+}
 
 }  // namespace raster

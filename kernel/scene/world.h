@@ -11,7 +11,7 @@
 #include "kernel/scene/math3d.h"
 #include "kernel/scene/palette.h"
 #include "kernel/scene/scene.h"
-#include "kernel/core/choice.h"
+#include "kernel/core/budget.h"
 #include "kernel/core/texture.h"
 
 namespace raster {

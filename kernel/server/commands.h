@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "kernel/core/choice.h"
+#include "kernel/core/budget.h"
 #include "kernel/core/mapper.h"
 #include "kernel/core/policy.h"
 #include "kernel/core/render.h"

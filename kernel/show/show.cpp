@@ -6,7 +6,7 @@
 #include "drivers/serial.h"
 #include "drivers/timer.h"
 #include "drivers/vga.h"
-#include "kernel/core/choice.h"
+#include "kernel/core/budget.h"
 #include "kernel/present/patterns.h"
 #include "kernel/present/file_table.h"
 #include "kernel/lib/fmt.h"

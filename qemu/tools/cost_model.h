@@ -1,14 +1,14 @@
-// The cost model auto chooses by (kernel/core/choice.h): per target (icount, and the timing
+// The cost model auto chooses by (kernel/mappers/auto/choice.h): per target (icount, and the timing
 // model's 486 and Pentium) and mapper, the cost to set up a polygon, per span and per pixel,
 // fitted to the bench's own figures (docs/bench.md, "The cost model") and written as
-// kernel/mappers/costs.cpp.
+// kernel/mappers/auto/costs.cpp.
 #pragma once
 
 #include <map>
 #include <string>
 #include <vector>
 
-#include "kernel/core/choice.h"
+#include "kernel/mappers/auto/choice.h"
 
 namespace harness {
 
@@ -31,7 +31,7 @@ struct FittedModel {
 // zero; proof_scale: auto's choosing, its cycles over its instructions, over the rows with both.
 FittedModel fit_costs(const std::vector<std::vector<std::string>>& csv, raster::CostTarget target);
 
-// The C++ source of kernel/mappers/costs.cpp: a table a target, one row per registry row, in its
+// The C++ source of kernel/mappers/auto/costs.cpp: a table a target, one row per registry row, in its
 // order (-1: not measured; auto chooses such a mapper last). A target the run did not measure
 // keeps the model the tools were built with (raster::COST_MODELS), and says so. `source` names
 // where the figures came from.

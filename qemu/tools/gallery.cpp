@@ -7,7 +7,7 @@
 #include <functional>
 #include <map>
 
-#include "kernel/core/choice.h"
+#include "kernel/mappers/auto/choice.h"
 #include "qemu/lib/error.h"
 #include "qemu/tools/trade.h"
 
@@ -145,7 +145,7 @@ void rank_cards(GalleryPage& page, const MeasuredSpeeds& speeds) {
                             "from " + speeds.path + " (make bench; " + std::to_string(frames) + (frames == 1 ? " frame" : " frames") +
                             " of the scene, a figure their average, not this frame's alone)";
     else
-        page.speed_source = "estimated: draw instructions per pixel by the cost model auto chooses by (kernel/mappers/costs.cpp), "
+        page.speed_source = "estimated: draw instructions per pixel by the cost model auto chooses by (kernel/mappers/auto/costs.cpp), "
                             "from the polygons, spans and pixels each mapper drew of this frame; auto's own choosing is not in it (" +
                             (speeds.found ? speeds.path + " has no row for some of this page's pictures"
                                           : "no bench report at " + speeds.path) + ": make bench measures them)";

@@ -83,7 +83,7 @@ struct MeasuredSpeeds {
 };
 MeasuredSpeeds read_speeds(const std::string& report_dir);
 
-// The cost model's estimate (kernel/mappers/costs.cpp) of draw instructions per pixel for the
+// The cost model's estimate (kernel/mappers/auto/costs.cpp) of draw instructions per pixel for the
 // polygons as the map records them (each by the mapper that drew it; auto's own choosing is not
 // in the model); below 0 when a mapper drew nothing or was not measured.
 double estimated_speed(const FrameMap& map);

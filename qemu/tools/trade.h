@@ -8,7 +8,7 @@
 #include <tuple>
 #include <vector>
 
-#include "kernel/core/choice.h"
+#include "kernel/mappers/auto/choice.h"
 #include "qemu/accuracy/metrics.h"
 
 namespace harness {

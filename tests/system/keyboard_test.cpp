@@ -6,7 +6,7 @@
 
 #include <unistd.h>
 
-#include "kernel/core/choice.h"
+#include "kernel/core/budget.h"
 #include "kernel/core/policy.h"
 #include "kernel/lib/keys.h"
 #include "kernel/scene/text.h"

@@ -15,6 +15,8 @@
 #include <string>
 
 #include "kernel/core/envelope.h"
+#include "kernel/mappers/auto/choice.h"
+#include "kernel/mappers/auto/draw.h"
 #include "kernel/core/footprint.h"
 #include "kernel/core/policy.h"
 #include "kernel/core/spread.h"

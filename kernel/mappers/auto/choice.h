@@ -7,34 +7,12 @@
 #include <stdint.h>
 
 #include "kernel/core/bound.h"
+#include "kernel/core/budget.h"
 #include "kernel/core/prepared.h"
 
 namespace raster {
 
-// The unit auto prices its candidates in (docs/auto.md, "Per target"): instructions under QEMU's
-// icount, or the timing model's cycles on a 486 or a Pentium (docs/cycles.md).
-enum class CostTarget : uint8_t { Icount, I486, Pentium, Count };
-// Its word in scene files, commands and replies ("icount", "486", "pentium"), and back (false: none).
-const char* cost_target_name(CostTarget t);
-bool cost_target_named(const char* word, size_t length, CostTarget* t);
-
-// What a scene requires of a mapper: the largest footprint error, and whether the pixels drawn
-// must be exactly the reference's; and the machine auto is to be cheapest on.
-constexpr double ANY_ERROR = -1;
-struct Budget {
-    bool given = false;          // from the scene's budget line (else the default)
-    double max_error = 1;        // footprints (docs/accuracy.md); ANY_ERROR: any
-    bool exact_coverage = true;  // no gaps, no overdraw
-    CostTarget target = CostTarget::Icount;
-};
-// Scenes without a budget line: within one footprint, exact coverage.
-constexpr Budget DEFAULT_BUDGET{};
-
-inline bool budget_allows(const Budget& b, const ErrorBound& e) {
-    return e.draws && (e.exact_coverage || !b.exact_coverage) && (b.max_error < 0 || e.footprint <= b.max_error);
-}
-
-// The cost model (kernel/mappers/costs.cpp, written by `make bench` from its own figures): per
+// The cost model (kernel/mappers/auto/costs.cpp, written by `make bench` from its own figures): per
 // target, the cost to set up a polygon, per span (walking and the loop's call), per pixel, in the
 // target's unit. One row per registry row, in its order.
 struct MapperCost {
@@ -159,7 +137,7 @@ constexpr double ENVELOPE_SETUP_ALLOWANCE = 500;
 // "The object's envelope" and "Settled once a frame per object"): the mapper the object's envelope
 // proves on its uncut triangles (envelope_footprint, frame.h) and its walker, where exactly one
 // candidate is enveloped and, with no proof to pay, costs no more than any other with its proof on
-// every triangle the guards and the limits below let through (draw_enveloped, render.h); the certain
+// every triangle the guards and the limits below let through (draw_enveloped, mappers/auto/draw.h); the certain
 // candidate (exact), its walkers and cost row, for unchosen_mapper; whether it is the only one (a
 // budget of 0), else the least cost a polygon, a span and a pixel of any other with its first proof.
 // No default member initialisers: render_frame keeps one a possible object; plan_auto fills them.

@@ -1,5 +1,5 @@
 // The cheapest mapper within the budget, polygon by polygon.
-#include "kernel/core/choice.h"
+#include "kernel/mappers/auto/choice.h"
 
 #include "kernel/core/envelope.h"
 #include "kernel/core/footprint.h"
@@ -7,21 +7,6 @@
 #include "kernel/mappers/fastsubdiv.h"
 
 namespace raster {
-
-const char* cost_target_name(CostTarget t) { return t == CostTarget::I486 ? "486" : t == CostTarget::Pentium ? "pentium" : "icount"; }
-
-bool cost_target_named(const char* word, size_t length, CostTarget* t) {
-    for (int i = 0; i < int(CostTarget::Count); ++i) {
-        const char* name = cost_target_name(CostTarget(i));
-        size_t n = 0;
-        while (name[n] && n < length && name[n] == word[n]) ++n;
-        if (!name[n] && n == length) {
-            *t = CostTarget(i);
-            return true;
-        }
-    }
-    return false;
-}
 
 bool choosable(const Mapper& m) { return !m.is_auto && !m.own_walker && m.bound && m.bound != unbounded; }
 bool drawn_by_auto(const Mapper& m) { return choosable(m) || m.auto_role == AutoRole::Oriented; }

@@ -1,4 +1,4 @@
-// Under test: kernel/core/choice.h, prepared.h.
+// Under test: kernel/mappers/auto/choice.h, prepared.h.
 // auto: the cost model has a row for every mapper; auto picks the cheapest mapper whose bound meets
 // the budget, never a dearer one when the budget loosens; and on every demo scene at the bench's
 // frames, at budgets from 0 to any, through rows and columns, priced for each target in turn, its
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "kernel/core/bound.h"
-#include "kernel/core/choice.h"
+#include "kernel/mappers/auto/choice.h"
 #include "kernel/core/footprint.h"
 #include "kernel/core/measured.h"
 #include "kernel/core/policy.h"
@@ -29,14 +29,14 @@ const Budget BUDGETS[] = {{true, 0, true}, {true, 0.5, true}, {true, 1, true}, {
 
 // A table a target, each with a row per registry row in its order.
 TEST(CostModel, HasOneRowPerRegistryRowInItsOrder) {
-    ASSERT_EQ(MAPPER_COST_COUNT, MAPPER_COUNT) << "kernel/mappers/costs.cpp is out of date: run make bench";
+    ASSERT_EQ(MAPPER_COST_COUNT, MAPPER_COUNT) << "kernel/mappers/auto/costs.cpp is out of date: run make bench";
     EXPECT_EQ(cost_model(CostTarget::Icount).rows, MAPPER_COSTS);
     for (int t = 0; t < int(CostTarget::Count); ++t) {
         const CostModel& model = cost_model(CostTarget(t));
         EXPECT_STREQ(model.target, cost_target_name(CostTarget(t)));
         EXPECT_GT(model.proof_scale, 0) << model.target;
         for (int i = 0; i < MAPPER_COUNT; ++i) {
-            EXPECT_STREQ(model.rows[i].mapper, MAPPERS[i].name) << "kernel/mappers/costs.cpp is out of date: run make bench";
+            EXPECT_STREQ(model.rows[i].mapper, MAPPERS[i].name) << "kernel/mappers/auto/costs.cpp is out of date: run make bench";
             if (choosable(MAPPERS[i])) {
                 EXPECT_GT(model.rows[i].pixel, 0) << MAPPERS[i].name << " is not measured on " << model.target;
             }
