@@ -18,11 +18,15 @@ const char* cost_target_name(CostTarget t);
 bool cost_target_named(const char* word, size_t length, CostTarget* t);
 
 constexpr double ANY_ERROR = -1;
+struct ChoiceLists;  // (mappers/auto/choice.h)
 struct Budget {
     bool given = false;          // from the scene's budget line (else the default)
     double max_error = 1;        // footprints (docs/accuracy.md); ANY_ERROR: any
     bool exact_coverage = true;  // no gaps, no overdraw
     CostTarget target = CostTarget::Icount;
+    // auto's candidate lists for it, built as needed (the caller's memory, as a frame's scratch);
+    // nullptr: auto builds the one it needs a polygon
+    ChoiceLists* lists = nullptr;
 };
 // Scenes without a budget line: within one footprint, exact coverage.
 constexpr Budget DEFAULT_BUDGET{};

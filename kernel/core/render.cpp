@@ -91,14 +91,14 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
 }
 
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                         Variant variant, Probe* probe, const Watch* watch) {
+                         Variant variant, Probe* probe, const Watch* watch, const Budget& budget) {
     RenderStats stats;
     stats.probe = probe;
     const Vertex* v = scene.vertices;
     for (int32_t i = 0; i < scene.polygon_count; ++i) {
         if (watch && watch->stops(uint32_t(i), uint32_t(scene.polygon_count), &stats)) break;
         if (watch) watch->drawing(mapper, uint32_t(i));
-        draw_polygon(v, scene.polygon_size[i], tex, mapper, axis, target, &stats, variant);
+        draw_polygon(v, scene.polygon_size[i], tex, mapper, axis, target, &stats, variant, budget);
         v += scene.polygon_size[i];
     }
     if (watch) watch->drawn();

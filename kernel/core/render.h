@@ -109,8 +109,9 @@ struct Watch {
 };
 
 // Draws every polygon of the scene in order; with a probe, times the phases (probe.h). Screen-space
-// scenes have no budget line: auto takes the default.
+// scenes have no budget line: auto takes the default (`budget`: with the caller's lists, Budget::lists).
 RenderStats render_scene(const Scene& scene, const Texture& tex, const Mapper& mapper, Axis axis, Target& target,
-                         Variant variant = Variant::Twin, Probe* probe = nullptr, const Watch* watch = nullptr);
+                         Variant variant = Variant::Twin, Probe* probe = nullptr, const Watch* watch = nullptr,
+                         const Budget& budget = DEFAULT_BUDGET);
 
 }  // namespace raster

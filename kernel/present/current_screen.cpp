@@ -36,6 +36,13 @@ size_t scene_parts(const raster::Scene& parsed, bool take) {
     return p.bytes;
 }
 
+// A screen scene's budget: the default (no budget line), with the kernel's candidate lists.
+raster::Budget budget() {
+    raster::Budget b = raster::DEFAULT_BUDGET;
+    b.lists = present::choice_lists();
+    return b;
+}
+
 }  // namespace
 
 bool load(const char* text, size_t length, raster::ParseError* error) {
@@ -45,7 +52,7 @@ bool load(const char* text, size_t length, raster::ParseError* error) {
     guard::release_transient();
     g_generation = guard::transient_generation();
     scene_parts(g_parsed, true);
-    raster::prepare_choice(raster::DEFAULT_BUDGET, g_texture);  // auto's candidates, before any render
+    raster::prepare_choice(budget(), g_texture);  // auto's candidates, before any render
     g_loaded = true;
     return true;
 }
@@ -58,7 +65,7 @@ const raster::Scene& scene() { return *g_scene; }
 present::RenderResult render(const raster::Mapper& mapper, raster::Surface surface, int page, raster::Variant variant,
                              const raster::Watch* watch) {
     present::Canvas c = present::begin(mapper, surface, page, variant);
-    return present::finish(c, raster::render_scene(*g_scene, g_texture, mapper, c.axis, c.target, variant, nullptr, watch));
+    return present::finish(c, raster::render_scene(*g_scene, g_texture, mapper, c.axis, c.target, variant, nullptr, watch, budget()));
 }
 
 }  // namespace current_screen

@@ -102,7 +102,7 @@ size_t texture_parts(bool doubled, bool take) {
 }
 
 // auto's candidate lists for the objects' textures at the budget in force, built before any frame
-// (choice.h, prepare_choice).
+// (mappers/auto/choice.h, prepare_choice).
 void prepare_choices() {
     for (int32_t o = 0; o < g_world.object_count; ++o) raster::prepare_choice(budget(), g_textures.objects[o]);
 }
@@ -148,7 +148,11 @@ void set_budget(const raster::Budget* override) {
     if (override) g_override = *override;
     prepare_choices();
 }
-raster::Budget budget() { return g_overridden ? g_override : g_world.budget; }
+raster::Budget budget() {
+    raster::Budget b = g_overridden ? g_override : g_world.budget;
+    b.lists = present::choice_lists();
+    return b;
+}
 bool budget_overridden() { return g_overridden; }
 
 const raster::World& world() { return g_world; }
@@ -159,7 +163,7 @@ FrameResult render(int32_t n, const raster::Mapper& mapper, raster::Surface surf
     FrameResult r{};
     uint64_t t0 = timer::now();
     raster::build_frame(g_world, n, &g_frame, &g_scratch);
-    if (g_overridden) g_frame.budget = g_override;
+    g_frame.budget = budget();
     r.ticks_geometry = timer::since(t0);
     r.frame = g_frame.stats;
     present::Canvas c = present::begin(mapper, surface, page, variant);

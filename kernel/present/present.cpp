@@ -4,6 +4,7 @@
 #include "drivers/timer.h"
 #include "drivers/vga.h"
 #include "kernel/lib/mem.h"
+#include "kernel/mappers/auto/choice.h"
 #include "kernel/platform/guard.h"
 
 namespace present {
@@ -55,6 +56,11 @@ RenderResult finish(const Canvas& c, const raster::RenderStats& stats) {
     r.ticks_draw = timer::between(c.t1, t2);
     r.ticks_blit = timer::between(t2, t3);
     return r;
+}
+
+raster::ChoiceLists* choice_lists() {
+    static raster::ChoiceLists lists;
+    return &lists;
 }
 
 }  // namespace present

@@ -31,4 +31,8 @@ Canvas begin(const raster::Mapper& mapper, raster::Surface surface, int page, ra
 // clear, the drawing and the blit.
 RenderResult finish(const Canvas& canvas, const raster::RenderStats& stats);
 
+// auto's candidate lists, the kernel's one set: the screen scene's budget and the world's name it
+// (Budget::lists), so that a scene's load builds them once (prepare_choice).
+raster::ChoiceLists* choice_lists();
+
 }  // namespace present

@@ -132,4 +132,20 @@ TEST(House, CoreNamesNoMapper) {
     }
 }
 
+// The portable code keeps no mutable static (docs/architecture.md, "Rules the layout keeps"): its
+// working memory is the caller's (auto's candidate lists: Budget::lists) or on the stack.
+TEST(House, PortableCodeKeepsNoMutableStatic) {
+    const std::regex mutable_static(R"(\bstatic\s+(constinit\s+)?(?!const\b|constexpr\b)[\w:<>]+\s*\*?\s*\w+\s*(\[[^\]]*\])*\s*(;|=|\{))"),
+        constinit_static(R"(\bconstinit\s+static\b)");
+    for (const Source& s : sources()) {
+        const bool portable = s.path.rfind("kernel/core/", 0) == 0 || s.path.rfind("kernel/mappers/", 0) == 0 || s.path.rfind("kernel/scene/", 0) == 0;
+        if (!portable) continue;
+        for (size_t i = 0; i < s.lines.size(); ++i) {
+            const std::string code = s.lines[i].substr(0, s.lines[i].find("//"));
+            if (std::regex_search(code, mutable_static) || std::regex_search(code, constinit_static))
+                ADD_FAILURE() << s.path << ":" << i + 1 << ": a mutable static in the portable code: " << s.lines[i];
+        }
+    }
+}
+
 }  // namespace

@@ -65,52 +65,19 @@ void polygon_sizes(const PolygonSetup& s, const ClipRect& clip, PolygonSize size
 
 namespace {
 
-// The candidates for a texture, a target and a budget, (mapper, walker) pairs: what they depend on
-// is a few bits (the texture's copies and shape, the target's kind, whether the budget asks for
-// exact coverage, which only some mappers promise, and whether it asks for no error at all, which
-// only the reference itself promises: every other bound counts some rounding), so each set is
-// built once, in the order of their cost per pixel (the term that dominates on all but the smallest
-// polygons), so that a polygon prices them lazily: only while one not yet priced could cost less
-// than the cheapest priced and not yet asked (the dearest per pixel are mostly never priced).
-struct Candidates {
-    bool built = false;
-    CostTarget priced_for = CostTarget::Icount;  // the cost model it was built with (rebuilt on a change)
-    int count = 0;
-    int certain = -1;  // the first that promises the reference itself (exact): its bound costs nothing and always holds
-    int16_t row[2 * MAPPER_LIMIT] = {};
-    Axis axis[2 * MAPPER_LIMIT] = {};
-    CostRow cost[2 * MAPPER_LIMIT] = {};  // the cost model's row with the first proof (proven_cost)
-    bool walks[2 * MAPPER_LIMIT] = {};    // bound_walks: proven span by span only
-    bool spans[2 * MAPPER_LIMIT] = {};    // proven_by_spans: asked span by span (after the whole polygon)
-    // the least cost a polygon, a span and a pixel of candidates k on: what any of them costs at least
-    double least_polygon[2 * MAPPER_LIMIT] = {}, least_span[2 * MAPPER_LIMIT] = {}, least_pixel[2 * MAPPER_LIMIT] = {};
-    // the candidates an object's envelope proves (Mapper::enveloped), whether every other one costs,
-    // with its proof, at least as much as the first of them without on any triangle the guards let
-    // through, and up to how many pixels where one costs less a pixel (AutoPlan::enveloped_area2)
-    int enveloped_count = 0, enveloped_first = -1;
-    bool envelope_cheapest = false;
-    double envelope_pixels = 0, envelope_lines = 0;  // (AutoPlan::enveloped_area2, enveloped_extent)
-    AutoPlan plan{};  // plan_auto's but the envelope's part
-    // fast-adaptive-1 along each walker, and fast-oriented-1 (which draws it along the walker it
-    // picks, with its own driver): the oriented candidate (choose_mapper); -1: none here
-    int adaptive[2][2] = {{-1, -1}, {-1, -1}};  // [fast-adaptive-1, -2][Axis]
-    int oriented_row = -1;                      // fast-oriented-1's registry row
-    // fast-constant-depth along each walker: what the oriented candidate's certificate or spread
-    // proves too (fast_chords_bound); -1: none here
-    int constant_depth[2] = {-1, -1};  // [Axis]
-};
-
-const Candidates& candidates(const Texture& tex, const Target& target, const Budget& budget) {
-    constinit static Candidates cache[256];
+// The budget's lists where prepared (the one for the texture and the target, built where it is not
+// yet), else one built into `room`.
+const CandidateList& candidates(const Texture& tex, const Target& target, const Budget& budget, ListRoom* room) {
     // (mapper_accepts' needs: the copies, and the wrap for NEED_POW2_REPEAT)
     const bool whole256 = texture_aligned256(tex), any_wrap = texture_tiled256_any_wrap(tex), repeat = tex.wrap == Wrap::Repeat;
     const bool doubled = tex.doubled != nullptr;
     const bool exact_coverage = budget.exact_coverage, no_error = budget.max_error == 0;
-    Candidates& c = cache[(tex.bordered ? 1 : 0) | (whole256 ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0) | (no_error ? 16 : 0) |
-                          (doubled ? 32 : 0) | (any_wrap ? 64 : 0) | (repeat ? 128 : 0)];
+    const int kind = (tex.bordered ? 1 : 0) | (whole256 ? 2 : 0) | (target.planar ? 4 : 0) | (exact_coverage ? 8 : 0) | (no_error ? 16 : 0) |
+                    (doubled ? 32 : 0) | (any_wrap ? 64 : 0) | (repeat ? 128 : 0);
+    CandidateList& c = budget.lists ? budget.lists->lists[kind] : room->list;
     const CostModel& model = cost_model(budget.target);
-    if (c.built && c.priced_for == budget.target) return c;
-    c = Candidates{};
+    if (budget.lists && c.built && c.priced_for == budget.target) return c;
+    c = CandidateList{};
     c.priced_for = budget.target;
     for (int a = 0; a < 2; ++a)
         for (int i = 0; i < MAPPER_COUNT && i < MAPPER_COST_COUNT; ++i) {
@@ -197,8 +164,10 @@ const Candidates& candidates(const Texture& tex, const Target& target, const Bud
 }  // namespace
 
 void prepare_choice(const Budget& budget, const Texture& tex) {
-    candidates(tex, surface_kind(Surface::Linear), budget);
-    candidates(tex, surface_kind(Surface::Planar), budget);
+    if (!budget.lists) return;
+    ListRoom room;
+    candidates(tex, surface_kind(Surface::Linear), budget, &room);
+    candidates(tex, surface_kind(Surface::Planar), budget, &room);
 }
 
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
@@ -206,7 +175,8 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     Choice choice;
     for (PreparedSpans& w : prepared->walked) w.count = PreparedSpans::NOT_WALKED;
     prepared->status = SetupStatus::Unsupported;
-    const Candidates& list = candidates(tex, target, budget);
+    ListRoom room;
+    const CandidateList& list = candidates(tex, target, budget, &room);
     if (list.count == 0) return choice;
     const CostModel& model = cost_model(budget.target);
     // set up once, for both walkers (the spread and the spans come when a bound asks for them)
@@ -373,7 +343,8 @@ double corner_footprint(const Vertex* v) {
 }
 
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint) {
-    const Candidates& list = candidates(tex, target, budget);
+    ListRoom room;
+    const CandidateList& list = candidates(tex, target, budget, &room);
     AutoPlan plan = list.plan;
     plan.choice_cost = CHOICE_COST * cost_model(budget.target).proof_scale;
     // below a budget of 1, every bound but the certain one's is at least 1 / max(1, F) (a rounding

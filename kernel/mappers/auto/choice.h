@@ -108,8 +108,9 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
                      PreparedPolygon* prepared, Input input = Input::Any, Probe* probe = nullptr);
 
 // Builds the candidate lists choose_mapper and plan_auto take for a texture at a budget, for
-// either kind of target (linear, planar), where they are not built yet: a scene's load and a change
-// of budget call it, so that no polygon drawn pays for them (docs/auto.md, "What choosing costs").
+// either kind of target (linear, planar), into Budget::lists (nothing without), where they are not
+// built yet: a scene's load and a change of budget call it, so that no polygon drawn pays for them
+// (docs/auto.md, "What choosing costs").
 void prepare_choice(const Budget& budget, const Texture& tex);
 
 // What choosing costs beyond the bounds it asks, in instructions a polygon with some ten candidates
@@ -161,6 +162,53 @@ struct AutoPlan {
     // INT64_MAX
     int64_t choosing_pays_above2;
 };
+// The candidates for a texture, a target and a budget, (mapper, walker) pairs (choose_mapper and
+// plan_auto build them): what they depend on is a few bits (the texture's copies and shape, the target's kind, whether the budget asks for
+// exact coverage, which only some mappers promise, and whether it asks for no error at all, which
+// only the reference itself promises: every other bound counts some rounding), so each set is
+// built once, in the order of their cost per pixel (the term that dominates on all but the smallest
+// polygons), so that a polygon prices them lazily: only while one not yet priced could cost less
+// than the cheapest priced and not yet asked (the dearest per pixel are mostly never priced).
+struct CandidateList {
+    bool built = false;
+    CostTarget priced_for = CostTarget::Icount;  // the cost model it was built with (rebuilt on a change)
+    int count = 0;
+    int certain = -1;  // the first that promises the reference itself (exact): its bound costs nothing and always holds
+    int16_t row[2 * MAPPER_LIMIT] = {};
+    Axis axis[2 * MAPPER_LIMIT] = {};
+    CostRow cost[2 * MAPPER_LIMIT] = {};  // the cost model's row with the first proof (proven_cost)
+    bool walks[2 * MAPPER_LIMIT] = {};    // bound_walks: proven span by span only
+    bool spans[2 * MAPPER_LIMIT] = {};    // proven_by_spans: asked span by span (after the whole polygon)
+    // the least cost a polygon, a span and a pixel of candidates k on: what any of them costs at least
+    double least_polygon[2 * MAPPER_LIMIT] = {}, least_span[2 * MAPPER_LIMIT] = {}, least_pixel[2 * MAPPER_LIMIT] = {};
+    // the candidates an object's envelope proves (Mapper::enveloped), whether every other one costs,
+    // with its proof, at least as much as the first of them without on any triangle the guards let
+    // through, and up to how many pixels where one costs less a pixel (AutoPlan::enveloped_area2)
+    int enveloped_count = 0, enveloped_first = -1;
+    bool envelope_cheapest = false;
+    double envelope_pixels = 0, envelope_lines = 0;  // (AutoPlan::enveloped_area2, enveloped_extent)
+    AutoPlan plan{};  // plan_auto's but the envelope's part
+    // fast-adaptive-1 along each walker, and fast-oriented-1 (which draws it along the walker it
+    // picks, with its own driver): the oriented candidate (choose_mapper); -1: none here
+    int adaptive[2][2] = {{-1, -1}, {-1, -1}};  // [fast-adaptive-1, -2][Axis]
+    int oriented_row = -1;                      // fast-oriented-1's registry row
+    // fast-constant-depth along each walker: what the oriented candidate's certificate or spread
+    // proves too (fast_chords_bound); -1: none here
+    int constant_depth[2] = {-1, -1};  // [Axis]
+};
+
+// The lists for every texture and target kind a budget may meet (256 keys: the bits above), built
+// where first needed (prepare_choice builds a texture's at its load): the caller's memory, which a
+// budget names (Budget::lists); without, choose_mapper and plan_auto build the one they need.
+struct ChoiceLists {
+    CandidateList lists[256];
+};
+// Room for a list built where no lists are prepared: untouched otherwise.
+union ListRoom {
+    ListRoom() {}
+    CandidateList list;
+};
+
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint);
 
 // The footprint (texel_footprint) at a polygon's first corner, from the planes through its first
