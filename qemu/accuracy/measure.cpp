@@ -1,5 +1,6 @@
 // Scene loading and the pictures the metrics compare.
 #include "qemu/accuracy/measure.h"
+#include "qemu/lib/choice_lists.h"
 #include "qemu/lib/command_line.h"
 #include "qemu/lib/paths.h"
 #include "kernel/core/bound.h"
@@ -111,6 +112,7 @@ LoadedWorld parse_world_text(const std::string& text, const std::string& name, c
     if (!parse_world(text.data(), text.size(), r, w.world.get(), &e))
         throw HarnessError(name + (e.line ? ":" + std::to_string(e.line) : std::string()) + ": " + e.message +
                            (finder.missing.empty() ? std::string() : " " + where_looked(finder.missing, search)));
+    w.world->budget.lists = host_choice_lists();
     w.textures = std::make_unique<HostTextureSet>();
     build_texture_set(*w.world, w.textures.get());
     w.files = std::move(finder.read);

@@ -13,6 +13,7 @@
 #include "kernel/core/mapper.h"
 #include "kernel/core/policy.h"
 #include "kernel/scene/world.h"
+#include "qemu/lib/choice_lists.h"
 
 namespace {
 
@@ -91,6 +92,7 @@ int main(int argc, char** argv) {
         ParseError e;
         if (!parse_world(reinterpret_cast<const char*>(text.data()), text.size(), files, world.get(), &e))
             fail(path + ":" + std::to_string(e.line) + ": " + e.message);
+        world->budget.lists = harness::host_choice_lists();
         build_texture_set(*world, textures.get());
         std::string name = path.substr(slash == std::string::npos ? 0 : slash + 1);
         name = name.substr(0, name.rfind('.'));
@@ -104,7 +106,7 @@ int main(int argc, char** argv) {
             if (at != std::string::npos) {
                 char* end = nullptr;
                 const std::string b = full_name.substr(at + 1);
-                budget = Budget{true, std::strtod(b.c_str(), &end), true};
+                budget = Budget{true, std::strtod(b.c_str(), &end), true, CostTarget::Icount, harness::host_choice_lists()};
                 if (!m->is_auto || b.empty() || *end || !(budget.max_error >= 0)) fail("'" + full_name + "': only auto takes @BUDGET, a number of footprints from 0");
             }
             const Axis axis = home_axis(*m);
