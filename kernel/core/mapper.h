@@ -94,7 +94,10 @@ struct RenderStats {
     // by registry row: the polygons each mapper drew and their pixels (auto draws with several)
     uint32_t mapper_polygons[MAPPER_LIMIT] = {};
     uint32_t mapper_pixels[MAPPER_LIMIT] = {};
-    uint32_t enveloped = 0;  // auto: polygons proven by their object's envelope (choice.h), counted above too
+    // auto, by the level of the proof of each polygon it drew (counted above too): by its object's
+    // envelope, by the whole polygon's bound or certificate, span by span; the rest it drew unasked
+    // (the reference's definition, where choosing cannot pay: docs/auto.md)
+    uint32_t enveloped = 0, proven_whole = 0, proven_spans = 0;
 };
 
 // A mapper with its own setup and edge walking (the classics, our fast loops) draws whole polygons.

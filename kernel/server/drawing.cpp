@@ -32,19 +32,20 @@ uint32_t g_bench[B_FIELDS][MAX_BENCH_FRAMES];
 // The polygons and pixels each mapper drew (auto draws with several), summed over frames.
 struct MapperTally {
     uint64_t polygons[raster::MAPPER_LIMIT] = {}, pixels[raster::MAPPER_LIMIT] = {};
-    uint64_t enveloped = 0;
+    uint64_t enveloped = 0, proven_whole = 0, proven_spans = 0;
     void add(const raster::RenderStats& s) {
         for (int i = 0; i < raster::MAPPER_COUNT; ++i) polygons[i] += s.mapper_polygons[i], pixels[i] += s.mapper_pixels[i];
-        enveloped += s.enveloped;
+        enveloped += s.enveloped, proven_whole += s.proven_whole, proven_spans += s.proven_spans;
     }
     // "drawn_by": [{"mapper": NAME, "polygons": N, "pixels": N}, ...], the mappers that drew any;
-    // "enveloped": the polygons among them auto drew as their object's envelope proved (choice.h)
+    // "enveloped", "proven_whole", "proven_spans": the polygons among them auto drew as their
+    // object's envelope proved, as their whole polygon's bound did, as their spans' did (RenderStats)
     void write(lib::JsonLine& r) const {
         r.begin_array("drawn_by");
         for (int i = 0; i < raster::MAPPER_COUNT; ++i)
             if (polygons[i]) r.begin_item_object().str("mapper", raster::MAPPERS[i].name).u64("polygons", polygons[i]).u64("pixels", pixels[i]).end_object();
         r.end_array();
-        r.u64("enveloped", enveloped);
+        r.u64("enveloped", enveloped).u64("proven_whole", proven_whole).u64("proven_spans", proven_spans);
     }
 };
 

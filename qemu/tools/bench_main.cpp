@@ -121,6 +121,7 @@ TradeRow bench_one(Session& k, BenchScene& s, const raster::Mapper& m, int frame
     for (const json& d : r["drawn_by"])
         row.drawn_by.emplace_back(d["mapper"].get<std::string>(), d["polygons"].get<uint64_t>(), d["pixels"].get<uint64_t>());
     row.enveloped = r.value("enveloped", uint64_t(0));
+    row.proven_whole = r.value("proven_whole", uint64_t(0)), row.proven_spans = r.value("proven_spans", uint64_t(0));
     const raster::Budget& b = budget ? *budget : s.host.world->budget;
     row.budget_error = b.max_error, row.budget_exact = b.exact_coverage, row.budget_given = b.given;
     row.budget = budget_words(b);

@@ -124,7 +124,8 @@ std::vector<std::string> csv_header() {
             "cycles_486_setup[cycles]", "cycles_486_walk[cycles]", "cycles_486_choose[cycles]",
             "cycles_pentium_setup[cycles]", "cycles_pentium_walk[cycles]", "cycles_pentium_choose[cycles]",
             "cycles_486_priced_draw[cycles]", "cycles_486_priced_pixels[pixels]", "drawn_by_priced_486[mapper:polygons:pixels;...]",
-            "cycles_pentium_priced_draw[cycles]", "cycles_pentium_priced_pixels[pixels]", "drawn_by_priced_pentium[mapper:polygons:pixels;...]"};
+            "cycles_pentium_priced_draw[cycles]", "cycles_pentium_priced_pixels[pixels]", "drawn_by_priced_pentium[mapper:polygons:pixels;...]",
+            "proven_whole[polygons]", "proven_spans[polygons]"};
 }
 
 namespace {
@@ -173,7 +174,7 @@ void write_csv(const std::string& path, const std::vector<TradeRow>& rows) {
             out << "," << count_or_empty(c->setup) << "," << count_or_empty(c->walk) << "," << count_or_empty(c->choose);
         for (const TradeRow::Cycles* c : {&r.cycles_486, &r.cycles_pentium}) 
             out << "," << count_or_empty(c->priced_draw) << "," << count_or_empty(c->priced_pixels) << "," << drawn_by_text(c->priced_by);
-        out << "\n";
+        out << "," << r.proven_whole << "," << r.proven_spans << "\n";
     }
 }
 
@@ -264,13 +265,16 @@ std::vector<TradeRow> read_trade(const std::string& path) {
         r.budget_exact = flag("budget_exact"), r.budget_given = flag("budget_given");
         r.budget = budget_words(raster::Budget{r.budget_given, r.budget_error, r.budget_exact});
         r.draw_i486 = text("ticks_draw_i486").empty() ? 0 : count("ticks_draw_i486");
-        // the timing model's columns, where the CSV has them (a bench of an earlier version has not)
+        // the timing model's columns and the proofs' levels, where the CSV has them (a bench of an
+        // earlier version has not)
+        auto optional = [&](const std::string& name) {
+            const bool has = std::find_if(header.begin(), header.end(), [&](const std::string& h) { return h.rfind(name + "[", 0) == 0; }) != header.end();
+            return !has || text(name.c_str()).empty() ? 0 : count(name.c_str());
+        };
+        r.proven_whole = optional("proven_whole"), r.proven_spans = optional("proven_spans");
+        r.levels_known = std::find_if(header.begin(), header.end(), [](const std::string& h) { return h.rfind("proven_whole[", 0) == 0; }) != header.end();
         auto cycles = [&](const std::string& target, TradeRow::Cycles* c) {
             const std::string p = "cycles_" + target + "_";
-            auto optional = [&](const std::string& name) {
-                const bool has = std::find_if(header.begin(), header.end(), [&](const std::string& h) { return h.rfind(name + "[", 0) == 0; }) != header.end();
-                return !has || text(name.c_str()).empty() ? 0 : count(name.c_str());
-            };
             c->draw = optional(p + "draw"), c->inner = optional(p + "inner");
             c->setup = optional(p + "setup"), c->walk = optional(p + "walk"), c->choose = optional(p + "choose");
             c->frame[0] = optional(p + "frame_zero-wait"), c->frame[1] = optional(p + "frame_isa"), c->frame[2] = optional(p + "frame_vlb");
@@ -344,6 +348,15 @@ const TradeRow* fastest_within(const std::vector<TradeRow>& rows, const TradeRow
 // auto against the fastest single mapper that meets the same budget on the whole scene, by its
 // measured error; and against the fastest single mapper whose own bounds prove it on every polygon
 // (what auto proves of its own choice before drawing).
+std::string proof_levels(const TradeRow& a) {
+    if (!a.levels_known) return "-";
+    uint64_t drawn = 0;
+    for (const auto& [name, polygons, pixels] : a.drawn_by) drawn += polygons;
+    const uint64_t asked = a.enveloped + a.proven_whole + a.proven_spans;
+    return std::to_string(a.enveloped) + " / " + std::to_string(a.proven_whole) + " / " + std::to_string(a.proven_spans) + " / " +
+           std::to_string(drawn > asked ? drawn - asked : 0);
+}
+
 std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only) {
     std::string table;
     for (const TradeRow& a : rows) {
@@ -360,15 +373,18 @@ std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only)
         };
         // what auto draws at with its choosing aside (the choosing itself: Phase::Choose)
         const double choosing = a.per_pixel(a.choose), aside = a.draw_per_pixel() - choosing;
+        const std::string share = a.draw ? fixed(100.0 * double(a.choose) / double(a.draw), 1) + "%" : std::string("-");
         table += "| " + a.scene + " | " + a.mapper + " | " + a.budget + " | " + fixed(a.draw_per_pixel(), 1) + " | " + fixed(choosing, 2) +
-                 " | " + fixed(a.accuracy.max_footprint_error, 3) + " | " + (meets_budget(a, a.budget_error, a.budget_exact) ? "yes" : "**NO**") +
+                 " | " + share + " | " + proof_levels(a) + " | " + fixed(a.accuracy.max_footprint_error, 3) + " | " +
+                 (meets_budget(a, a.budget_error, a.budget_exact) ? "yes" : "**NO**") +
                  " | " + against(best) + " | " + (best && aside > 0 ? fixed(best->draw_per_pixel() / aside, 2) + "×" : std::string("-")) + " | " +
                  against(proven) + " |\n";
     }
     if (table.empty()) return "";
-    return "| scene | row | budget | draw instr/px | choosing instr/px | max footprint err | within | fastest single mapper within | "
-           "its draw instr/px | speed-up | choosing aside | fastest single mapper proven within | its draw instr/px | speed-up |\n"
-           "|---|---|---|--:|--:|--:|---|---|--:|--:|--:|---|--:|--:|\n" + table;
+    return "| scene | row | budget | draw instr/px | choosing instr/px | choosing's share | polygons proven by object / polygon / "
+           "spans / unasked | max footprint err | within | fastest single mapper within | its draw instr/px | speed-up | choosing aside | "
+           "fastest single mapper proven within | its draw instr/px | speed-up |\n"
+           "|---|---|---|--:|--:|--:|--:|--:|---|---|--:|--:|--:|---|--:|--:|\n" + table;
 }
 
 namespace {
@@ -386,8 +402,23 @@ void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
            "the test for polygons too small to choose for, the bounds and the search: the bench's phase probe, "
            "`ticks_choose`); its setup of a polygon with every plane, which the chosen mapper draws from, counts as setup, "
            "and so do the envelope's guards, which run inside fast-affine's own call for the triangle. Choosing aside: the "
-           "speed-up were the choosing free.\n\n"
+           "speed-up were the choosing free. Polygons by the level of their proof (summed over the frames): by their object's "
+           "envelope, once a frame for all of them; by the whole polygon's bound or certificate; span by span; unasked: "
+           "drawn by the reference's own definition where choosing cannot pay (docs/auto.md).\n\n"
         << table;
+    std::string spent;
+    for (const TradeRow& a : rows) {
+        const raster::Mapper* m = raster::find_mapper(a.mapper.substr(0, a.mapper.find('@')).c_str());
+        if (!m || !m->is_auto || !a.draw || !a.levels_known || double(a.choose) <= 0.03 * double(a.draw)) continue;
+        uint64_t drawn = 0;
+        for (const auto& [name, polygons, pixels] : a.drawn_by) drawn += polygons;
+        const uint64_t searched = a.proven_whole + a.proven_spans, tested = drawn - a.enveloped;
+        spent += "- " + a.scene + " " + a.mapper + ": " + fixed(100.0 * double(a.choose) / double(a.draw), 1) + "% of its draw, " +
+                 fixed(double(a.choose) / double(tested ? tested : 1), 0) + " instructions a polygon it tested: the plans once a frame, "
+                 "the test of " + std::to_string(tested) + " polygons (" + std::to_string(tested - searched) + " then drawn unasked) and the "
+                 "proofs and search on " + std::to_string(searched) + " (" + std::to_string(a.proven_spans) + " span by span)\n";
+    }
+    if (!spent.empty()) out << "\nWhere choosing is over 3% of auto's draw, what it is spent on:\n\n" << spent;
 }
 
 // Per polygon drawn, what the outer loops cost beside the inner ones (docs/bench.md): the frame's

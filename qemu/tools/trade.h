@@ -48,6 +48,8 @@ struct TradeRow {
     // scene's budget auto chose for, in words
     DrawnBy drawn_by;
     uint64_t enveloped = 0;  // of those, the polygons auto drew as their object's envelope proved
+    uint64_t proven_whole = 0, proven_spans = 0;  // and as their whole polygon's bound, their spans' (the rest: unasked)
+    bool levels_known = true;  // the two above measured (a trade.csv of an earlier bench has them not)
     std::string budget;
     double budget_error = -1;   // the budget's footprint error (below 0: any), whether it asks for
     bool budget_exact = false;  // exact coverage, and whether the scene states it (else the default)
@@ -132,6 +134,9 @@ const TradeRow* fastest_within(const std::vector<TradeRow>& rows, const TradeRow
 std::string scene_table(const std::vector<TradeRow>& rows, const std::string& scene);
 std::string same_work_table(const std::vector<TradeRow>& rows, const std::string& scene);
 std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only);
+// An auto row's polygons by the level of their proof: "object / polygon / spans / unasked" (the
+// reference's definition, drawn where choosing cannot pay); "-" where the row does not say.
+std::string proof_levels(const TradeRow& a);
 
 // The rows measured with the 486's build beside the P6's (draw_i486), a line a mapper: drawing
 // instructions a pixel of each over all the scenes, their ratio, and the least and most of a scene's.

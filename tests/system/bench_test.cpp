@@ -54,7 +54,7 @@ TEST(Bench, FiguresAddUpAndEqualTheHostsCounts) {
         std::string surface = raster::surface_name(raster::home_surface(mapper));
         Bench b = bench(s, std::string("4 ") + m + " " + surface);
         ASSERT_EQ(b.frames.size(), 4u) << m;
-        uint64_t pixels = 0;
+        uint64_t pixels = 0, levels[3] = {};  // auto's polygons by the level of their proof (RenderStats)
         for (size_t i = 0; i < b.frames.size(); ++i) {
             const json& f = b.frames[i];
             EXPECT_EQ(f["n"], i);
@@ -79,8 +79,16 @@ TEST(Bench, FiguresAddUpAndEqualTheHostsCounts) {
                 EXPECT_GT(f["ticks_inner"].get<uint64_t>(), 0u) << m;
             }
             pixels += stats.pixels;
+            levels[0] += stats.enveloped, levels[1] += stats.proven_whole, levels[2] += stats.proven_spans;
+            EXPECT_LE(stats.enveloped + stats.proven_whole + stats.proven_spans, stats.polygons) << m << " frame " << n;
         }
         EXPECT_EQ(b.reply["pixels"], pixels);
+        EXPECT_EQ(b.reply["enveloped"], levels[0]) << m;
+        EXPECT_EQ(b.reply["proven_whole"], levels[1]) << m;
+        EXPECT_EQ(b.reply["proven_spans"], levels[2]) << m;
+        if (mapper.is_auto) {
+            EXPECT_GT(levels[1], 0u) << "the cube's faces, each proven by its whole bound";
+        }
         EXPECT_LE(b.reply["ticks"]["min"].get<uint64_t>(), b.reply["ticks"]["median"].get<uint64_t>());
         EXPECT_EQ(b.reply["surface"], surface);
     }

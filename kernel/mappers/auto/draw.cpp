@@ -18,8 +18,10 @@ SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& te
     }
     const bool set_up = prepared.status == SetupStatus::Ok;
     // (a candidate: its walker, texture and target checked when the list was built)
-    return Drawer::of(*c.mapper, tex, c.axis, target, stats, variant, true)
-        .draw_set_up(vertices, count, set_up ? &prepared.setup : nullptr, &prepared.walked[int(c.axis)]);
+    const SetupStatus status = Drawer::of(*c.mapper, tex, c.axis, target, stats, variant, true)
+                                   .draw_set_up(vertices, count, set_up ? &prepared.setup : nullptr, &prepared.walked[int(c.axis)]);
+    if (status == SetupStatus::Ok) ++(c.by_spans ? stats->proven_spans : stats->proven_whole);
+    return status;
 }
 
 // unchosen_mapper, its time charged to auto's choosing (the loop's before it to walking)

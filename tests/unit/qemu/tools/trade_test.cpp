@@ -165,9 +165,17 @@ TEST(Trade, AutoIsSetAgainstTheFastestMeasuredAndTheFastestProven) {
     rows[3].max_bound = 0.5, rows[3].bound_exact = false;      // within, but no exact coverage promised
     rows[4].max_bound = -1;
     rows[4].choose = 1000;  // 10 of its 25 a pixel
+    // its 5 polygons: 1 by the envelope, 2 by their whole bound, 1 span by span, 1 unasked
+    rows[4].drawn_by = {{"fast-affine", 3, 50}, {"exact", 2, 50}}, rows[4].enveloped = 1, rows[4].proven_whole = 2, rows[4].proven_spans = 1;
     std::string dir = testing::TempDir() + "/trade_auto";
     const std::string t = markdown_of(dir + "/trade.md", rows);
-    EXPECT_NE(t.find("| a | auto | 1 | 25.0 | 10.00 | 0.500 | yes | fast-table | 10.0 | 0.40× | 0.67× | fast-affine | 20.0 | 0.80× |"), std::string::npos)
+    EXPECT_NE(t.find("| a | auto | 1 | 25.0 | 10.00 | 40.0% | 1 / 2 / 1 / 1 | 0.500 | yes | fast-table | 10.0 | 0.40× | 0.67× | fast-affine | 20.0 | "
+                     "0.80× |"),
+              std::string::npos)
+        << t;
+    EXPECT_NE(t.find("- a auto: 40.0% of its draw, 250 instructions a polygon it tested: the plans once a frame, the test of 4 polygons "
+                     "(1 then drawn unasked) and the proofs and search on 3 (1 span by span)"),
+              std::string::npos)
         << t;
     rows[1].max_bound = raster::NO_BOUND;  // one polygon without a bound: not proven; then only exact is
     const std::string t2 = markdown_of(dir + "/trade.md", rows);
@@ -181,6 +189,7 @@ TEST(Trade, TheCsvReadBackIsTheSameRows) {
     rows[0].max_bound = 0, rows[0].bound_exact = true;
     rows[1].max_bound = raster::NO_BOUND, rows[1].host_ratio = 0.625, rows[1].accuracy.max_footprint_error = 3.5;
     rows[2].drawn_by = {{"exact", 3, 40}, {"fast-affine", 17, 60}}, rows[2].enveloped = 12, rows[2].choose = 77;
+    rows[2].proven_whole = 5, rows[2].proven_spans = 2;
     rows[2].budget_error = 0.5, rows[2].budget_exact = true, rows[2].budget_given = true;
     rows[1].budget_error = raster::ANY_ERROR;
     for (TradeRow& r : rows) r.accuracy.exact = 61, r.accuracy.within_one = 90, r.accuracy.gaps = 2, r.frames = 8;
@@ -195,6 +204,8 @@ TEST(Trade, TheCsvReadBackIsTheSameRows) {
     EXPECT_EQ(back[1].budget_error, raster::ANY_ERROR);
     EXPECT_EQ(back[1].max_bound, raster::NO_BOUND);
     EXPECT_EQ(back[2].drawn_by, rows[2].drawn_by);
+    EXPECT_EQ(back[2].proven_whole, 5u);
+    EXPECT_EQ(back[2].proven_spans, 2u);
 
     std::vector<std::vector<std::string>> lines = read_csv(dir + "/trade.csv");
     // the timing model's columns: read back where measured, and a CSV without them (an earlier
