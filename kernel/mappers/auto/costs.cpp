@@ -6,110 +6,110 @@
 namespace raster {
 
 const MapperCost MAPPER_COSTS[] = {
-    {"affine", 1028.4f, 346.81f, 40.351f}, // 11 scenes
-    {"exact", 1009.0f, 319.20f, 64.325f}, // 11 scenes
-    {"persp-subdiv-4", 1009.0f, 319.58f, 91.397f}, // 11 scenes
-    {"persp-subdiv-8", 1009.0f, 374.31f, 59.536f}, // 11 scenes
-    {"persp-subdiv-16", 1009.0f, 413.33f, 43.475f}, // 11 scenes
-    {"persp-subdiv-32", 1009.0f, 433.76f, 35.622f}, // 11 scenes
-    {"constant-depth", 1009.0f, 450.15f, 29.819f}, // 11 scenes
-    {"persp-adaptive-0.5", 1009.0f, 906.56f, 290.063f}, // 11 scenes
-    {"persp-adaptive-1", 1009.0f, 997.62f, 51.785f}, // 11 scenes
-    {"persp-adaptive-2", 1009.0f, 1014.77f, 44.521f}, // 11 scenes
-    {"persp-adaptive-4", 1009.0f, 1027.56f, 40.055f}, // 11 scenes
-    {"fast-affine", 1044.7f, 108.16f, 5.603f}, // 11 scenes
-    {"fast-table", 1297.4f, 104.63f, 2.692f}, // 11 scenes
-    {"fast-columns", 1111.4f, 177.19f, 4.975f}, // 11 scenes
-    {"fast-table-columns", 1370.6f, 247.55f, 2.843f}, // 11 scenes
-    {"fast-subdiv-8", 1009.0f, 296.65f, 14.512f}, // 11 scenes
-    {"fast-subdiv-16", 1009.0f, 306.93f, 10.405f}, // 11 scenes
-    {"fast-subdiv-32", 1009.0f, 312.03f, 8.419f}, // 11 scenes
-    {"fast-constant-depth", 1009.0f, 316.60f, 6.779f}, // 11 scenes
-    {"fast-adaptive-1", 1009.0f, 339.49f, 10.069f}, // 11 scenes
-    {"fast-adaptive-2", 1009.0f, 343.24f, 8.589f}, // 11 scenes
-    {"fast-oriented-1", 1125.2f, 354.67f, 8.031f}, // 11 scenes
-    {"xsharp-dda", 1505.3f, 372.93f, 37.434f}, // 10 scenes
-    {"xsharp-row-out", 1505.3f, 508.19f, 18.946f}, // 10 scenes
-    {"xsharp-column", 1510.0f, 491.40f, 12.537f}, // 10 scenes
-    {"hecker-steptable", 5319.3f, 0.00f, 613.530f}, // 10 scenes
-    {"fatmap-256", 1717.3f, 163.19f, 13.680f}, // 8 scenes
-    {"fatmap-256-16", 1717.3f, 168.19f, 12.680f}, // 8 scenes
-    {"fatmap-lut", 2334.1f, 166.66f, 10.089f}, // 7 scenes
-    {"quake-subdiv16", 1534.9f, 299.64f, 13.864f}, // 10 scenes
-    {"quake-subdiv8", 1534.9f, 284.30f, 20.217f}, // 10 scenes
-    {"quake-d_draw16", 1515.9f, 317.29f, 9.568f}, // 10 scenes
+    {"affine", 1028.4f, 346.58f, 40.366f}, // 11 scenes
+    {"exact", 1009.0f, 318.98f, 64.340f}, // 11 scenes
+    {"persp-subdiv-4", 1009.0f, 319.35f, 91.413f}, // 11 scenes
+    {"persp-subdiv-8", 1009.0f, 374.09f, 59.552f}, // 11 scenes
+    {"persp-subdiv-16", 1009.0f, 413.10f, 43.491f}, // 11 scenes
+    {"persp-subdiv-32", 1009.0f, 433.54f, 35.638f}, // 11 scenes
+    {"constant-depth", 1009.0f, 449.92f, 29.834f}, // 11 scenes
+    {"persp-adaptive-0.5", 1009.0f, 906.34f, 290.078f}, // 11 scenes
+    {"persp-adaptive-1", 1009.0f, 997.40f, 51.801f}, // 11 scenes
+    {"persp-adaptive-2", 1009.0f, 1014.55f, 44.537f}, // 11 scenes
+    {"persp-adaptive-4", 1009.0f, 1027.34f, 40.071f}, // 11 scenes
+    {"fast-affine", 1054.7f, 107.71f, 5.623f}, // 11 scenes
+    {"fast-table", 1307.4f, 104.17f, 2.712f}, // 11 scenes
+    {"fast-columns", 1121.4f, 176.75f, 4.996f}, // 11 scenes
+    {"fast-table-columns", 1380.6f, 247.11f, 2.864f}, // 11 scenes
+    {"fast-subdiv-8", 1009.0f, 296.42f, 14.528f}, // 11 scenes
+    {"fast-subdiv-16", 1009.0f, 306.71f, 10.421f}, // 11 scenes
+    {"fast-subdiv-32", 1009.0f, 311.81f, 8.434f}, // 11 scenes
+    {"fast-constant-depth", 1009.0f, 316.38f, 6.795f}, // 11 scenes
+    {"fast-adaptive-1", 1009.0f, 339.27f, 10.085f}, // 11 scenes
+    {"fast-adaptive-2", 1009.0f, 343.02f, 8.604f}, // 11 scenes
+    {"fast-oriented-1", 1135.2f, 354.13f, 8.049f}, // 11 scenes
+    {"xsharp-dda", 1515.3f, 372.46f, 37.464f}, // 10 scenes
+    {"xsharp-row-out", 1515.3f, 507.73f, 18.976f}, // 10 scenes
+    {"xsharp-column", 1520.0f, 490.99f, 12.565f}, // 10 scenes
+    {"hecker-steptable", 5329.3f, 0.00f, 613.523f}, // 10 scenes
+    {"fatmap-256", 1726.6f, 162.72f, 13.714f}, // 8 scenes
+    {"fatmap-256-16", 1726.6f, 167.72f, 12.714f}, // 8 scenes
+    {"fatmap-lut", 2343.4f, 166.17f, 10.127f}, // 7 scenes
+    {"quake-subdiv16", 1544.9f, 299.16f, 13.893f}, // 10 scenes
+    {"quake-subdiv8", 1544.9f, 283.82f, 20.246f}, // 10 scenes
+    {"quake-d_draw16", 1525.9f, 316.80f, 9.597f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 
 const MapperCost MAPPER_COSTS_486[] = {
-    {"affine", 2845.8f, 1178.15f, 163.109f}, // 11 scenes
-    {"exact", 3286.6f, 587.90f, 560.427f}, // 11 scenes
-    {"persp-subdiv-4", 3277.1f, 956.12f, 436.632f}, // 11 scenes
-    {"persp-subdiv-8", 3284.2f, 1315.58f, 244.714f}, // 11 scenes
-    {"persp-subdiv-16", 3283.6f, 1549.06f, 148.271f}, // 11 scenes
-    {"persp-subdiv-32", 3281.6f, 1669.67f, 101.034f}, // 11 scenes
-    {"constant-depth", 3282.4f, 1769.67f, 66.085f}, // 11 scenes
-    {"persp-adaptive-0.5", 3281.6f, 4052.01f, 1776.430f}, // 11 scenes
-    {"persp-adaptive-1", 3282.7f, 4921.28f, 228.415f}, // 11 scenes
-    {"persp-adaptive-2", 3283.0f, 5047.47f, 174.931f}, // 11 scenes
-    {"persp-adaptive-4", 3282.9f, 5141.52f, 142.100f}, // 11 scenes
-    {"fast-affine", 2942.2f, 181.96f, 6.253f}, // 11 scenes
-    {"fast-table", 3402.9f, 170.70f, 4.775f}, // 11 scenes
-    {"fast-columns", 3018.0f, 333.83f, 5.375f}, // 11 scenes
-    {"fast-table-columns", 3461.7f, 358.50f, 7.181f}, // 11 scenes
-    {"fast-subdiv-8", 3281.1f, 987.16f, 58.960f}, // 11 scenes
-    {"fast-subdiv-16", 3281.1f, 1050.78f, 33.764f}, // 11 scenes
-    {"fast-subdiv-32", 3281.2f, 1082.91f, 21.473f}, // 11 scenes
-    {"fast-constant-depth", 3281.1f, 1109.41f, 12.089f}, // 11 scenes
-    {"fast-adaptive-1", 3282.8f, 1256.30f, 31.502f}, // 11 scenes
-    {"fast-adaptive-2", 3282.9f, 1279.40f, 22.534f}, // 11 scenes
-    {"fast-oriented-1", 4006.1f, 1343.45f, 17.445f}, // 11 scenes
-    {"xsharp-dda", 4205.8f, 580.77f, 80.361f}, // 10 scenes
-    {"xsharp-row-out", 4210.4f, 848.45f, 47.968f}, // 10 scenes
-    {"xsharp-column", 4213.8f, 826.01f, 19.717f}, // 10 scenes
-    {"hecker-steptable", 15041.1f, 0.00f, 2128.967f}, // 10 scenes
-    {"fatmap-256", 4040.2f, 194.29f, 20.656f}, // 8 scenes
-    {"fatmap-256-16", 4040.0f, 201.91f, 18.683f}, // 8 scenes
-    {"fatmap-lut", 4781.2f, 170.41f, 16.835f}, // 7 scenes
-    {"quake-subdiv16", 5508.7f, 1012.01f, 33.454f}, // 10 scenes
-    {"quake-subdiv8", 5508.6f, 966.33f, 52.387f}, // 10 scenes
-    {"quake-d_draw16", 5408.1f, 865.41f, 23.453f}, // 10 scenes
+    {"affine", 2845.8f, 1179.85f, 163.066f}, // 11 scenes
+    {"exact", 3286.4f, 587.29f, 560.879f}, // 11 scenes
+    {"persp-subdiv-4", 3277.4f, 957.70f, 436.621f}, // 11 scenes
+    {"persp-subdiv-8", 3283.6f, 1315.13f, 244.842f}, // 11 scenes
+    {"persp-subdiv-16", 3283.6f, 1552.22f, 148.198f}, // 11 scenes
+    {"persp-subdiv-32", 3283.1f, 1675.40f, 100.902f}, // 11 scenes
+    {"constant-depth", 3281.6f, 1769.91f, 66.072f}, // 11 scenes
+    {"persp-adaptive-0.5", 3281.4f, 4053.00f, 1776.395f}, // 11 scenes
+    {"persp-adaptive-1", 3282.7f, 4922.97f, 228.366f}, // 11 scenes
+    {"persp-adaptive-2", 3283.1f, 5049.13f, 174.908f}, // 11 scenes
+    {"persp-adaptive-4", 3282.9f, 5143.06f, 142.043f}, // 11 scenes
+    {"fast-affine", 2955.2f, 185.88f, 6.168f}, // 11 scenes
+    {"fast-table", 3415.1f, 173.65f, 4.713f}, // 11 scenes
+    {"fast-columns", 3030.4f, 336.80f, 5.308f}, // 11 scenes
+    {"fast-table-columns", 3473.7f, 361.14f, 7.120f}, // 11 scenes
+    {"fast-subdiv-8", 3281.0f, 988.79f, 58.917f}, // 11 scenes
+    {"fast-subdiv-16", 3281.2f, 1052.43f, 33.738f}, // 11 scenes
+    {"fast-subdiv-32", 3281.3f, 1084.54f, 21.437f}, // 11 scenes
+    {"fast-constant-depth", 3281.6f, 1111.04f, 12.056f}, // 11 scenes
+    {"fast-adaptive-1", 3282.9f, 1257.91f, 31.465f}, // 11 scenes
+    {"fast-adaptive-2", 3282.9f, 1280.96f, 22.502f}, // 11 scenes
+    {"fast-oriented-1", 4018.6f, 1347.41f, 17.389f}, // 11 scenes
+    {"xsharp-dda", 4217.5f, 583.06f, 80.308f}, // 10 scenes
+    {"xsharp-row-out", 4222.6f, 852.02f, 47.895f}, // 10 scenes
+    {"xsharp-column", 4225.7f, 828.43f, 19.672f}, // 10 scenes
+    {"hecker-steptable", 15053.6f, 0.00f, 2129.279f}, // 10 scenes
+    {"fatmap-256", 4051.2f, 197.20f, 20.564f}, // 8 scenes
+    {"fatmap-256-16", 4050.5f, 202.75f, 18.667f}, // 8 scenes
+    {"fatmap-lut", 4792.3f, 174.16f, 16.657f}, // 7 scenes
+    {"quake-subdiv16", 5520.7f, 1014.73f, 33.398f}, // 10 scenes
+    {"quake-subdiv8", 5521.0f, 968.85f, 52.555f}, // 10 scenes
+    {"quake-d_draw16", 5419.7f, 866.69f, 23.266f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 
 const MapperCost MAPPER_COSTS_PENTIUM[] = {
-    {"affine", 1642.3f, 529.15f, 145.392f}, // 11 scenes
-    {"exact", 1795.4f, 332.74f, 283.363f}, // 11 scenes
-    {"persp-subdiv-4", 1798.9f, 451.76f, 187.303f}, // 11 scenes
-    {"persp-subdiv-8", 1797.6f, 587.21f, 110.259f}, // 11 scenes
-    {"persp-subdiv-16", 1802.4f, 681.76f, 71.386f}, // 11 scenes
-    {"persp-subdiv-32", 1797.1f, 731.64f, 52.292f}, // 11 scenes
-    {"constant-depth", 1798.7f, 772.84f, 38.087f}, // 11 scenes
-    {"persp-adaptive-0.5", 1804.4f, 1559.53f, 748.723f}, // 11 scenes
-    {"persp-adaptive-1", 1803.9f, 1893.70f, 108.066f}, // 11 scenes
-    {"persp-adaptive-2", 1803.9f, 1948.14f, 84.965f}, // 11 scenes
-    {"persp-adaptive-4", 1803.9f, 1988.64f, 70.811f}, // 11 scenes
-    {"fast-affine", 1712.5f, 137.02f, 4.016f}, // 11 scenes
-    {"fast-table", 2005.3f, 135.12f, 1.034f}, // 11 scenes
-    {"fast-columns", 1734.2f, 237.01f, 3.397f}, // 11 scenes
-    {"fast-table-columns", 2032.8f, 284.82f, 2.820f}, // 11 scenes
-    {"fast-subdiv-8", 1797.9f, 438.58f, 25.287f}, // 11 scenes
-    {"fast-subdiv-16", 1797.9f, 464.11f, 15.356f}, // 11 scenes
-    {"fast-subdiv-32", 1797.9f, 476.61f, 10.561f}, // 11 scenes
-    {"fast-constant-depth", 1797.8f, 487.51f, 6.708f}, // 11 scenes
-    {"fast-adaptive-1", 1798.0f, 547.64f, 14.437f}, // 11 scenes
-    {"fast-adaptive-2", 1797.9f, 556.71f, 10.921f}, // 11 scenes
-    {"fast-oriented-1", 2143.3f, 585.83f, 8.691f}, // 11 scenes
-    {"xsharp-dda", 2567.0f, 426.59f, 54.981f}, // 10 scenes
-    {"xsharp-row-out", 2567.1f, 597.93f, 33.775f}, // 10 scenes
-    {"xsharp-column", 2583.5f, 601.06f, 11.034f}, // 10 scenes
-    {"hecker-steptable", 7835.7f, 0.00f, 1169.315f}, // 10 scenes
-    {"fatmap-256", 2436.1f, 166.65f, 8.423f}, // 8 scenes
-    {"fatmap-256-16", 2436.1f, 173.73f, 7.420f}, // 8 scenes
-    {"fatmap-lut", 2807.3f, 155.72f, 6.062f}, // 7 scenes
-    {"quake-subdiv16", 2884.3f, 512.11f, 19.037f}, // 10 scenes
-    {"quake-subdiv8", 2884.4f, 487.40f, 29.182f}, // 10 scenes
-    {"quake-d_draw16", 2863.9f, 346.47f, 7.825f}, // 10 scenes
+    {"affine", 1640.0f, 529.97f, 145.373f}, // 11 scenes
+    {"exact", 1804.3f, 335.37f, 283.306f}, // 11 scenes
+    {"persp-subdiv-4", 1797.2f, 452.68f, 187.282f}, // 11 scenes
+    {"persp-subdiv-8", 1796.6f, 588.58f, 110.230f}, // 11 scenes
+    {"persp-subdiv-16", 1797.0f, 683.91f, 71.341f}, // 11 scenes
+    {"persp-subdiv-32", 1803.5f, 733.34f, 52.262f}, // 11 scenes
+    {"constant-depth", 1794.7f, 772.93f, 38.087f}, // 11 scenes
+    {"persp-adaptive-0.5", 1814.7f, 1560.47f, 748.659f}, // 11 scenes
+    {"persp-adaptive-1", 1811.3f, 1894.15f, 108.022f}, // 11 scenes
+    {"persp-adaptive-2", 1811.3f, 1948.54f, 84.940f}, // 11 scenes
+    {"persp-adaptive-4", 1811.3f, 1989.01f, 70.796f}, // 11 scenes
+    {"fast-affine", 1717.0f, 139.13f, 3.976f}, // 11 scenes
+    {"fast-table", 2013.5f, 137.75f, 0.981f}, // 11 scenes
+    {"fast-columns", 1736.6f, 239.18f, 3.349f}, // 11 scenes
+    {"fast-table-columns", 2039.7f, 287.28f, 2.766f}, // 11 scenes
+    {"fast-subdiv-8", 1798.6f, 440.51f, 25.246f}, // 11 scenes
+    {"fast-subdiv-16", 1798.5f, 466.04f, 15.314f}, // 11 scenes
+    {"fast-subdiv-32", 1798.5f, 478.54f, 10.519f}, // 11 scenes
+    {"fast-constant-depth", 1798.5f, 489.45f, 6.666f}, // 11 scenes
+    {"fast-adaptive-1", 1798.6f, 549.57f, 14.396f}, // 11 scenes
+    {"fast-adaptive-2", 1798.6f, 558.64f, 10.879f}, // 11 scenes
+    {"fast-oriented-1", 2158.4f, 591.05f, 8.614f}, // 11 scenes
+    {"xsharp-dda", 2576.2f, 430.73f, 54.895f}, // 10 scenes
+    {"xsharp-row-out", 2576.1f, 602.07f, 33.689f}, // 10 scenes
+    {"xsharp-column", 2589.5f, 602.96f, 10.965f}, // 10 scenes
+    {"hecker-steptable", 7838.2f, 0.00f, 1169.371f}, // 10 scenes
+    {"fatmap-256", 2441.3f, 169.50f, 8.327f}, // 8 scenes
+    {"fatmap-256-16", 2441.3f, 176.59f, 7.323f}, // 8 scenes
+    {"fatmap-lut", 2813.3f, 158.65f, 5.955f}, // 7 scenes
+    {"quake-subdiv16", 2902.8f, 517.18f, 18.928f}, // 10 scenes
+    {"quake-subdiv8", 2903.9f, 492.57f, 29.070f}, // 10 scenes
+    {"quake-d_draw16", 2877.8f, 350.12f, 7.748f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
@@ -117,8 +117,8 @@ const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
 // proof_scale: auto's choosing, cycles an instruction on the target
 const CostModel COST_MODELS[] = {
     {"icount", MAPPER_COSTS, 1.000},
-    {"486", MAPPER_COSTS_486, 3.817},
-    {"pentium", MAPPER_COSTS_PENTIUM, 1.693},
+    {"486", MAPPER_COSTS_486, 3.827},
+    {"pentium", MAPPER_COSTS_PENTIUM, 1.700},
 };
 
 }  // namespace raster
