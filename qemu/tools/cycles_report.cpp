@@ -129,4 +129,29 @@ std::string auto_by_target(const std::vector<TradeRow>& rows) {
     return any ? t : "";
 }
 
+std::string auto_against_singles_by_target(const std::vector<TradeRow>& rows) {
+    std::string t;
+    for (const bool i486 : {true, false})
+        for (const TradeRow& a : rows) {
+            auto on = [&](const TradeRow& r) -> const TradeRow::Cycles& { return i486 ? r.cycles_486 : r.cycles_pentium; };
+            const TradeRow::Cycles& c = on(a);
+            if (a.mapper != "auto" || !a.pixels || !c.draw) continue;
+            const TradeRow* best = nullptr;
+            for (const TradeRow& r : rows)
+                if (r.scene == a.scene && single_mapper(r) && on(r).draw && meets_budget(r, a.budget_error, a.budget_exact) &&
+                    (!best || r.per_pixel(on(r).draw) < best->per_pixel(on(*best).draw)))
+                    best = &r;
+            const double mine = a.per_pixel(c.draw), priced = c.priced_pixels ? double(c.priced_draw) / double(c.priced_pixels) : 0;
+            const double theirs = best ? best->per_pixel(on(*best).draw) : 0;
+            auto against = [&](double auto_px) { return best && auto_px > 0 ? fixed(theirs / auto_px, 2) + "×" : std::string("-"); };
+            t += "| " + a.scene + " | " + budget_text(a.budget_error) + (a.budget_exact ? " exact" : " any") + " | " + (i486 ? "486" : "Pentium") +
+                 " | " + (priced > 0 ? fixed(priced, 1) : std::string("-")) + " | " + fixed(mine, 1) + " | " +
+                 fixed(100.0 * double(c.choose) / double(c.draw), 1) + "% | " + (best ? best->mapper + " | " + fixed(theirs, 1) : std::string("none | -")) +
+                 " | " + against(priced) + " | " + against(mine) + " |\n";
+        }
+    if (t.empty()) return "";
+    return "| scene | budget | target | auto priced for it | priced by icount | choosing's share | fastest single mapper within | its cycles/px | "
+           "speed-up (priced for it) | speed-up (by icount) |\n|---|---|---|--:|--:|--:|---|--:|--:|--:|\n" + t;
+}
+
 }  // namespace harness

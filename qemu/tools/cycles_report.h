@@ -30,5 +30,10 @@ namespace harness {
 // priced by icount's cost model and by the target's (Cycles::priced_draw), and what it drew with
 // for each target, by share of pixels; "" where no row was priced.
 std::string auto_by_target(const std::vector<TradeRow>& rows);
+// A line a scene's auto row (at its budget) and target it ran on: its drawing cycles a pixel there,
+// priced for the target and by icount, against the fastest single mapper run there whose measured
+// error meets the budget (the speed-ups: its cycles over auto's), and choosing's share of auto's
+// drawing cycles priced by icount; "" where no auto row ran on a target.
+std::string auto_against_singles_by_target(const std::vector<TradeRow>& rows);
 
 }  // namespace harness

@@ -315,13 +315,6 @@ std::string isa_table(const std::vector<TradeRow>& rows) {
 
 namespace {
 
-// Whether the row meets a budget on the whole scene: everything drawn, the measured max footprint
-// error within it, and exact coverage if it asks for it.
-bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage) {
-    return r.draws_everything() && (max_error < 0 || r.accuracy.max_footprint_error <= max_error) &&
-           (!exact_coverage || (r.accuracy.gaps == 0 && r.accuracy.overdraw == 0));
-}
-
 // Whether the row's own bounds prove a budget on the whole scene before drawing: everything drawn,
 // its largest bound within it, and exact coverage promised if it asks for it.
 bool proves_budget(const TradeRow& r, double max_error, bool exact_coverage) {
@@ -330,6 +323,11 @@ bool proves_budget(const TradeRow& r, double max_error, bool exact_coverage) {
 }
 
 }  // namespace
+
+bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage) {
+    return r.draws_everything() && (max_error < 0 || r.accuracy.max_footprint_error <= max_error) &&
+           (!exact_coverage || (r.accuracy.gaps == 0 && r.accuracy.overdraw == 0));
+}
 
 bool single_mapper(const TradeRow& r) {
     const raster::Mapper* m = raster::find_mapper(r.mapper.c_str());
@@ -549,7 +547,8 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "every single mapper's rows and auto's at each scene's budget with the 486's: drawing instructions a pixel over all the "
            "scenes, their ratio, and the least and the most ratio of a scene. The pictures are the same.\n\n"
         << (isa.empty() ? std::string("(not measured)\n") : isa);
-    const std::string cycles = cycles_table(rows), modex = modex_table(rows), fronts = pareto_by_target(rows), priced = auto_by_target(rows);
+    const std::string cycles = cycles_table(rows), modex = modex_table(rows), fronts = pareto_by_target(rows), priced = auto_by_target(rows),
+                      against = auto_against_singles_by_target(rows);
     out << "\n## Cycles on a 486 and a Pentium (the timing model)\n\n"
         << "The same frames run again in the kernel under QEMU's `-cpu 486` and `-cpu pentium` with the timing model's plugin "
            "(docs/cycles.md, \"Whole frames\"): estimated cycles a pixel over all the scenes a mapper drew, of its inner loops, of "
@@ -575,6 +574,9 @@ void write_markdown(const std::string& path, const std::vector<TradeRow>& rows, 
            "the budget priced for the target (`budget ... 486|pentium`: the cost model fitted to that target's cycles, "
            "docs/auto.md, \"Per target\"). Drawing cycles a pixel, and what the priced runs drew with, by share of pixels.\n\n"
         << (priced.empty() ? std::string("(not measured)\n") : priced)
+        << "\nOn each target, auto at each scene's budget against the fastest single mapper whose measured error meets it, in the "
+           "target's drawing cycles a pixel, and choosing's share of auto's drawing cycles there (priced by icount).\n\n"
+        << (against.empty() ? std::string("(not measured)\n") : against)
         << "\n### Straight into Mode X, or into RAM and a blit\n\n"
         << "On each scene, target and bus: the fastest whole frame (cycles a pixel drawn) of the mappers that draw straight into "
            "the VGA's page (surface vga), against the fastest that draw into RAM and blit the page (linear, planar). Which wins "

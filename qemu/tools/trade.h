@@ -122,6 +122,9 @@ struct ReportInfo {
 // Whether the row is a single mapper's (a registry row that does not choose; auto's rows are
 // "auto" and "auto@BUDGET").
 bool single_mapper(const TradeRow& r);
+// Whether the row meets a budget on the whole scene: everything drawn, the measured max footprint
+// error within it, and exact coverage if it asks for it.
+bool meets_budget(const TradeRow& r, double max_error, bool exact_coverage);
 // The fastest single mapper on a's scene whose measured error meets a's budget on every frame
 // (everything drawn, its max footprint error within, exact coverage where asked); nullptr: none.
 const TradeRow* fastest_within(const std::vector<TradeRow>& rows, const TradeRow& a);

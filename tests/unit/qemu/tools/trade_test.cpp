@@ -182,6 +182,28 @@ TEST(Trade, AutoIsSetAgainstTheFastestMeasuredAndTheFastestProven) {
     EXPECT_NE(t2.find("| fast-table | 10.0 | 0.40× | 0.67× | exact | 90.0 | 3.60× |"), std::string::npos) << t2;
 }
 
+// On each target auto (at its scene's budget) is set against the fastest single mapper run there
+// whose measured error meets the budget, in that target's cycles; choosing's share is of auto's.
+TEST(Trade, AutoAgainstTheFastestSingleMapperOnEachTarget) {
+    std::vector<TradeRow> rows = {row("a", "exact", 9000, 0), row("a", "fast-affine", 2000, 1), row("a", "fast-table", 1000, 1),
+                                  row("a", "auto", 2500, 0)};
+    for (TradeRow& r : rows) r.accuracy.max_footprint_error = 0.5, r.budget_error = 1, r.budget_exact = true;
+    rows[2].accuracy.max_footprint_error = 2;  // fast-table: not within
+    auto cycles = [](uint64_t draw, uint64_t choose) {
+        TradeRow::Cycles c;
+        c.draw = draw, c.choose = choose;
+        return c;
+    };
+    rows[0].cycles_486 = cycles(9000, 0), rows[1].cycles_486 = cycles(3000, 0), rows[2].cycles_486 = cycles(1000, 0);
+    rows[3].cycles_486 = cycles(2500, 500), rows[3].cycles_486.priced_draw = 2000, rows[3].cycles_486.priced_pixels = 100;
+    rows[1].cycles_pentium = cycles(800, 0), rows[3].cycles_pentium = cycles(1000, 100);
+    const std::string t = auto_against_singles_by_target(rows);
+    EXPECT_NE(t.find("| a | 1 exact | 486 | 20.0 | 25.0 | 20.0% | fast-affine | 30.0 | 1.50× | 1.20× |"), std::string::npos) << t;
+    EXPECT_NE(t.find("| a | 1 exact | Pentium | - | 10.0 | 10.0% | fast-affine | 8.0 | - | 0.80× |"), std::string::npos) << t;
+    rows[3].cycles_486 = rows[3].cycles_pentium = TradeRow::Cycles{};
+    EXPECT_EQ(auto_against_singles_by_target(rows), "") << "auto not run on a target";
+}
+
 // The CSV read back holds every figure the report and the docs show: written again, it is the same
 // file, byte for byte; a malformed field is named with its line.
 TEST(Trade, TheCsvReadBackIsTheSameRows) {
