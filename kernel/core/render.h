@@ -23,9 +23,9 @@ SetupStatus draw_polygon(const Vertex* vertices, int count, const Texture& tex, 
                          Input input = Input::Any);
 // A mapper set to draw with one texture along one axis into one target: what draw_polygon settles
 // before each polygon (whether the mapper takes them at all, and its loop), settled once, for a
-// mapper that does not choose (render_frame keeps them an object: the frame's mapper, or auto's
-// envelope-proven and certain ones). No default member initialisers: render_frame keeps three an
-// object (192) a frame, and only those Drawer::of makes, which sets every field, are read.
+// mapper that does not choose (a frame's drivers keep them an object: the frame's mapper, or auto's
+// envelope-proven and certain ones). No default member initialisers: a frame driver keeps several
+// an object a frame, and only those Drawer::of makes, which sets every field, are read.
 struct Drawer {
     const Mapper* mapper;
     const Texture* tex;

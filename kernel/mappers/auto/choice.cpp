@@ -354,6 +354,18 @@ AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& targe
     // most lines, where the certain one's is the less) + pixel P: above 0 where P > P0 below, the
     // pixels one more for the roundings)
     plan.choosing_pays_above2 = INT64_MAX;
+    // (each term of the estimates' difference less CHOICE_COST taken at its largest over a box of
+    // W x H pixels: the certain one's lines along its walker, the others' at most the box's longer
+    // side where a fitted cost a line is below 0, the pixels at most W H)
+    plan.small_box = SmallBox{-1, 0, 0, 0, 0};
+    if (plan.certain && !plan.sole) {
+        SmallBox& b = plan.small_box;
+        b = SmallBox{0, plan.certain_row.polygon - plan.others.polygon - plan.choice_cost, larger(plan.certain_row.span, 0.0),
+                     larger(-plan.others.span, 0.0), larger(plan.certain_row.pixel - plan.others.pixel, 0.0)};
+        // (the largest box, W H subpixels squared, where the test can pass: its other terms 0)
+        const double one = double(SUBPIXEL_ONE), most = b.pixel > 0 ? (-1 - b.fixed) / b.pixel * one * one : 1e300;
+        b.most_box = b.fixed > -1 ? -1 : most < 4e18 ? int64_t(most) : INT64_MAX;
+    }
     const CostRow &mine = plan.certain_row, &least = plan.others;
     if (plan.certain && !plan.sole && plan.exact_below == 0 && mine.pixel > least.pixel) {
         const double most_lines = double(larger(target.clip.x1 - target.clip.x0, target.clip.y1 - target.clip.y0));
@@ -383,8 +395,23 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
         x_lo = x < x_lo ? x : x_lo, x_hi = x > x_hi ? x : x_hi, y_lo = y < y_lo ? y : y_lo, y_hi = y > y_hi ? y : y_hi;
     }
     const int32_t width = box_inside(x_lo, x_hi, clip.x0, clip.x1), height = box_inside(y_lo, y_hi, clip.y0, clip.y1);
+    const double one = double(SUBPIXEL_ONE), span = plan.certain_row.span;
+    double lines[2];
+    // its lines along each walker, and its walker: the estimates on its walkers differ only in their lines
+    auto walker = [&] [[gnu::always_inline]] {
+        lines[int(Axis::Rows)] = double(height) / one;
+        lines[int(Axis::Columns)] = double(width) / one;
+        if (plan.certain_walkers == 2 && span * lines[int(plan.certain_axes[1])] < span * lines[int(*axis)]) *axis = plan.certain_axes[1];
+    };
+    // a box so small that no polygon in it could pay for choosing (AutoPlan::small_box)
+    const SmallBox& small = plan.small_box;
+    if (!plan.sole && int64_t(width) * height <= small.most_box) {
+        walker();
+        const double most = larger(lines[0], lines[1]);
+        if (small.fixed + small.line * lines[int(*axis)] + small.other_line * most + small.pixel * lines[0] * lines[1] <= -1) return plan.certain;
+    }
     // twice the area the setup would find (the shoelace over the corners: repeated ones add nothing)
-    double area2 = 0;  // (not needed with one candidate)
+    double area2 = 0;
     if (!plan.sole && count == 3) {
         const Vertex &a = vertices[0], &b = vertices[1], &c = vertices[2];
         area2 = double(b.x.raw - a.x.raw) * double(c.y.raw - a.y.raw) - double(c.x.raw - a.x.raw) * double(b.y.raw - a.y.raw);
@@ -396,13 +423,7 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     }
     area2 = magnitude(area2);
     if (area2 > double(plan.choosing_pays_above2) && 2 * int64_t(width) * height > plan.choosing_pays_above2) return nullptr;
-    const double one = double(SUBPIXEL_ONE);
-    double lines[2];
-    lines[int(Axis::Rows)] = double(height) / one;
-    lines[int(Axis::Columns)] = double(width) / one;
-    // its walker: the estimates on its walkers differ only in their lines
-    const double span = plan.certain_row.span;
-    if (plan.certain_walkers == 2 && span * lines[int(plan.certain_axes[1])] < span * lines[int(*axis)]) *axis = plan.certain_axes[1];
+    walker();
     if (plan.sole) return plan.certain;
     const double area = area2 / (2 * one * one), box = lines[0] * lines[1], pixels = area < box ? area : box;
     const double best = plan.certain_row.polygon + span * lines[int(*axis)] + plan.certain_row.pixel * pixels;

@@ -134,14 +134,24 @@ constexpr double ORIENTED_GATE = 20000;
 // model's straight lines are too coarse to choose by (docs/auto.md, "The object's envelope").
 constexpr double ENVELOPE_SETUP_ALLOWANCE = 500;
 
-// What auto settles once a frame per object, before drawing its polygons (render_frame; docs/auto.md,
+// The box sizes where choosing cannot pay on any polygon inside (unchosen_mapper, before the
+// polygon's area and estimates): the certain one's estimate is at most the others' least plus
+// CHOICE_COST wherever fixed + line L + other_line M + pixel W H <= -1, with W and H the box's sides
+// inside the clip (pixels), L its lines along the certain one's walker and M the longer side; each
+// term the largest its part of the estimates' difference can be in such a box (docs/auto.md).
+struct SmallBox {
+    int64_t most_box;  // the largest W H (subpixels squared) where it can hold; -1: nowhere (one candidate, or no certain one)
+    double fixed, line, other_line, pixel;
+};
+
+// What auto settles once a frame per object, before drawing its polygons (auto_draw_frame; docs/auto.md,
 // "The object's envelope" and "Settled once a frame per object"): the mapper the object's envelope
 // proves on its uncut triangles (envelope_footprint, frame.h) and its walker, where exactly one
 // candidate is enveloped and, with no proof to pay, costs no more than any other with its proof on
 // every triangle the guards and the limits below let through (draw_enveloped, mappers/auto/draw.h); the certain
 // candidate (exact), its walkers and cost row, for unchosen_mapper; whether it is the only one (a
 // budget of 0), else the least cost a polygon, a span and a pixel of any other with its first proof.
-// No default member initialisers: render_frame keeps one a possible object; plan_auto fills them.
+// No default member initialisers: auto_draw_frame keeps one an object; plan_auto fills them.
 struct AutoPlan {
     const Mapper* enveloped;
     Axis enveloped_axis;
@@ -161,6 +171,7 @@ struct AutoPlan {
     // the walker where they cost least, plus CHOICE_COST, by a pixel's difference at least; else
     // INT64_MAX
     int64_t choosing_pays_above2;
+    SmallBox small_box;
 };
 // The candidates for a texture, a target and a budget, (mapper, walker) pairs (choose_mapper and
 // plan_auto build them): what they depend on is a few bits (the texture's copies and shape, the target's kind, whether the budget asks for

@@ -327,6 +327,51 @@ TEST(Auto, NoAffineSteppingMapperIsBoundedBelowTheAffineDeviation) {
     std::printf("  %d bounds asked; the deviation above 1 on %d polygons; the least bound over it %.3f\n", asked, above_one, worst);
 }
 
+// The small box (AutoPlan::small_box) gives exact unchosen before any area or estimate only where
+// the whole rule would (exact's estimate on its walker at most the others' least plus CHOICE_COST),
+// and does on most polygons of a pixel or two. A plan whose others cost nothing leaves the box the
+// only way to exact; random triangles of half a pixel to 120, every budget, either target.
+TEST(Auto, TheSmallBoxGivesExactOnlyWhereTheWholeRuleWould) {
+    TriangleGen gen(1129u);
+    std::vector<uint8_t> texels(256 * 256);
+    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
+    TextureCopies copies(&tex);
+    int by_box = 0, tiny = 0, tiny_by_box = 0;
+    for (Surface surface : {Surface::Linear, Surface::Planar}) {
+        Target target = surface_kind(surface);
+        target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+        for (const Budget& b : BUDGETS) {
+            const AutoPlan plan = plan_auto(b, tex, target, NO_BOUND);
+            if (plan.sole) continue;
+            AutoPlan only_box = plan;
+            only_box.others = CostRow{-1e30, 0, 0}, only_box.exact_below = 0, only_box.choosing_pays_above2 = INT64_MAX;
+            for (int n = 0; n < 2000; ++n) {
+                std::vector<Vertex> p = gen.triangle();
+                PreparedPolygon prepared;
+                prepare_setup(p.data(), 3, &prepared);
+                if (prepared.status != SetupStatus::Ok) continue;
+                PolygonSize size[2];
+                polygon_sizes(prepared.setup, target.clip, size);
+                Axis axis, box_axis;
+                const Mapper* whole = unchosen_mapper(plan, p.data(), 3, target.clip, &axis);
+                const bool boxed = unchosen_mapper(only_box, p.data(), 3, target.clip, &box_axis) == plan.certain;
+                const bool small = size[0].spans <= 2 && size[1].spans <= 2;
+                tiny += small, tiny_by_box += small && boxed;
+                if (!boxed) continue;
+                ++by_box;
+                const double best = estimate_cost(plan.certain_row, size[int(box_axis)]);
+                const double least = std::min(estimate_cost(plan.others, size[0]), estimate_cost(plan.others, size[1]));
+                EXPECT_LE(best, least + plan.choice_cost) << "polygon " << n << " at budget " << b.max_error;
+                EXPECT_EQ(whole, plan.certain) << "polygon " << n << ": the whole rule gives exact too";
+                EXPECT_EQ(int(axis), int(box_axis)) << "polygon " << n << ": on the same walker";
+                if (HasFailure()) return;
+            }
+        }
+    }
+    std::printf("  exact unchosen by the box alone on %d polygons; on %d of the %d within 2 x 2 pixels\n", by_box, tiny_by_box, tiny);
+    EXPECT_GT(tiny_by_box * 2, tiny) << "most polygons of a pixel or two";
+}
+
 // Where choosing cannot pay (unchosen_mapper), auto draws exact unchosen: only where, by the cost
 // model, exact on that walker costs no more than CHOICE_COST plus what the choice would draw with
 // its proof; at a budget of 0, always, on the walker the choice takes. On random polygons at
