@@ -218,7 +218,7 @@ struct Mapper {
     SpanProof span_proof = SPANS_NOT_ASKED;  // whether auto asks its bound span by span (mappers/auto/choice.h)
     // Its bound is the 16.16 planes' (spread_planes_bound, planes_fit_16_16): an object's envelope
     // proves it on the object's uncut triangles (plan_auto, mappers/auto/choice.h), which auto draws with
-    // this driver (draw's, given DrawContext::envelope: draw_enveloped, render.h); nullptr: no
+    // this driver (draw's, given DrawContext::envelope: draw_enveloped, mappers/auto/draw.h); nullptr: no
     // envelope proves it. (A driver of its own, so that the mapper's own path checks nothing.)
     DrawFn enveloped = nullptr;
     // The planes its span routine reads, all draw_with sets up for it (the perspective ones, but

@@ -1,6 +1,6 @@
-// The budgeted choice of mapper (docs/auto.md): a scene's budget, the cost model
-// the bench measures, and `auto`, which draws each polygon with the cheapest mapper whose bound
-// meets the budget.
+// auto's choice (docs/auto.md): the cost model the bench measures, the candidates, their proofs and
+// the plans once a frame per object, with which auto draws each polygon with the cheapest mapper
+// whose bound meets the scene's budget (kernel/core/budget.h).
 #pragma once
 
 #include <stddef.h>
