@@ -65,17 +65,13 @@ RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, cons
     }
     each_frame_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
         const AutoPlan& plan = plans[object];
-        const Texture& tex = textures.objects[object];
         Axis unchosen_axis;
-        const Mapper* unchosen = nullptr;
         if (plan.enveloped && input == Input::InRange && n == 3)  // (an uncut triangle)
             draw_enveloped(enveloped[object], v, variant, frame.budget);
-        else if ((unchosen = timed_unchosen(plan, v, n, target.clip, &unchosen_axis, stats)) && unchosen == plan.certain)
+        else if (timed_unchosen(plan, v, n, target.clip, &unchosen_axis, stats))  // (the certain one, or none)
             certain[object][int(unchosen_axis)].draw(v, n, input);
-        else if (unchosen)
-            Drawer::of(*unchosen, tex, unchosen_axis, target, &stats, variant).draw(v, n, input);
         else
-            choose_and_draw(v, n, tex, axis, target, &stats, variant, frame.budget, input);
+            choose_and_draw(v, n, textures.objects[object], axis, target, &stats, variant, frame.budget, input);
     });
     if (watch) watch->drawn();
     return stats;
