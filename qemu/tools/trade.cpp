@@ -343,23 +343,29 @@ const TradeRow* fastest_within(const std::vector<TradeRow>& rows, const TradeRow
     return best;
 }
 
+std::string proof_levels(const TradeRow& a) {
+    if (!a.levels_known) return "-";
+    return std::to_string(a.enveloped) + " / " + std::to_string(a.proven_whole) + " / " + std::to_string(a.proven_spans) + " / " +
+           std::to_string(a.unasked());
+}
+
+namespace {
+
+// An auto row (`auto`, or `auto@B` at a budget of B).
+bool auto_row(const TradeRow& r) {
+    const raster::Mapper* m = raster::find_mapper(r.mapper.substr(0, r.mapper.find('@')).c_str());
+    return m && m->is_auto;
+}
+
+}  // namespace
+
 // auto against the fastest single mapper that meets the same budget on the whole scene, by its
 // measured error; and against the fastest single mapper whose own bounds prove it on every polygon
 // (what auto proves of its own choice before drawing).
-std::string proof_levels(const TradeRow& a) {
-    if (!a.levels_known) return "-";
-    uint64_t drawn = 0;
-    for (const auto& [name, polygons, pixels] : a.drawn_by) drawn += polygons;
-    const uint64_t asked = a.enveloped + a.proven_whole + a.proven_spans;
-    return std::to_string(a.enveloped) + " / " + std::to_string(a.proven_whole) + " / " + std::to_string(a.proven_spans) + " / " +
-           std::to_string(drawn > asked ? drawn - asked : 0);
-}
-
 std::string auto_rows(const std::vector<TradeRow>& rows, bool scene_budget_only) {
     std::string table;
     for (const TradeRow& a : rows) {
-        const raster::Mapper* m = raster::find_mapper(a.mapper.substr(0, a.mapper.find('@')).c_str());
-        if (!m || !m->is_auto || !a.pixels || (scene_budget_only && a.mapper != m->name)) continue;
+        if (!auto_row(a) || !a.pixels || (scene_budget_only && a.mapper != "auto")) continue;
         const TradeRow *best = fastest_within(rows, a), *proven = nullptr;
         for (const TradeRow& r : rows)
             if (r.scene == a.scene && single_mapper(r) && proves_budget(r, a.budget_error, a.budget_exact) &&
@@ -406,14 +412,11 @@ void write_auto_table(std::ostream& out, const std::vector<TradeRow>& rows) {
         << table;
     std::string spent;
     for (const TradeRow& a : rows) {
-        const raster::Mapper* m = raster::find_mapper(a.mapper.substr(0, a.mapper.find('@')).c_str());
-        if (!m || !m->is_auto || !a.draw || !a.levels_known || double(a.choose) <= 0.03 * double(a.draw)) continue;
-        uint64_t drawn = 0;
-        for (const auto& [name, polygons, pixels] : a.drawn_by) drawn += polygons;
-        const uint64_t searched = a.proven_whole + a.proven_spans, tested = drawn - a.enveloped;
+        if (!auto_row(a) || !a.draw || !a.levels_known || double(a.choose) <= 0.03 * double(a.draw)) continue;
+        const uint64_t searched = a.proven_whole + a.proven_spans, tested = searched + a.unasked();
         spent += "- " + a.scene + " " + a.mapper + ": " + fixed(100.0 * double(a.choose) / double(a.draw), 1) + "% of its draw, " +
                  fixed(double(a.choose) / double(tested ? tested : 1), 0) + " instructions a polygon it tested: the plans once a frame, "
-                 "the test of " + std::to_string(tested) + " polygons (" + std::to_string(tested - searched) + " then drawn unasked) and the "
+                 "the test of " + std::to_string(tested) + " polygons (" + std::to_string(a.unasked()) + " then drawn unasked) and the "
                  "proofs and search on " + std::to_string(searched) + " (" + std::to_string(a.proven_spans) + " span by span)\n";
     }
     if (!spent.empty()) out << "\nWhere choosing is over 3% of auto's draw, what it is spent on:\n\n" << spent;

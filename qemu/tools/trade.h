@@ -50,6 +50,13 @@ struct TradeRow {
     uint64_t enveloped = 0;  // of those, the polygons auto drew as their object's envelope proved
     uint64_t proven_whole = 0, proven_spans = 0;  // and as their whole polygon's bound, their spans' (the rest: unasked)
     bool levels_known = true;  // the two above measured (a trade.csv of an earlier bench has them not)
+    // the polygons auto drew unasked: all it drew (drawn_by) but those proven at some level
+    uint64_t unasked() const {
+        uint64_t drawn = 0;
+        for (const auto& by : drawn_by) drawn += std::get<1>(by);
+        const uint64_t asked = enveloped + proven_whole + proven_spans;
+        return drawn > asked ? drawn - asked : 0;
+    }
     std::string budget;
     double budget_error = -1;   // the budget's footprint error (below 0: any), whether it asks for
     bool budget_exact = false;  // exact coverage, and whether the scene states it (else the default)

@@ -174,9 +174,9 @@ struct AutoPlan {
     SmallBox small_box;
 };
 // The candidates for a texture, a target and a budget, (mapper, walker) pairs (choose_mapper and
-// plan_auto build them): what they depend on is a few bits (the texture's copies and shape, the target's kind, whether the budget asks for
-// exact coverage, which only some mappers promise, and whether it asks for no error at all, which
-// only the reference itself promises: every other bound counts some rounding), so each set is
+// plan_auto build them): what they depend on is a few bits (the texture's copies and shape, the
+// target's kind, whether the budget asks for exact coverage, which only some mappers promise, and
+// whether it asks for no error at all, which only the reference itself promises), so each set is
 // built once, in the order of their cost per pixel (the term that dominates on all but the smallest
 // polygons), so that a polygon prices them lazily: only while one not yet priced could cost less
 // than the cheapest priced and not yet asked (the dearest per pixel are mostly never priced).
