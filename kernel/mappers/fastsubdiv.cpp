@@ -165,27 +165,44 @@ ErrorBound fast_adaptive_bound(const BoundContext& c, const Vertex* vertices, in
     });
 }
 
+namespace {
+
+constexpr double EPS = 2.220446049250313e-16, MARGIN = 1 + 1e-9;
+
+// Q's least value at the corners of a polygon inside the clip (its vertices: the spread's corners)
+// less twice the spread's widening (its own evaluation of Q may round otherwise), Q's terms there,
+// and the corners' largest |x| and |y|: fast_certificate's, and fast_oriented_guard's.
+struct QLeast {
+    double q_min, scale_q, far_x, far_y;
+    double terms(const Plane& p) const { return (magnitude(p.a0) + magnitude(p.gy) * far_y + magnitude(p.gx) * far_x) * MARGIN; }
+};
+QLeast q_least(const PolygonSetup& s) {
+    QLeast l{0, 0, 0, 0};
+    double q_lo = 0;
+    for (int i = 0; i < s.edge_count; ++i) {
+        const double x = double(s.edges[i].px - s.ref_x), y = double(s.edges[i].py - s.ref_y);
+        const double q = s.q.at(x, y);
+        q_lo = i && !(q < q_lo) ? q_lo : q;
+        l.far_x = larger(l.far_x, magnitude(x)), l.far_y = larger(l.far_y, magnitude(y));
+    }
+    l.scale_q = l.terms(s.q);
+    l.q_min = (q_lo - 16 * EPS * l.scale_q) * (1 - 1e-9);
+    return l;
+}
+
+}  // namespace
+
 FastCertificate fast_certificate(const PolygonSetup& s, const ClipRect& clip, const Texture& tex) {
     FastCertificate f;
     // (the mappers take the texture: its sides divide 65536)
     if (tex.wrap != Wrap::Repeat) return f;
     // inside the clip: the spread's corners are the vertices (spread_corners)
     if (!box_in_clip(s, clip)) return f;
-    constexpr double EPS = 2.220446049250313e-16, MARGIN = 1 + 1e-9;
-    // Q at the corners as the spread takes it, and the corners' largest |x| and |y|
-    double q_lo = 0, far_x = 0, far_y = 0;
-    for (int i = 0; i < s.edge_count; ++i) {
-        const double x = double(s.edges[i].px - s.ref_x), y = double(s.edges[i].py - s.ref_y);
-        const double q = s.q.at(x, y);
-        q_lo = i && !(q < q_lo) ? q_lo : q;
-        far_x = larger(far_x, magnitude(x)), far_y = larger(far_y, magnitude(y));
-    }
-    auto terms = [&](const Plane& p) { return (magnitude(p.a0) + magnitude(p.gy) * far_y + magnitude(p.gx) * far_x) * MARGIN; };
-    const double scale_q = terms(s.q);
-    // the spread's Q_min, less twice its widening (its own evaluation of Q may round otherwise),
-    // and Q's terms within 2^26 of it (fast-adaptive's whole bound's condition, each corner's terms
-    // at most scale_q)
-    const double q_min = (q_lo - 16 * EPS * scale_q) * (1 - 1e-9);
+    const QLeast l = q_least(s);
+    const double q_min = l.q_min, scale_q = l.scale_q;
+    auto terms = [&](const Plane& p) { return l.terms(p); };
+    // Q above 0, and its terms within 2^26 of its least (fast-adaptive's whole bound's condition,
+    // each corner's terms at most scale_q)
     if (!(q_min > 0) || !(scale_q <= q_min * 67108864.0)) return f;
     const Plane* exact[2] = {&s.pu, &s.pv};
     const Plane* affine[2] = {&s.u, &s.v};
@@ -245,6 +262,63 @@ bool fast_adaptive_certain(const FastCertificate& f, const PolygonSetup& s, Axis
 template <int QUARTERS>
 bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Texture& tex, Axis axis) {
     return fast_adaptive_certain<QUARTERS>(fast_certificate(s, clip, tex), s, axis);
+}
+
+namespace {
+
+// fast_oriented_guard's limits (docs/bounds.md, "fast-oriented-1's guard"): |P| / Q's terms at
+// most GUARD_T times Q's least, so that fast_certificate's t_abs is within GUARD_T MARGIN and its
+// reference rounding within GUARD_REFERENCE; the affine planes' terms within GUARD_AFFINE
+// (fast_oriented_guard_takes); GUARD_SLACK covers each computed value's own rounding.
+constexpr double GUARD_T = 15000, GUARD_AFFINE = 1e18, GUARD_SLACK = 1 + 1e-12;
+constexpr double GUARD_REFERENCE = 2 * (4 * EPS * (GUARD_T + GUARD_T * MARGIN * 67108864.0) + 2 * EPS * GUARD_T * MARGIN) * MARGIN * GUARD_SLACK;
+static_assert((2 * GUARD_T * MARGIN + 2 * (2 * GUARD_REFERENCE + 4 * EPS * GUARD_AFFINE)) * MARGIN * MARGIN * GUARD_SLACK < FAST_ARITHMETIC.chord,
+              "the range of t fits 16.16's chords (fast_certificate's range)");
+static_assert(FAST_ARITHMETIC.at(FAST_SPAN_LONG - 1) + 2 * GUARD_REFERENCE <= FAST_ADAPTIVE_ROUNDING, "fast_adaptive_certain's rounding");
+// relative_chords_bound(X M, R) <= 1 where 2 X M (1 + 1e-9)^2 <= 1 - R (1 + 1e-9), R its rounding
+// (at most GUARD_R): the two-pixel chords' |Q'| at most GUARD_CHORD times Q's least
+constexpr double GUARD_R = (FAST_ARITHMETIC.at(1) + 2 * GUARD_REFERENCE) * MARGIN * GUARD_SLACK;
+constexpr double GUARD_CHORD = (1 - GUARD_R * (1 + 2e-9)) / (2 * MARGIN * (1 + 2e-9)) / GUARD_SLACK;
+
+}  // namespace
+
+bool fast_oriented_guard_takes(double texel_most, const ClipRect& clip) {
+    // the affine plane through the fan triangle of largest doubled area D (at least area2 / (n - 2),
+    // area2 >= 1) has terms at most A (1 + 8 (n - 2) far_x far_y / area2), far_x and far_y within
+    // the clip's sides (subpixels)
+    const double w = double(clip.x1 - clip.x0) * double(SUBPIXEL_ONE), h = double(clip.y1 - clip.y0) * double(SUBPIXEL_ONE);
+    return texel_most >= 0 && texel_most * (1 + 8.0 * (MAX_POLYGON_VERTICES - 2) * w * h) * (1 + 1e-6) * MARGIN <= GUARD_AFFINE;
+}
+
+double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axis) {
+    if (!box_in_clip(s, clip)) return 0;
+    // Q's least over the box first (the corners', relative to the reference vertex, are its
+    // corners): at most its least at the vertices, each computed within 4 eps of Q's terms, so less
+    // 20 eps of them it is at most q_least's Q_min; where that fails (the box reaching where Q is
+    // far less, a slanted polygon), q_least's own
+    const double x_lo = double(int32_t(s.min_x - s.ref_x)), x_hi = double(int32_t(s.max_x - s.ref_x));
+    const double y_lo = double(int32_t(s.min_y - s.ref_y)), y_hi = double(int32_t(s.max_y - s.ref_y));
+    QLeast l{0, 0, larger(-x_lo, x_hi), larger(-y_lo, y_hi)};
+    l.scale_q = l.terms(s.q);
+    const double q_lo = s.q.a0 + s.q.gy * (s.q.gy < 0 ? y_hi : y_lo) + s.q.gx * (s.q.gx < 0 ? x_hi : x_lo);
+    const double scale_pu = l.terms(s.pu), scale_pv = l.terms(s.pv), gradient = magnitude(axis == Axis::Rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
+    auto holds = [&](double q_min) {
+        const double t_most = GUARD_T * q_min;
+        return q_min > 0 && l.scale_q <= q_min * 67108864.0 && scale_pu <= t_most && scale_pv <= t_most && gradient <= GUARD_CHORD * q_min;
+    };
+    const double q_box = (q_lo - 20 * EPS * l.scale_q) * (1 - 1e-9);
+    if (holds(q_box)) return q_box;
+    const double q_corners = q_least(s).q_min;
+    return holds(q_corners) ? q_corners : 0;
+}
+
+bool fast_constant_within(const PolygonSetup& s, Axis axis, double q_min, double room) {
+    // fast_chords_bound's for 512 pixels at the certificate's Q_min (at least q_min) and rounding
+    // (within FAST_ADAPTIVE_ROUNDING): X = h^2 |Q'| / (4 Q_min) M, h the box's extent along the lines
+    const bool rows = axis == Axis::Rows;
+    const double last = double(rows ? s.max_x - s.min_x : s.max_y - s.min_y) / double(SUBPIXEL_ONE);
+    const double h = last < FAST_SPAN_LONG ? last : FAST_SPAN_LONG;
+    return h * h * magnitude(rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE) * MARGIN * GUARD_SLACK <= 4 * q_min * room;
 }
 
 Axis oriented_axis(const PolygonSetup& s, const PolygonSize size[2], double room) {

@@ -47,7 +47,7 @@ struct SegmentArithmetic {
     double fixed = HALF_ULP_16_16;     // texels at every pixel (ours: half a 16.16 unit at the start)
     double per_step = HALF_ULP_16_16;  // texels each step from the segment's first pixel adds (ours: half a unit)
     double chord = 1e300;              // |t1 - t0| between a chord's exact ends must stay below this (fast-subdiv: 32767)
-    double at(double steps) const { return fixed + steps * per_step; }
+    constexpr double at(double steps) const { return fixed + steps * per_step; }
 };
 ErrorBound segments_bound(const BoundContext& c, const Vertex* vertices, int count, double N, const SegmentArithmetic& arithmetic);
 // Its bound on one span, from the span's line (bound_by_spans' span_bound_of): clears *fits where

@@ -263,7 +263,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
         f.stats.faces += uint32_t(mesh.face_count);
         if (used + mesh.position_count > position_room) {
             f.stats.overflow += uint32_t(mesh.face_count);
-            f.envelope[o] = EnvelopeBound{};
+            f.envelope[o] = EnvelopeBound{}, f.texel_most[o] = NO_BOUND;
             continue;
         }
         const Placement place = Placement::of(object, time);
@@ -312,6 +312,7 @@ void build_frame(const World& world, int32_t frame_number, Frame* out, FrameScra
             entry_list[entries++] = FrameScratch::Entry{depth / face.count, o, mesh.first_face + k, any != 0};
         }
         f.envelope[o] = envelope_bound(object_envelope(world, o, place, view, nearest));
+        f.texel_most[o] = object_texel_most(world, o);
     }
     const int32_t* order = painter_order(scratch, entries);
 
@@ -386,6 +387,14 @@ TriangleEnvelope object_envelope(const World& world, int32_t o, const Placement&
     const double scale = magnitude(place.scale), w_error = R * (scale * mesh.radius + length(place.position) + length(view.eye));
     e.depth_ratio = nearest > 0 && mesh.measured ? (scale * mesh.triangle_edge * (1 + 0x1p-30) + 2 * w_error) / nearest : NO_BOUND;
     return e;
+}
+
+double object_texel_most(const World& world, int32_t o) {
+    const Object& object = world.objects[o];
+    const Mesh& mesh = world.meshes[object.mesh];
+    const WorldTexture& texture = world.textures[object.texture];
+    // (each product within a rounding, and a cut corner within a few of its ends' largest)
+    return larger(mesh.uv_abs[0] * double(texture.width), mesh.uv_abs[1] * double(texture.height)) * (1 + 0x1p-40);
 }
 
 FrameRoom frame_room(const World& world) {

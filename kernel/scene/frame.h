@@ -49,6 +49,10 @@ struct Frame {
     // per object: what its envelope proves on its uncut triangles (object_envelope), which auto
     // takes as their proof (footprint NO_BOUND: none)
     EnvelopeBound envelope[MAX_WORLD_OBJECTS];
+    // per object: the largest |u| and |v| (texels) at any corner of its polygons, from above (its
+    // mesh's texture coordinates times its texture's sides; a corner cut from two others lies
+    // between them): what auto's oriented path asks of an object (fast_oriented_guard_takes)
+    double texel_most[MAX_WORLD_OBJECTS];
     // The polygons, room.polygons of them and room.vertices corners, where the owner puts them:
     FrameRoom room;
     uint8_t* polygon_size = nullptr;
@@ -169,6 +173,8 @@ void build_frame(const World& world, int32_t frame, Frame* out, FrameScratch* sc
 // its mesh's measures at its placement, `nearest` at most the least w of the positions inside every
 // clip plane that are corners of its faces drawn (build_frame: those of the faces not culled).
 TriangleEnvelope object_envelope(const World& world, int32_t object, const Placement& place, const View& view, double nearest);
+// Frame::texel_most's value for an object.
+double object_texel_most(const World& world, int32_t object);
 
 // Clips a convex polygon (in clip space) against the view volume: w >= near, w <= far,
 // |x| <= GUARD_BAND w, |y| <= GUARD_BAND w, one plane after the other (Sutherland-Hodgman,

@@ -323,6 +323,10 @@ void measure_mesh(World& world, Mesh* m) {
         face.offset = dot(n, world.positions[c[0].position]);
     }
     for (int32_t i = 0; i < m->position_count; ++i) m->radius = larger(m->radius, length(world.positions[m->first_position + i]));
+    for (int32_t i = 0; i < m->uv_count; ++i) {
+        const TexCoord t = world.uvs[m->first_uv + i];
+        m->uv_abs[0] = larger(m->uv_abs[0], magnitude(t.u)), m->uv_abs[1] = larger(m->uv_abs[1], magnitude(t.v));
+    }
     for (int32_t k = 0; k < m->face_count; ++k) {
         const Face& face = world.faces[m->first_face + k];
         if (face.count != 3) continue;

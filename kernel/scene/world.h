@@ -57,6 +57,7 @@ struct Mesh {
     double triangle_edge = 0;
     double triangle_uv_range[2] = {0, 0}, triangle_uv_abs[2] = {0, 0};
     double radius = 0;
+    double uv_abs[2] = {0, 0};  // the largest |u| and |v| of all its texture coordinates (auto's oriented path)
 };
 
 // A convex planar face: `count` corners from `first_corner` on, counter-clockwise seen from its

@@ -384,16 +384,37 @@ AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& targe
     return plan;
 }
 
-const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis) {
+OrientedPlan plan_oriented(const Budget& budget, const Texture& tex, const Target& target, double texel_most) {
+    ListRoom room;
+    const CandidateList& list = candidates(tex, target, budget, &room);
+    OrientedPlan plan{};
+    // where choose_mapper would ask the oriented candidate first, with fast-adaptive-1 a candidate
+    // along each walker fast-oriented-1 may pick
+    const bool walkers = list.adaptive[0][int(Axis::Columns)] >= 0 && (target.planar || list.adaptive[0][int(Axis::Rows)] >= 0);
+    if (!oriented_plan_wanted(budget) || list.oriented_row < 0 || !walkers || tex.wrap != Wrap::Repeat || !fast_oriented_guard_takes(texel_most, target.clip))
+        return plan;
+    const CostModel& model = cost_model(budget.target);
+    plan.oriented = &MAPPERS[list.oriented_row];
+    plan.oriented_row = plan.constant_row = cost_row(model.rows[list.oriented_row]);
+    const int d = list.constant_depth[int(Axis::Columns)];
+    if (d >= 0 && (target.planar || list.constant_depth[int(Axis::Rows)] >= 0)) {
+        plan.constant = &MAPPERS[list.row[d]];
+        plan.constant_row = cost_row(model.rows[list.row[d]]);
+    }
+    plan.room = fast_adaptive_room(budget.max_error);
+    plan.least = CostRow{list.least_polygon[0], list.least_span[0], list.least_pixel[0]};
+    plan.gate = ORIENTED_GATE * model.proof_scale;
+    plan.budget = budget.max_error;
+    return plan;
+}
+
+const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis, const CornerBox* given) {
     if (!plan.certain) return nullptr;
     *axis = plan.certain_axes[0];
     if (plan.sole && plan.certain_walkers == 1) return plan.certain;
     // the box the setup would find, and its sides inside the clip (subpixels)
-    int32_t x_lo = vertices[0].x.raw, x_hi = x_lo, y_lo = vertices[0].y.raw, y_hi = y_lo;
-    for (int i = 1; i < count; ++i) {
-        const int32_t x = vertices[i].x.raw, y = vertices[i].y.raw;
-        x_lo = x < x_lo ? x : x_lo, x_hi = x > x_hi ? x : x_hi, y_lo = y < y_lo ? y : y_lo, y_hi = y > y_hi ? y : y_hi;
-    }
+    const CornerBox corners = given ? *given : corner_box(vertices, count);
+    const int32_t x_lo = corners.x_lo, x_hi = corners.x_hi, y_lo = corners.y_lo, y_hi = corners.y_hi;
     const int32_t width = box_inside(x_lo, x_hi, clip.x0, clip.x1), height = box_inside(y_lo, y_hi, clip.y0, clip.y1);
     const double one = double(SUBPIXEL_ONE), span = plan.certain_row.span;
     double lines[2];
@@ -436,6 +457,24 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     const int32_t one_px = SUBPIXEL_ONE;
     const bool in_clip = x_lo >= clip.x0 * one_px && x_hi <= clip.x1 * one_px && y_lo >= clip.y0 * one_px && y_hi <= clip.y1 * one_px;
     return in_clip && plan.exact_below > 0 && corner_footprint(vertices) < plan.exact_below ? plan.certain : nullptr;
+}
+
+bool oriented_gate_may_hold(const OrientedPlan& plan, const CornerBox& b, const Vertex* vertices, int count) {
+    double area2 = 0;  // (the shoelace: repeated corners add nothing)
+    for (int i = 0; i < count; ++i) {
+        const Vertex &p = vertices[i], &q = vertices[i + 1 < count ? i + 1 : 0];
+        area2 += double(p.x.raw) * double(q.y.raw) - double(q.x.raw) * double(p.y.raw);
+    }
+    // the gate at its least over both picks and walkers: lines at least the box's shorter side
+    // (or, for a fitted cost below 0 a line, at most its longer), the pixels the setup's
+    const double one = double(SUBPIXEL_ONE);
+    const double w = double(b.x_hi - b.x_lo) / one, h = double(b.y_hi - b.y_lo) / one, box = w * h, area = magnitude(area2) / (2 * one * one);
+    const double fewer = w < h ? w : h, more = w < h ? h : w, pixels = area < box ? area : box;
+    const CostRow &o = plan.oriented_row, &c = plan.constant_row, &l = plan.least;
+    auto part = [](double x, double y) { return x < y ? x : y; };
+    const double span = part(o.span, c.span);
+    const double pick = part(o.polygon, c.polygon) + span * (span < 0 ? more : fewer) + part(o.pixel, c.pixel) * pixels;
+    return pick <= l.polygon + l.span * (l.span < 0 ? more : fewer) + l.pixel * pixels + plan.gate;
 }
 
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count) {

@@ -222,6 +222,37 @@ union ListRoom {
 
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint);
 
+// auto's oriented path for an object (docs/auto.md, "The oriented path"): choose_mapper's oriented
+// candidate taken without its search, proven by fast_oriented_guard. From a budget of 1 to below 4,
+// on a repeating texture whose corners' |u| and |v| are at most `texel_most` (Frame::texel_most)
+// where fast_oriented_guard_takes: the Oriented row (fast-oriented-1), and fast-constant-depth
+// where the cost model measured it (else nullptr), with fast_adaptive_room of the budget; the gate
+// as choose_mapper's (the pick's estimate at most the least any candidate could cost plus
+// ORIENTED_GATE), and the budget affine_deviation is weighed against past it; else oriented nullptr.
+// Made where an object's first polygon asks for it (oriented_plan_wanted), not with every AutoPlan.
+struct OrientedPlan {
+    const Mapper* oriented;
+    const Mapper* constant;
+    double room;
+    CostRow oriented_row, constant_row, least;
+    double gate, budget;
+};
+inline bool oriented_plan_wanted(const Budget& budget) { return budget.max_error >= 1 && budget.max_error < 4; }
+OrientedPlan plan_oriented(const Budget& budget, const Texture& tex, const Target& target, double texel_most);
+
+// The box of a polygon's corners, as the setup finds it.
+struct CornerBox {
+    int32_t x_lo, x_hi, y_lo, y_hi;  // subpixels
+};
+inline CornerBox corner_box(const Vertex* vertices, int count) {
+    CornerBox b{vertices[0].x.raw, vertices[0].x.raw, vertices[0].y.raw, vertices[0].y.raw};
+    for (int i = 1; i < count; ++i) {
+        const int32_t x = vertices[i].x.raw, y = vertices[i].y.raw;
+        b.x_lo = x < b.x_lo ? x : b.x_lo, b.x_hi = x > b.x_hi ? x : b.x_hi, b.y_lo = y < b.y_lo ? y : b.y_lo, b.y_hi = y > b.y_hi ? y : b.y_hi;
+    }
+    return b;
+}
+
 // The footprint (texel_footprint) at a polygon's first corner, from the planes through its first
 // three (1e300 where they are collinear): cheap, before any setup.
 double corner_footprint(const Vertex* vertices);
@@ -232,7 +263,20 @@ double corner_footprint(const Vertex* vertices);
 // other candidate could cost with its proof, plus CHOICE_COST. Its walker as choose_mapper would
 // take it; sizes from the corners (the box and area polygon_sizes would find), before any setup.
 // Else nullptr: choose_mapper decides (docs/auto.md, "Settled once a frame per object").
-const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis);
+// (`box`: the corners' box where the caller has it, else nullptr.)
+const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis, const CornerBox* box = nullptr);
+
+// Whether auto's oriented path is to be tried on the polygon, from its corners before any setup:
+// where its box lies inside the clip (fast_oriented_guard asks it) and is not one unchosen_mapper
+// gives the certain one at once (`small_box`: AutoPlan::small_box's most_box); then where the gate
+// can hold (the picks' least estimate within it of the least any candidate could cost, from the
+// box and the area).
+inline bool oriented_box(int64_t small_box, const CornerBox& b, const ClipRect& clip) {
+    const int32_t one = SUBPIXEL_ONE;
+    return b.x_lo >= clip.x0 * one && b.x_hi <= clip.x1 * one && b.y_lo >= clip.y0 * one && b.y_hi <= clip.y1 * one &&
+           int64_t(b.x_hi - b.x_lo) * (b.y_hi - b.y_lo) > small_box;
+}
+bool oriented_gate_may_hold(const OrientedPlan& plan, const CornerBox& box, const Vertex* vertices, int count);
 
 // How far the affine planes (fast-affine's line) lie from the exact mapping, in footprints (either
 // axis, the texel distance over the footprint), at the mean of the corners of a polygon inside the

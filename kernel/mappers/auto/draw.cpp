@@ -2,6 +2,7 @@
 #include "kernel/mappers/auto/draw.h"
 
 #include "kernel/mappers/auto/choice.h"
+#include "kernel/mappers/fastsubdiv.h"
 
 namespace raster {
 
@@ -25,11 +26,77 @@ SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& te
 }
 
 // unchosen_mapper, its time charged to auto's choosing (the loop's before it to walking)
-const Mapper* timed_unchosen(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis, const RenderStats& stats) {
+const Mapper* timed_unchosen(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis, const RenderStats& stats,
+                             const CornerBox* box) {
     probe_lap(stats.probe, Phase::Walk);
-    const Mapper* m = unchosen_mapper(plan, vertices, count, clip, axis);
+    const Mapper* m = unchosen_mapper(plan, vertices, count, clip, axis, box);
     probe_lap(stats.probe, Phase::Choose);
     return m;
+}
+
+// An object's oriented path in a frame: its plan, made at its first polygon, and its drawers, each
+// made where first drawn with.
+struct OrientedPath {
+    bool planned;
+    OrientedPlan plan;
+    bool made[2][2];  // [Axis][fast-oriented-1, fast-constant-depth]
+    Drawer drawer[2][2];
+};
+
+// auto's oriented path (OrientedPlan): set up with the perspective planes alone, along the walker
+// fast-oriented-1 picks (a planar target: columns), where fast_oriented_guard holds: fast-constant-
+// depth where the same proof bounds its chords within the budget and its row is the cheaper, else
+// fast-oriented-1, where the pick's estimate is within the gate or affine_deviation is above the
+// budget (choose_mapper's tests); else Unproven, nothing drawn (the choice sets it up again). The
+// setup and the walker are Phase::Setup as in fast-oriented-1's own driver, the rest Phase::Choose.
+SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant variant, const Vertex* vertices, int count, Input input, Target& target,
+                          RenderStats* stats) {
+    const OrientedPlan& plan = path.plan;
+    const ClipRect& clip = target.clip;
+    Probe* probe = stats->probe;
+    PolygonSetup s;
+    if (setup_polygon(vertices, count, &s, PLANES_PERSPECTIVE, input) != SetupStatus::Ok) return SetupStatus::Unproven;
+    PolygonSize size[2];
+    polygon_sizes(s, clip, size);
+    const Axis axis = target.planar ? Axis::Columns : oriented_axis(s, size, fast_adaptive_room(1));
+    probe_lap(probe, Phase::Setup);
+    const double q_min = fast_oriented_guard(s, clip, axis);
+    // (fast-constant-depth where the cheaper by its row, as choose_mapper takes it)
+    const double oriented = estimate_cost(plan.oriented_row, size[int(axis)]), constant_at = estimate_cost(plan.constant_row, size[int(axis)]);
+    const bool constant = q_min > 0 && plan.constant && constant_at < oriented && fast_constant_within(s, axis, q_min, plan.room);
+    const double rows = size[int(Axis::Rows)].spans, columns = size[int(Axis::Columns)].spans;
+    const double least_lines = (plan.least.span < 0) == (rows < columns) ? columns : rows;  // (the fewer; below 0 a line, the more)
+    const bool within = (constant ? constant_at : oriented) <= estimate_cost(plan.least, PolygonSize{least_lines, size[0].pixels}) + plan.gate;
+    // past the gate, where no affine stepping could meet the budget (the affine planes set up now)
+    const bool taken = q_min > 0 && (within || (setup_polygon(vertices, count, &s, PLANES_AFFINE, input) == SetupStatus::Ok &&
+                                                affine_deviation(s, clip) > plan.budget));
+    probe_lap(probe, Phase::Choose);
+    if (!taken) return SetupStatus::Unproven;
+    Drawer& d = path.drawer[int(axis)][constant];
+    if (!path.made[int(axis)][constant]) {
+        path.made[int(axis)][constant] = true;
+        d = Drawer::of(constant ? *plan.constant : *plan.oriented, tex, axis, target, stats, variant);
+    }
+    if (!d.usable) return SetupStatus::Unproven;
+    const SetupStatus status = d.draw_set_up(vertices, count, &s, nullptr);
+    if (status == SetupStatus::Ok) ++stats->proven_whole;
+    return status;
+}
+
+// The oriented path's try on a polygon of an object whose box oriented_box takes: the object's plan
+// where it is the first to ask, the gate from the corners, then draw_oriented. (Out of line: off
+// the way of the frame's loop and of the envelope's triangles.)
+[[gnu::noinline]] SetupStatus try_oriented(OrientedPath& path, const CornerBox& box, const Frame& frame, const Texture& tex, Variant variant,
+                                           const Vertex* vertices, int count, int32_t object, Input input, Target& target, RenderStats* stats) {
+    probe_lap(stats->probe, Phase::Walk);
+    if (!path.planned) {
+        path.planned = true;
+        path.plan = plan_oriented(frame.budget, tex, target, frame.texel_most[object]);
+        path.made[0][0] = path.made[0][1] = path.made[1][0] = path.made[1][1] = false;
+    }
+    const bool takes = path.plan.oriented && oriented_gate_may_hold(path.plan, box, vertices, count);
+    probe_lap(stats->probe, Phase::Choose);
+    return takes ? draw_oriented(path, tex, variant, vertices, count, input, target, stats) : SetupStatus::Unproven;
 }
 
 }  // namespace
@@ -51,9 +118,12 @@ RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, cons
     AutoPlan plans[MAX_WORLD_OBJECTS];
     Drawer enveloped[MAX_WORLD_OBJECTS];
     Drawer certain[MAX_WORLD_OBJECTS][2];
+    OrientedPath oriented[MAX_WORLD_OBJECTS];
+    const bool oriented_wanted = oriented_plan_wanted(frame.budget);
     for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o) {
         const Texture& tex = textures.objects[o];
         plans[o] = plan_auto(frame.budget, tex, target, frame.envelope[o].footprint);
+        oriented[o].planned = false;
         if (plans[o].enveloped) {  // (plan_auto checked what Drawer::of would)
             enveloped[o] = Drawer::of(*plans[o].enveloped, tex, plans[o].enveloped_axis, target, &stats, variant, true);
             enveloped[o].limits.area2 = plans[o].enveloped_area2;
@@ -63,15 +133,27 @@ RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, cons
             for (int a = 0; a < 2; ++a) certain[o][a] = Drawer::of(*plans[o].certain, tex, Axis(a), target, &stats, variant);
         probe_lap(stats.probe, Phase::Choose);  // (the plans)
     }
-    each_frame_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
+    // every polygon but the envelope's (out of line: the envelope's triangles' loop stays as small)
+    auto unproven = [&](const Vertex* v, int n, int object, Input input) __attribute__((noinline)) {
         const AutoPlan& plan = plans[object];
         Axis unchosen_axis;
-        if (plan.enveloped && input == Input::InRange && n == 3)  // (an uncut triangle)
-            draw_enveloped(enveloped[object], v, variant, frame.budget);
-        else if (timed_unchosen(plan, v, n, target.clip, &unchosen_axis, stats))  // (the certain one, or none)
+        CornerBox box;
+        if (oriented_wanted) {
+            box = corner_box(v, n);
+            if (oriented_box(plan.small_box.most_box, box, target.clip) &&
+                try_oriented(oriented[object], box, frame, textures.objects[object], variant, v, n, object, input, target, &stats) != SetupStatus::Unproven)
+                return;
+        }
+        if (timed_unchosen(plan, v, n, target.clip, &unchosen_axis, stats, oriented_wanted ? &box : nullptr))  // (the certain one, or none)
             certain[object][int(unchosen_axis)].draw(v, n, input);
         else
             choose_and_draw(v, n, textures.objects[object], axis, target, &stats, variant, frame.budget, input);
+    };
+    each_frame_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
+        if (plans[object].enveloped && input == Input::InRange && n == 3)  // (an uncut triangle)
+            draw_enveloped(enveloped[object], v, variant, frame.budget);
+        else
+            unproven(v, n, object, input);
     });
     if (watch) watch->drawn();
     return stats;

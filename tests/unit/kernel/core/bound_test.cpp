@@ -404,6 +404,64 @@ TEST(Bounds, FastAdaptiveCertificatesHoldInsideAnyClip) {
     EXPECT_GT(cut, polygons / 4);
 }
 
+// fast-oriented-1's guard (auto's oriented path): on random polygons in random clips, wherever the
+// object's check takes the polygon's own texels and the guard holds along a walker, fast-adaptive-1's
+// certificate holds there with a Q_min at least the guard's, so its whole bound is within one
+// footprint; and wherever fast_constant_within says so for a budget, fast-constant-depth's whole
+// bound is within it. The guard holds on most polygons the certificate does (its Q's least is the
+// box's), never where the clip cuts the polygon.
+TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
+    const Mapper &adaptive = *find_mapper("fast-adaptive-1"), &constant = *find_mapper("fast-constant-depth");
+    TriangleGen gen(20261129u);
+    int guarded = 0, certified = 0, constant_within = 0, untaken = 0;
+    const int polygons = std::max(3000 / SANITIZED_SHARE, polygons_per_mapper());
+    for (int n = 0; n < polygons; ++n) {
+        const CertificateCase c(gen, n);
+        if (!c.set_up) continue;
+        const PolygonSetup& s = c.s;
+        auto in = [&](int32_t side) { return n % 2 ? 0 : int32_t(gen.uniform(0, side / 4.0)); };
+        const ClipRect clip{in(SCREEN_WIDTH), in(SCREEN_HEIGHT), SCREEN_WIDTH - in(SCREEN_WIDTH), SCREEN_HEIGHT - in(SCREEN_HEIGHT)};
+        double texel_most = 0;
+        for (const Vertex& v : c.p) texel_most = std::max({texel_most, std::fabs(v.u), std::fabs(v.v)});
+        if (!fast_oriented_guard_takes(texel_most, clip)) {
+            ++untaken;
+            continue;
+        }
+        const FastCertificate f = fast_certificate(s, clip, c.tex);
+        for (Axis axis : {Axis::Rows, Axis::Columns}) {
+            const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns");
+            certified += fast_adaptive_certain<4>(f, s, axis);
+            const double q_min = fast_oriented_guard(s, clip, axis);
+            if (!(q_min > 0)) continue;
+            ++guarded;
+            EXPECT_TRUE(box_in_clip(s, clip)) << what;
+            EXPECT_TRUE(fast_adaptive_certain<4>(f, s, axis)) << what << ": guarded, but the certificate does not hold";
+            EXPECT_LE(q_min, f.q_min) << what;
+            const ErrorBound whole = adaptive.bound(BoundContext{adaptive, c.tex, axis, clip, 1.0, nullptr, true}, c.p.data(), c.count);
+            EXPECT_TRUE(whole.draws && whole.footprint <= 1.0) << what << ": fast-adaptive-1's whole bound " << whole.footprint;
+            for (double budget : {1.0, 2.0, 3.75}) {
+                if (!fast_constant_within(s, axis, q_min, fast_adaptive_room(budget))) continue;
+                ++constant_within;
+                const ErrorBound b = constant.bound(BoundContext{constant, c.tex, axis, clip, budget, nullptr, true}, c.p.data(), c.count);
+                EXPECT_TRUE(b.draws && b.footprint <= budget) << what << ": fast-constant-depth's whole bound " << b.footprint << " above " << budget;
+                EXPECT_LE(fast_chords_bound(f, s, axis, FAST_SPAN_LONG), budget) << what;
+            }
+            if (HasFailure()) return;
+        }
+    }
+    std::printf("fast-oriented-1's guard: %d of %d polygon-walkers the certificate holds on; fast-constant-depth within %d times; "
+                "%d polygons' texels beyond the object's check\n", guarded, certified, constant_within, untaken);
+    EXPECT_GT(guarded, certified * 3 / 4) << "the guard holds on most polygons the certificate does";
+    EXPECT_GT(constant_within, guarded / 4);
+    EXPECT_LT(untaken, polygons / 2);
+    // the object's check on the screen: the affine planes' terms within what the range of t leaves
+    // for A (1 + 8 * 14 * W H) up to some 1.77e6 texels
+    const ClipRect screen{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    EXPECT_TRUE(fast_oriented_guard_takes(1.7e6, screen));
+    EXPECT_FALSE(fast_oriented_guard_takes(1.8e6, screen));
+    EXPECT_FALSE(fast_oriented_guard_takes(NO_BOUND, screen));
+}
+
 TEST(Bounds, RelativeChordsBoundCoversEveryFootprint) {
     raster::Random rng(4242u);
     auto error_at = [](double x, double r, double f) { return footprint_error(x * f + r, 0, f); };
