@@ -42,74 +42,74 @@ const MapperCost MAPPER_COSTS[] = {
 };
 
 const MapperCost MAPPER_COSTS_486[] = {
-    {"affine", 2845.8f, 1179.85f, 163.066f}, // 11 scenes
-    {"exact", 3286.4f, 587.29f, 560.879f}, // 11 scenes
-    {"persp-subdiv-4", 3277.4f, 957.70f, 436.621f}, // 11 scenes
-    {"persp-subdiv-8", 3283.6f, 1315.13f, 244.842f}, // 11 scenes
-    {"persp-subdiv-16", 3283.6f, 1552.22f, 148.198f}, // 11 scenes
-    {"persp-subdiv-32", 3283.1f, 1675.40f, 100.902f}, // 11 scenes
-    {"constant-depth", 3281.6f, 1769.91f, 66.072f}, // 11 scenes
-    {"persp-adaptive-0.5", 3281.4f, 4053.00f, 1776.395f}, // 11 scenes
-    {"persp-adaptive-1", 3282.7f, 4922.97f, 228.366f}, // 11 scenes
-    {"persp-adaptive-2", 3283.1f, 5049.13f, 174.908f}, // 11 scenes
-    {"persp-adaptive-4", 3282.9f, 5143.06f, 142.043f}, // 11 scenes
-    {"fast-affine", 2955.2f, 185.88f, 6.168f}, // 11 scenes
-    {"fast-table", 3415.1f, 173.65f, 4.713f}, // 11 scenes
-    {"fast-columns", 3030.4f, 336.80f, 5.308f}, // 11 scenes
-    {"fast-table-columns", 3473.7f, 361.14f, 7.120f}, // 11 scenes
-    {"fast-subdiv-8", 3281.0f, 988.79f, 58.917f}, // 11 scenes
-    {"fast-subdiv-16", 3281.2f, 1052.43f, 33.738f}, // 11 scenes
-    {"fast-subdiv-32", 3281.3f, 1084.54f, 21.437f}, // 11 scenes
-    {"fast-constant-depth", 3281.6f, 1111.04f, 12.056f}, // 11 scenes
-    {"fast-adaptive-1", 3282.9f, 1257.91f, 31.465f}, // 11 scenes
-    {"fast-adaptive-2", 3282.9f, 1280.96f, 22.502f}, // 11 scenes
-    {"fast-oriented-1", 4018.6f, 1347.41f, 17.389f}, // 11 scenes
-    {"xsharp-dda", 4217.5f, 583.06f, 80.308f}, // 10 scenes
+    {"affine", 2845.8f, 1179.91f, 163.059f}, // 11 scenes
+    {"exact", 3286.6f, 588.00f, 560.862f}, // 11 scenes
+    {"persp-subdiv-4", 3277.5f, 958.52f, 436.347f}, // 11 scenes
+    {"persp-subdiv-8", 3283.3f, 1315.28f, 244.711f}, // 11 scenes
+    {"persp-subdiv-16", 3283.3f, 1549.01f, 148.344f}, // 11 scenes
+    {"persp-subdiv-32", 3281.1f, 1672.75f, 100.075f}, // 11 scenes
+    {"constant-depth", 3282.5f, 1771.17f, 66.062f}, // 11 scenes
+    {"persp-adaptive-0.5", 3281.6f, 4053.53f, 1776.414f}, // 11 scenes
+    {"persp-adaptive-1", 3282.8f, 4922.77f, 228.433f}, // 11 scenes
+    {"persp-adaptive-2", 3283.3f, 5049.05f, 175.084f}, // 11 scenes
+    {"persp-adaptive-4", 3282.7f, 5141.25f, 142.116f}, // 11 scenes
+    {"fast-affine", 2954.4f, 184.93f, 6.190f}, // 11 scenes
+    {"fast-table", 3415.1f, 173.66f, 4.712f}, // 11 scenes
+    {"fast-columns", 3030.7f, 337.65f, 5.281f}, // 11 scenes
+    {"fast-table-columns", 3473.4f, 359.79f, 7.154f}, // 11 scenes
+    {"fast-subdiv-8", 3280.9f, 988.78f, 58.906f}, // 11 scenes
+    {"fast-subdiv-16", 3281.1f, 1052.56f, 33.612f}, // 11 scenes
+    {"fast-subdiv-32", 3281.1f, 1084.54f, 21.324f}, // 11 scenes
+    {"fast-constant-depth", 3282.2f, 1111.01f, 12.068f}, // 11 scenes
+    {"fast-adaptive-1", 3282.8f, 1257.95f, 31.465f}, // 11 scenes
+    {"fast-adaptive-2", 3289.2f, 1280.24f, 22.899f}, // 11 scenes
+    {"fast-oriented-1", 4018.1f, 1347.22f, 17.389f}, // 11 scenes
+    {"xsharp-dda", 4218.2f, 586.11f, 80.053f}, // 10 scenes
     {"xsharp-row-out", 4222.6f, 852.02f, 47.895f}, // 10 scenes
-    {"xsharp-column", 4225.7f, 828.43f, 19.672f}, // 10 scenes
-    {"hecker-steptable", 15053.6f, 0.00f, 2129.279f}, // 10 scenes
-    {"fatmap-256", 4051.2f, 197.20f, 20.564f}, // 8 scenes
-    {"fatmap-256-16", 4050.5f, 202.75f, 18.667f}, // 8 scenes
-    {"fatmap-lut", 4792.3f, 174.16f, 16.657f}, // 7 scenes
-    {"quake-subdiv16", 5520.7f, 1014.73f, 33.398f}, // 10 scenes
-    {"quake-subdiv8", 5521.0f, 968.85f, 52.555f}, // 10 scenes
-    {"quake-d_draw16", 5419.7f, 866.69f, 23.266f}, // 10 scenes
+    {"xsharp-column", 4225.7f, 828.47f, 19.671f}, // 10 scenes
+    {"hecker-steptable", 15052.2f, 0.00f, 2128.839f}, // 10 scenes
+    {"fatmap-256", 4050.9f, 196.19f, 20.590f}, // 8 scenes
+    {"fatmap-256-16", 4051.3f, 205.11f, 18.597f}, // 8 scenes
+    {"fatmap-lut", 4792.5f, 174.01f, 16.707f}, // 7 scenes
+    {"quake-subdiv16", 5520.9f, 1015.50f, 33.379f}, // 10 scenes
+    {"quake-subdiv8", 5520.8f, 968.90f, 52.533f}, // 10 scenes
+    {"quake-d_draw16", 5420.3f, 868.91f, 23.378f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 
 const MapperCost MAPPER_COSTS_PENTIUM[] = {
-    {"affine", 1640.0f, 529.97f, 145.373f}, // 11 scenes
-    {"exact", 1804.3f, 335.37f, 283.306f}, // 11 scenes
-    {"persp-subdiv-4", 1797.2f, 452.68f, 187.282f}, // 11 scenes
-    {"persp-subdiv-8", 1796.6f, 588.58f, 110.230f}, // 11 scenes
-    {"persp-subdiv-16", 1797.0f, 683.91f, 71.341f}, // 11 scenes
-    {"persp-subdiv-32", 1803.5f, 733.34f, 52.262f}, // 11 scenes
-    {"constant-depth", 1794.7f, 772.93f, 38.087f}, // 11 scenes
-    {"persp-adaptive-0.5", 1814.7f, 1560.47f, 748.659f}, // 11 scenes
-    {"persp-adaptive-1", 1811.3f, 1894.15f, 108.022f}, // 11 scenes
-    {"persp-adaptive-2", 1811.3f, 1948.54f, 84.940f}, // 11 scenes
-    {"persp-adaptive-4", 1811.3f, 1989.01f, 70.796f}, // 11 scenes
-    {"fast-affine", 1717.0f, 139.13f, 3.976f}, // 11 scenes
-    {"fast-table", 2013.5f, 137.75f, 0.981f}, // 11 scenes
-    {"fast-columns", 1736.6f, 239.18f, 3.349f}, // 11 scenes
-    {"fast-table-columns", 2039.7f, 287.28f, 2.766f}, // 11 scenes
-    {"fast-subdiv-8", 1798.6f, 440.51f, 25.246f}, // 11 scenes
-    {"fast-subdiv-16", 1798.5f, 466.04f, 15.314f}, // 11 scenes
-    {"fast-subdiv-32", 1798.5f, 478.54f, 10.519f}, // 11 scenes
-    {"fast-constant-depth", 1798.5f, 489.45f, 6.666f}, // 11 scenes
-    {"fast-adaptive-1", 1798.6f, 549.57f, 14.396f}, // 11 scenes
-    {"fast-adaptive-2", 1798.6f, 558.64f, 10.879f}, // 11 scenes
-    {"fast-oriented-1", 2158.4f, 591.05f, 8.614f}, // 11 scenes
-    {"xsharp-dda", 2576.2f, 430.73f, 54.895f}, // 10 scenes
-    {"xsharp-row-out", 2576.1f, 602.07f, 33.689f}, // 10 scenes
-    {"xsharp-column", 2589.5f, 602.96f, 10.965f}, // 10 scenes
-    {"hecker-steptable", 7838.2f, 0.00f, 1169.371f}, // 10 scenes
-    {"fatmap-256", 2441.3f, 169.50f, 8.327f}, // 8 scenes
-    {"fatmap-256-16", 2441.3f, 176.59f, 7.323f}, // 8 scenes
-    {"fatmap-lut", 2813.3f, 158.65f, 5.955f}, // 7 scenes
-    {"quake-subdiv16", 2902.8f, 517.18f, 18.928f}, // 10 scenes
-    {"quake-subdiv8", 2903.9f, 492.57f, 29.070f}, // 10 scenes
-    {"quake-d_draw16", 2877.8f, 350.12f, 7.748f}, // 10 scenes
+    {"affine", 1640.0f, 529.93f, 145.374f}, // 11 scenes
+    {"exact", 1802.4f, 330.44f, 283.325f}, // 11 scenes
+    {"persp-subdiv-4", 1794.7f, 447.70f, 187.303f}, // 11 scenes
+    {"persp-subdiv-8", 1795.7f, 584.35f, 110.234f}, // 11 scenes
+    {"persp-subdiv-16", 1799.4f, 678.41f, 71.372f}, // 11 scenes
+    {"persp-subdiv-32", 1795.2f, 728.07f, 52.278f}, // 11 scenes
+    {"constant-depth", 1794.0f, 768.02f, 38.104f}, // 11 scenes
+    {"persp-adaptive-0.5", 1801.6f, 1554.35f, 748.604f}, // 11 scenes
+    {"persp-adaptive-1", 1801.4f, 1888.61f, 107.973f}, // 11 scenes
+    {"persp-adaptive-2", 1801.3f, 1942.96f, 84.914f}, // 11 scenes
+    {"persp-adaptive-4", 1801.2f, 1983.39f, 70.785f}, // 11 scenes
+    {"fast-affine", 1717.8f, 138.75f, 3.974f}, // 11 scenes
+    {"fast-table", 2012.7f, 136.37f, 1.006f}, // 11 scenes
+    {"fast-columns", 1734.9f, 237.40f, 3.389f}, // 11 scenes
+    {"fast-table-columns", 2036.8f, 282.39f, 2.786f}, // 11 scenes
+    {"fast-subdiv-8", 1798.3f, 440.67f, 25.148f}, // 11 scenes
+    {"fast-subdiv-16", 1796.6f, 461.12f, 15.333f}, // 11 scenes
+    {"fast-subdiv-32", 1796.6f, 473.61f, 10.538f}, // 11 scenes
+    {"fast-constant-depth", 1796.6f, 484.52f, 6.685f}, // 11 scenes
+    {"fast-adaptive-1", 1796.7f, 544.64f, 14.414f}, // 11 scenes
+    {"fast-adaptive-2", 1797.0f, 553.71f, 10.901f}, // 11 scenes
+    {"fast-oriented-1", 2149.1f, 584.35f, 8.652f}, // 11 scenes
+    {"xsharp-dda", 2588.7f, 426.02f, 54.908f}, // 10 scenes
+    {"xsharp-row-out", 2590.2f, 597.58f, 33.696f}, // 10 scenes
+    {"xsharp-column", 2579.9f, 595.76f, 11.031f}, // 10 scenes
+    {"hecker-steptable", 7832.4f, 0.00f, 1168.988f}, // 10 scenes
+    {"fatmap-256", 2441.7f, 169.79f, 8.181f}, // 8 scenes
+    {"fatmap-256-16", 2440.1f, 171.55f, 7.360f}, // 8 scenes
+    {"fatmap-lut", 2812.3f, 153.76f, 5.987f}, // 7 scenes
+    {"quake-subdiv16", 2891.3f, 511.71f, 18.954f}, // 10 scenes
+    {"quake-subdiv8", 2891.3f, 487.06f, 29.096f}, // 10 scenes
+    {"quake-d_draw16", 2867.1f, 345.45f, 7.760f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
@@ -117,8 +117,8 @@ const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
 // proof_scale: auto's choosing, cycles an instruction on the target
 const CostModel COST_MODELS[] = {
     {"icount", MAPPER_COSTS, 1.000},
-    {"486", MAPPER_COSTS_486, 3.827},
-    {"pentium", MAPPER_COSTS_PENTIUM, 1.700},
+    {"486", MAPPER_COSTS_486, 3.695},
+    {"pentium", MAPPER_COSTS_PENTIUM, 1.621},
 };
 
 }  // namespace raster
