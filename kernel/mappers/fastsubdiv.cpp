@@ -293,9 +293,9 @@ bool fast_oriented_guard_takes(double texel_most, const ClipRect& clip) {
 double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axis) {
     if (!box_in_clip(s, clip)) return 0;
     // Q's least over the box first (the corners', relative to the reference vertex, are its
-    // corners): at most its least at the vertices, each computed within 4 eps of Q's terms, so less
-    // 20 eps of them it is at most q_least's Q_min; where that fails (the box reaching where Q is
-    // far less, a slanted polygon), q_least's own
+    // corners): at most its least at the vertices, either computed within 4 eps of Q's terms, so
+    // less 24 eps of them it is at most q_least's Q_min; where that fails (the box reaching where Q
+    // is far less, a slanted polygon), q_least's own
     const double x_lo = double(int32_t(s.min_x - s.ref_x)), x_hi = double(int32_t(s.max_x - s.ref_x));
     const double y_lo = double(int32_t(s.min_y - s.ref_y)), y_hi = double(int32_t(s.max_y - s.ref_y));
     QLeast l{0, 0, larger(-x_lo, x_hi), larger(-y_lo, y_hi)};
@@ -306,7 +306,7 @@ double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axi
         const double t_most = GUARD_T * q_min;
         return q_min > 0 && l.scale_q <= q_min * 67108864.0 && scale_pu <= t_most && scale_pv <= t_most && gradient <= GUARD_CHORD * q_min;
     };
-    const double q_box = (q_lo - 20 * EPS * l.scale_q) * (1 - 1e-9);
+    const double q_box = (q_lo - 24 * EPS * l.scale_q) * (1 - 1e-9);
     if (holds(q_box)) return q_box;
     const double q_corners = q_least(s).q_min;
     return holds(q_corners) ? q_corners : 0;
