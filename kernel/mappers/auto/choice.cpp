@@ -27,6 +27,23 @@ int32_t box_inside(int32_t lo, int32_t hi, int32_t first, int32_t end) {
     return hi > lo ? hi - lo : 0;
 }
 
+// Twice the area the setup would find, from the corners (the shoelace, exact in a double for
+// coordinates within setup's range: repeated corners add nothing): unchosen_mapper's and the
+// oriented path's gate.
+double corner_area2(const Vertex* vertices, int count) {
+    double area2 = 0;
+    if (count == 3) {
+        const Vertex &a = vertices[0], &b = vertices[1], &c = vertices[2];
+        area2 = double(b.x.raw - a.x.raw) * double(c.y.raw - a.y.raw) - double(c.x.raw - a.x.raw) * double(b.y.raw - a.y.raw);
+    } else {
+        for (int i = 0; i < count; ++i) {
+            const Vertex &a = vertices[i], &b = vertices[i + 1 < count ? i + 1 : 0];
+            area2 += double(a.x.raw) * double(b.y.raw) - double(b.x.raw) * double(a.y.raw);
+        }
+    }
+    return magnitude(area2);
+}
+
 }  // namespace
 
 double affine_deviation(const PolygonSetup& s, const ClipRect& clip) {
@@ -431,18 +448,7 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
         const double most = larger(lines[0], lines[1]);
         if (small.fixed + small.line * lines[int(*axis)] + small.other_line * most + small.pixel * lines[0] * lines[1] <= -1) return plan.certain;
     }
-    // twice the area the setup would find (the shoelace over the corners: repeated ones add nothing)
-    double area2 = 0;
-    if (!plan.sole && count == 3) {
-        const Vertex &a = vertices[0], &b = vertices[1], &c = vertices[2];
-        area2 = double(b.x.raw - a.x.raw) * double(c.y.raw - a.y.raw) - double(c.x.raw - a.x.raw) * double(b.y.raw - a.y.raw);
-    } else if (!plan.sole) {
-        for (int i = 0; i < count; ++i) {
-            const Vertex &a = vertices[i], &b = vertices[i + 1 < count ? i + 1 : 0];
-            area2 += double(a.x.raw) * double(b.y.raw) - double(b.x.raw) * double(a.y.raw);
-        }
-    }
-    area2 = magnitude(area2);
+    const double area2 = plan.sole ? 0 : corner_area2(vertices, count);
     if (area2 > double(plan.choosing_pays_above2) && 2 * int64_t(width) * height > plan.choosing_pays_above2) return nullptr;
     walker();
     if (plan.sole) return plan.certain;
@@ -460,15 +466,11 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
 }
 
 bool oriented_gate_may_hold(const OrientedPlan& plan, const CornerBox& b, const Vertex* vertices, int count) {
-    double area2 = 0;  // (the shoelace: repeated corners add nothing)
-    for (int i = 0; i < count; ++i) {
-        const Vertex &p = vertices[i], &q = vertices[i + 1 < count ? i + 1 : 0];
-        area2 += double(p.x.raw) * double(q.y.raw) - double(q.x.raw) * double(p.y.raw);
-    }
+    const double area2 = corner_area2(vertices, count);
     // the gate at its least over both picks and walkers: lines at least the box's shorter side
     // (or, for a fitted cost below 0 a line, at most its longer), the pixels the setup's
     const double one = double(SUBPIXEL_ONE);
-    const double w = double(b.x_hi - b.x_lo) / one, h = double(b.y_hi - b.y_lo) / one, box = w * h, area = magnitude(area2) / (2 * one * one);
+    const double w = double(b.x_hi - b.x_lo) / one, h = double(b.y_hi - b.y_lo) / one, box = w * h, area = area2 / (2 * one * one);
     const double fewer = w < h ? w : h, more = w < h ? h : w, pixels = area < box ? area : box;
     const CostRow &o = plan.oriented_row, &c = plan.constant_row, &l = plan.least;
     auto part = [](double x, double y) { return x < y ? x : y; };
