@@ -266,19 +266,58 @@ bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Te
 
 namespace {
 
-// fast_oriented_guard's limits (docs/bounds.md, "fast-oriented-1's guard"): |P| / Q's terms at
-// most GUARD_T times Q's least, so that fast_certificate's t_abs is within GUARD_T MARGIN and its
-// reference rounding within GUARD_REFERENCE; the affine planes' terms within GUARD_AFFINE
-// (fast_oriented_guard_takes); GUARD_SLACK covers each computed value's own rounding.
-constexpr double GUARD_T = 15000, GUARD_AFFINE = 1e18, GUARD_SLACK = 1 + 1e-12;
-constexpr double GUARD_REFERENCE = 2 * (4 * EPS * (GUARD_T + GUARD_T * MARGIN * 67108864.0) + 2 * EPS * GUARD_T * MARGIN) * MARGIN * GUARD_SLACK;
-static_assert((2 * GUARD_T * MARGIN + 2 * (2 * GUARD_REFERENCE + 4 * EPS * GUARD_AFFINE)) * MARGIN * MARGIN * GUARD_SLACK < FAST_ARITHMETIC.chord,
+// fast_oriented_guard's limits (docs/bounds.md, "fast-oriented-1's guard"): |t| at most
+// GUARD_T + 1 (from P's terms, or at a cut polygon's vertices) and P's terms at most 2^26 times
+// Q's least, so that the certificate's reference rounding is within GUARD_REFERENCE; the affine
+// planes' terms within GUARD_AFFINE; GUARD_SLACK covers each computed value's own rounding.
+constexpr double GUARD_T = 15000, GUARD_TERMS = 67108864.0, GUARD_AFFINE = 1e18, GUARD_SLACK = 1 + 1e-12;
+constexpr double GUARD_T_MOST = (GUARD_T + 1) * MARGIN;
+constexpr double GUARD_REFERENCE = 2 * (4 * EPS * (GUARD_TERMS + GUARD_T_MOST * GUARD_TERMS) + 2 * EPS * GUARD_T_MOST) * MARGIN * GUARD_SLACK;
+static_assert((2 * GUARD_T_MOST + 2 * (2 * GUARD_REFERENCE + 4 * EPS * GUARD_AFFINE)) * MARGIN * MARGIN * GUARD_SLACK < FAST_ARITHMETIC.chord,
               "the range of t fits 16.16's chords (fast_certificate's range)");
 static_assert(FAST_ARITHMETIC.at(FAST_SPAN_LONG - 1) + 2 * GUARD_REFERENCE <= FAST_ADAPTIVE_ROUNDING, "fast_adaptive_certain's rounding");
 // relative_chords_bound(X M, R) <= 1 where 2 X M (1 + 1e-9)^2 <= 1 - R (1 + 1e-9), R its rounding
 // (at most GUARD_R): the two-pixel chords' |Q'| at most GUARD_CHORD times Q's least
 constexpr double GUARD_R = (FAST_ARITHMETIC.at(1) + 2 * GUARD_REFERENCE) * MARGIN * GUARD_SLACK;
 constexpr double GUARD_CHORD = (1 - GUARD_R * (1 + 2e-9)) / (2 * MARGIN * (1 + 2e-9)) / GUARD_SLACK;
+// A cut polygon's affine planes: terms and drift within A (1 + GUARD_CUT_AFFINE (n - 2) S^2 / area2)
+constexpr double GUARD_CUT_AFFINE = 72;
+
+// fast_oriented_guard on a polygon the clip cuts (docs/bounds.md, "fast-oriented-1's guard"): Q's
+// least over its pixels, from the box inside the clip or the vertices, whichever is the larger,
+// less what the spread's cut corners (within `slack` of the polygon) and evaluations may take;
+// and that the planes' terms, |P| <= GUARD_T Q at every vertex and the affine planes' terms hold
+// against it. 0 where they do not.
+double cut_guard(const PolygonSetup& s, const ClipRect& clip, double gradient, double texel_most) {
+    auto low = [](int64_t a, int64_t b) { return a < b ? a : b; };
+    auto high = [](int64_t a, int64_t b) { return a < b ? b : a; };
+    const int64_t one = SUBPIXEL_ONE;
+    const int64_t bx_lo = high(s.min_x, clip.x0 * one), bx_hi = low(s.max_x, clip.x1 * one);
+    const int64_t by_lo = high(s.min_y, clip.y0 * one), by_hi = low(s.max_y, clip.y1 * one);
+    if (bx_lo > bx_hi || by_lo > by_hi) return 0;  // (nothing drawn)
+    // the vertices' reach from the reference vertex, the cut corners' slack (spread_corners), and
+    // each plane's terms at any of them: |a0| + (|g_x| + |g_y|) far
+    const double xv = double(high(s.ref_x - s.min_x, s.max_x - s.ref_x)), yv = double(high(s.ref_y - s.min_y, s.max_y - s.ref_y));
+    const double reach = xv + yv, slack = 64 * EPS * reach * MARGIN, far = larger(xv, yv) + slack;
+    auto terms = [&](const Plane& p) { return (magnitude(p.a0) + (magnitude(p.gx) + magnitude(p.gy)) * far) * MARGIN; };
+    const double n = double(s.edge_count - 2), area2 = double(s.area2);
+    if (!(texel_most * (area2 + GUARD_CUT_AFFINE * n * reach * reach) * (1 + 1e-6) * MARGIN <= GUARD_AFFINE * area2)) return 0;
+    const double x_lo = double(bx_lo - s.ref_x), x_hi = double(bx_hi - s.ref_x), y_lo = double(by_lo - s.ref_y), y_hi = double(by_hi - s.ref_y);
+    double q_lo = s.q.a0 + s.q.gy * (s.q.gy < 0 ? y_hi : y_lo) + s.q.gx * (s.q.gx < 0 ? x_hi : x_lo);
+    double q_vertices = 0;
+    for (int i = 0; i < s.edge_count; ++i) {
+        const double x = double(s.edges[i].px - s.ref_x), y = double(s.edges[i].py - s.ref_y);
+        const double q = s.q.at(x, y), t_most = GUARD_T * q;
+        if (!(magnitude(s.pu.at(x, y)) <= t_most) || !(magnitude(s.pv.at(x, y)) <= t_most)) return 0;
+        q_vertices = i && !(q < q_vertices) ? q_vertices : q;
+    }
+    q_lo = larger(q_lo, q_vertices);
+    const double scale_q = terms(s.q), drift = (magnitude(s.q.gx) + magnitude(s.q.gy)) * slack * MARGIN;
+    const double q_min = (q_lo - 24 * EPS * scale_q - 3 * drift) * (1 - 1e-9), terms_most = GUARD_TERMS * q_min;
+    return q_min > 0 && scale_q <= terms_most && terms(s.pu) <= terms_most && terms(s.pv) <= terms_most && gradient <= GUARD_CHORD * q_min
+               ? q_min
+               : 0;
+}
 
 }  // namespace
 
@@ -290,8 +329,9 @@ bool fast_oriented_guard_takes(double texel_most, const ClipRect& clip) {
     return texel_most >= 0 && texel_most * (1 + 8.0 * (MAX_POLYGON_VERTICES - 2) * w * h) * (1 + 1e-6) * MARGIN <= GUARD_AFFINE;
 }
 
-double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axis) {
-    if (!box_in_clip(s, clip)) return 0;
+double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axis, double texel_most) {
+    const double gradient = magnitude(axis == Axis::Rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
+    if (!box_in_clip(s, clip)) return cut_guard(s, clip, gradient, texel_most);
     // Q's least over the box first (the corners', relative to the reference vertex, are its
     // corners): at most its least at the vertices, either computed within 4 eps of Q's terms, so
     // less 24 eps of them it is at most q_least's Q_min; where that fails (the box reaching where Q
@@ -301,10 +341,10 @@ double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axi
     QLeast l{0, 0, larger(-x_lo, x_hi), larger(-y_lo, y_hi)};
     l.scale_q = l.terms(s.q);
     const double q_lo = s.q.a0 + s.q.gy * (s.q.gy < 0 ? y_hi : y_lo) + s.q.gx * (s.q.gx < 0 ? x_hi : x_lo);
-    const double scale_pu = l.terms(s.pu), scale_pv = l.terms(s.pv), gradient = magnitude(axis == Axis::Rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
+    const double scale_pu = l.terms(s.pu), scale_pv = l.terms(s.pv);
     auto holds = [&](double q_min) {
         const double t_most = GUARD_T * q_min;
-        return q_min > 0 && l.scale_q <= q_min * 67108864.0 && scale_pu <= t_most && scale_pv <= t_most && gradient <= GUARD_CHORD * q_min;
+        return q_min > 0 && l.scale_q <= q_min * GUARD_TERMS && scale_pu <= t_most && scale_pv <= t_most && gradient <= GUARD_CHORD * q_min;
     };
     const double q_box = (q_lo - 24 * EPS * l.scale_q) * (1 - 1e-9);
     if (holds(q_box)) return q_box;
@@ -312,11 +352,14 @@ double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axi
     return holds(q_corners) ? q_corners : 0;
 }
 
-bool fast_constant_within(const PolygonSetup& s, Axis axis, double q_min, double room) {
+bool fast_constant_within(const PolygonSetup& s, const ClipRect& clip, Axis axis, double q_min, double room) {
     // fast_chords_bound's for 512 pixels at the certificate's Q_min (at least q_min) and rounding
-    // (within FAST_ADAPTIVE_ROUNDING): X = h^2 |Q'| / (4 Q_min) M, h the box's extent along the lines
+    // (within FAST_ADAPTIVE_ROUNDING): X = h^2 |Q'| / (4 Q_min) M, h the box's extent inside the
+    // clip along the lines
     const bool rows = axis == Axis::Rows;
-    const double last = double(rows ? s.max_x - s.min_x : s.max_y - s.min_y) / double(SUBPIXEL_ONE);
+    const int64_t one = SUBPIXEL_ONE, first = int64_t(rows ? clip.x0 : clip.y0) * one, end = int64_t(rows ? clip.x1 : clip.y1) * one;
+    const int64_t lo = rows ? s.min_x : s.min_y, hi = rows ? s.max_x : s.max_y;
+    const double last = double((hi < end ? hi : end) - (lo > first ? lo : first)) / double(SUBPIXEL_ONE);
     const double h = last < FAST_SPAN_LONG ? last : FAST_SPAN_LONG;
     return h * h * magnitude(rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE) * MARGIN * GUARD_SLACK <= 4 * q_min * room;
 }

@@ -124,18 +124,19 @@ template <int QUARTERS>
 Axis fast_oriented_walker(const PolygonSetup& s, const ClipRect& clip);
 template <int QUARTERS>
 SetupStatus fast_oriented_draw(const DrawContext& c, const Vertex* vertices, int count);
-// fast-oriented-1's guard: from its setup with the perspective planes alone, inside the clip, along
-// `axis`, a few compares against Q's least over the polygon's box, else at its corners (Q's terms, P's
-// and its gradient along the walker) such that fast_adaptive_certain<4> holds (docs/bounds.md,
-// "fast-oriented-1's guard"; tested), on a repeating texture, for an object whose corners' |u| and
-// |v| are at most `texel_most` where fast_oriented_guard_takes(texel_most, clip) (once an object:
-// the affine planes' terms, which the guard does not set up, within what the certificate allows).
-// Returns that least (at most the certificate's Q_min), 0 where the guard fails.
+// fast-oriented-1's guard: from its setup with the perspective planes alone, along `axis`, a few
+// compares against Q's least over the polygon's box inside the clip (else at its vertices) such
+// that fast-adaptive-1's whole bound is within 1 (docs/bounds.md, "fast-oriented-1's guard";
+// tested), on a repeating texture, for an object whose corners' |u| and |v| are at most
+// `texel_most` where fast_oriented_guard_takes(texel_most, clip) (once an object: the affine
+// planes' terms, which the guard does not set up, within what the certificate allows; a polygon
+// the clip cuts is checked on its own). Returns that least (at most the certificate's or the
+// spread's Q_min), 0 where the guard fails.
 bool fast_oriented_guard_takes(double texel_most, const ClipRect& clip);
-double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axis);
+double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axis, double texel_most);
 // Where the guard holds with `q_min`: whether the certificate bounds fast-constant-depth's chords
 // along `axis` within the budget whose fast_adaptive_room is `room` (fast_chords_bound for 512 pixels).
-bool fast_constant_within(const PolygonSetup& s, Axis axis, double q_min, double room);
+bool fast_constant_within(const PolygonSetup& s, const ClipRect& clip, Axis axis, double q_min, double room);
 template <int QUARTERS>
 ErrorBound fast_oriented_bound(const BoundContext& c, const Vertex* vertices, int count);
 

@@ -19,14 +19,6 @@ const Mapper& auto_fallback() {
 
 namespace {
 
-// The extent inside the clip [first, end) (pixels) of a box's side from lo to hi, in subpixels:
-// clamped in 32 bits (a vertex's coordinates are, and the clip's edges in subpixels are within 2^17).
-int32_t box_inside(int32_t lo, int32_t hi, int32_t first, int32_t end) {
-    first *= int32_t(SUBPIXEL_ONE), end *= int32_t(SUBPIXEL_ONE);
-    lo = lo < first ? first : lo, hi = hi > end ? end : hi;
-    return hi > lo ? hi - lo : 0;
-}
-
 // Twice the area the setup would find, from the corners (the shoelace, exact in a double for
 // coordinates within setup's range: repeated corners add nothing): unchosen_mapper's and the
 // oriented path's gate.
@@ -188,16 +180,17 @@ void prepare_choice(const Budget& budget, const Texture& tex) {
 }
 
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
-                     PreparedPolygon* prepared, Input input, Probe* probe) {
+                     PreparedPolygon* prepared, Input input, Probe* probe, bool set_up) {
     Choice choice;
     for (PreparedSpans& w : prepared->walked) w.count = PreparedSpans::NOT_WALKED;
-    prepared->status = SetupStatus::Unsupported;
+    if (!set_up) prepared->status = SetupStatus::Unsupported;
     ListRoom room;
     const CandidateList& list = candidates(tex, target, budget, &room);
     if (list.count == 0) return choice;
     const CostModel& model = cost_model(budget.target);
     // set up once, for both walkers (the spread and the spans come when a bound asks for them)
-    prepare_setup(vertices, count, prepared, input);
+    if (set_up) prepared->spread_known = false;
+    else prepare_setup(vertices, count, prepared, input);
     probe_lap(probe, Phase::Setup);
     if (prepared->status != SetupStatus::Ok) return choice;
     PolygonSize size[2];
@@ -405,14 +398,16 @@ OrientedPlan plan_oriented(const Budget& budget, const Texture& tex, const Targe
     ListRoom room;
     const CandidateList& list = candidates(tex, target, budget, &room);
     OrientedPlan plan{};
-    // where choose_mapper would ask the oriented candidate first, with fast-adaptive-1 a candidate
-    // along each walker fast-oriented-1 may pick
-    const bool walkers = list.adaptive[0][int(Axis::Columns)] >= 0 && (target.planar || list.adaptive[0][int(Axis::Rows)] >= 0);
+    // where choose_mapper would ask the oriented candidate first, with fast-adaptive-B a candidate
+    // along each walker fast-oriented-B may pick
+    const int two = budget.max_error >= 2, a = list.adaptive[two][int(Axis::Columns)];
+    const bool walkers = a >= 0 && (target.planar || list.adaptive[two][int(Axis::Rows)] >= 0);
     if (!oriented_plan_wanted(budget) || list.oriented_row < 0 || !walkers || tex.wrap != Wrap::Repeat || !fast_oriented_guard_takes(texel_most, target.clip))
         return plan;
     const CostModel& model = cost_model(budget.target);
-    plan.oriented = &MAPPERS[list.oriented_row];
-    plan.oriented_row = plan.constant_row = cost_row(model.rows[list.oriented_row]);
+    plan.oriented = &MAPPERS[two ? list.row[a] : list.oriented_row];
+    plan.oriented_row = plan.constant_row = cost_row(model.rows[plan.oriented - MAPPERS]);
+    plan.walker_room = fast_adaptive_room(two ? 2 : 1);
     const int d = list.constant_depth[int(Axis::Columns)];
     if (d >= 0 && (target.planar || list.constant_depth[int(Axis::Rows)] >= 0)) {
         plan.constant = &MAPPERS[list.row[d]];
@@ -422,6 +417,7 @@ OrientedPlan plan_oriented(const Budget& budget, const Texture& tex, const Targe
     plan.least = CostRow{list.least_polygon[0], list.least_span[0], list.least_pixel[0]};
     plan.gate = ORIENTED_GATE * model.proof_scale;
     plan.budget = budget.max_error;
+    plan.texel_most = texel_most;
     return plan;
 }
 
@@ -465,12 +461,14 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     return in_clip && plan.exact_below > 0 && corner_footprint(vertices) < plan.exact_below ? plan.certain : nullptr;
 }
 
-bool oriented_gate_may_hold(const OrientedPlan& plan, const CornerBox& b, const Vertex* vertices, int count) {
+bool oriented_gate_may_hold(const OrientedPlan& plan, const CornerBox& b, const ClipRect& clip, const Vertex* vertices, int count) {
     const double area2 = corner_area2(vertices, count);
-    // the gate at its least over both picks and walkers: lines at least the box's shorter side
-    // (or, for a fitted cost below 0 a line, at most its longer), the pixels the setup's
+    // the gate at its least over both picks and walkers: lines at least the shorter side of the
+    // box inside the clip (or, for a fitted cost below 0 a line, at most its longer), the pixels
+    // the setup's (polygon_sizes)
     const double one = double(SUBPIXEL_ONE);
-    const double w = double(b.x_hi - b.x_lo) / one, h = double(b.y_hi - b.y_lo) / one, box = w * h, area = area2 / (2 * one * one);
+    const double w = double(box_inside(b.x_lo, b.x_hi, clip.x0, clip.x1)) / one, h = double(box_inside(b.y_lo, b.y_hi, clip.y0, clip.y1)) / one;
+    const double box = w * h, area = area2 / (2 * one * one);
     const double fewer = w < h ? w : h, more = w < h ? h : w, pixels = area < box ? area : box;
     const CostRow &o = plan.oriented_row, &c = plan.constant_row, &l = plan.least;
     auto part = [](double x, double y) { return x < y ? x : y; };

@@ -101,11 +101,12 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row, double proof_sca
 // polygon (docs/auto.md, "The rule"): the whole polygon asked first, the spans where proven_by_spans;
 // ties to the cheaper per pixel, then rows, then registry order; exact, unasked, where nothing
 // cheaper can be proven for less. Candidates are priced lazily, cheapest per pixel first. Set up
-// once, into *prepared, and walked only where a bound needs the spans (the choice draws from them).
+// once, into *prepared, and walked only where a bound needs the spans (the choice draws from them);
+// `set_up`: *prepared holds the polygon's setup already (every plane, status Ok; not walked).
 // `input`: as setup_polygon takes it. `probe`: the bench's lap timer, which charges the setup to
 // Phase::Setup (the caller laps the rest, Phase::Choose).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
-                     PreparedPolygon* prepared, Input input = Input::Any, Probe* probe = nullptr);
+                     PreparedPolygon* prepared, Input input = Input::Any, Probe* probe = nullptr, bool set_up = false);
 
 // Builds the candidate lists choose_mapper and plan_auto take for a texture at a budget, for
 // either kind of target (linear, planar), into Budget::lists (nothing without), where they are not
@@ -225,8 +226,9 @@ AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& targe
 // auto's oriented path for an object (docs/auto.md, "The oriented path"): choose_mapper's oriented
 // candidate taken without its search, proven by fast_oriented_guard. From a budget of 1 to below 4,
 // on a repeating texture whose corners' |u| and |v| are at most `texel_most` (Frame::texel_most)
-// where fast_oriented_guard_takes: the Oriented row (fast-oriented-1), and fast-constant-depth
-// where the cost model measured it (else nullptr), with fast_adaptive_room of the budget; the gate
+// where fast_oriented_guard_takes: the Oriented row (fast-oriented-1) below 2, else fast-adaptive-2
+// along the walker fast-oriented-2 would pick (`walker_room`), and fast-constant-depth where the
+// cost model measured it (else nullptr), with fast_adaptive_room of the budget; the gate
 // as choose_mapper's (the pick's estimate at most the least any candidate could cost plus
 // ORIENTED_GATE), and the budget affine_deviation is weighed against past it; else oriented nullptr.
 // Made where an object's first polygon asks for it (oriented_plan_wanted), not with every AutoPlan.
@@ -236,9 +238,19 @@ struct OrientedPlan {
     double room;
     CostRow oriented_row, constant_row, least;
     double gate, budget;
+    double walker_room;  // fast_adaptive_room(B): oriented_axis's
+    double texel_most;   // (fast_oriented_guard's, for a polygon the clip cuts)
 };
 inline bool oriented_plan_wanted(const Budget& budget) { return budget.max_error >= 1 && budget.max_error < 4; }
 OrientedPlan plan_oriented(const Budget& budget, const Texture& tex, const Target& target, double texel_most);
+
+// The extent inside the clip [first, end) (pixels) of a box's side from lo to hi, in subpixels:
+// clamped in 32 bits (a vertex's coordinates are, and the clip's edges in subpixels are within 2^17).
+inline int32_t box_inside(int32_t lo, int32_t hi, int32_t first, int32_t end) {
+    first *= int32_t(SUBPIXEL_ONE), end *= int32_t(SUBPIXEL_ONE);
+    lo = lo < first ? first : lo, hi = hi > end ? end : hi;
+    return hi > lo ? hi - lo : 0;
+}
 
 // The box of a polygon's corners, as the setup finds it.
 struct CornerBox {
@@ -267,16 +279,14 @@ double corner_footprint(const Vertex* vertices);
 const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis, const CornerBox* box = nullptr);
 
 // Whether auto's oriented path is to be tried on the polygon, from its corners before any setup:
-// where its box lies inside the clip (fast_oriented_guard asks it) and is not one unchosen_mapper
-// gives the certain one at once (`small_box`: AutoPlan::small_box's most_box); then where the gate
-// can hold (the picks' least estimate within it of the least any candidate could cost, from the
-// box and the area).
+// where its box inside the clip is not one unchosen_mapper gives the certain one at once
+// (`small_box`: AutoPlan::small_box's most_box); then where the gate can hold (the picks' least
+// estimate within it of the least any candidate could cost, from the box inside the clip and the
+// area).
 inline bool oriented_box(int64_t small_box, const CornerBox& b, const ClipRect& clip) {
-    const int32_t one = SUBPIXEL_ONE;
-    return b.x_lo >= clip.x0 * one && b.x_hi <= clip.x1 * one && b.y_lo >= clip.y0 * one && b.y_hi <= clip.y1 * one &&
-           int64_t(b.x_hi - b.x_lo) * (b.y_hi - b.y_lo) > small_box;
+    return int64_t(box_inside(b.x_lo, b.x_hi, clip.x0, clip.x1)) * box_inside(b.y_lo, b.y_hi, clip.y0, clip.y1) > small_box;
 }
-bool oriented_gate_may_hold(const OrientedPlan& plan, const CornerBox& box, const Vertex* vertices, int count);
+bool oriented_gate_may_hold(const OrientedPlan& plan, const CornerBox& box, const ClipRect& clip, const Vertex* vertices, int count);
 
 // How far the affine planes (fast-affine's line) lie from the exact mapping, in footprints (either
 // axis, the texel distance over the footprint), at the mean of the corners of a polygon inside the

@@ -8,19 +8,19 @@ namespace raster {
 
 namespace {
 
+// (`set_up`: `prepared` holds the polygon's setup already, as choose_mapper takes it)
 SetupStatus choose_and_draw(const Vertex* vertices, int count, const Texture& tex, Axis axis, Target& target, RenderStats* stats,
-                            Variant variant, const Budget& budget, Input input) {
-    PreparedPolygon prepared;
-    Choice c = choose_mapper(budget, vertices, count, tex, target, &prepared, input, stats->probe);
+                            Variant variant, const Budget& budget, Input input, PreparedPolygon& prepared, bool set_up = false) {
+    Choice c = choose_mapper(budget, vertices, count, tex, target, &prepared, input, stats->probe, set_up);
     probe_lap(stats->probe, Phase::Choose);
     if (!c.mapper) {
         const Axis any = target_supports(target, axis) ? axis : Axis::Columns;  // a walker the target takes
         return Drawer::of(auto_fallback(), tex, any, target, stats, variant).draw_set_up(vertices, count, nullptr, nullptr);
     }
-    const bool set_up = prepared.status == SetupStatus::Ok;
+    const bool ok = prepared.status == SetupStatus::Ok;
     // (a candidate: its walker, texture and target checked when the list was built)
     const SetupStatus status = Drawer::of(*c.mapper, tex, c.axis, target, stats, variant, true)
-                                   .draw_set_up(vertices, count, set_up ? &prepared.setup : nullptr, &prepared.walked[int(c.axis)]);
+                                   .draw_set_up(vertices, count, ok ? &prepared.setup : nullptr, &prepared.walked[int(c.axis)]);
     if (status == SetupStatus::Ok) ++(c.by_spans ? stats->proven_spans : stats->proven_whole);
     return status;
 }
@@ -39,45 +39,63 @@ const Mapper* timed_unchosen(const AutoPlan& plan, const Vertex* vertices, int c
 struct OrientedPath {
     bool planned;
     OrientedPlan plan;
-    bool made[2][2];  // [Axis][fast-oriented-1, fast-constant-depth]
+    bool made[2][2];  // [Axis][the oriented pick, fast-constant-depth]
     Drawer drawer[2][2];
 };
 
-// auto's oriented path (OrientedPlan): set up with the perspective planes alone, along the walker
-// fast-oriented-1 picks (a planar target: columns), where fast_oriented_guard holds: fast-constant-
-// depth where the same proof bounds its chords within the budget and its row is the cheaper, else
-// fast-oriented-1, where the pick's estimate is within the gate or affine_deviation is above the
-// budget (choose_mapper's tests); else Unproven, nothing drawn (the choice sets it up again). The
-// setup and the walker are Phase::Setup as in fast-oriented-1's own driver, the rest Phase::Choose.
+// auto's oriented path (OrientedPlan), along the walker fast-oriented-B picks (a planar target:
+// columns), where fast_oriented_guard holds: fast-constant-depth where the same proof bounds its
+// chords within the budget and its row is the cheaper, else the plan's oriented pick, where the pick's
+// estimate is within the gate or affine_deviation is above the budget (choose_mapper's tests).
+// Set up into `prepared`: with the perspective planes alone where the gate may hold (the corners'
+// test), else every plane, affine_deviation deciding. Else Unproven, nothing drawn, and `prepared`
+// set up with every plane for the choice (status Ok), or not at all. The setup and the walker are
+// Phase::Setup as in fast-oriented-1's own driver, the rest Phase::Choose.
 SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant variant, const Vertex* vertices, int count, Input input, Target& target,
-                          RenderStats* stats) {
+                          RenderStats* stats, bool gate_may_hold, PreparedPolygon* prepared) {
     const OrientedPlan& plan = path.plan;
     const ClipRect& clip = target.clip;
     Probe* probe = stats->probe;
-    PolygonSetup s;
-    if (setup_polygon(vertices, count, &s, PLANES_PERSPECTIVE, input) != SetupStatus::Ok) return SetupStatus::Unproven;
+    PolygonSetup& s = prepared->setup;
+    bool affine = !gate_may_hold;  // the affine planes set up
+    prepared->status = setup_polygon(vertices, count, &s, affine ? PLANES_ALL : PLANES_PERSPECTIVE, input);
+    if (prepared->status != SetupStatus::Ok) return SetupStatus::Unproven;
     PolygonSize size[2];
     polygon_sizes(s, clip, size);
-    const Axis axis = target.planar ? Axis::Columns : oriented_axis(s, size, fast_adaptive_room(1));
+    const Axis axis = target.planar ? Axis::Columns : oriented_axis(s, size, plan.walker_room);
     probe_lap(probe, Phase::Setup);
-    const double q_min = fast_oriented_guard(s, clip, axis);
+    auto set_up_affine = [&] {
+        affine = true;
+        prepared->status = setup_polygon(vertices, count, &s, PLANES_AFFINE, input);
+        probe_lap(probe, Phase::Setup);
+        return prepared->status == SetupStatus::Ok;
+    };
+    const double q_min = fast_oriented_guard(s, clip, axis, plan.texel_most);
     // (fast-constant-depth where the cheaper by its row, as choose_mapper takes it)
     const double oriented = estimate_cost(plan.oriented_row, size[int(axis)]), constant_at = estimate_cost(plan.constant_row, size[int(axis)]);
-    const bool constant = q_min > 0 && plan.constant && constant_at < oriented && fast_constant_within(s, axis, q_min, plan.room);
-    const double rows = size[int(Axis::Rows)].spans, columns = size[int(Axis::Columns)].spans;
-    const double least_lines = (plan.least.span < 0) == (rows < columns) ? columns : rows;  // (the fewer; below 0 a line, the more)
-    const bool within = (constant ? constant_at : oriented) <= estimate_cost(plan.least, PolygonSize{least_lines, size[0].pixels}) + plan.gate;
-    // past the gate, where no affine stepping could meet the budget (the affine planes set up now)
-    const bool taken = q_min > 0 && (within || (setup_polygon(vertices, count, &s, PLANES_AFFINE, input) == SetupStatus::Ok &&
-                                                affine_deviation(s, clip) > plan.budget));
+    const bool constant = q_min > 0 && plan.constant && constant_at < oriented && fast_constant_within(s, clip, axis, q_min, plan.room);
+    bool taken = false;
+    if (q_min > 0) {
+        const double rows = size[int(Axis::Rows)].spans, columns = size[int(Axis::Columns)].spans;
+        const double least_lines = (plan.least.span < 0) == (rows < columns) ? columns : rows;  // (the fewer; below 0 a line, the more)
+        taken = gate_may_hold && (constant ? constant_at : oriented) <= estimate_cost(plan.least, PolygonSize{least_lines, size[0].pixels}) + plan.gate;
+        // past the gate, where no affine stepping could meet the budget
+        if (!taken && (affine || set_up_affine())) taken = affine_deviation(s, clip) > plan.budget;
+    }
     probe_lap(probe, Phase::Choose);
-    if (!taken) return SetupStatus::Unproven;
+    if (!taken) {
+        if (!affine) set_up_affine();  // (the choice's)
+        return SetupStatus::Unproven;
+    }
     Drawer& d = path.drawer[int(axis)][constant];
     if (!path.made[int(axis)][constant]) {
         path.made[int(axis)][constant] = true;
         d = Drawer::of(constant ? *plan.constant : *plan.oriented, tex, axis, target, stats, variant);
     }
-    if (!d.usable) return SetupStatus::Unproven;
+    if (!d.usable) {
+        if (!affine) set_up_affine();
+        return SetupStatus::Unproven;
+    }
     const SetupStatus status = d.draw_set_up(vertices, count, &s, nullptr);
     if (status == SetupStatus::Ok) ++stats->proven_whole;
     return status;
@@ -87,26 +105,30 @@ SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant varian
 // where it is the first to ask, the gate from the corners, then draw_oriented. (Out of line: off
 // the way of the frame's loop and of the envelope's triangles.)
 [[gnu::noinline]] SetupStatus try_oriented(OrientedPath& path, const CornerBox& box, const Frame& frame, const Texture& tex, Variant variant,
-                                           const Vertex* vertices, int count, int32_t object, Input input, Target& target, RenderStats* stats) {
+                                           const Vertex* vertices, int count, int32_t object, Input input, Target& target, RenderStats* stats,
+                                           PreparedPolygon* prepared) {
     probe_lap(stats->probe, Phase::Walk);
     if (!path.planned) {
         path.planned = true;
         path.plan = plan_oriented(frame.budget, tex, target, frame.texel_most[object]);
         path.made[0][0] = path.made[0][1] = path.made[1][0] = path.made[1][1] = false;
     }
-    const bool takes = path.plan.oriented && oriented_gate_may_hold(path.plan, box, vertices, count);
+    if (!path.plan.oriented) return SetupStatus::Unproven;
+    const bool gate_may_hold = oriented_gate_may_hold(path.plan, box, target.clip, vertices, count);
     probe_lap(stats->probe, Phase::Choose);
-    return takes ? draw_oriented(path, tex, variant, vertices, count, input, target, stats) : SetupStatus::Unproven;
+    return draw_oriented(path, tex, variant, vertices, count, input, target, stats, gate_may_hold, prepared);
 }
 
 }  // namespace
 
 SetupStatus draw_unproven(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
-    return choose_and_draw(vertices, 3, *enveloped.tex, enveloped.axis, *enveloped.target, enveloped.stats, variant, budget, Input::InRange);
+    PreparedPolygon prepared;
+    return choose_and_draw(vertices, 3, *enveloped.tex, enveloped.axis, *enveloped.target, enveloped.stats, variant, budget, Input::InRange, prepared);
 }
 
 SetupStatus auto_draw(const DrawContext& c, const Vertex* vertices, int count) {
-    return choose_and_draw(vertices, count, c.tex, c.axis, c.target, c.stats, c.variant, c.budget ? *c.budget : DEFAULT_BUDGET, c.input);
+    PreparedPolygon prepared;
+    return choose_and_draw(vertices, count, c.tex, c.axis, c.target, c.stats, c.variant, c.budget ? *c.budget : DEFAULT_BUDGET, c.input, prepared);
 }
 
 RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, const Mapper& mapper, Axis axis, Target& target,
@@ -138,16 +160,21 @@ RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, cons
         const AutoPlan& plan = plans[object];
         Axis unchosen_axis;
         CornerBox box;
+        PreparedPolygon prepared;
+        bool set_up = false;  // (by the oriented path, for the choice)
         if (oriented_wanted) {
             box = corner_box(v, n);
-            if (oriented_box(plan.small_box.most_box, box, target.clip) &&
-                try_oriented(oriented[object], box, frame, textures.objects[object], variant, v, n, object, input, target, &stats) != SetupStatus::Unproven)
-                return;
+            if (oriented_box(plan.small_box.most_box, box, target.clip)) {
+                if (try_oriented(oriented[object], box, frame, textures.objects[object], variant, v, n, object, input, target, &stats, &prepared) !=
+                    SetupStatus::Unproven)
+                    return;
+                set_up = prepared.status == SetupStatus::Ok;
+            }
         }
         if (timed_unchosen(plan, v, n, target.clip, &unchosen_axis, stats, oriented_wanted ? &box : nullptr))  // (the certain one, or none)
             certain[object][int(unchosen_axis)].draw(v, n, input);
         else
-            choose_and_draw(v, n, textures.objects[object], axis, target, &stats, variant, frame.budget, input);
+            choose_and_draw(v, n, textures.objects[object], axis, target, &stats, variant, frame.budget, input, prepared, set_up);
     };
     each_frame_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
         if (plans[object].enveloped && input == Input::InRange && n == 3)  // (an uncut triangle)

@@ -406,14 +406,15 @@ TEST(Bounds, FastAdaptiveCertificatesHoldInsideAnyClip) {
 
 // fast-oriented-1's guard (auto's oriented path): on random polygons in random clips, wherever the
 // object's check takes the polygon's own texels and the guard holds along a walker, fast-adaptive-1's
-// certificate holds there with a Q_min at least the guard's, so its whole bound is within one
-// footprint; and wherever fast_constant_within says so for a budget, fast-constant-depth's whole
-// bound is within it. The guard holds on most polygons the certificate does (its Q's least is the
-// box's), never where the clip cuts the polygon.
+// whole bound is within one footprint (fast-adaptive-2's within two), its certificate (a polygon the clip cuts: the spread's)
+// holds with a Q_min at least the guard's; and wherever fast_constant_within says so for a budget,
+// fast-constant-depth's whole bound is within it. The guard holds on most polygon-walkers the
+// certificate or the whole bound does, cut or not.
 TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
-    const Mapper &adaptive = *find_mapper("fast-adaptive-1"), &constant = *find_mapper("fast-constant-depth");
+    const Mapper &adaptive = *find_mapper("fast-adaptive-1"), &adaptive2 = *find_mapper("fast-adaptive-2");
+    const Mapper& constant = *find_mapper("fast-constant-depth");
     TriangleGen gen(20261129u);
-    int guarded = 0, certified = 0, constant_within = 0, untaken = 0;
+    int guarded[2] = {0, 0}, certified[2] = {0, 0}, constant_within = 0, untaken = 0;  // [uncut, cut]
     const int polygons = std::max(3000 / SANITIZED_SHARE, polygons_per_mapper());
     for (int n = 0; n < polygons; ++n) {
         const CertificateCase c(gen, n);
@@ -427,20 +428,26 @@ TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
             ++untaken;
             continue;
         }
-        const FastCertificate f = fast_certificate(s, clip, c.tex);
+        const bool cut = !box_in_clip(s, clip);
+        PolygonSpread spread;
+        if (cut) polygon_spread(s, clip, &spread);
+        if (cut && spread.corners == 0) continue;  // (its box meets the clip, the polygon not: nothing drawn)
+        const FastCertificate f = cut ? fast_certificate(spread) : fast_certificate(s, clip, c.tex);
         for (Axis axis : {Axis::Rows, Axis::Columns}) {
-            const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns");
-            certified += fast_adaptive_certain<4>(f, s, axis);
-            const double q_min = fast_oriented_guard(s, clip, axis);
-            if (!(q_min > 0)) continue;
-            ++guarded;
-            EXPECT_TRUE(box_in_clip(s, clip)) << what;
-            EXPECT_TRUE(fast_adaptive_certain<4>(f, s, axis)) << what << ": guarded, but the certificate does not hold";
-            EXPECT_LE(q_min, f.q_min) << what;
+            const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns") + (cut ? " (cut)" : "");
             const ErrorBound whole = adaptive.bound(BoundContext{adaptive, c.tex, axis, clip, 1.0, nullptr, true}, c.p.data(), c.count);
+            certified[cut] += cut ? whole.draws && whole.footprint <= 1.0 : fast_adaptive_certain<4>(f, s, axis);
+            const double q_min = fast_oriented_guard(s, clip, axis, texel_most);
+            if (!(q_min > 0)) continue;
+            ++guarded[cut];
+            EXPECT_TRUE(cut || fast_adaptive_certain<4>(f, s, axis)) << what << ": guarded, but the certificate does not hold";
+            EXPECT_TRUE(f.holds) << what;
+            EXPECT_LE(q_min, f.q_min) << what;
             EXPECT_TRUE(whole.draws && whole.footprint <= 1.0) << what << ": fast-adaptive-1's whole bound " << whole.footprint;
+            const ErrorBound two = adaptive2.bound(BoundContext{adaptive2, c.tex, axis, clip, 2.0, nullptr, true}, c.p.data(), c.count);
+            EXPECT_TRUE(two.draws && two.footprint <= 2.0) << what << ": fast-adaptive-2's whole bound " << two.footprint;
             for (double budget : {1.0, 2.0, 3.75}) {
-                if (!fast_constant_within(s, axis, q_min, fast_adaptive_room(budget))) continue;
+                if (!fast_constant_within(s, clip, axis, q_min, fast_adaptive_room(budget))) continue;
                 ++constant_within;
                 const ErrorBound b = constant.bound(BoundContext{constant, c.tex, axis, clip, budget, nullptr, true}, c.p.data(), c.count);
                 EXPECT_TRUE(b.draws && b.footprint <= budget) << what << ": fast-constant-depth's whole bound " << b.footprint << " above " << budget;
@@ -449,10 +456,12 @@ TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
             if (HasFailure()) return;
         }
     }
-    std::printf("fast-oriented-1's guard: %d of %d polygon-walkers the certificate holds on; fast-constant-depth within %d times; "
-                "%d polygons' texels beyond the object's check\n", guarded, certified, constant_within, untaken);
-    EXPECT_GT(guarded, certified * 3 / 4) << "the guard holds on most polygons the certificate does";
-    EXPECT_GT(constant_within, guarded / 4);
+    std::printf("fast-oriented-1's guard: %d of %d polygon-walkers the certificate holds on, %d of %d cut ones the whole bound is within 1 on; "
+                "fast-constant-depth within %d times; %d polygons' texels beyond the object's check\n",
+                guarded[0], certified[0], guarded[1], certified[1], constant_within, untaken);
+    EXPECT_GT(guarded[0], certified[0] * 3 / 4) << "the guard holds on most polygons the certificate does";
+    EXPECT_GT(guarded[1], certified[1] / 2) << "and on many the clip cuts";
+    EXPECT_GT(constant_within, (guarded[0] + guarded[1]) / 4);
     EXPECT_LT(untaken, polygons / 2);
     // the object's check on the screen: the affine planes' terms within what the range of t leaves
     // for A (1 + 8 * 14 * W H) up to some 1.77e6 texels
