@@ -266,58 +266,26 @@ bool fast_adaptive_certain(const PolygonSetup& s, const ClipRect& clip, const Te
 
 namespace {
 
-// fast_oriented_guard's limits (docs/bounds.md, "fast-oriented-1's guard"): |t| at most
-// GUARD_T + 1 (from P's terms, or at a cut polygon's vertices) and P's terms at most 2^26 times
-// Q's least, so that the certificate's reference rounding is within GUARD_REFERENCE; the affine
-// planes' terms within GUARD_AFFINE; GUARD_SLACK covers each computed value's own rounding.
-constexpr double GUARD_T = 15000, GUARD_TERMS = 67108864.0, GUARD_AFFINE = 1e18, GUARD_SLACK = 1 + 1e-12;
-constexpr double GUARD_T_MOST = (GUARD_T + 1) * MARGIN;
-constexpr double GUARD_REFERENCE = 2 * (4 * EPS * (GUARD_TERMS + GUARD_T_MOST * GUARD_TERMS) + 2 * EPS * GUARD_T_MOST) * MARGIN * GUARD_SLACK;
-static_assert((2 * GUARD_T_MOST + 2 * (2 * GUARD_REFERENCE + 4 * EPS * GUARD_AFFINE)) * MARGIN * MARGIN * GUARD_SLACK < FAST_ARITHMETIC.chord,
-              "the range of t fits 16.16's chords (fast_certificate's range)");
-static_assert(FAST_ARITHMETIC.at(FAST_SPAN_LONG - 1) + 2 * GUARD_REFERENCE <= FAST_ADAPTIVE_ROUNDING, "fast_adaptive_certain's rounding");
+// fast_oriented_guard's limits (docs/bounds.md, "fast-oriented-1's guard"), against Q's least over
+// the pixels: t within GUARD_T of its value at the centre of their box, |t| within GUARD_T_ABS;
+// Q's terms within GUARD_Q_TERMS of it and P's within GUARD_P_TERMS, so that the spread's
+// reference rounding is within GUARD_REFERENCE; a cut polygon's corners moved by their slack
+// within GUARD_MOVED texels; the affine planes' terms within GUARD_AFFINE; GUARD_SLACK covers
+// each computed value's own rounding.
+constexpr double GUARD_T = 15000, GUARD_T_ABS = 0x1p18, GUARD_Q_TERMS = 0x1p18, GUARD_P_TERMS = 0x1p37;
+constexpr double GUARD_MOVED = 0x1p-10, GUARD_AFFINE = 1e18, GUARD_SLACK = 1 + 1e-12;
+constexpr double GUARD_REFERENCE =
+    2 * (4 * EPS * (GUARD_P_TERMS + GUARD_T_ABS * GUARD_Q_TERMS) + 2 * EPS * GUARD_T_ABS) * MARGIN * MARGIN * GUARD_SLACK;
+static_assert(GUARD_Q_TERMS <= 67108864.0, "fast-adaptive's whole bound asks Q's terms within 2^26 of its least");
+static_assert((2 * GUARD_T + 6 * GUARD_REFERENCE + 4 * GUARD_MOVED + 2 * 4 * EPS * GUARD_AFFINE) * MARGIN * MARGIN * GUARD_SLACK < FAST_ARITHMETIC.chord,
+              "the range of t fits 16.16's chords (chords_fit's first test)");
+static_assert(FAST_ARITHMETIC.at(FAST_SPAN_LONG - 1) + 2 * GUARD_REFERENCE <= FAST_ADAPTIVE_ROUNDING, "fast-adaptive's rounding");
 // relative_chords_bound(X M, R) <= 1 where 2 X M (1 + 1e-9)^2 <= 1 - R (1 + 1e-9), R its rounding
 // (at most GUARD_R): the two-pixel chords' |Q'| at most GUARD_CHORD times Q's least
 constexpr double GUARD_R = (FAST_ARITHMETIC.at(1) + 2 * GUARD_REFERENCE) * MARGIN * GUARD_SLACK;
 constexpr double GUARD_CHORD = (1 - GUARD_R * (1 + 2e-9)) / (2 * MARGIN * (1 + 2e-9)) / GUARD_SLACK;
 // A cut polygon's affine planes: terms and drift within A (1 + GUARD_CUT_AFFINE (n - 2) S^2 / area2)
 constexpr double GUARD_CUT_AFFINE = 72;
-
-// fast_oriented_guard on a polygon the clip cuts (docs/bounds.md, "fast-oriented-1's guard"): Q's
-// least over its pixels, from the box inside the clip or the vertices, whichever is the larger,
-// less what the spread's cut corners (within `slack` of the polygon) and evaluations may take;
-// and that the planes' terms, |P| <= GUARD_T Q at every vertex and the affine planes' terms hold
-// against it. 0 where they do not.
-double cut_guard(const PolygonSetup& s, const ClipRect& clip, double gradient, double texel_most) {
-    auto low = [](int64_t a, int64_t b) { return a < b ? a : b; };
-    auto high = [](int64_t a, int64_t b) { return a < b ? b : a; };
-    const int64_t one = SUBPIXEL_ONE;
-    const int64_t bx_lo = high(s.min_x, clip.x0 * one), bx_hi = low(s.max_x, clip.x1 * one);
-    const int64_t by_lo = high(s.min_y, clip.y0 * one), by_hi = low(s.max_y, clip.y1 * one);
-    if (bx_lo > bx_hi || by_lo > by_hi) return 0;  // (nothing drawn)
-    // the vertices' reach from the reference vertex, the cut corners' slack (spread_corners), and
-    // each plane's terms at any of them: |a0| + (|g_x| + |g_y|) far
-    const double xv = double(high(s.ref_x - s.min_x, s.max_x - s.ref_x)), yv = double(high(s.ref_y - s.min_y, s.max_y - s.ref_y));
-    const double reach = xv + yv, slack = 64 * EPS * reach * MARGIN, far = larger(xv, yv) + slack;
-    auto terms = [&](const Plane& p) { return (magnitude(p.a0) + (magnitude(p.gx) + magnitude(p.gy)) * far) * MARGIN; };
-    const double n = double(s.edge_count - 2), area2 = double(s.area2);
-    if (!(texel_most * (area2 + GUARD_CUT_AFFINE * n * reach * reach) * (1 + 1e-6) * MARGIN <= GUARD_AFFINE * area2)) return 0;
-    const double x_lo = double(bx_lo - s.ref_x), x_hi = double(bx_hi - s.ref_x), y_lo = double(by_lo - s.ref_y), y_hi = double(by_hi - s.ref_y);
-    double q_lo = s.q.a0 + s.q.gy * (s.q.gy < 0 ? y_hi : y_lo) + s.q.gx * (s.q.gx < 0 ? x_hi : x_lo);
-    double q_vertices = 0;
-    for (int i = 0; i < s.edge_count; ++i) {
-        const double x = double(s.edges[i].px - s.ref_x), y = double(s.edges[i].py - s.ref_y);
-        const double q = s.q.at(x, y), t_most = GUARD_T * q;
-        if (!(magnitude(s.pu.at(x, y)) <= t_most) || !(magnitude(s.pv.at(x, y)) <= t_most)) return 0;
-        q_vertices = i && !(q < q_vertices) ? q_vertices : q;
-    }
-    q_lo = larger(q_lo, q_vertices);
-    const double scale_q = terms(s.q), drift = (magnitude(s.q.gx) + magnitude(s.q.gy)) * slack * MARGIN;
-    const double q_min = (q_lo - 24 * EPS * scale_q - 3 * drift) * (1 - 1e-9), terms_most = GUARD_TERMS * q_min;
-    return q_min > 0 && scale_q <= terms_most && terms(s.pu) <= terms_most && terms(s.pv) <= terms_most && gradient <= GUARD_CHORD * q_min
-               ? q_min
-               : 0;
-}
 
 }  // namespace
 
@@ -330,26 +298,63 @@ bool fast_oriented_guard_takes(double texel_most, const ClipRect& clip) {
 }
 
 double fast_oriented_guard(const PolygonSetup& s, const ClipRect& clip, Axis axis, double texel_most) {
-    const double gradient = magnitude(axis == Axis::Rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
-    if (!box_in_clip(s, clip)) return cut_guard(s, clip, gradient, texel_most);
-    // Q's least over the box first (the corners', relative to the reference vertex, are its
-    // corners): at most its least at the vertices, either computed within 4 eps of Q's terms, so
-    // less 24 eps of them it is at most q_least's Q_min; where that fails (the box reaching where Q
-    // is far less, a slanted polygon), q_least's own
-    const double x_lo = double(int32_t(s.min_x - s.ref_x)), x_hi = double(int32_t(s.max_x - s.ref_x));
-    const double y_lo = double(int32_t(s.min_y - s.ref_y)), y_hi = double(int32_t(s.max_y - s.ref_y));
-    QLeast l{0, 0, larger(-x_lo, x_hi), larger(-y_lo, y_hi)};
+    // the pixels' box: the polygon's inside the clip, relative to the reference vertex (a cut
+    // polygon's spread corners lie within `slack` of it: spread_corners)
+    const bool cut = !box_in_clip(s, clip);
+    double x_lo = double(int32_t(s.min_x - s.ref_x)), x_hi = double(int32_t(s.max_x - s.ref_x));
+    double y_lo = double(int32_t(s.min_y - s.ref_y)), y_hi = double(int32_t(s.max_y - s.ref_y));
+    double reach = 0;  // a cut polygon: its vertices' reach from the reference vertex, for the slack
+    if (cut) {
+        const double one = double(SUBPIXEL_ONE), ref_x = double(s.ref_x), ref_y = double(s.ref_y);
+        reach = larger(-x_lo, x_hi) + larger(-y_lo, y_hi);
+        x_lo = larger(x_lo, clip.x0 * one - ref_x), x_hi = -larger(-x_hi, ref_x - clip.x1 * one);
+        y_lo = larger(y_lo, clip.y0 * one - ref_y), y_hi = -larger(-y_hi, ref_y - clip.y1 * one);
+        if (x_lo > x_hi || y_lo > y_hi) return 0;  // (nothing drawn)
+    }
+    const double slack = 64 * EPS * reach * MARGIN;
+    QLeast l{0, 0, larger(-x_lo, x_hi) + slack, larger(-y_lo, y_hi) + slack};
     l.scale_q = l.terms(s.q);
+    auto drift = [&](const Plane& p) { return (magnitude(p.gx) + magnitude(p.gy)) * slack * MARGIN; };
+    const double drift_q = cut ? drift(s.q) : 0;
+    // Q's least over the box (its corner where each term is least), within 4 eps of terms(Q) of the
+    // exact, the spread's at a corner within 4 and its own 8 more, and a corner's slack twice
     const double q_lo = s.q.a0 + s.q.gy * (s.q.gy < 0 ? y_hi : y_lo) + s.q.gx * (s.q.gx < 0 ? x_hi : x_lo);
-    const double scale_pu = l.terms(s.pu), scale_pv = l.terms(s.pv);
-    auto holds = [&](double q_min) {
-        const double t_most = GUARD_T * q_min;
-        return q_min > 0 && l.scale_q <= q_min * GUARD_TERMS && scale_pu <= t_most && scale_pv <= t_most && gradient <= GUARD_CHORD * q_min;
+    const double gradient = magnitude(axis == Axis::Rows ? s.q.gx : s.q.gy) * double(SUBPIXEL_ONE);
+    const double terms_p = larger(l.terms(s.pu), l.terms(s.pv)), drift_p = cut ? larger(drift(s.pu), drift(s.pv)) : 0;
+    // t within GUARD_T of its value at the centre of the box (half its sides, a cut polygon's
+    // corners up to `slack` beyond): t - t_c = (P - t_c Q) / Q, P - t_c Q = c_x (x - x_c) +
+    // c_y (y - y_c), with the roundings of it, t_c and the c's within 12 eps of P's terms and |t_c|
+    // Q's (a hundredth of Q's least here)
+    auto t_within = [&](double q_min) {
+        const double x_c = (x_lo + x_hi) / 2, y_c = (y_lo + y_hi) / 2, half_x = (x_hi - x_lo) / 2 + slack, half_y = (y_hi - y_lo) / 2 + slack;
+        const double q_c = s.q.at(x_c, y_c);
+        if (!(q_c > 0) || !(terms_p <= GUARD_P_TERMS * q_min)) return false;
+        const Plane* planes[2] = {&s.pu, &s.pv};
+        for (const Plane* p : planes) {
+            const double t_c = p->at(x_c, y_c) / q_c, c_x = p->gx - t_c * s.q.gx, c_y = p->gy - t_c * s.q.gy;
+            const double within = (magnitude(c_x) * half_x + magnitude(c_y) * half_y) * MARGIN;
+            if (!(within <= (GUARD_T - 1) * q_min) || !(magnitude(t_c) <= GUARD_T_ABS - GUARD_T - 2)) return false;
+        }
+        return true;
     };
-    const double q_box = (q_lo - 24 * EPS * l.scale_q) * (1 - 1e-9);
+    // and first, |t| within GUARD_T everywhere (P's terms), which implies it
+    auto holds = [&](double q_min) {
+        if (!(q_min > 0) || !(l.scale_q <= GUARD_Q_TERMS * q_min) || !(gradient <= GUARD_CHORD * q_min)) return false;
+        if (cut && !(drift_p + GUARD_T_ABS * drift_q <= GUARD_MOVED * q_min)) return false;
+        return terms_p <= GUARD_T * q_min || t_within(q_min);
+    };
+    if (cut) {
+        // the affine planes' terms (fast_oriented_guard_takes' bound, from the vertices' reach)
+        const double n = double(s.edge_count - 2), area2 = double(s.area2);
+        if (!(texel_most * (area2 + GUARD_CUT_AFFINE * n * reach * reach) * (1 + 1e-6) * MARGIN <= GUARD_AFFINE * area2)) return 0;
+    }
+    const double q_box = (q_lo - 24 * EPS * l.scale_q - 3 * drift_q) * (1 - 1e-9);
     if (holds(q_box)) return q_box;
-    const double q_corners = q_least(s).q_min;
-    return holds(q_corners) ? q_corners : 0;
+    // where the box reaches where Q is far less (a slanted polygon): Q's least at the vertices
+    // (q_least's, less what the spread's corners may take beyond)
+    const QLeast v = q_least(s);
+    const double q_vertices = cut ? (v.q_min - 8 * EPS * v.scale_q - 3 * drift_q) * (1 - 1e-9) : v.q_min;
+    return q_vertices > q_box && holds(q_vertices) ? q_vertices : 0;
 }
 
 bool fast_constant_within(const PolygonSetup& s, const ClipRect& clip, Axis axis, double q_min, double room) {

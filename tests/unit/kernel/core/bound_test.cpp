@@ -304,6 +304,11 @@ struct CertificateCase {
     CertificateCase(TriangleGen& gen, int n)
         : size(n % 3 == 0 ? 1 : n % 3 == 1 ? 64 : 256), texels(xor_texels(size)), tex{texels.data(), size, size, Wrap::Repeat}, copies(&tex),
           p(random_polygon(gen, n % 6)), count(int(p.size())), set_up(setup_polygon(p.data(), count, &s, PLANES_ALL) == SetupStatus::Ok) {}
+    // its texture coordinates k times as far apart (ranges of t beyond 16.16's chords)
+    void stretch(double k) {
+        for (Vertex& v : p) v.u *= k, v.v *= k;
+        set_up = setup_polygon(p.data(), count, &s, PLANES_ALL) == SetupStatus::Ok;
+    }
 };
 
 // fast-adaptive-1's certificate (auto's oriented candidate): wherever it holds, the mapper's own
@@ -404,12 +409,13 @@ TEST(Bounds, FastAdaptiveCertificatesHoldInsideAnyClip) {
     EXPECT_GT(cut, polygons / 4);
 }
 
-// fast-oriented-1's guard (auto's oriented path): on random polygons in random clips, wherever the
-// object's check takes the polygon's own texels and the guard holds along a walker, fast-adaptive-1's
-// whole bound is within one footprint (fast-adaptive-2's within two), its certificate (a polygon the clip cuts: the spread's)
-// holds with a Q_min at least the guard's; and wherever fast_constant_within says so for a budget,
-// fast-constant-depth's whole bound is within it. The guard holds on most polygon-walkers the
-// certificate or the whole bound does, cut or not.
+// fast-oriented-1's guard (auto's oriented path): on random polygons in random clips (a quarter
+// with their texture coordinates stretched 4 to 40 times), wherever the object's check takes the
+// polygon's own texels and the guard holds along a walker, fast-adaptive-1's whole bound is within
+// one footprint (fast-adaptive-2's within two), the certificate from its spread holds with a Q_min
+// at least the guard's; and wherever fast_constant_within says so for a budget, fast-constant-
+// depth's whole bound is within it. The guard holds on most polygon-walkers the whole bound is
+// within 1 on, cut or not.
 TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
     const Mapper &adaptive = *find_mapper("fast-adaptive-1"), &adaptive2 = *find_mapper("fast-adaptive-2");
     const Mapper& constant = *find_mapper("fast-constant-depth");
@@ -417,7 +423,8 @@ TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
     int guarded[2] = {0, 0}, certified[2] = {0, 0}, constant_within = 0, untaken = 0;  // [uncut, cut]
     const int polygons = std::max(3000 / SANITIZED_SHARE, polygons_per_mapper());
     for (int n = 0; n < polygons; ++n) {
-        const CertificateCase c(gen, n);
+        CertificateCase c(gen, n);
+        if (n % 4 == 3) c.stretch(gen.uniform(4, 40));
         if (!c.set_up) continue;
         const PolygonSetup& s = c.s;
         auto in = [&](int32_t side) { return n % 2 ? 0 : int32_t(gen.uniform(0, side / 4.0)); };
@@ -430,17 +437,16 @@ TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
         }
         const bool cut = !box_in_clip(s, clip);
         PolygonSpread spread;
-        if (cut) polygon_spread(s, clip, &spread);
-        if (cut && spread.corners == 0) continue;  // (its box meets the clip, the polygon not: nothing drawn)
-        const FastCertificate f = cut ? fast_certificate(spread) : fast_certificate(s, clip, c.tex);
+        polygon_spread(s, clip, &spread);
+        if (spread.corners == 0) continue;  // (its box meets the clip, the polygon not: nothing drawn)
+        const FastCertificate f = fast_certificate(spread);
         for (Axis axis : {Axis::Rows, Axis::Columns}) {
             const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns") + (cut ? " (cut)" : "");
             const ErrorBound whole = adaptive.bound(BoundContext{adaptive, c.tex, axis, clip, 1.0, nullptr, true}, c.p.data(), c.count);
-            certified[cut] += cut ? whole.draws && whole.footprint <= 1.0 : fast_adaptive_certain<4>(f, s, axis);
+            certified[cut] += whole.draws && whole.footprint <= 1.0;
             const double q_min = fast_oriented_guard(s, clip, axis, texel_most);
             if (!(q_min > 0)) continue;
             ++guarded[cut];
-            EXPECT_TRUE(cut || fast_adaptive_certain<4>(f, s, axis)) << what << ": guarded, but the certificate does not hold";
             EXPECT_TRUE(f.holds) << what;
             EXPECT_LE(q_min, f.q_min) << what;
             EXPECT_TRUE(whole.draws && whole.footprint <= 1.0) << what << ": fast-adaptive-1's whole bound " << whole.footprint;
@@ -456,10 +462,12 @@ TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
             if (HasFailure()) return;
         }
     }
-    std::printf("fast-oriented-1's guard: %d of %d polygon-walkers the certificate holds on, %d of %d cut ones the whole bound is within 1 on; "
+    std::printf("fast-oriented-1's guard: %d of %d polygon-walkers fast-adaptive-1's whole bound is within 1 on, %d of %d cut ones; "
                 "fast-constant-depth within %d times; %d polygons' texels beyond the object's check\n",
                 guarded[0], certified[0], guarded[1], certified[1], constant_within, untaken);
-    EXPECT_GT(guarded[0], certified[0] * 3 / 4) << "the guard holds on most polygons the certificate does";
+    // (the whole bound holds on more: where the chords of two pixels fail relative to the step, its
+    // bound from the steps may still be within 1)
+    EXPECT_GT(guarded[0], certified[0] * 3 / 5) << "the guard holds on most polygons the whole bound does";
     EXPECT_GT(guarded[1], certified[1] / 2) << "and on many the clip cuts";
     EXPECT_GT(constant_within, (guarded[0] + guarded[1]) / 4);
     EXPECT_LT(untaken, polygons / 2);

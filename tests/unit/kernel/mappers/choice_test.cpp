@@ -469,8 +469,7 @@ TEST(Auto, TheOrientedPathIsPlannedAndGatedAsTheChoiceWouldBe) {
         EXPECT_EQ(plan_oriented(b, tex, target, NO_BOUND).oriented, nullptr);
         EXPECT_EQ(plan_oriented(b, clamped, target, 4096).oriented, nullptr);
         if (!wanted) continue;
-        if (b.max_error < 2) EXPECT_EQ(plan.oriented->auto_role, AutoRole::Oriented);
-X
+        EXPECT_EQ(plan.oriented->auto_role, b.max_error < 2 ? AutoRole::Oriented : AutoRole::Adaptive2) << "choose_mapper's oriented candidate";
         ASSERT_NE(plan.constant, nullptr);
         EXPECT_EQ(plan.constant->auto_role, AutoRole::ConstantDepth);
         for (int n = 0; n < 3000; ++n) {
