@@ -101,10 +101,9 @@ inline CostRow proven_cost(const Mapper& m, const CostRow& row, double proof_sca
 // polygon (docs/auto.md, "The rule"): the whole polygon asked first, the spans where proven_by_spans;
 // ties to the cheaper per pixel, then rows, then registry order; exact, unasked, where nothing
 // cheaper can be proven for less. Candidates are priced lazily, cheapest per pixel first. Set up
-// once, into *prepared, and walked only where a bound needs the spans (the choice draws from them);
-// `set_up`: *prepared holds the polygon's setup already (every plane, status Ok; not walked).
-// `input`: as setup_polygon takes it. `probe`: the bench's lap timer, which charges the setup to
-// Phase::Setup (the caller laps the rest, Phase::Choose).
+// once, into *prepared (`set_up`: there already, every plane), and walked only where a bound needs
+// the spans (the choice draws from them). `input`: as setup_polygon takes it. `probe`: the bench's
+// lap timer, which charges the setup to Phase::Setup (the caller laps the rest, Phase::Choose).
 Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, const Texture& tex, const Target& target,
                      PreparedPolygon* prepared, Input input = Input::Any, Probe* probe = nullptr, bool set_up = false);
 
@@ -224,14 +223,12 @@ union ListRoom {
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint);
 
 // auto's oriented path for an object (docs/auto.md, "The oriented path"): choose_mapper's oriented
-// candidate taken without its search, proven by fast_oriented_guard. From a budget of 1 to below 4,
-// on a repeating texture whose corners' |u| and |v| are at most `texel_most` (Frame::texel_most)
-// where fast_oriented_guard_takes: the Oriented row (fast-oriented-1) below 2, else fast-adaptive-2
-// along the walker fast-oriented-2 would pick (`walker_room`), and fast-constant-depth where the
-// cost model measured it (else nullptr), with fast_adaptive_room of the budget; the gate
-// as choose_mapper's (the pick's estimate at most the least any candidate could cost plus
-// ORIENTED_GATE), and the budget affine_deviation is weighed against past it; else oriented nullptr.
-// Made where an object's first polygon asks for it (oriented_plan_wanted), not with every AutoPlan.
+// candidate taken unsearched, proven by fast_oriented_guard, from a budget of 1 to below 4, on a
+// repeating texture whose corners' |u|, |v| are within `texel_most` (Frame::texel_most) where
+// fast_oriented_guard_takes: fast-oriented-1 below 2, else fast-adaptive-2 along fast-oriented-2's
+// walker (`walker_room`), and fast-constant-depth where measured (else nullptr), with the budget's
+// fast_adaptive_room; the gate as choose_mapper's, and the budget affine_deviation is weighed
+// against past it; else oriented nullptr. Made where an object's first polygon asks for it.
 struct OrientedPlan {
     const Mapper* oriented;
     const Mapper* constant;
