@@ -19,6 +19,13 @@ const Mapper& auto_fallback() {
 
 namespace {
 
+// fast_oriented_guard on a polygon, the object's check asked of its own corners' |u| and |v|.
+double polygon_guard(const PolygonSetup& s, const Vertex* vertices, int count, const Texture& tex, const ClipRect& clip, Axis axis) {
+    double most = 0;
+    for (int i = 0; i < count; ++i) most = larger(most, larger(magnitude(vertices[i].u), magnitude(vertices[i].v)));
+    return tex.wrap == Wrap::Repeat && fast_oriented_guard_takes(most, clip) ? fast_oriented_guard(s, clip, axis, most) : 0;
+}
+
 // Twice the area the setup would find, from the corners (the shoelace, exact in a double for
 // coordinates within setup's range: repeated corners add nothing): unchosen_mapper's and the
 // oriented path's gate.
@@ -264,13 +271,13 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         return true;
     };
     // The oriented candidate (ORIENTED_GATE; docs/auto.md, "The rule", 4): fast-adaptive-B (B = 1
-    // below two, else 2) along the walker fast-oriented-B would pick, proven within B by its
-    // certificate inside the clip, else by its whole bound from the spread inside (which the search
-    // then shares); priced by fast-oriented-1's row (B = 1: drawn by it, whose driver picks the same
-    // walker) or fast-adaptive-2's. Or fast-constant-depth along that walker, cheaper by its row,
-    // where the same proof bounds its chords within the budget (outside the clip: only if taken
-    // unsearched). The choice where its price is within the gate of the least any candidate could
-    // cost, or affine_deviation is above the budget; else the price the search must undercut.
+    // below two, else 2) along fast-oriented-B's walker, proven within B by fast_oriented_guard, else
+    // its certificate inside the clip, else its whole bound from the spread (which the search then
+    // shares); priced by fast-oriented-1's row (B = 1: drawn by it) or fast-adaptive-2's. Or fast-
+    // constant-depth along that walker, cheaper by its row, where the same proof bounds its chords
+    // within the budget (the spread's: only if taken unsearched). Taken where its price is within the
+    // gate of the least any candidate could cost, or affine_deviation is above the budget; else the
+    // price the search must undercut.
     const Mapper* oriented = nullptr;
     Axis oriented_walker = Axis::Rows;
     int32_t oriented_price = NOT_LIVE;
@@ -283,8 +290,13 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         const int a = list.adaptive[two][int(oriented_walker)];
         const Mapper& m = MAPPERS[a >= 0 ? list.row[a] : 0];
         const bool inside = box_in_clip(s, target.clip);
-        const FastCertificate certificate = inside ? fast_certificate(s, target.clip, tex) : FastCertificate{};
+        // fast_oriented_guard first, then the certificate inside the clip, else the whole bound from
+        // the spread inside (the certificate computed where the guard fails)
+        const double guard = a >= 0 ? polygon_guard(s, vertices, count, tex, target.clip, oriented_walker) : 0;
+        FastCertificate certificate;
+        if (guard <= 0 && inside) certificate = fast_certificate(s, target.clip, tex);
         auto proven = [&] {
+            if (guard > 0) return true;
             if (inside) return two ? fast_adaptive_certain<8>(certificate, s, oriented_walker) : fast_adaptive_certain<4>(certificate, s, oriented_walker);
             const ErrorBound b = m.bound(BoundContext{m, tex, oriented_walker, target.clip, within, prepared, true}, vertices, count);
             return b.draws && b.footprint <= within;
@@ -300,15 +312,21 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         const double gate = ORIENTED_GATE * model.proof_scale;
         auto affine_ruled_out = [&] { return ruled_out < 0 ? (ruled_out = affine_deviation(s, target.clip) > budget.max_error) : ruled_out; };
         const int d = list.constant_depth[int(oriented_walker)];
-        const bool by_spread = !inside && oriented;
-        const FastCertificate chords = d < 0 ? FastCertificate{} : by_spread ? fast_certificate(prepared_spread(prepared, target.clip)) : certificate;
-        if (chords.holds) {
-            const Mapper& c = MAPPERS[list.row[d]];
+        if (d >= 0 && guard > 0) {  // (its chords within the budget from the guard's proof)
             const double priced_at = estimate_cost(model.rows[list.row[d]], size[int(oriented_walker)]);
-            const double bound = priced_at < estimate && (!by_spread || priced_at <= least_cost(0) + gate || affine_ruled_out())
-                                     ? fast_chords_bound(chords, s, oriented_walker, FAST_SPAN_LONG)
-                                     : NO_BOUND;
-            if (bound <= budget.max_error) oriented = &c, oriented_bound.footprint = bound, estimate = priced_at;
+            if (priced_at < estimate && fast_constant_within(s, target.clip, oriented_walker, guard, fast_adaptive_room(budget.max_error)))
+                oriented = &MAPPERS[list.row[d]], oriented_bound.footprint = budget.max_error, estimate = priced_at;
+        } else if (d >= 0) {
+            const bool by_spread = !inside && oriented;
+            const FastCertificate chords = by_spread ? fast_certificate(prepared_spread(prepared, target.clip)) : certificate;
+            if (chords.holds) {
+                const Mapper& c = MAPPERS[list.row[d]];
+                const double priced_at = estimate_cost(model.rows[list.row[d]], size[int(oriented_walker)]);
+                const double bound = priced_at < estimate && (!by_spread || priced_at <= least_cost(0) + gate || affine_ruled_out())
+                                         ? fast_chords_bound(chords, s, oriented_walker, FAST_SPAN_LONG)
+                                         : NO_BOUND;
+                if (bound <= budget.max_error) oriented = &c, oriented_bound.footprint = bound, estimate = priced_at;
+            }
         }
         if (oriented) {
             if (estimate <= least_cost(0) + gate || affine_ruled_out()) return Choice{oriented, oriented_walker, oriented_bound, false};

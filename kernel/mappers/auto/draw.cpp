@@ -45,12 +45,12 @@ struct OrientedPath {
 
 // auto's oriented path (OrientedPlan), along the walker fast-oriented-B picks (a planar target:
 // columns), where fast_oriented_guard holds: fast-constant-depth where the same proof bounds its
-// chords within the budget and its row is the cheaper, else the plan's oriented pick, where the pick's
-// estimate is within the gate or affine_deviation is above the budget (choose_mapper's tests).
-// Set up into `prepared`: with the perspective planes alone where the gate may hold (the corners'
-// test), else every plane, affine_deviation deciding. Else Unproven, nothing drawn, and `prepared`
-// set up with every plane for the choice (status Ok), or not at all. The setup and the walker are
-// Phase::Setup as in fast-oriented-1's own driver, the rest Phase::Choose.
+// chords within the budget and its row is the cheaper, else the plan's oriented pick, where the
+// pick's estimate is within the gate or affine_deviation is above the budget (choose_mapper's
+// tests). Set up into `prepared`: the perspective planes where the gate may hold (the corners'
+// test), else every plane, affine_deviation asked first. Else Unproven, nothing drawn, and
+// `prepared` set up with every plane for the choice (status Ok), or not at all. The setup and the
+// walker are Phase::Setup as in fast-oriented-1's own driver, the rest Phase::Choose.
 SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant variant, const Vertex* vertices, int count, Input input, Target& target,
                           RenderStats* stats, bool gate_may_hold, PreparedPolygon* prepared) {
     const OrientedPlan& plan = path.plan;
@@ -70,7 +70,9 @@ SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant varian
         probe_lap(probe, Phase::Setup);
         return prepared->status == SetupStatus::Ok;
     };
-    const double q_min = fast_oriented_guard(s, clip, axis, plan.texel_most);
+    // (where the gate cannot hold, an affine stepping that may meet the budget leaves it to the choice)
+    const bool ruled_out = gate_may_hold || affine_deviation(s, clip) > plan.budget;
+    const double q_min = ruled_out ? fast_oriented_guard(s, clip, axis, plan.texel_most) : 0;
     // (fast-constant-depth where the cheaper by its row, as choose_mapper takes it)
     const double oriented = estimate_cost(plan.oriented_row, size[int(axis)]), constant_at = estimate_cost(plan.constant_row, size[int(axis)]);
     const bool constant = q_min > 0 && plan.constant && constant_at < oriented && fast_constant_within(s, clip, axis, q_min, plan.room);
@@ -78,9 +80,9 @@ SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant varian
     if (q_min > 0) {
         const double rows = size[int(Axis::Rows)].spans, columns = size[int(Axis::Columns)].spans;
         const double least_lines = (plan.least.span < 0) == (rows < columns) ? columns : rows;  // (the fewer; below 0 a line, the more)
-        taken = gate_may_hold && (constant ? constant_at : oriented) <= estimate_cost(plan.least, PolygonSize{least_lines, size[0].pixels}) + plan.gate;
+        taken = !gate_may_hold || (constant ? constant_at : oriented) <= estimate_cost(plan.least, PolygonSize{least_lines, size[0].pixels}) + plan.gate;
         // past the gate, where no affine stepping could meet the budget
-        if (!taken && (affine || set_up_affine())) taken = affine_deviation(s, clip) > plan.budget;
+        if (!taken && set_up_affine()) taken = affine_deviation(s, clip) > plan.budget;
     }
     probe_lap(probe, Phase::Choose);
     if (!taken) {
