@@ -429,9 +429,8 @@ TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
         const PolygonSetup& s = c.s;
         auto in = [&](int32_t side) { return n % 2 ? 0 : int32_t(gen.uniform(0, side / 4.0)); };
         const ClipRect clip{in(SCREEN_WIDTH), in(SCREEN_HEIGHT), SCREEN_WIDTH - in(SCREEN_WIDTH), SCREEN_HEIGHT - in(SCREEN_HEIGHT)};
-        double texel_most = 0;
-        for (const Vertex& v : c.p) texel_most = std::max({texel_most, std::fabs(v.u), std::fabs(v.v)});
-        if (!fast_oriented_guard_takes(texel_most, clip)) {
+        const double most = texel_most(c.p);
+        if (!fast_oriented_guard_takes(most, clip)) {
             ++untaken;
             continue;
         }
@@ -444,7 +443,7 @@ TEST(Bounds, FastOrientedGuardImpliesTheCertificate) {
             const std::string what = "polygon " + std::to_string(n) + (axis == Axis::Rows ? " by rows" : " by columns") + (cut ? " (cut)" : "");
             const ErrorBound whole = adaptive.bound(BoundContext{adaptive, c.tex, axis, clip, 1.0, nullptr, true}, c.p.data(), c.count);
             certified[cut] += whole.draws && whole.footprint <= 1.0;
-            const double q_min = fast_oriented_guard(s, clip, axis, texel_most);
+            const double q_min = fast_oriented_guard(s, clip, axis, most);
             if (!(q_min > 0)) continue;
             ++guarded[cut];
             EXPECT_TRUE(f.holds) << what;

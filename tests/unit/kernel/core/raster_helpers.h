@@ -1,6 +1,7 @@
 // Test helpers for the raster core: random polygons, scenes built in code, per-pixel counts.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <random>
@@ -89,6 +90,13 @@ struct TriangleGen {
         return t;
     }
 };
+
+// The largest |u| and |v| of a polygon's corners (Frame::texel_most's, for one polygon).
+inline double texel_most(const std::vector<Vertex>& p) {
+    double most = 0;
+    for (const Vertex& v : p) most = std::max({most, std::fabs(v.u), std::fabs(v.v)});
+    return most;
+}
 
 inline std::unique_ptr<Scene> empty_scene(TextureKind kind, int32_t w, int32_t h, Wrap wrap) {
     auto s = std::make_unique<Scene>();

@@ -167,14 +167,13 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                     return 1e300;
                 };
                 // the oriented candidate (ORIENTED_GATE): from a budget of 1 to below 4, fast-adaptive-B
-                // (B = 1 below 2, else 2) along fast-oriented-B's walker, where fast_oriented_guard holds
-                // (with the polygon's own texels), else its certificate (inside the clip) or its whole
-                // bound within B (reaching outside), priced by fast-oriented-1's row (B = 1) or
-                // fast-adaptive-2's; or fast-constant-depth along that walker where the same proof bounds
-                // its chords within the budget (the spread's only where taken unsearched): drawn so where
-                // no candidate with its proof undercuts it by more than the gate, or where the affine
-                // deviation is above the budget (then only a mapper that does not step affinely may
-                // undercut it, by any amount); else only a cheaper proven one is chosen
+                // (B = 1 below 2, else 2) along fast-oriented-B's walker, where fast_oriented_guard holds,
+                // else its certificate (inside the clip) or its whole bound within B, priced by
+                // fast-oriented-1's row (B = 1) or fast-adaptive-2's; or fast-constant-depth where the
+                // same proof bounds its chords within the budget (the spread's only where unsearched):
+                // drawn so where no candidate with its proof undercuts it by more than the gate, or where
+                // the affine deviation is above the budget (then only a mapper that does not step
+                // affinely may undercut it, by any amount); else only a cheaper proven one is chosen
                 const bool one = b.max_error >= 1 && b.max_error < 2, two = b.max_error >= 2 && b.max_error < 4;
                 const double within = two ? 2 : 1;
                 const Mapper& adaptive = two ? adaptive2 : adaptive1;
@@ -190,9 +189,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 const bool certain_inside = two ? fast_adaptive_certain<8>(certificate, setup, walker) : fast_adaptive_certain<4>(certificate, setup, walker);
                 EXPECT_EQ(certain_inside, two ? fast_adaptive_certain<8>(setup, clip, tex, walker) : fast_adaptive_certain<4>(setup, clip, tex, walker));
                 const bool affine_ruled_out = affine_deviation(setup, clip) > b.max_error;
-                double texel_most = 0;
-                for (const Vertex& v : p) texel_most = std::max({texel_most, std::fabs(v.u), std::fabs(v.v)});
-                const double guard = fast_oriented_guard_takes(texel_most, clip) ? fast_oriented_guard(setup, clip, walker, texel_most) : 0;
+                const double uv_most = texel_most(p), guard = fast_oriented_guard_takes(uv_most, clip) ? fast_oriented_guard(setup, clip, walker, uv_most) : 0;
                 const Mapper* unsearched_by = nullptr;
                 double estimate = 1e300, unsearched_bound = within;
                 if ((one || two) && (guard > 0 || (inside ? certain_inside : adaptive_whole.draws && adaptive_whole.footprint <= within)))
@@ -201,8 +198,8 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 if ((one || two) && guard > 0 && constant_depth_here) {
                     const double cost = estimate_cost(model.rows[&constant_depth - MAPPERS], sizes[int(walker)]);
                     if (cost < estimate && fast_constant_within(setup, clip, walker, guard, fast_adaptive_room(b.max_error))) {
-                        EXPECT_LE(constant_depth.bound(BoundContext{constant_depth, tex, walker, clip, b.max_error, nullptr, true}, p.data(), 3).footprint,
-                                  b.max_error);
+                        const BoundContext whole{constant_depth, tex, walker, clip, b.max_error, nullptr, true};
+                        EXPECT_LE(constant_depth.bound(whole, p.data(), 3).footprint, b.max_error);
                         ++chords_certified;
                         unsearched_by = &constant_depth, estimate = cost, unsearched_bound = b.max_error;
                     }
