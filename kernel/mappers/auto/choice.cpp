@@ -270,28 +270,34 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         choice.mapper = &m, choice.axis = list.axis[k], choice.bound = b, choice.by_spans = !whole_only;
         return true;
     };
-    // The oriented candidate (ORIENTED_GATE; docs/auto.md, "The rule", 4): fast-adaptive-B (B = 1
-    // below two, else 2) along fast-oriented-B's walker, proven within B by fast_oriented_guard, else
-    // its certificate inside the clip, else its whole bound from the spread (which the search then
-    // shares); priced by fast-oriented-1's row (B = 1: drawn by it) or fast-adaptive-2's. Or fast-
-    // constant-depth along that walker, cheaper by its row, where the same proof bounds its chords
-    // within the budget (the spread's: only if taken unsearched). Taken where its price is within the
-    // gate of the least any candidate could cost, or affine_deviation is above the budget; else the
-    // price the search must undercut.
+    // The oriented candidate (ORIENTED_GATE; docs/auto.md, "The rule", 4): from a budget of 1,
+    // fast-adaptive-B (B = 1 below two, else 2) along fast-oriented-B's walker, proven within B by
+    // fast_oriented_guard, else its certificate or its whole bound from the spread; priced by
+    // fast-oriented-1's row (B = 1: drawn by it) or fast-adaptive-2's. Or fast-constant-depth along
+    // that walker, cheaper by its row, where the same proof bounds its chords (the spread's: unsearched).
+    // Taken where its price is within the gate of the least any candidate could cost, or
+    // affine_deviation is above the budget; else the price the search must undercut.
     const Mapper* oriented = nullptr;
     Axis oriented_walker = Axis::Rows;
     int32_t oriented_price = NOT_LIVE;
     ErrorBound oriented_bound{true, true, 1};
-    if (budget.max_error >= 1 && budget.max_error < 4 && list.oriented_row >= 0) {
-        const int two = budget.max_error >= 2;
-        const double within = two ? 2 : 1;
-        const PolygonSetup& s = prepared->setup;
-        oriented_walker = target.planar ? Axis::Columns : oriented_axis(s, size, fast_adaptive_room(within));
-        const int a = list.adaptive[two][int(oriented_walker)];
+    bool deferred = false;  // its proof put off until the search reaches its least price
+    double estimate = 1e300;  // the proven pick's
+    int ruled_out = -1;       // (affine_deviation above the budget: asked once, where needed)
+    const double gate = ORIENTED_GATE * model.proof_scale;
+    const PolygonSetup& s = prepared->setup;
+    auto affine_ruled_out = [&] { return ruled_out < 0 ? (ruled_out = affine_deviation(s, target.clip) > budget.max_error) : ruled_out; };
+    const int two = budget.max_error >= 2;
+    const double within = two ? 2 : 1;
+    const bool asked = budget.max_error >= 1 && list.oriented_row >= 0;
+    if (asked) oriented_walker = target.planar ? Axis::Columns : oriented_axis(s, size, fast_adaptive_room(within));
+    const int a = asked ? list.adaptive[two][int(oriented_walker)] : -1, d = asked ? list.constant_depth[int(oriented_walker)] : -1;
+    const bool inside = asked && box_in_clip(s, target.clip);
+    // fast_oriented_guard first, then the certificate inside the clip, else the whole bound from the
+    // spread inside (the certificate computed where the guard fails); fast-constant-depth's chords
+    // from the same proof
+    auto prove = [&] {
         const Mapper& m = MAPPERS[a >= 0 ? list.row[a] : 0];
-        const bool inside = box_in_clip(s, target.clip);
-        // fast_oriented_guard first, then the certificate inside the clip, else the whole bound from
-        // the spread inside (the certificate computed where the guard fails)
         const double guard = a >= 0 ? polygon_guard(s, vertices, count, tex, target.clip, oriented_walker) : 0;
         FastCertificate certificate;
         if (guard <= 0 && inside) certificate = fast_certificate(s, target.clip, tex);
@@ -301,18 +307,12 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
             const ErrorBound b = m.bound(BoundContext{m, tex, oriented_walker, target.clip, within, prepared, true}, vertices, count);
             return b.draws && b.footprint <= within;
         };
-        double estimate = 1e300;
         if (a >= 0 && proven()) {
             oriented = two ? &m : &MAPPERS[list.oriented_row];
             oriented_bound.footprint = within;
             estimate = estimate_cost(model.rows[oriented - MAPPERS], size[int(oriented_walker)]);
         }
-        // (asked once, where needed)
-        int ruled_out = -1;
-        const double gate = ORIENTED_GATE * model.proof_scale;
-        auto affine_ruled_out = [&] { return ruled_out < 0 ? (ruled_out = affine_deviation(s, target.clip) > budget.max_error) : ruled_out; };
-        const int d = list.constant_depth[int(oriented_walker)];
-        if (d >= 0 && guard > 0) {  // (its chords within the budget from the guard's proof)
+        if (d >= 0 && guard > 0) {
             const double priced_at = estimate_cost(model.rows[list.row[d]], size[int(oriented_walker)]);
             if (priced_at < estimate && fast_constant_within(s, target.clip, oriented_walker, guard, fast_adaptive_room(budget.max_error)))
                 oriented = &MAPPERS[list.row[d]], oriented_bound.footprint = budget.max_error, estimate = priced_at;
@@ -328,9 +328,20 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
                 if (bound <= budget.max_error) oriented = &c, oriented_bound.footprint = bound, estimate = priced_at;
             }
         }
-        if (oriented) {
-            if (estimate <= least_cost(0) + gate || affine_ruled_out()) return Choice{oriented, oriented_walker, oriented_bound, false};
-            oriented_price = price_of(estimate);
+        oriented_price = oriented ? price_of(estimate) : NOT_LIVE;
+    };
+    if (a >= 0 || d >= 0) {
+        // the least either pick could cost, before any proof: past the gate (no affine stepping ruled
+        // out), the price the search must undercut, the pick proven where the search reaches it
+        const PolygonSize& along = size[int(oriented_walker)];
+        const double pick = a >= 0 ? estimate_cost(model.rows[two ? list.row[a] : list.oriented_row], along) : 1e300;
+        const double pick_constant = d >= 0 ? estimate_cost(model.rows[list.row[d]], along) : 1e300;
+        const double least_pick = pick < pick_constant ? pick : pick_constant;
+        if (least_pick <= least_cost(0) + gate || affine_ruled_out()) {
+            prove();
+            if (oriented && (estimate <= least_cost(0) + gate || affine_ruled_out())) return Choice{oriented, oriented_walker, oriented_bound, false};
+        } else {
+            deferred = true, oriented_price = price_of(least_pick);
         }
     }
     // the cheapest proven by the whole polygon at once (from its vertices: cheap; exact always is),
@@ -339,6 +350,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     int before[2 * MAPPER_LIMIT], n = 0;
     int32_t ceiling = oriented_price;
     for (int k = next(); k >= 0; k = next()) {
+        if (price[k] >= oriented_price && deferred) deferred = false, prove(), ceiling = oriented_price;
         if (price[k] >= oriented_price) break;
         if (walks[k]) {
             price[k] = NOT_LIVE;
@@ -352,6 +364,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         const int k = before[i];
         price[k] = price_of(walks[k] ? cost[k] : cost[k] + BOUND_SPAN_COST * model.proof_scale * size[int(list.axis[k])].spans);
     }
+    if (deferred && !choice.mapper) deferred = false, prove(), ceiling = oriented_price;
     for (int k; n > 0 && (k = cheapest(ceiling)) >= 0;)
         if (ask(k, false)) break;
     return choice.mapper || !oriented ? choice : Choice{oriented, oriented_walker, oriented_bound, false};

@@ -238,7 +238,7 @@ struct OrientedPlan {
     double walker_room;  // fast_adaptive_room(B): oriented_axis's
     double texel_most;   // (fast_oriented_guard's, for a polygon the clip cuts)
 };
-inline bool oriented_plan_wanted(const Budget& budget) { return budget.max_error >= 1 && budget.max_error < 4; }
+inline bool oriented_plan_wanted(const Budget& budget) { return budget.max_error >= 1; }
 OrientedPlan plan_oriented(const Budget& budget, const Texture& tex, const Target& target, double texel_most);
 
 // The extent inside the clip [first, end) (pixels) of a box's side from lo to hi, in subpixels:

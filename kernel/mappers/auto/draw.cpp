@@ -117,8 +117,12 @@ SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant varian
     }
     if (!path.plan.oriented) return SetupStatus::Unproven;
     const bool gate_may_hold = oriented_gate_may_hold(path.plan, box, target.clip, vertices, count);
+    // (past the gate, a polygon at one depth, its corners' w all the same: the affine planes are its
+    // mapping, affine_deviation 0, so it is the choice's)
+    bool one_depth = !gate_may_hold;
+    for (int i = 1; i < count && one_depth; ++i) one_depth = vertices[i].w == vertices[0].w;
     probe_lap(stats->probe, Phase::Choose);
-    return draw_oriented(path, tex, variant, vertices, count, input, target, stats, gate_may_hold, prepared);
+    return one_depth ? SetupStatus::Unproven : draw_oriented(path, tex, variant, vertices, count, input, target, stats, gate_may_hold, prepared);
 }
 
 }  // namespace

@@ -166,7 +166,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                         return cost + (bound_walks(m) ? 0 : BOUND_SPAN_COST * scale * sizes[int(axis)].spans);
                     return 1e300;
                 };
-                // the oriented candidate (ORIENTED_GATE): from a budget of 1 to below 4, fast-adaptive-B
+                // the oriented candidate (ORIENTED_GATE): from a budget of 1, fast-adaptive-B
                 // (B = 1 below 2, else 2) along fast-oriented-B's walker, where fast_oriented_guard holds,
                 // else its certificate (inside the clip) or its whole bound within B, priced by
                 // fast-oriented-1's row (B = 1) or fast-adaptive-2's; or fast-constant-depth where the
@@ -174,7 +174,7 @@ TEST(Auto, ChoosesTheCheapestMapperWhoseBoundMeetsTheBudget) {
                 // drawn so where no candidate with its proof undercuts it by more than the gate, or where
                 // the affine deviation is above the budget (then only a mapper that does not step
                 // affinely may undercut it, by any amount); else only a cheaper proven one is chosen
-                const bool one = b.max_error >= 1 && b.max_error < 2, two = b.max_error >= 2 && b.max_error < 4;
+                const bool one = b.max_error >= 1 && b.max_error < 2, two = b.max_error >= 2;
                 const double within = two ? 2 : 1;
                 const Mapper& adaptive = two ? adaptive2 : adaptive1;
                 const Mapper& drawn_by = two ? adaptive2 : oriented;
@@ -457,11 +457,11 @@ TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
     EXPECT_GT(chosen, 0);
 }
 
-// auto's oriented path is planned from a budget of 1 to below 4 only, on a repeating texture whose
-// texels the guard's object check takes, with fast-oriented-1 (from 2: fast-adaptive-2) and
-// fast-constant-depth; and its test
-// from the corners (oriented_gate_may_hold) never refuses a polygon whose pick's estimate, from
-// its setup, is within the gate (random triangles, some the clip cuts, both picks and walkers).
+// auto's oriented path is planned from a budget of 1 on, on a repeating texture whose texels the
+// guard's object check takes, with fast-oriented-1 (from 2: fast-adaptive-2) and fast-constant-
+// depth; and its test from the corners (oriented_gate_may_hold) never refuses a polygon whose
+// pick's estimate, from its setup, is within the gate (random triangles, some the clip cuts, both
+// picks and walkers).
 TEST(Auto, TheOrientedPathIsPlannedAndGatedAsTheChoiceWouldBe) {
     std::vector<uint8_t> texels(256 * 256);
     Texture tex{texels.data(), 256, 256, Wrap::Repeat};
@@ -474,7 +474,7 @@ TEST(Auto, TheOrientedPathIsPlannedAndGatedAsTheChoiceWouldBe) {
     int gated = 0, cut = 0;
     for (const Budget& b : BUDGETS) {
         const OrientedPlan plan = plan_oriented(b, tex, target, 4096);
-        const bool wanted = b.max_error >= 1 && b.max_error < 4;
+        const bool wanted = b.max_error >= 1;
         EXPECT_EQ(plan.oriented != nullptr, wanted) << b.max_error;
         EXPECT_EQ(plan_oriented(b, tex, target, NO_BOUND).oriented, nullptr);
         EXPECT_EQ(plan_oriented(b, clamped, target, 4096).oriented, nullptr);
