@@ -119,13 +119,12 @@ void prepare_choice(const Budget& budget, const Texture& tex);
 // less: docs/auto.md, "Settled once a frame per object".
 constexpr double CHOICE_COST = 1800;
 
-// From a budget of one footprint to below four, auto's oriented candidate (choose_mapper: fast-
-// adaptive-B, or fast-constant-depth, along fast-oriented-B's walker, proven from the setup) is
-// taken without a search where its price is at most ORIENTED_GATE above the least any candidate
-// could cost with its proof, or where affine_deviation is above the budget; elsewhere the search
-// looks only for a proven candidate cheaper than it. The gate is wide because that least is loose
-// (exact's setup with fast-table's pixels); from four there is no oriented candidate, the search
-// paying there (docs/auto.md, "The rule", 4).
+// From a budget of one footprint, auto's oriented candidate (choose_mapper: fast-adaptive-B, or
+// fast-constant-depth, along fast-oriented-B's walker, proven from the setup) is taken without a
+// search where its price is at most ORIENTED_GATE above the least any candidate could cost with
+// its proof, or where affine_deviation is above the budget; elsewhere the search looks only for a
+// proven candidate cheaper than it. The gate is wide because that least is loose (exact's setup
+// with fast-table's pixels; docs/auto.md, "The rule", 4).
 constexpr double ORIENTED_GATE = 20000;
 
 // How much cheaper the certain candidate's setup a polygon may be than the enveloped mapper's for
@@ -223,7 +222,7 @@ union ListRoom {
 AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint);
 
 // auto's oriented path for an object (docs/auto.md, "The oriented path"): choose_mapper's oriented
-// candidate taken unsearched, proven by fast_oriented_guard, from a budget of 1 to below 4, on a
+// candidate taken unsearched, proven by fast_oriented_guard, from a budget of 1 on, on a
 // repeating texture whose corners' |u|, |v| are within `texel_most` (Frame::texel_most) where
 // fast_oriented_guard_takes: fast-oriented-1 below 2, else fast-adaptive-2 along fast-oriented-2's
 // walker (`walker_room`), and fast-constant-depth where measured (else nullptr), with the budget's
