@@ -286,7 +286,12 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
     int ruled_out = -1;       // (affine_deviation above the budget: asked once, where needed)
     const double gate = ORIENTED_GATE * model.proof_scale;
     const PolygonSetup& s = prepared->setup;
-    auto affine_ruled_out = [&] { return ruled_out < 0 ? (ruled_out = affine_deviation(s, target.clip) > budget.max_error) : ruled_out; };
+    // (a polygon at one depth, Q the same everywhere: the affine planes are its mapping, no affine
+    // stepping ruled out, and the oriented candidate, past the gate, not asked)
+    const bool one_depth = s.q.gx == 0 && s.q.gy == 0;
+    auto affine_ruled_out = [&] {
+        return ruled_out < 0 ? (ruled_out = !one_depth && affine_deviation(s, target.clip) > budget.max_error) : ruled_out;
+    };
     const int two = budget.max_error >= 2;
     const double within = two ? 2 : 1;
     const bool asked = budget.max_error >= 1 && list.oriented_row >= 0;
@@ -340,7 +345,7 @@ Choice choose_mapper(const Budget& budget, const Vertex* vertices, int count, co
         if (least_pick <= least_cost(0) + gate || affine_ruled_out()) {
             prove();
             if (oriented && (estimate <= least_cost(0) + gate || affine_ruled_out())) return Choice{oriented, oriented_walker, oriented_bound, false};
-        } else {
+        } else if (!one_depth) {
             deferred = true, oriented_price = price_of(least_pick);
         }
     }

@@ -34,6 +34,14 @@ const Mapper* timed_unchosen(const AutoPlan& plan, const Vertex* vertices, int c
     return m;
 }
 
+// Whether a polygon lies at one depth, its corners' w all the same: the affine planes are then its
+// mapping, and it is the choice's (choose_mapper's one_depth).
+bool one_depth(const Vertex* vertices, int count) {
+    for (int i = 1; i < count; ++i)
+        if (vertices[i].w != vertices[0].w) return false;
+    return true;
+}
+
 // An object's oriented path in a frame: its plan, made at its first polygon, and its drawers, each
 // made where first drawn with.
 struct OrientedPath {
@@ -103,9 +111,9 @@ SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant varian
     return status;
 }
 
-// The oriented path's try on a polygon of an object whose box oriented_box takes: the object's plan
-// where it is the first to ask, the gate from the corners, then draw_oriented. (Out of line: off
-// the way of the frame's loop and of the envelope's triangles.)
+// The oriented path's try on a polygon of an object whose box oriented_box takes, not at one depth
+// (one_depth): the object's plan where it is the first to ask, the gate from the corners, then
+// draw_oriented. (Out of line: off the way of the frame's loop and of the envelope's triangles.)
 [[gnu::noinline]] SetupStatus try_oriented(OrientedPath& path, const CornerBox& box, const Frame& frame, const Texture& tex, Variant variant,
                                            const Vertex* vertices, int count, int32_t object, Input input, Target& target, RenderStats* stats,
                                            PreparedPolygon* prepared) {
@@ -117,12 +125,8 @@ SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant varian
     }
     if (!path.plan.oriented) return SetupStatus::Unproven;
     const bool gate_may_hold = oriented_gate_may_hold(path.plan, box, target.clip, vertices, count);
-    // (past the gate, a polygon at one depth, its corners' w all the same: the affine planes are its
-    // mapping, affine_deviation 0, so it is the choice's)
-    bool one_depth = !gate_may_hold;
-    for (int i = 1; i < count && one_depth; ++i) one_depth = vertices[i].w == vertices[0].w;
     probe_lap(stats->probe, Phase::Choose);
-    return one_depth ? SetupStatus::Unproven : draw_oriented(path, tex, variant, vertices, count, input, target, stats, gate_may_hold, prepared);
+    return draw_oriented(path, tex, variant, vertices, count, input, target, stats, gate_may_hold, prepared);
 }
 
 }  // namespace
@@ -170,7 +174,7 @@ RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, cons
         bool set_up = false;  // (by the oriented path, for the choice)
         if (oriented_wanted) {
             box = corner_box(v, n);
-            if (oriented_box(plan.small_box.most_box, box, target.clip)) {
+            if (!one_depth(v, n) && oriented_box(plan.small_box.most_box, box, target.clip)) {
                 if (try_oriented(oriented[object], box, frame, textures.objects[object], variant, v, n, object, input, target, &stats, &prepared) !=
                     SetupStatus::Unproven)
                     return;

@@ -457,53 +457,6 @@ TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
     EXPECT_GT(chosen, 0);
 }
 
-// auto's oriented path is planned from a budget of 1 on, on a repeating texture whose texels the
-// guard's object check takes, with fast-oriented-1 (from 2: fast-adaptive-2) and fast-constant-
-// depth; and its test from the corners (oriented_gate_may_hold) never refuses a polygon whose
-// pick's estimate, from its setup, is within the gate (random triangles, some the clip cuts, both
-// picks and walkers).
-TEST(Auto, TheOrientedPathIsPlannedAndGatedAsTheChoiceWouldBe) {
-    std::vector<uint8_t> texels(256 * 256);
-    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    TextureCopies copies(&tex);
-    Texture clamped = tex;
-    clamped.wrap = Wrap::Clamp;
-    Target target = surface_kind(Surface::Linear);
-    target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
-    TriangleGen gen(1130u);
-    int gated = 0, cut = 0;
-    for (const Budget& b : BUDGETS) {
-        const OrientedPlan plan = plan_oriented(b, tex, target, 4096);
-        const bool wanted = b.max_error >= 1;
-        EXPECT_EQ(plan.oriented != nullptr, wanted) << b.max_error;
-        EXPECT_EQ(plan_oriented(b, tex, target, NO_BOUND).oriented, nullptr);
-        EXPECT_EQ(plan_oriented(b, clamped, target, 4096).oriented, nullptr);
-        if (!wanted) continue;
-        EXPECT_EQ(plan.oriented->auto_role, b.max_error < 2 ? AutoRole::Oriented : AutoRole::Adaptive2) << "choose_mapper's oriented candidate";
-        ASSERT_NE(plan.constant, nullptr);
-        EXPECT_EQ(plan.constant->auto_role, AutoRole::ConstantDepth);
-        for (int n = 0; n < 3000; ++n) {
-            std::vector<Vertex> p = gen.triangle();
-            PolygonSetup s;
-            if (setup_polygon(p.data(), int(p.size()), &s, PLANES_PERSPECTIVE) != SetupStatus::Ok) continue;
-            cut += !box_in_clip(s, target.clip);
-            PolygonSize size[2];
-            polygon_sizes(s, target.clip, size);
-            const double rows = size[int(Axis::Rows)].spans, columns = size[int(Axis::Columns)].spans;
-            const double least = estimate_cost(plan.least, PolygonSize{(plan.least.span < 0) == (rows < columns) ? columns : rows, size[0].pixels});
-            for (Axis axis : {Axis::Rows, Axis::Columns})
-                for (const CostRow* pick : {&plan.oriented_row, &plan.constant_row}) {
-                    if (!(estimate_cost(*pick, size[int(axis)]) <= least + plan.gate)) continue;
-                    ++gated;
-                    EXPECT_TRUE(oriented_gate_may_hold(plan, corner_box(p.data(), int(p.size())), target.clip, p.data(), int(p.size()))) << "polygon " << n;
-                }
-            if (HasFailure()) return;
-        }
-    }
-    EXPECT_GT(gated, 1000);
-    EXPECT_GT(cut, 100) << "polygons the clip cuts among them";
-}
-
 TEST(Auto, StaysWithinTheBudgetOnEveryDemoScene) {
     const Mapper& a = auto_mapper();
     for (const DemoScene& d : demo_scenes()) {
