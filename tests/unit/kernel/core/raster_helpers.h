@@ -39,6 +39,20 @@ struct TextureCopies {
     }
 };
 
+// A repeating 256 x 256 texture (its texels 0) with the copies the mappers read.
+struct Texture256 {
+    std::vector<uint8_t> texels = std::vector<uint8_t>(256 * 256);
+    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
+    TextureCopies copies{&tex};
+};
+
+// A target of the kind whose clip is the whole screen.
+inline Target screen_target(Surface kind) {
+    Target t = surface_kind(kind);
+    t.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    return t;
+}
+
 // The registry's mapper of that name (std::runtime_error where there is none).
 inline const Mapper& mapper(const char* name) {
     const Mapper* m = find_mapper(name);

@@ -305,9 +305,8 @@ std::vector<Vertex> planar_quad(TriangleGen& gen, double depth, double side) {
 // bounds on random triangles and planar quads, perspective from none to steep, both walkers.
 TEST(Auto, NoAffineSteppingMapperIsBoundedBelowTheAffineDeviation) {
     TriangleGen gen(1126u);
-    std::vector<uint8_t> texels(256 * 256);
-    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    TextureCopies copies(&tex);
+    Texture256 blank;
+    Texture& tex = blank.tex;
     const ClipRect clip{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
     int asked = 0, above_one = 0, inside = 0;
     double worst = 1e300;
@@ -343,9 +342,8 @@ TEST(Auto, NoAffineSteppingMapperIsBoundedBelowTheAffineDeviation) {
 // only way to exact; random triangles of half a pixel to 120, every budget, either target.
 TEST(Auto, TheSmallBoxGivesExactOnlyWhereTheWholeRuleWould) {
     TriangleGen gen(1129u);
-    std::vector<uint8_t> texels(256 * 256);
-    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    TextureCopies copies(&tex);
+    Texture256 blank;
+    Texture& tex = blank.tex;
     int by_box = 0, tiny = 0, tiny_by_box = 0;
     for (Surface surface : {Surface::Linear, Surface::Planar}) {
         Target target = surface_kind(surface);
@@ -388,9 +386,8 @@ TEST(Auto, TheSmallBoxGivesExactOnlyWhereTheWholeRuleWould) {
 // every budget, on either kind of target.
 TEST(Auto, DrawsUnchosenOnlyWhereChoosingCannotPay) {
     TriangleGen gen(1124u);
-    std::vector<uint8_t> texels(256 * 256);
-    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    TextureCopies copies(&tex);
+    Texture256 blank;
+    Texture& tex = blank.tex;
     int unchosen = 0, chosen = 0, walkers[2] = {}, by_footprint = 0, missed = 0, at_once = 0;
     for (Surface surface : {Surface::Linear, Surface::Planar}) {
         Target target = surface_kind(surface);
@@ -525,11 +522,9 @@ TEST(Auto, CornerFootprintIsTheSetupsAtThatCorner) {
 // is drawn with exact unchosen, however large (no other bound can come within the budget there:
 // the choice itself takes exact); minified enough, or reaching outside the clip, it is chosen for.
 TEST(Auto, DrawsExactUnchosenWhereTheFootprintIsTooSmallForTheBudget) {
-    std::vector<uint8_t> texels(256 * 256);
-    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    TextureCopies copies(&tex);
-    Target target = surface_kind(Surface::Linear);
-    target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    Texture256 blank;
+    Texture& tex = blank.tex;
+    Target target = screen_target(Surface::Linear);
     const Budget half{true, 0.5, true};
     const AutoPlan plan = plan_auto(half, tex, target, NO_BOUND);
     // a receding triangle of some 9000 pixels: a texel spans about two pixels (magnified), or,

@@ -22,13 +22,11 @@ const Budget BUDGETS[] = {{true, 0, true}, {true, 0.5, true}, {true, 1, true}, {
 // pick's estimate, from its setup, is within the gate (random triangles, some the clip cuts, both
 // picks and walkers).
 TEST(Auto, TheOrientedPathIsPlannedAndGatedAsTheChoiceWouldBe) {
-    std::vector<uint8_t> texels(256 * 256);
-    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    TextureCopies copies(&tex);
+    Texture256 blank;
+    Texture& tex = blank.tex;
     Texture clamped = tex;
     clamped.wrap = Wrap::Clamp;
-    Target target = surface_kind(Surface::Linear);
-    target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    Target target = screen_target(Surface::Linear);
     TriangleGen gen(1130u);
     int gated = 0, cut = 0;
     for (const Budget& b : BUDGETS) {
@@ -67,11 +65,9 @@ TEST(Auto, TheOrientedPathIsPlannedAndGatedAsTheChoiceWouldBe) {
 // than the oriented candidate's gate: from a budget of 1 the choice is a mapper that steps it
 // affinely, the oriented candidate never asked; at another depth at one corner it is not.
 TEST(Auto, APolygonAtOneDepthIsLeftToTheAffineSteppingMappers) {
-    std::vector<uint8_t> texels(256 * 256);
-    Texture tex{texels.data(), 256, 256, Wrap::Repeat};
-    TextureCopies copies(&tex);
-    Target target = surface_kind(Surface::Planar);
-    target.clip = ClipRect{0, 0, SCREEN_WIDTH, SCREEN_HEIGHT};
+    Texture256 blank;
+    Texture& tex = blank.tex;
+    Target target = screen_target(Surface::Planar);
     for (double far : {2.0, 8.0})
         for (const Budget& b : BUDGETS) {
             if (b.max_error < 1) continue;
