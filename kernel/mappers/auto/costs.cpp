@@ -42,74 +42,74 @@ const MapperCost MAPPER_COSTS[] = {
 };
 
 const MapperCost MAPPER_COSTS_486[] = {
-    {"affine", 2845.8f, 1179.91f, 163.059f}, // 11 scenes
-    {"exact", 3286.6f, 588.00f, 560.862f}, // 11 scenes
-    {"persp-subdiv-4", 3277.5f, 958.52f, 436.347f}, // 11 scenes
-    {"persp-subdiv-8", 3283.3f, 1315.28f, 244.711f}, // 11 scenes
-    {"persp-subdiv-16", 3283.3f, 1549.01f, 148.344f}, // 11 scenes
-    {"persp-subdiv-32", 3281.1f, 1672.75f, 100.075f}, // 11 scenes
-    {"constant-depth", 3282.5f, 1771.17f, 66.062f}, // 11 scenes
-    {"persp-adaptive-0.5", 3281.6f, 4053.53f, 1776.414f}, // 11 scenes
-    {"persp-adaptive-1", 3282.8f, 4922.77f, 228.433f}, // 11 scenes
-    {"persp-adaptive-2", 3283.3f, 5049.05f, 175.084f}, // 11 scenes
-    {"persp-adaptive-4", 3282.7f, 5141.25f, 142.116f}, // 11 scenes
+    {"affine", 2883.4f, 1296.97f, 160.479f}, // 11 scenes
+    {"exact", 3286.6f, 587.99f, 560.867f}, // 11 scenes
+    {"persp-subdiv-4", 3277.3f, 957.73f, 436.607f}, // 11 scenes
+    {"persp-subdiv-8", 3282.4f, 1312.45f, 244.764f}, // 11 scenes
+    {"persp-subdiv-16", 3282.4f, 1547.99f, 148.297f}, // 11 scenes
+    {"persp-subdiv-32", 3283.7f, 1677.03f, 100.865f}, // 11 scenes
+    {"constant-depth", 3282.5f, 1771.11f, 66.076f}, // 11 scenes
+    {"persp-adaptive-0.5", 3281.6f, 4053.51f, 1776.409f}, // 11 scenes
+    {"persp-adaptive-1", 3282.8f, 4922.85f, 228.395f}, // 11 scenes
+    {"persp-adaptive-2", 3283.3f, 5049.06f, 175.080f}, // 11 scenes
+    {"persp-adaptive-4", 3283.0f, 5143.14f, 142.068f}, // 11 scenes
     {"fast-affine", 2954.4f, 184.93f, 6.190f}, // 11 scenes
-    {"fast-table", 3415.1f, 173.66f, 4.712f}, // 11 scenes
-    {"fast-columns", 3030.7f, 337.65f, 5.281f}, // 11 scenes
-    {"fast-table-columns", 3473.4f, 359.79f, 7.154f}, // 11 scenes
-    {"fast-subdiv-8", 3280.9f, 988.78f, 58.906f}, // 11 scenes
-    {"fast-subdiv-16", 3281.1f, 1052.56f, 33.612f}, // 11 scenes
-    {"fast-subdiv-32", 3281.1f, 1084.54f, 21.324f}, // 11 scenes
-    {"fast-constant-depth", 3282.2f, 1111.01f, 12.068f}, // 11 scenes
-    {"fast-adaptive-1", 3282.8f, 1257.95f, 31.465f}, // 11 scenes
-    {"fast-adaptive-2", 3289.2f, 1280.24f, 22.899f}, // 11 scenes
-    {"fast-oriented-1", 4018.1f, 1347.22f, 17.389f}, // 11 scenes
-    {"xsharp-dda", 4218.2f, 586.11f, 80.053f}, // 10 scenes
-    {"xsharp-row-out", 4222.6f, 852.02f, 47.895f}, // 10 scenes
+    {"fast-table", 3415.1f, 173.58f, 4.714f}, // 11 scenes
+    {"fast-columns", 3031.9f, 336.31f, 5.341f}, // 11 scenes
+    {"fast-table-columns", 3472.4f, 361.24f, 7.061f}, // 11 scenes
+    {"fast-subdiv-8", 3281.0f, 988.71f, 58.925f}, // 11 scenes
+    {"fast-subdiv-16", 3280.9f, 1052.63f, 33.412f}, // 11 scenes
+    {"fast-subdiv-32", 3281.2f, 1084.55f, 21.426f}, // 11 scenes
+    {"fast-constant-depth", 3281.9f, 1111.01f, 12.059f}, // 11 scenes
+    {"fast-adaptive-1", 3282.9f, 1257.90f, 31.447f}, // 11 scenes
+    {"fast-adaptive-2", 3282.9f, 1281.02f, 22.498f}, // 11 scenes
+    {"fast-oriented-1", 4018.0f, 1347.22f, 17.341f}, // 11 scenes
+    {"xsharp-dda", 4218.3f, 586.02f, 80.232f}, // 10 scenes
+    {"xsharp-row-out", 4224.0f, 855.25f, 47.816f}, // 10 scenes
     {"xsharp-column", 4225.7f, 828.47f, 19.671f}, // 10 scenes
-    {"hecker-steptable", 15052.2f, 0.00f, 2128.839f}, // 10 scenes
-    {"fatmap-256", 4050.9f, 196.19f, 20.590f}, // 8 scenes
-    {"fatmap-256-16", 4051.3f, 205.11f, 18.597f}, // 8 scenes
-    {"fatmap-lut", 4792.5f, 174.01f, 16.707f}, // 7 scenes
-    {"quake-subdiv16", 5520.9f, 1015.50f, 33.379f}, // 10 scenes
-    {"quake-subdiv8", 5520.8f, 968.90f, 52.533f}, // 10 scenes
+    {"hecker-steptable", 15052.5f, 0.00f, 2129.561f}, // 10 scenes
+    {"fatmap-256", 4051.1f, 197.10f, 20.559f}, // 8 scenes
+    {"fatmap-256-16", 4051.3f, 205.11f, 18.595f}, // 8 scenes
+    {"fatmap-lut", 4792.4f, 174.06f, 16.704f}, // 7 scenes
+    {"quake-subdiv16", 5521.1f, 1016.30f, 33.360f}, // 10 scenes
+    {"quake-subdiv8", 5521.0f, 969.74f, 52.407f}, // 10 scenes
     {"quake-d_draw16", 5420.3f, 868.91f, 23.378f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 
 const MapperCost MAPPER_COSTS_PENTIUM[] = {
-    {"affine", 1640.0f, 529.93f, 145.374f}, // 11 scenes
-    {"exact", 1802.4f, 330.44f, 283.325f}, // 11 scenes
-    {"persp-subdiv-4", 1794.7f, 447.70f, 187.303f}, // 11 scenes
-    {"persp-subdiv-8", 1795.7f, 584.35f, 110.234f}, // 11 scenes
-    {"persp-subdiv-16", 1799.4f, 678.41f, 71.372f}, // 11 scenes
-    {"persp-subdiv-32", 1795.2f, 728.07f, 52.278f}, // 11 scenes
-    {"constant-depth", 1794.0f, 768.02f, 38.104f}, // 11 scenes
-    {"persp-adaptive-0.5", 1801.6f, 1554.35f, 748.604f}, // 11 scenes
-    {"persp-adaptive-1", 1801.4f, 1888.61f, 107.973f}, // 11 scenes
-    {"persp-adaptive-2", 1801.3f, 1942.96f, 84.914f}, // 11 scenes
-    {"persp-adaptive-4", 1801.2f, 1983.39f, 70.785f}, // 11 scenes
-    {"fast-affine", 1717.8f, 138.75f, 3.974f}, // 11 scenes
-    {"fast-table", 2012.7f, 136.37f, 1.006f}, // 11 scenes
-    {"fast-columns", 1734.9f, 237.40f, 3.389f}, // 11 scenes
-    {"fast-table-columns", 2036.8f, 282.39f, 2.786f}, // 11 scenes
-    {"fast-subdiv-8", 1798.3f, 440.67f, 25.148f}, // 11 scenes
-    {"fast-subdiv-16", 1796.6f, 461.12f, 15.333f}, // 11 scenes
-    {"fast-subdiv-32", 1796.6f, 473.61f, 10.538f}, // 11 scenes
-    {"fast-constant-depth", 1796.6f, 484.52f, 6.685f}, // 11 scenes
-    {"fast-adaptive-1", 1796.7f, 544.64f, 14.414f}, // 11 scenes
-    {"fast-adaptive-2", 1797.0f, 553.71f, 10.901f}, // 11 scenes
-    {"fast-oriented-1", 2149.1f, 584.35f, 8.652f}, // 11 scenes
-    {"xsharp-dda", 2588.7f, 426.02f, 54.908f}, // 10 scenes
-    {"xsharp-row-out", 2590.2f, 597.58f, 33.696f}, // 10 scenes
-    {"xsharp-column", 2579.9f, 595.76f, 11.031f}, // 10 scenes
-    {"hecker-steptable", 7832.4f, 0.00f, 1168.988f}, // 10 scenes
-    {"fatmap-256", 2441.7f, 169.79f, 8.181f}, // 8 scenes
-    {"fatmap-256-16", 2440.1f, 171.55f, 7.360f}, // 8 scenes
-    {"fatmap-lut", 2812.3f, 153.76f, 5.987f}, // 7 scenes
-    {"quake-subdiv16", 2891.3f, 511.71f, 18.954f}, // 10 scenes
-    {"quake-subdiv8", 2891.3f, 487.06f, 29.096f}, // 10 scenes
-    {"quake-d_draw16", 2867.1f, 345.45f, 7.760f}, // 10 scenes
+    {"affine", 1640.1f, 529.99f, 145.373f}, // 11 scenes
+    {"exact", 1804.5f, 335.42f, 283.306f}, // 11 scenes
+    {"persp-subdiv-4", 1797.0f, 453.36f, 187.270f}, // 11 scenes
+    {"persp-subdiv-8", 1804.4f, 588.95f, 110.220f}, // 11 scenes
+    {"persp-subdiv-16", 1797.2f, 683.37f, 71.351f}, // 11 scenes
+    {"persp-subdiv-32", 1796.6f, 732.98f, 52.273f}, // 11 scenes
+    {"constant-depth", 1798.2f, 774.13f, 38.063f}, // 11 scenes
+    {"persp-adaptive-0.5", 1802.3f, 1559.01f, 748.700f}, // 11 scenes
+    {"persp-adaptive-1", 1800.6f, 1892.99f, 108.062f}, // 11 scenes
+    {"persp-adaptive-2", 1800.5f, 1947.37f, 84.976f}, // 11 scenes
+    {"persp-adaptive-4", 1800.4f, 1987.85f, 70.832f}, // 11 scenes
+    {"fast-affine", 1716.8f, 139.13f, 3.977f}, // 11 scenes
+    {"fast-table", 2011.7f, 137.65f, 0.982f}, // 11 scenes
+    {"fast-columns", 1737.2f, 239.21f, 3.348f}, // 11 scenes
+    {"fast-table-columns", 2040.9f, 287.28f, 2.766f}, // 11 scenes
+    {"fast-subdiv-8", 1798.5f, 440.51f, 25.247f}, // 11 scenes
+    {"fast-subdiv-16", 1798.5f, 466.04f, 15.315f}, // 11 scenes
+    {"fast-subdiv-32", 1798.5f, 478.53f, 10.520f}, // 11 scenes
+    {"fast-constant-depth", 1798.3f, 489.44f, 6.666f}, // 11 scenes
+    {"fast-adaptive-1", 1798.4f, 549.57f, 14.396f}, // 11 scenes
+    {"fast-adaptive-2", 1798.7f, 558.65f, 10.880f}, // 11 scenes
+    {"fast-oriented-1", 2152.6f, 589.44f, 8.637f}, // 11 scenes
+    {"xsharp-dda", 2573.1f, 429.38f, 54.924f}, // 10 scenes
+    {"xsharp-row-out", 2573.4f, 600.72f, 33.718f}, // 10 scenes
+    {"xsharp-column", 2601.2f, 601.56f, 10.995f}, // 10 scenes
+    {"hecker-steptable", 7834.0f, 0.00f, 1169.360f}, // 10 scenes
+    {"fatmap-256", 2442.6f, 169.62f, 8.327f}, // 8 scenes
+    {"fatmap-256-16", 2442.6f, 176.69f, 7.324f}, // 8 scenes
+    {"fatmap-lut", 2820.5f, 160.56f, 5.890f}, // 7 scenes
+    {"quake-subdiv16", 2901.8f, 517.08f, 18.928f}, // 10 scenes
+    {"quake-subdiv8", 2901.9f, 492.40f, 29.072f}, // 10 scenes
+    {"quake-d_draw16", 2878.3f, 349.07f, 7.770f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
@@ -117,8 +117,8 @@ const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
 // proof_scale: auto's choosing, cycles an instruction on the target
 const CostModel COST_MODELS[] = {
     {"icount", MAPPER_COSTS, 1.000},
-    {"486", MAPPER_COSTS_486, 3.695},
-    {"pentium", MAPPER_COSTS_PENTIUM, 1.621},
+    {"486", MAPPER_COSTS_486, 3.347},
+    {"pentium", MAPPER_COSTS_PENTIUM, 1.439},
 };
 
 }  // namespace raster
