@@ -165,16 +165,17 @@ RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, cons
             for (int a = 0; a < 2; ++a) certain[o][a] = Drawer::of(*plans[o].certain, tex, Axis(a), target, &stats, variant);
         probe_lap(stats.probe, Phase::Choose);  // (the plans)
     }
+    PreparedPolygon prepared;  // (each polygon's in turn, for the path and the choice)
     // every polygon but the envelope's (out of line: the envelope's triangles' loop stays as small)
     auto unproven = [&](const Vertex* v, int n, int object, Input input) __attribute__((noinline)) {
         const AutoPlan& plan = plans[object];
         Axis unchosen_axis;
         CornerBox box;
-        PreparedPolygon prepared;
         bool set_up = false;  // (by the oriented path, for the choice)
         if (oriented_wanted) {
             box = corner_box(v, n);
             if (!one_depth(v, n) && oriented_box(plan.small_box.most_box, box, target.clip)) {
+                prepared.status = SetupStatus::Degenerate;
                 if (try_oriented(oriented[object], box, frame, textures.objects[object], variant, v, n, object, input, target, &stats, &prepared) !=
                     SetupStatus::Unproven)
                     return;
