@@ -79,8 +79,8 @@ SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant varian
         return prepared->status == SetupStatus::Ok;
     };
     // (where the gate cannot hold, an affine stepping that may meet the budget leaves it to the choice)
-    const bool ruled_out = gate_may_hold || affine_deviation(s, clip) > plan.budget;
-    const double q_min = ruled_out ? fast_oriented_guard(s, clip, axis, plan.texel_most) : 0;
+    const bool guarded = gate_may_hold || affine_deviation(s, clip) > plan.budget;
+    const double q_min = guarded ? fast_oriented_guard(s, clip, axis, plan.texel_most) : 0;
     // (fast-constant-depth where the cheaper by its row, as choose_mapper takes it)
     const double oriented = estimate_cost(plan.oriented_row, size[int(axis)]), constant_at = estimate_cost(plan.constant_row, size[int(axis)]);
     const bool constant = q_min > 0 && plan.constant && constant_at < oriented && fast_constant_within(s, clip, axis, q_min, plan.room);
