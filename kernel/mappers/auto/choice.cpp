@@ -388,46 +388,46 @@ double corner_footprint(const Vertex* v) {
     return texel_footprint(q, pu, pv, 0, 0);
 }
 
-AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint) {
+void plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint, AutoPlan* plan) {
     ListRoom room;
     const CandidateList& list = candidates(tex, target, budget, &room);
-    AutoPlan plan = list.plan;
-    plan.choice_cost = CHOICE_COST * cost_model(budget.target).proof_scale;
+    AutoPlan& p = *plan;
+    p = list.plan;
+    p.choice_cost = CHOICE_COST * cost_model(budget.target).proof_scale;
     // below a budget of 1, every bound but the certain one's is at least 1 / max(1, F) (a rounding
     // of some texel, over the footprint F where it is least): within it only where F >= 1 / budget
-    plan.exact_below = budget.max_error > 0 && budget.max_error < 1 ? 1 / budget.max_error : 0;
+    p.exact_below = budget.max_error > 0 && budget.max_error < 1 ? 1 / budget.max_error : 0;
     // (the estimates' difference less CHOICE_COST is at least (polygon - CHOICE_COST) + (span at
     // most lines, where the certain one's is the less) + pixel P: above 0 where P > P0 below, the
     // pixels one more for the roundings)
-    plan.choosing_pays_above2 = INT64_MAX;
+    p.choosing_pays_above2 = INT64_MAX;
     // (each term of the estimates' difference less CHOICE_COST taken at its largest over a box of
     // W x H pixels: the certain one's lines along its walker, the others' at most the box's longer
     // side where a fitted cost a line is below 0, the pixels at most W H)
-    plan.small_box = SmallBox{-1, 0, 0, 0, 0};
-    if (plan.certain && !plan.sole) {
-        SmallBox& b = plan.small_box;
-        b = SmallBox{0, plan.certain_row.polygon - plan.others.polygon - plan.choice_cost, larger(plan.certain_row.span, 0.0),
-                     larger(-plan.others.span, 0.0), larger(plan.certain_row.pixel - plan.others.pixel, 0.0)};
+    p.small_box = SmallBox{-1, 0, 0, 0, 0};
+    if (p.certain && !p.sole) {
+        SmallBox& b = p.small_box;
+        b = SmallBox{0, p.certain_row.polygon - p.others.polygon - p.choice_cost, larger(p.certain_row.span, 0.0),
+                     larger(-p.others.span, 0.0), larger(p.certain_row.pixel - p.others.pixel, 0.0)};
         // (the largest box, W H subpixels squared, where the test can pass: its other terms 0)
         const double one = double(SUBPIXEL_ONE), most = b.pixel > 0 ? (-1 - b.fixed) / b.pixel * one * one : 1e300;
         b.most_box = b.fixed > -1 ? -1 : most < 4e18 ? int64_t(most) : INT64_MAX;
     }
-    const CostRow &mine = plan.certain_row, &least = plan.others;
-    if (plan.certain && !plan.sole && plan.exact_below == 0 && mine.pixel > least.pixel) {
+    const CostRow &mine = p.certain_row, &least = p.others;
+    if (p.certain && !p.sole && p.exact_below == 0 && mine.pixel > least.pixel) {
         const double most_lines = double(larger(target.clip.x1 - target.clip.x0, target.clip.y1 - target.clip.y0));
         const double span = mine.span < least.span ? (mine.span - least.span) * most_lines : 0;
-        const double p0 = (plan.choice_cost - (mine.polygon - least.polygon) - span) / (mine.pixel - least.pixel) + 1;
+        const double p0 = (p.choice_cost - (mine.polygon - least.polygon) - span) / (mine.pixel - least.pixel) + 1;
         const double one = double(SUBPIXEL_ONE), above2 = 2 * (p0 > 0 ? p0 : 0) * one * one;
-        if (above2 < 1e18) plan.choosing_pays_above2 = int64_t(above2);
+        if (above2 < 1e18) p.choosing_pays_above2 = int64_t(above2);
     }
     if (list.enveloped_count == 1 && list.envelope_cheapest && budget_allows(budget, ErrorBound{true, true, envelope_footprint})) {
-        plan.enveloped = &MAPPERS[list.row[list.enveloped_first]];
-        plan.enveloped_axis = list.axis[list.enveloped_first];
+        p.enveloped = &MAPPERS[list.row[list.enveloped_first]];
+        p.enveloped_axis = list.axis[list.enveloped_first];
         const double one = double(SUBPIXEL_ONE);
-        plan.enveloped_area2 = list.envelope_pixels < 1e9 ? int64_t(2 * list.envelope_pixels * one * one) : INT64_MAX;
-        plan.enveloped_extent = int32_t(list.envelope_lines * one);  // (at most ENVELOPE_REACH + 1 pixels)
+        p.enveloped_area2 = list.envelope_pixels < 1e9 ? int64_t(2 * list.envelope_pixels * one * one) : INT64_MAX;
+        p.enveloped_extent = int32_t(list.envelope_lines * one);  // (at most ENVELOPE_REACH + 1 pixels)
     }
-    return plan;
 }
 
 OrientedPlan plan_oriented(const Budget& budget, const Texture& tex, const Target& target, double texel_most) {

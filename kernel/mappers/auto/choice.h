@@ -219,7 +219,13 @@ union ListRoom {
     CandidateList list;
 };
 
-AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint);
+// An object's plan for a frame, into `plan` (a frame's array: no copy of it on the way).
+void plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint, AutoPlan* plan);
+inline AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint) {
+    AutoPlan plan;
+    plan_auto(budget, tex, target, envelope_footprint, &plan);
+    return plan;
+}
 
 // auto's oriented path for an object (docs/auto.md, "The oriented path"): choose_mapper's oriented
 // candidate taken unsearched, proven by fast_oriented_guard, from a budget of 1 on, on a

@@ -154,7 +154,7 @@ RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, cons
     const bool oriented_wanted = oriented_plan_wanted(frame.budget);
     for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o) {
         const Texture& tex = textures.objects[o];
-        plans[o] = plan_auto(frame.budget, tex, target, frame.envelope[o].footprint);
+        plan_auto(frame.budget, tex, target, frame.envelope[o].footprint, &plans[o]);
         oriented[o].planned = false;
         if (plans[o].enveloped) {  // (plan_auto checked what Drawer::of would)
             enveloped[o] = Drawer::of(*plans[o].enveloped, tex, plans[o].enveloped_axis, target, &stats, variant, true);
