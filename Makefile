@@ -167,6 +167,9 @@ EXTREMES := $(HBUILD)/modexlab-extremes
 TIMING := $(HBUILD)/modexlab-timing
 TIMING_PLUGIN := $(HBUILD)/libmodexlab-timing.so
 TIMING_PLUGIN_CXX := qemu/plugin/plugin_main.cpp $(wildcard qemu/timing/*.cpp)
+# make profile's plugin and tool (qemu/plugin, qemu/tools; docs/bench.md, "Where the instructions go")
+PROFILE_PLUGIN := $(HBUILD)/libmodexlab-profile.so
+PROFILE := $(HBUILD)/modexlab-profile
 TESTS := $(HBUILD)/modexlab-tests
 # the unit tests again, built with AddressSanitizer and UndefinedBehaviorSanitizer
 SBUILD := $(BUILD)/host-san
@@ -194,11 +197,11 @@ WRONG_MAGIC_LOADER := $(KBUILD)/tests/wrong_magic_loader.elf
 
 # ---- targets -----------------------------------------------------------------------------------
 
-.PHONY: all iso kernel host fixtures usb run bench test-bochs test-cpu report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean listing
+.PHONY: all iso kernel host fixtures usb run bench test-bochs test-cpu report gallery bounds extremes fuzz fuzz-corpus fuzz-protocol soak test test-gallery deps clean listing profile
 all: $(KERNEL) $(ISO)
 kernel: $(KERNEL)
 iso: $(ISO)
-host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(EXTREMES) $(TIMING) $(TIMING_PLUGIN) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(RUN32) $(FUZZ_REPLAY)
+host: $(HARNESS) $(RENDER) $(WAD) $(SCENE_TOOL) $(BENCH) $(GALLERY) $(EXTREMES) $(TIMING) $(TIMING_PLUGIN) $(PROFILE_PLUGIN) $(PROFILE) $(CYCLES) $(TESTS) $(SAN_TESTS) $(ASM_TESTS) $(RUN32) $(FUZZ_REPLAY)
 fixtures: $(WRONG_MAGIC_LOADER)
 
 # $(call install,FILE:PACKAGE ...): installs the packages whose file or command is missing.
@@ -348,6 +351,8 @@ $(HBUILD)/pic/%.cpp.o: %.cpp $(HFLAGS_FILE) | deps
 	$(Q)$(HCXX) $(HCXXFLAGS) -fPIC -fvisibility=hidden -c $< -o $@
 
 $(TIMING_PLUGIN): $(TIMING_PLUGIN_CXX:%=$(HBUILD)/pic/%.o)
+$(PROFILE_PLUGIN): $(HBUILD)/pic/qemu/plugin/profile_plugin_main.cpp.o
+$(TIMING_PLUGIN) $(PROFILE_PLUGIN):
 	$(call say,LINK,$@)
 	$(Q)$(HCXX) -shared -o $@ $^ -lcapstone
 
@@ -487,6 +492,14 @@ bench report:
 listing: $(KERNEL) $(TIMING)
 	@test -n "$(MAPPER)" || { echo "usage: make listing MAPPER=NAME [CPU=486|pentium] (a mapper with a NASM loop: docs/cycles.md)"; exit 2; }
 	@$(TIMING) --cpu $(or $(CPU),486) --mapper "$(MAPPER)"
+
+# `make profile SCENE=NAME [MAPPER=auto] [AGAINST=fast-oriented-1] [BUDGET=E] [FRAMES=8]`: MAPPER's
+# instructions against AGAINST's on the scene's bench frames, by function (docs/bench.md)
+profile:
+	@test -n "$(SCENE)" || { echo "usage: make profile SCENE=NAME [MAPPER=auto] [AGAINST=fast-oriented-1] [BUDGET=E] [FRAMES=8]"; exit 2; }
+	@$(MAKE) -s DEPS_FOR=BENCH deps
+	@$(MAKE) -s -j$(NPROC) DEPS_FOR=BENCH $(KERNEL) $(PROFILE) $(PROFILE_PLUGIN)
+	$(PROFILE) --scene $(SCENE) $(if $(MAPPER),--mapper $(MAPPER)) $(if $(AGAINST),--against $(AGAINST)) $(if $(BUDGET),--budget $(BUDGET)) $(if $(FRAMES),--frames $(FRAMES))
 
 # `make gallery`: a page a demo scene in build/gallery, every mapper's frame beside its footprint-error
 # map, fastest first (speeds from build/report when make bench made one; docs/bench.md, "The gallery").

@@ -1,5 +1,5 @@
 // The part of QEMU 7.2's TCG plugin API (version 1, include/qemu/qemu-plugin.h and
-// docs/devel/tcg-plugins.rst) the cycles plugin uses, declared here: Debian ships no header for
+// docs/devel/tcg-plugins.rst) the plugins use (the timing model's and the profile's), declared here: Debian ships no header for
 // it. QEMU resolves these symbols in its own binary when it loads the plugin, and refuses a plugin
 // whose qemu_plugin_version it does not support.
 #pragma once
@@ -42,6 +42,8 @@ typedef void (*qemu_plugin_vcpu_mem_cb_t)(unsigned int vcpu_index, qemu_plugin_m
 void qemu_plugin_register_vcpu_tb_trans_cb(qemu_plugin_id_t id, qemu_plugin_vcpu_tb_trans_cb_t cb);
 void qemu_plugin_register_vcpu_tb_exec_cb(struct qemu_plugin_tb* tb, qemu_plugin_vcpu_udata_cb_t cb, enum qemu_plugin_cb_flags flags,
                                           void* userdata);
+void qemu_plugin_register_vcpu_insn_exec_cb(struct qemu_plugin_insn* insn, qemu_plugin_vcpu_udata_cb_t cb, enum qemu_plugin_cb_flags flags,
+                                            void* userdata);
 void qemu_plugin_register_vcpu_mem_cb(struct qemu_plugin_insn* insn, qemu_plugin_vcpu_mem_cb_t cb, enum qemu_plugin_cb_flags flags,
                                       enum qemu_plugin_mem_rw rw, void* userdata);
 void qemu_plugin_register_atexit_cb(qemu_plugin_id_t id, qemu_plugin_udata_cb_t cb, void* userdata);

@@ -162,7 +162,7 @@ TEST(Tools, TheUsageSaysTheDefaultMapperIsAuto) {
 // Every tool answers --version with its name and the version.
 TEST(Tools, EveryToolSaysItsVersion) {
     for (const char* tool : {"modexlab", "modexlab-render", "modexlab-scene", "modexlab-wad", "modexlab-bench", "modexlab-gallery", "modexlab-extremes",
-                             "modexlab-timing"}) {
+                             "modexlab-timing", "modexlab-profile"}) {
         const ToolRun r = run_command(build_dir() + "/host/" + tool + " --version");
         EXPECT_EQ(r.status, 0) << tool;
         EXPECT_EQ(r.out, std::string(tool) + " " MODEXLAB_VERSION "\n");
