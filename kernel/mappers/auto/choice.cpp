@@ -497,6 +497,18 @@ const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int 
     return in_clip && plan.exact_below > 0 && corner_footprint(vertices) < plan.exact_below ? plan.certain : nullptr;
 }
 
+AutoObjectKey auto_object_key(const Budget& budget, const Texture& tex, const Target& target, Variant variant, double texel_most) {
+    return AutoObjectKey{&tex, tex, budget.max_error, texel_most, target.clip, budget.exact_coverage, target.planar, target.vga, budget.target, variant};
+}
+
+bool same_key(const AutoObjectKey& a, const AutoObjectKey& b) {
+    const Texture &s = a.texture, &t = b.texture;
+    return a.tex == b.tex && s.texels == t.texels && s.width == t.width && s.height == t.height && s.wrap == t.wrap && s.bordered == t.bordered &&
+           s.aligned256 == t.aligned256 && s.doubled == t.doubled && a.max_error == b.max_error && a.texel_most == b.texel_most &&
+           a.clip.x0 == b.clip.x0 && a.clip.y0 == b.clip.y0 && a.clip.x1 == b.clip.x1 && a.clip.y1 == b.clip.y1 && a.exact_coverage == b.exact_coverage &&
+           a.planar == b.planar && a.vga == b.vga && a.priced_for == b.priced_for && a.variant == b.variant;
+}
+
 bool oriented_gate_may_hold(const OrientedPlan& plan, const CornerBox& b, const ClipRect& clip, const Vertex* vertices, int count) {
     const double area2 = corner_area2(vertices, count);
     // the gate at its least over both picks and walkers: lines at least the shorter side of the

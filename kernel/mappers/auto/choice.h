@@ -1,5 +1,5 @@
 // auto's choice (docs/auto.md): the cost model the bench measures, the candidates, their proofs and
-// the plans once a frame per object, with which auto draws each polygon with the cheapest mapper
+// the plans per object (kept from frame to frame), with which auto draws each polygon with the cheapest mapper
 // whose bound meets the scene's budget (kernel/core/budget.h).
 #pragma once
 
@@ -9,6 +9,8 @@
 #include "kernel/core/bound.h"
 #include "kernel/core/budget.h"
 #include "kernel/core/prepared.h"
+#include "kernel/core/render.h"
+#include "kernel/scene/world.h"
 
 namespace raster {
 
@@ -116,7 +118,7 @@ void prepare_choice(const Budget& budget, const Texture& tex);
 // What choosing costs beyond the bounds it asks, in instructions a polygon with some ten candidates
 // priced: the setup's extra planes, the polygon's sizes and the pricing. Where exact costs no more
 // than the others' least plus this, it is drawn unchosen (unchosen_mapper); the parts, and why not
-// less: docs/auto.md, "Settled once a frame per object".
+// less: docs/auto.md, "Settled once per object".
 constexpr double CHOICE_COST = 1800;
 
 // From a budget of one footprint, auto's oriented candidate (choose_mapper: fast-adaptive-B, or
@@ -143,14 +145,14 @@ struct SmallBox {
     double fixed, line, other_line, pixel;
 };
 
-// What auto settles once a frame per object, before drawing its polygons (auto_draw_frame; docs/auto.md,
-// "The object's envelope" and "Settled once a frame per object"): the mapper the object's envelope
-// proves on its uncut triangles (envelope_footprint, frame.h) and its walker, where exactly one
-// candidate is enveloped and, with no proof to pay, costs no more than any other with its proof on
-// every triangle the guards and the limits below let through (draw_enveloped, mappers/auto/draw.h); the certain
-// candidate (exact), its walkers and cost row, for unchosen_mapper; whether it is the only one (a
-// budget of 0), else the least cost a polygon, a span and a pixel of any other with its first proof.
-// No default member initialisers: auto_draw_frame keeps one an object; plan_auto fills them.
+// What auto settles per object before drawing its polygons (AutoObject keeps it from frame to
+// frame; docs/auto.md, "The object's envelope" and "Settled once per object"): the mapper the
+// object's envelope proves on its uncut triangles (envelope_footprint, frame.h) and its walker,
+// where exactly one candidate is enveloped and, with no proof to pay, costs no more than any other
+// with its proof on every triangle the guards and limits below let through (draw_enveloped); the
+// certain candidate (exact), its walkers and cost row, for unchosen_mapper; whether it is the only
+// one (a budget of 0), else the least cost a polygon, a span and a pixel of any other with its
+// first proof. No default member initialisers: plan_auto fills them.
 struct AutoPlan {
     const Mapper* enveloped;
     Axis enveloped_axis;
@@ -207,12 +209,6 @@ struct CandidateList {
     int constant_depth[2] = {-1, -1};  // [Axis]
 };
 
-// The lists for every texture and target kind a budget may meet (256 keys: the bits above), built
-// where first needed (prepare_choice builds a texture's at its load): the caller's memory, which a
-// budget names (Budget::lists); without, choose_mapper and plan_auto build the one they need.
-struct ChoiceLists {
-    CandidateList lists[256];
-};
 // Room for a list built where no lists are prepared: untouched otherwise.
 union ListRoom {
     ListRoom() {}
@@ -276,7 +272,7 @@ double corner_footprint(const Vertex* vertices);
 // of cost, not of accuracy); or where its estimate on its cheaper walker is at most the least any
 // other candidate could cost with its proof, plus CHOICE_COST. Its walker as choose_mapper would
 // take it; sizes from the corners (the box and area polygon_sizes would find), before any setup.
-// Else nullptr: choose_mapper decides (docs/auto.md, "Settled once a frame per object").
+// Else nullptr: choose_mapper decides (docs/auto.md, "Settled once per object").
 // (`box`: the corners' box where the caller has it, else nullptr.)
 const Mapper* unchosen_mapper(const AutoPlan& plan, const Vertex* vertices, int count, const ClipRect& clip, Axis* axis, const CornerBox* box = nullptr);
 
@@ -303,5 +299,49 @@ double affine_deviation(const PolygonSetup& s, const ClipRect& clip);
 
 // auto's own bound: its choice's under the default budget.
 ErrorBound auto_bound(const BoundContext& c, const Vertex* vertices, int count);
+
+// An object's oriented path: its plan, made at its first polygon, and its drawers, each made where
+// first drawn with.
+struct OrientedPath {
+    bool planned;
+    OrientedPlan plan;
+    bool made[2][2];  // [Axis][the oriented pick, fast-constant-depth]
+    Drawer drawer[2][2];
+};
+
+// What an object's plans and drawers are made from (auto_object_key): the texture (where it is and
+// its fields), the budget, the target's kind and clip, the loops' variant and the object's texels.
+struct AutoObjectKey {
+    const Texture* tex;
+    Texture texture;
+    double max_error, texel_most;
+    ClipRect clip;
+    bool exact_coverage, planar, vga;
+    CostTarget priced_for;
+    Variant variant;
+};
+AutoObjectKey auto_object_key(const Budget& budget, const Texture& tex, const Target& target, Variant variant, double texel_most);
+bool same_key(const AutoObjectKey& a, const AutoObjectKey& b);
+
+// What auto_draw_frame keeps of an object from one frame to the next: its plan (with the mapper of
+// its envelope where one of any bound would do: each frame decides by its envelope's), its oriented
+// path, and the drawers of the envelope's mapper and of the certain one by walker, all made again
+// where the key differs. The drawers' target and statistics are each frame's.
+struct AutoObject {
+    bool kept = false;
+    AutoObjectKey key;
+    AutoPlan plan;
+    Drawer enveloped, certain[2];
+    OrientedPath oriented;
+};
+
+// The lists for every texture and target kind a budget may meet (256 keys: the bits above), built
+// where first needed (prepare_choice builds a texture's at its load), and what auto keeps of each
+// object of a frame: the caller's memory, which a budget names (Budget::lists); without, choose_mapper
+// and plan_auto build the list they need, and auto_draw_frame makes its objects' plans each frame.
+struct ChoiceLists {
+    CandidateList lists[256];
+    AutoObject objects[MAX_WORLD_OBJECTS];
+};
 
 }  // namespace raster

@@ -42,15 +42,6 @@ bool one_depth(const Vertex* vertices, int count) {
     return true;
 }
 
-// An object's oriented path in a frame: its plan, made at its first polygon, and its drawers, each
-// made where first drawn with.
-struct OrientedPath {
-    bool planned;
-    OrientedPlan plan;
-    bool made[2][2];  // [Axis][the oriented pick, fast-constant-depth]
-    Drawer drawer[2][2];
-};
-
 // auto's oriented path (OrientedPlan), along the walker fast-oriented-B picks (a planar target:
 // columns), where fast_oriented_guard holds: fast-constant-depth where the same proof bounds its
 // chords within the budget and its row is the cheaper, else the plan's oriented pick, where the
@@ -129,6 +120,30 @@ SetupStatus draw_oriented(OrientedPath& path, const Texture& tex, Variant varian
     return draw_oriented(path, tex, variant, vertices, count, input, target, stats, gate_may_hold, prepared);
 }
 
+// An object's plans and drawers for the frame: kept from the frames before where its key is the
+// same (ChoiceLists::objects), else made; the drawers pointed at this frame's target and statistics.
+AutoObject& frame_object(AutoObject& k, bool keep, const Budget& budget, const Texture& tex, Target& target, Variant variant, double texel_most,
+                         RenderStats* stats) {
+    const AutoObjectKey key = auto_object_key(budget, tex, target, variant, texel_most);
+    if (!keep || !k.kept || !same_key(k.key, key)) {
+        k.kept = true, k.key = key;
+        plan_auto(budget, tex, target, 0, &k.plan);  // (the envelope's mapper where any bound would do)
+        k.oriented.planned = false;
+        if (k.plan.enveloped) {  // (plan_auto checked what Drawer::of would)
+            k.enveloped = Drawer::of(*k.plan.enveloped, tex, k.plan.enveloped_axis, target, stats, variant, true);
+            k.enveloped.limits.area2 = k.plan.enveloped_area2;
+            (k.plan.enveloped_axis == Axis::Rows ? k.enveloped.limits.extent_y : k.enveloped.limits.extent_x) = k.plan.enveloped_extent;
+        }
+        if (k.plan.certain)
+            for (int a = 0; a < 2; ++a) k.certain[a] = Drawer::of(*k.plan.certain, tex, Axis(a), target, stats, variant);
+    }
+    k.enveloped.target = k.certain[0].target = k.certain[1].target = &target;
+    k.enveloped.stats = k.certain[0].stats = k.certain[1].stats = stats;
+    if (k.oriented.planned)
+        for (Drawer* d = &k.oriented.drawer[0][0]; d != &k.oriented.drawer[0][0] + 4; ++d) d->target = &target, d->stats = stats;
+    return k;
+}
+
 }  // namespace
 
 SetupStatus draw_unproven(const Drawer& enveloped, const Vertex* vertices, Variant variant, const Budget& budget) {
@@ -145,30 +160,27 @@ RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, cons
                             Variant variant, Probe* probe, const Watch* watch) {
     RenderStats stats;
     stats.probe = probe;
-    // what auto settles once a frame per object (choice.h, AutoPlan), and the drawers of the mapper
-    // its envelope proves and of its certain mapper by walker (what unchosen_mapper gives)
-    AutoPlan plans[MAX_WORLD_OBJECTS];
-    Drawer enveloped[MAX_WORLD_OBJECTS];
-    Drawer certain[MAX_WORLD_OBJECTS][2];
-    OrientedPath oriented[MAX_WORLD_OBJECTS];
+    // what auto settles per object (choice.h, AutoPlan and AutoObject): kept in the lists' memory
+    // from frame to frame, else this frame's own; and whether its envelope's mapper draws its uncut
+    // triangles in this frame (its envelope's bound within the budget)
+    union Own {
+        Own() {}
+        AutoObject objects[MAX_WORLD_OBJECTS];
+    } own;
+    const bool keep = frame.budget.lists != nullptr;
+    AutoObject* objects = keep ? frame.budget.lists->objects : own.objects;
+    bool envelope[MAX_WORLD_OBJECTS];
     const bool oriented_wanted = oriented_plan_wanted(frame.budget);
     for (int32_t o = 0; o < MAX_WORLD_OBJECTS && o < frame.object_count; ++o) {
-        const Texture& tex = textures.objects[o];
-        plan_auto(frame.budget, tex, target, frame.envelope[o].footprint, &plans[o]);
-        oriented[o].planned = false;
-        if (plans[o].enveloped) {  // (plan_auto checked what Drawer::of would)
-            enveloped[o] = Drawer::of(*plans[o].enveloped, tex, plans[o].enveloped_axis, target, &stats, variant, true);
-            enveloped[o].limits.area2 = plans[o].enveloped_area2;
-            (plans[o].enveloped_axis == Axis::Rows ? enveloped[o].limits.extent_y : enveloped[o].limits.extent_x) = plans[o].enveloped_extent;
-        }
-        if (plans[o].certain)
-            for (int a = 0; a < 2; ++a) certain[o][a] = Drawer::of(*plans[o].certain, tex, Axis(a), target, &stats, variant);
+        const AutoObject& k = frame_object(objects[o], keep, frame.budget, textures.objects[o], target, variant, frame.texel_most[o], &stats);
+        envelope[o] = k.plan.enveloped && budget_allows(frame.budget, ErrorBound{true, true, frame.envelope[o].footprint});
         probe_lap(stats.probe, Phase::Choose);  // (the plans)
     }
     PreparedPolygon prepared;  // (each polygon's in turn, for the path and the choice)
     // every polygon but the envelope's (out of line: the envelope's triangles' loop stays as small)
     auto unproven = [&](const Vertex* v, int n, int object, Input input) __attribute__((noinline)) {
-        const AutoPlan& plan = plans[object];
+        AutoObject& k = objects[object];
+        const AutoPlan& plan = k.plan;
         Axis unchosen_axis;
         CornerBox box;
         bool set_up = false;  // (by the oriented path, for the choice)
@@ -176,20 +188,20 @@ RenderStats auto_draw_frame(const Frame& frame, const TextureSet& textures, cons
             box = corner_box(v, n);
             if (!one_depth(v, n) && oriented_box(plan.small_box.most_box, box, target.clip)) {
                 prepared.status = SetupStatus::Degenerate;
-                if (try_oriented(oriented[object], box, frame, textures.objects[object], variant, v, n, object, input, target, &stats, &prepared) !=
+                if (try_oriented(k.oriented, box, frame, textures.objects[object], variant, v, n, object, input, target, &stats, &prepared) !=
                     SetupStatus::Unproven)
                     return;
                 set_up = prepared.status == SetupStatus::Ok;
             }
         }
         if (timed_unchosen(plan, v, n, target.clip, &unchosen_axis, stats, oriented_wanted ? &box : nullptr))  // (the certain one, or none)
-            certain[object][int(unchosen_axis)].draw(v, n, input);
+            k.certain[int(unchosen_axis)].draw(v, n, input);
         else
             choose_and_draw(v, n, textures.objects[object], axis, target, &stats, variant, frame.budget, input, prepared, set_up);
     };
     each_frame_polygon(frame, mapper, watch, &stats, [&](const Vertex* v, int n, int object, Input input) {
-        if (plans[object].enveloped && input == Input::InRange && n == 3)  // (an uncut triangle)
-            draw_enveloped(enveloped[object], v, variant, frame.budget);
+        if (envelope[object] && input == Input::InRange && n == 3)  // (an uncut triangle)
+            draw_enveloped(objects[object].enveloped, v, variant, frame.budget);
         else
             unproven(v, n, object, input);
     });

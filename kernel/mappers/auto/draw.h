@@ -1,5 +1,5 @@
 // auto's drivers (docs/auto.md): a polygon drawn with the mapper choose_mapper picks for the
-// budget, and a frame drawn with what auto settles once a frame per object (AutoPlan) before its
+// budget, and a frame drawn with what auto settles per object (AutoPlan, AutoObject) before its
 // polygons. Its registry row's Mapper::chooses and Mapper::draw_frame.
 #pragma once
 
