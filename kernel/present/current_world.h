@@ -60,6 +60,9 @@ struct BenchFrame {
 // one place (a lap compiled elsewhere may cost an instruction more or less: the `bench` command and
 // the on-screen bench then give the same figures, identical under QEMU icount).
 raster::Probe bench_probe();
+// A bench row's start (the `bench` command's, each of the on-screen bench's): auto forgets the
+// objects it keeps, so that each row pays its plans once, whatever was drawn before it.
+void start_bench_row();
 
 // Frame i of `count` spread evenly over the animation (frame i * length / count), drawn twice into
 // the hidden page of pages 0 and 1 (plainly, then with a copy of the calibrated `probe`), then

@@ -204,6 +204,7 @@ void cmd_bench(Context&, const StrView* args, size_t nargs) {
     DrawArgs d;
     if (!parse_animation_args("bench", args, nargs, MAX_BENCH_FRAMES, " (spread evenly over the scene's animation)", &frames, &d)) return;
     const raster::Probe probe = current_world::bench_probe();
+    current_world::start_bench_row();
     uint64_t polygons = 0, rejected = 0, spans = 0, pixels = 0;
     MapperTally tally;
     bool used_asm = false;

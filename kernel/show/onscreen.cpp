@@ -326,6 +326,7 @@ bool run(const Setup& s, NextKey next_key, void* ctx) {
             progress_line(line, g_row_count + 1, total, f.name, mapper.name, started);
             Row& r = g_rows[g_row_count++];
             r = Row{i, m, 0, 0, 0, 0, -1, false};
+            current_world::start_bench_row();
             for (uint32_t k = 0; k < s.frames; ++k) {
                 if (server::line_arrived()) return false;
                 if (next_key(ctx) == lib::Key::Escape) {

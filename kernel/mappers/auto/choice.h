@@ -343,5 +343,9 @@ struct ChoiceLists {
     CandidateList lists[256];
     AutoObject objects[MAX_WORLD_OBJECTS];
 };
+// Forgets the objects auto keeps: the next frame makes their plans and drawers again.
+inline void forget_objects(ChoiceLists* lists) {
+    for (AutoObject& o : lists->objects) o.kept = false;
+}
 
 }  // namespace raster
