@@ -42,74 +42,74 @@ const MapperCost MAPPER_COSTS[] = {
 };
 
 const MapperCost MAPPER_COSTS_486[] = {
-    {"affine", 2883.4f, 1296.97f, 160.479f}, // 11 scenes
-    {"exact", 3286.6f, 587.99f, 560.867f}, // 11 scenes
-    {"persp-subdiv-4", 3277.3f, 957.73f, 436.607f}, // 11 scenes
-    {"persp-subdiv-8", 3282.4f, 1312.45f, 244.764f}, // 11 scenes
-    {"persp-subdiv-16", 3282.4f, 1547.99f, 148.297f}, // 11 scenes
-    {"persp-subdiv-32", 3283.7f, 1677.03f, 100.865f}, // 11 scenes
-    {"constant-depth", 3282.5f, 1771.11f, 66.076f}, // 11 scenes
-    {"persp-adaptive-0.5", 3281.6f, 4053.51f, 1776.409f}, // 11 scenes
-    {"persp-adaptive-1", 3282.8f, 4922.85f, 228.395f}, // 11 scenes
-    {"persp-adaptive-2", 3283.3f, 5049.06f, 175.080f}, // 11 scenes
-    {"persp-adaptive-4", 3283.0f, 5143.14f, 142.068f}, // 11 scenes
+    {"affine", 2883.0f, 1296.43f, 160.405f}, // 11 scenes
+    {"exact", 3285.8f, 588.28f, 560.037f}, // 11 scenes
+    {"persp-subdiv-4", 3277.3f, 957.87f, 436.614f}, // 11 scenes
+    {"persp-subdiv-8", 3283.6f, 1315.20f, 244.832f}, // 11 scenes
+    {"persp-subdiv-16", 3325.9f, 1687.16f, 145.106f}, // 11 scenes
+    {"persp-subdiv-32", 3281.8f, 1672.03f, 100.988f}, // 11 scenes
+    {"constant-depth", 3282.5f, 1771.10f, 66.064f}, // 11 scenes
+    {"persp-adaptive-0.5", 3281.9f, 4054.51f, 1776.388f}, // 11 scenes
+    {"persp-adaptive-1", 3283.0f, 4922.86f, 228.626f}, // 11 scenes
+    {"persp-adaptive-2", 3283.2f, 5049.29f, 174.897f}, // 11 scenes
+    {"persp-adaptive-4", 3283.2f, 5142.74f, 142.289f}, // 11 scenes
     {"fast-affine", 2954.4f, 184.93f, 6.190f}, // 11 scenes
-    {"fast-table", 3415.1f, 173.58f, 4.714f}, // 11 scenes
-    {"fast-columns", 3031.9f, 336.31f, 5.341f}, // 11 scenes
-    {"fast-table-columns", 3472.4f, 361.24f, 7.061f}, // 11 scenes
-    {"fast-subdiv-8", 3281.0f, 988.71f, 58.925f}, // 11 scenes
-    {"fast-subdiv-16", 3280.9f, 1052.63f, 33.412f}, // 11 scenes
-    {"fast-subdiv-32", 3281.2f, 1084.55f, 21.426f}, // 11 scenes
-    {"fast-constant-depth", 3281.9f, 1111.01f, 12.059f}, // 11 scenes
-    {"fast-adaptive-1", 3282.9f, 1257.90f, 31.447f}, // 11 scenes
-    {"fast-adaptive-2", 3282.9f, 1281.02f, 22.498f}, // 11 scenes
-    {"fast-oriented-1", 4018.0f, 1347.22f, 17.341f}, // 11 scenes
-    {"xsharp-dda", 4218.3f, 586.02f, 80.232f}, // 10 scenes
-    {"xsharp-row-out", 4224.0f, 855.25f, 47.816f}, // 10 scenes
-    {"xsharp-column", 4225.7f, 828.47f, 19.671f}, // 10 scenes
-    {"hecker-steptable", 15052.5f, 0.00f, 2129.561f}, // 10 scenes
-    {"fatmap-256", 4051.1f, 197.10f, 20.559f}, // 8 scenes
-    {"fatmap-256-16", 4051.3f, 205.11f, 18.595f}, // 8 scenes
-    {"fatmap-lut", 4792.4f, 174.06f, 16.704f}, // 7 scenes
-    {"quake-subdiv16", 5521.1f, 1016.30f, 33.360f}, // 10 scenes
-    {"quake-subdiv8", 5521.0f, 969.74f, 52.407f}, // 10 scenes
-    {"quake-d_draw16", 5420.3f, 868.91f, 23.378f}, // 10 scenes
+    {"fast-table", 3417.4f, 173.63f, 4.740f}, // 11 scenes
+    {"fast-columns", 3030.7f, 337.65f, 5.281f}, // 11 scenes
+    {"fast-table-columns", 3473.6f, 360.75f, 7.130f}, // 11 scenes
+    {"fast-subdiv-8", 3281.0f, 988.81f, 58.909f}, // 11 scenes
+    {"fast-subdiv-16", 3281.1f, 1052.53f, 33.672f}, // 11 scenes
+    {"fast-subdiv-32", 3281.2f, 1084.45f, 21.438f}, // 11 scenes
+    {"fast-constant-depth", 3282.2f, 1111.04f, 12.067f}, // 11 scenes
+    {"fast-adaptive-1", 3282.7f, 1257.95f, 31.353f}, // 11 scenes
+    {"fast-adaptive-2", 3282.9f, 1281.07f, 22.496f}, // 11 scenes
+    {"fast-oriented-1", 4018.1f, 1347.22f, 17.389f}, // 11 scenes
+    {"xsharp-dda", 4218.4f, 585.99f, 80.240f}, // 10 scenes
+    {"xsharp-row-out", 4223.8f, 855.38f, 47.620f}, // 10 scenes
+    {"xsharp-column", 4225.6f, 828.47f, 19.671f}, // 10 scenes
+    {"hecker-steptable", 15053.6f, 0.00f, 2129.307f}, // 10 scenes
+    {"fatmap-256", 4051.2f, 197.39f, 20.513f}, // 8 scenes
+    {"fatmap-256-16", 4050.6f, 200.54f, 19.048f}, // 8 scenes
+    {"fatmap-lut", 4792.3f, 174.13f, 16.539f}, // 7 scenes
+    {"quake-subdiv16", 5520.9f, 1015.51f, 33.379f}, // 10 scenes
+    {"quake-subdiv8", 5521.0f, 970.62f, 52.364f}, // 10 scenes
+    {"quake-d_draw16", 5419.6f, 865.83f, 23.456f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 
 const MapperCost MAPPER_COSTS_PENTIUM[] = {
-    {"affine", 1640.1f, 529.99f, 145.373f}, // 11 scenes
-    {"exact", 1804.5f, 335.42f, 283.306f}, // 11 scenes
-    {"persp-subdiv-4", 1797.0f, 453.36f, 187.270f}, // 11 scenes
-    {"persp-subdiv-8", 1804.4f, 588.95f, 110.220f}, // 11 scenes
-    {"persp-subdiv-16", 1797.2f, 683.37f, 71.351f}, // 11 scenes
-    {"persp-subdiv-32", 1796.6f, 732.98f, 52.273f}, // 11 scenes
-    {"constant-depth", 1798.2f, 774.13f, 38.063f}, // 11 scenes
-    {"persp-adaptive-0.5", 1802.3f, 1559.01f, 748.700f}, // 11 scenes
-    {"persp-adaptive-1", 1800.6f, 1892.99f, 108.062f}, // 11 scenes
-    {"persp-adaptive-2", 1800.5f, 1947.37f, 84.976f}, // 11 scenes
-    {"persp-adaptive-4", 1800.4f, 1987.85f, 70.832f}, // 11 scenes
-    {"fast-affine", 1716.8f, 139.13f, 3.977f}, // 11 scenes
-    {"fast-table", 2011.7f, 137.65f, 0.982f}, // 11 scenes
-    {"fast-columns", 1737.2f, 239.21f, 3.348f}, // 11 scenes
-    {"fast-table-columns", 2040.9f, 287.28f, 2.766f}, // 11 scenes
-    {"fast-subdiv-8", 1798.5f, 440.51f, 25.247f}, // 11 scenes
-    {"fast-subdiv-16", 1798.5f, 466.04f, 15.315f}, // 11 scenes
-    {"fast-subdiv-32", 1798.5f, 478.53f, 10.520f}, // 11 scenes
-    {"fast-constant-depth", 1798.3f, 489.44f, 6.666f}, // 11 scenes
-    {"fast-adaptive-1", 1798.4f, 549.57f, 14.396f}, // 11 scenes
-    {"fast-adaptive-2", 1798.7f, 558.65f, 10.880f}, // 11 scenes
-    {"fast-oriented-1", 2152.6f, 589.44f, 8.637f}, // 11 scenes
+    {"affine", 1643.3f, 530.25f, 145.367f}, // 11 scenes
+    {"exact", 1794.7f, 334.26f, 283.333f}, // 11 scenes
+    {"persp-subdiv-4", 1804.8f, 453.34f, 187.270f}, // 11 scenes
+    {"persp-subdiv-8", 1803.3f, 588.80f, 110.224f}, // 11 scenes
+    {"persp-subdiv-16", 1804.9f, 684.08f, 71.335f}, // 11 scenes
+    {"persp-subdiv-32", 1799.5f, 733.62f, 52.259f}, // 11 scenes
+    {"constant-depth", 1804.8f, 773.67f, 38.073f}, // 11 scenes
+    {"persp-adaptive-0.5", 1804.4f, 1559.73f, 748.719f}, // 11 scenes
+    {"persp-adaptive-1", 1803.7f, 1893.82f, 108.075f}, // 11 scenes
+    {"persp-adaptive-2", 1803.6f, 1948.21f, 84.980f}, // 11 scenes
+    {"persp-adaptive-4", 1803.6f, 1988.70f, 70.830f}, // 11 scenes
+    {"fast-affine", 1716.2f, 139.03f, 3.979f}, // 11 scenes
+    {"fast-table", 2011.7f, 137.66f, 0.981f}, // 11 scenes
+    {"fast-columns", 1738.2f, 237.68f, 3.378f}, // 11 scenes
+    {"fast-table-columns", 2037.8f, 282.36f, 2.785f}, // 11 scenes
+    {"fast-subdiv-8", 1797.0f, 440.03f, 25.258f}, // 11 scenes
+    {"fast-subdiv-16", 1797.0f, 465.56f, 15.326f}, // 11 scenes
+    {"fast-subdiv-32", 1797.1f, 478.05f, 10.531f}, // 11 scenes
+    {"fast-constant-depth", 1796.8f, 488.96f, 6.677f}, // 11 scenes
+    {"fast-adaptive-1", 1797.0f, 549.09f, 14.407f}, // 11 scenes
+    {"fast-adaptive-2", 1798.4f, 558.01f, 10.895f}, // 11 scenes
+    {"fast-oriented-1", 2156.1f, 589.56f, 8.637f}, // 11 scenes
     {"xsharp-dda", 2573.1f, 429.38f, 54.924f}, // 10 scenes
-    {"xsharp-row-out", 2573.4f, 600.72f, 33.718f}, // 10 scenes
-    {"xsharp-column", 2601.2f, 601.56f, 10.995f}, // 10 scenes
-    {"hecker-steptable", 7834.0f, 0.00f, 1169.360f}, // 10 scenes
-    {"fatmap-256", 2442.6f, 169.62f, 8.327f}, // 8 scenes
-    {"fatmap-256-16", 2442.6f, 176.69f, 7.324f}, // 8 scenes
-    {"fatmap-lut", 2820.5f, 160.56f, 5.890f}, // 7 scenes
-    {"quake-subdiv16", 2901.8f, 517.08f, 18.928f}, // 10 scenes
-    {"quake-subdiv8", 2901.9f, 492.40f, 29.072f}, // 10 scenes
-    {"quake-d_draw16", 2878.3f, 349.07f, 7.770f}, // 10 scenes
+    {"xsharp-row-out", 2573.3f, 600.72f, 33.718f}, // 10 scenes
+    {"xsharp-column", 2592.5f, 595.66f, 11.032f}, // 10 scenes
+    {"hecker-steptable", 7833.9f, 0.00f, 1169.363f}, // 10 scenes
+    {"fatmap-256", 2442.6f, 169.60f, 8.328f}, // 8 scenes
+    {"fatmap-256-16", 2442.6f, 176.68f, 7.325f}, // 8 scenes
+    {"fatmap-lut", 2817.5f, 160.71f, 5.886f}, // 7 scenes
+    {"quake-subdiv16", 2894.5f, 514.52f, 18.988f}, // 10 scenes
+    {"quake-subdiv8", 2894.7f, 489.81f, 29.133f}, // 10 scenes
+    {"quake-d_draw16", 2876.9f, 349.12f, 7.770f}, // 10 scenes
     {"auto", -1.0f, -1.00f, -1.000f},
 };
 const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
@@ -117,8 +117,8 @@ const int MAPPER_COST_COUNT = sizeof(MAPPER_COSTS) / sizeof(MAPPER_COSTS[0]);
 // proof_scale: auto's choosing, cycles an instruction on the target
 const CostModel COST_MODELS[] = {
     {"icount", MAPPER_COSTS, 1.000},
-    {"486", MAPPER_COSTS_486, 3.347},
-    {"pentium", MAPPER_COSTS_PENTIUM, 1.439},
+    {"486", MAPPER_COSTS_486, 3.572},
+    {"pentium", MAPPER_COSTS_PENTIUM, 1.504},
 };
 
 }  // namespace raster
