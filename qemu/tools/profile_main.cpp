@@ -191,9 +191,9 @@ int run(const Args& a) {
                 static_cast<unsigned long long>(rows[1].polygons));
     std::printf("%12s %12s %12s  %s\n", a.mapper.c_str(), a.against.c_str(), "difference", "function");
     double rest[2] = {0, 0};
-    for (size_t k2 = 0; k2 < order.size(); ++k2) {
-        const std::string& name = order[k2].second;
-        if (int(k2) >= a.top) {
+    for (size_t n = 0; n < order.size(); ++n) {
+        const std::string& name = order[n].second;
+        if (int(n) >= a.top) {
             rest[0] += per[0][name], rest[1] += per[1][name];
             continue;
         }
