@@ -1,6 +1,6 @@
 // auto's choice (docs/auto.md): the cost model the bench measures, the candidates, their proofs and
-// the plans per object (kept from frame to frame), with which auto draws each polygon with the cheapest mapper
-// whose bound meets the scene's budget (kernel/core/budget.h).
+// the plans per object (kept from frame to frame), with which auto draws each polygon with the
+// cheapest mapper whose bound meets the scene's budget (kernel/core/budget.h).
 #pragma once
 
 #include <stddef.h>
@@ -215,7 +215,7 @@ union ListRoom {
     CandidateList list;
 };
 
-// An object's plan for a frame, into `plan` (a frame's array: no copy of it on the way).
+// An object's plan, into `plan` (an AutoObject's: no copy of it on the way).
 void plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint, AutoPlan* plan);
 inline AutoPlan plan_auto(const Budget& budget, const Texture& tex, const Target& target, double envelope_footprint) {
     AutoPlan plan;
