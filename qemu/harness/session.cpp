@@ -11,17 +11,24 @@
 
 namespace harness {
 
-uint64_t elf_symbol(const std::string& elf, const std::string& name) {
+std::vector<ElfSymbol> elf_symbols(const std::string& elf) {
     // whole, then line by line: C++ symbols (lambdas in templates) run to hundreds of characters
     std::string text;
     command_output("nm -P " + elf + " 2>/dev/null", &text);
     std::istringstream lines(text);
-    uint64_t found = 0;
+    std::vector<ElfSymbol> symbols;
     for (std::string line; std::getline(lines, line);) {
         std::istringstream fields(line);
         std::string symbol, type, address;
-        if (fields >> symbol >> type >> address && symbol == name) found = std::stoull(address, nullptr, 16);
+        if (fields >> symbol >> type >> address) symbols.push_back(ElfSymbol{symbol, type[0], std::stoull(address, nullptr, 16)});
     }
+    return symbols;
+}
+
+uint64_t elf_symbol(const std::string& elf, const std::string& name) {
+    uint64_t found = 0;
+    for (const ElfSymbol& s : elf_symbols(elf))
+        if (s.name == name) found = s.address;
     return found;
 }
 

@@ -20,7 +20,14 @@
 namespace harness {
 
 
-// The address of a symbol in an ELF (nm -P), or 0 where it has none.
+// An ELF's symbols with an address (nm -P): the name as nm gives it, its type letter, its address.
+struct ElfSymbol {
+    std::string name;
+    char type;
+    uint64_t address;
+};
+std::vector<ElfSymbol> elf_symbols(const std::string& elf);
+// The address of a symbol in an ELF, or 0 where it has none.
 uint64_t elf_symbol(const std::string& elf, const std::string& name);
 
 struct SessionOptions {

@@ -1,7 +1,7 @@
 // The part of QEMU 7.2's TCG plugin API (version 1, include/qemu/qemu-plugin.h and
-// docs/devel/tcg-plugins.rst) the plugins use (the timing model's and the profile's), declared here: Debian ships no header for
-// it. QEMU resolves these symbols in its own binary when it loads the plugin, and refuses a plugin
-// whose qemu_plugin_version it does not support.
+// docs/devel/tcg-plugins.rst) the plugins use (the timing model's and the profile's), declared
+// here: Debian ships no header for it. QEMU resolves these symbols in its own binary when it loads
+// the plugin, and refuses a plugin whose qemu_plugin_version it does not support.
 #pragma once
 
 #include <cstddef>

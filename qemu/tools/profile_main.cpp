@@ -99,22 +99,19 @@ std::vector<std::map<uint64_t, uint64_t>> plugin_rows(const std::string& path) {
     return rows;
 }
 
-// The kernel's functions by start address (nm), their names demangled; the P6 build's copies keep
-// their "p6." prefix.
-std::map<uint64_t, std::string> functions(const std::string& elf) {
-    std::string text;
-    if (!command_output("nm --defined-only " + elf + " 2>/dev/null", &text)) throw HarnessError("nm " + elf + " failed (binutils)");
+// The kernel's functions by start address, their names demangled (the P6 build's copies keep
+// their "p6." prefix); and where modexlab_cycle_marks is (0: nowhere).
+std::map<uint64_t, std::string> functions(const std::string& elf, uint64_t* marks) {
     std::map<uint64_t, std::string> f;
-    std::istringstream lines(text);
-    for (std::string line; std::getline(lines, line);) {
-        std::istringstream fields(line);
-        std::string address, type, name;
-        if (!(fields >> address >> type >> name) || (type != "t" && type != "T" && type != "W" && type != "w")) continue;
-        const bool p6 = name.rfind("p6.", 0) == 0;
-        const std::string bare = p6 ? name.substr(3) : name;
+    *marks = 0;
+    for (const ElfSymbol& s : elf_symbols(elf)) {
+        if (s.name == "modexlab_cycle_marks") *marks = s.address;
+        if (s.type != 't' && s.type != 'T' && s.type != 'W' && s.type != 'w') continue;
+        const bool p6 = s.name.rfind("p6.", 0) == 0;
+        const std::string bare = p6 ? s.name.substr(3) : s.name;
         int status = 0;
         char* d = abi::__cxa_demangle(bare.c_str(), nullptr, nullptr, &status);
-        f[std::stoull(address, nullptr, 16)] = (p6 ? "p6." : "") + (status == 0 && d ? std::string(d) : bare);
+        f[s.address] = (p6 ? "p6." : "") + (status == 0 && d ? std::string(d) : bare);
         std::free(d);
     }
     if (f.empty()) throw HarnessError(elf + ": no function symbols");
@@ -135,7 +132,8 @@ std::string shortened(const std::string& s, size_t most) { return s.size() <= mo
 int run(const Args& a) {
     const SceneChoice scene = choose_scene(a.scene);
     const LoadedWorld host = load_world_file(scene.path);
-    const uint64_t marks = elf_symbol(a.kernel, "modexlab_cycle_marks");
+    uint64_t marks = 0;
+    const std::map<uint64_t, std::string> f = functions(a.kernel, &marks);
     const std::string plugin = build_dir() + "/host/libmodexlab-profile.so";
     if (!marks) throw HarnessError(a.kernel + ": no symbol modexlab_cycle_marks (the profile plugin's marks)");
     if (!std::filesystem::exists(plugin)) throw HarnessError("no " + plugin + " (make host builds it)");
@@ -169,7 +167,6 @@ int run(const Args& a) {
     const std::vector<std::map<uint64_t, uint64_t>> counted = plugin_rows(out);
     if (counted.size() != rows.size()) throw HarnessError(out + ": " + std::to_string(counted.size()) + " rows, not " + std::to_string(rows.size()));
     std::filesystem::remove_all(k.run_dir());
-    const std::map<uint64_t, std::string> f = functions(a.kernel);
     std::map<std::string, double> per[2];
     double total[2] = {0, 0};
     for (int i = 0; i < 2; ++i) {
